@@ -1,0 +1,67 @@
+# Helpers that keep every module's CMake to a few lines (COLMAP-style).
+
+# Compiler flags shared by every hecal target (warnings, sanitizers).
+add_library(hecal_compile_options INTERFACE)
+target_compile_options(hecal_compile_options INTERFACE
+  $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+  -Wold-style-cast -Wcast-align -Wnull-dereference -Wimplicit-fallthrough>)
+if(HECAL_WERROR)
+  target_compile_options(hecal_compile_options INTERFACE -Werror)
+endif()
+if(HECAL_SANITIZE)
+  target_compile_options(hecal_compile_options INTERFACE
+    -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(hecal_compile_options INTERFACE -fsanitize=address,undefined)
+endif()
+install(TARGETS hecal_compile_options EXPORT hecalTargets)
+
+# hecal_add_module(<name> [DEPENDS <public targets>...] [PRIVATE_DEPENDS <targets>...]
+#                  [TEST_DEPENDS <targets>...])
+# Builds library hecal_<name> (alias hecal::<name>) from src/<name>/*.cc and one GoogleTest
+# executable per src/<name>/*_test.cc, registered with CTest under the label "unit".
+# A test file named *_slow_test.cc gets the label "slow" instead (kept out of the default run).
+function(hecal_add_module name)
+  cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS;TEST_DEPENDS" ${ARGN})
+  set(dir ${PROJECT_SOURCE_DIR}/src/${name})
+  file(GLOB all_sources CONFIGURE_DEPENDS ${dir}/*.cc)
+  file(GLOB test_sources CONFIGURE_DEPENDS ${dir}/*_test.cc)
+  set(lib_sources ${all_sources})
+  if(test_sources)
+    list(REMOVE_ITEM lib_sources ${test_sources})
+  endif()
+  set(target hecal_${name})
+  add_library(${target} ${lib_sources})
+  add_library(hecal::${name} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON)
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(${target} PUBLIC ${ARG_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS} hecal_compile_options)
+  install(TARGETS ${target} EXPORT hecalTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  if(HECAL_BUILD_TESTS)
+    foreach(test_source ${test_sources})
+      get_filename_component(stem ${test_source} NAME_WE)
+      hecal_add_test(${name}_${stem} ${test_source} DEPENDS ${target} ${ARG_TEST_DEPENDS})
+    endforeach()
+  endif()
+endfunction()
+
+# hecal_add_test(<name> <sources>... DEPENDS <targets>...)
+# One GoogleTest executable, run from the source tree so tests find data/ by relative path
+# through HECAL_SOURCE_DIR. Label "slow" for *_slow_test names, else "unit".
+function(hecal_add_test name)
+  cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
+  add_executable(test_${name} ${ARG_UNPARSED_ARGUMENTS})
+  target_link_libraries(test_${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gmock
+    GTest::gtest_main hecal_compile_options)
+  target_compile_definitions(test_${name} PRIVATE HECAL_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_include_directories(test_${name} PRIVATE ${PROJECT_SOURCE_DIR}/src)  # testing/*.h
+  add_test(NAME ${name} COMMAND test_${name})
+  if(name MATCHES "_slow_test$")
+    set_tests_properties(${name} PROPERTIES LABELS slow)
+  else()
+    set_tests_properties(${name} PROPERTIES LABELS unit)
+  endif()
+endfunction()

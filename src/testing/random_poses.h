@@ -1,0 +1,61 @@
+// Test support (not installed): seeded random rotations and poses, and the edge cases every
+// geometry property test must cover (identity, exactly π about each axis, tiny angles, near π).
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "hecal/geometry/types.h"
+
+namespace hecal::testing {
+
+// Uniform on SO(3): a normalised 4-D Gaussian is uniform on S³ (Shoemake's argument).
+inline Eigen::Matrix3d RandomRotation(std::mt19937_64& rng) {
+  std::normal_distribution<double> normal;
+  Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
+  return q.normalized().toRotationMatrix();
+}
+
+inline Eigen::Vector3d RandomUnitVector(std::mt19937_64& rng) {
+  std::normal_distribution<double> normal;
+  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+}
+
+// Rotation vector with the given angle about a random axis.
+inline Eigen::Vector3d RandomRotationVector(std::mt19937_64& rng, double angle) {
+  return angle * RandomUnitVector(rng);
+}
+
+// Random pose: uniform rotation, translation uniform in [−scale, scale]³ (metres).
+inline Pose RandomPose(std::mt19937_64& rng, double scale = 1.0) {
+  std::uniform_real_distribution<double> uniform(-scale, scale);
+  return MakePose(RandomRotation(rng), Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)));
+}
+
+// Rotation vectors at the edges of the domain: zero, 1e-9 rad, 1e-4 rad, exactly π about each
+// axis and about a diagonal, π − 1e-9, π − 1e-6 and 1e-2 / 0.1 (series thresholds) about
+// random axes.
+inline std::vector<Eigen::Vector3d> EdgeCaseRotationVectors(std::mt19937_64& rng) {
+  constexpr double pi = std::numbers::pi;
+  std::vector<Eigen::Vector3d> cases = {
+      Eigen::Vector3d::Zero(),
+      pi * Eigen::Vector3d::UnitX(),
+      pi * Eigen::Vector3d::UnitY(),
+      pi * Eigen::Vector3d::UnitZ(),
+      -pi * Eigen::Vector3d::UnitZ(),
+      pi * Eigen::Vector3d(1, 1, 1).normalized(),
+      1e-9 * Eigen::Vector3d::UnitX(),
+  };
+  for (double angle : {1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 0.1, pi / 2, pi - 1e-2, pi - 1e-6,
+                       pi - 1e-9, pi}) {
+    for (int i = 0; i < 3; ++i) cases.push_back(RandomRotationVector(rng, angle));
+  }
+  return cases;
+}
+
+}  // namespace hecal::testing
