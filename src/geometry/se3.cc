@@ -24,8 +24,11 @@ Eigen::Matrix3d LeftJacobianCoupling(const Eigen::Vector3d& omega, const Eigen::
   } else {
     const double s = std::sin(theta);
     const double c = std::cos(theta);
+    const double s_half = std::sin(0.5 * theta);
     c1 = (theta - s) / (t2 * theta);
-    c2 = (t2 + 2.0 * c - 2.0) / (2.0 * t2 * t2);
+    // θ² − 2(1 − cos θ) with 1 − cos θ = 2 sin²(θ/2): computing 2 cos θ − 2 directly costs an
+    // absolute ε in a numerator of size θ⁴/12 (relative error 1.4e-11 at θ = 0.1).
+    c2 = (t2 - 4.0 * s_half * s_half) / (2.0 * t2 * t2);
     c3 = (2.0 * theta - 3.0 * s + theta * c) / (2.0 * t2 * t2 * theta);
   }
   const Eigen::Matrix3d W = Skew(omega);
@@ -80,9 +83,13 @@ Matrix6d LeftJacobianInverse(const Vector6d& xi) {
   return result;
 }
 
-Matrix6d RightJacobian(const Vector6d& xi) { return LeftJacobian(-xi); }
+Matrix6d RightJacobian(const Vector6d& xi) {
+  return LeftJacobian(-xi);
+}
 
-Matrix6d RightJacobianInverse(const Vector6d& xi) { return LeftJacobianInverse(-xi); }
+Matrix6d RightJacobianInverse(const Vector6d& xi) {
+  return LeftJacobianInverse(-xi);
+}
 
 Pose Interpolate(const Pose& T0, const Pose& T1, double s) {
   return T0 * Exp(s * Log(T0.inverse() * T1));

@@ -52,7 +52,9 @@ Eigen::Matrix3d LeftJacobian(const Eigen::Vector3d& omega) {
   return Eigen::Matrix3d::Identity() + b * K + c * K * K;
 }
 
-Eigen::Matrix3d RightJacobian(const Eigen::Vector3d& omega) { return LeftJacobian(-omega); }
+Eigen::Matrix3d RightJacobian(const Eigen::Vector3d& omega) {
+  return LeftJacobian(-omega);
+}
 
 Eigen::Matrix3d LeftJacobianInverse(const Eigen::Vector3d& omega) {
   const double e = InverseJacobianCoefficient(omega.norm());

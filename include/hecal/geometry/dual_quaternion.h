@@ -8,8 +8,11 @@
 // IsSamePose compares up to that sign.
 //
 // Exp / Log: Log of a unit q̌ is the pure dual quaternion ½ (ω + ε v) where (ω, v) = se3::Log of
-// the pose (rotation angle ≤ π), i.e. ½ θ̌ ľ in screw terms; Exp is its inverse on pure dual
-// quaternions (series near θ = 0). So Exp(Log(q̌)) = ±q̌ and Log(Exp(p̌)) = p̌ for |ω| < π.
+// the pose (rotation angle ≤ π, same sign rule at exactly π), i.e. ½ θ̌ ľ in screw terms; Exp is
+// its inverse on pure dual quaternions (series near θ = 0). So Exp(Log(q̌)) = ±q̌ and
+// Log(Exp(p̌)) = p̌ for |ω| < π. Both extend to any q̌ with non-zero real part through the dual
+// scalar part: Log(q̌) = log|q̌| + Log(q̌/|q̌|), with log(a + εb) = ln a + ε b/a, and
+// Exp(s + εs' + p̌) = eˢ (1 + εs') Exp(p̌).
 #pragma once
 
 #include <Eigen/Core>
@@ -37,6 +40,8 @@ class DualQuaternion {
   static DualQuaternion Identity();
   static DualQuaternion Zero();
   static DualQuaternion FromPose(const Pose& T);
+  // (cos(θ̌/2), sin(θ̌/2) ľ) with θ̌ = θ + εd, ľ = l + εm; l is normalised and the component of m
+  // along l ignored, so the result is unit.
   static DualQuaternion FromScrew(const Screw& screw);
 
   const Eigen::Quaterniond& real() const { return real_; }
@@ -51,21 +56,26 @@ class DualQuaternion {
   // Divides by the dual norm, making |real| = 1 and real·dual = 0. Real part must be non-zero.
   void Normalize();
   DualQuaternion Normalized() const;
-  // Sign choice real().w() > 0 (ties broken by the first non-zero component, as for quaternions).
+  // Sign choice real().w() > 0 (ties broken by the first non-zero component of the 8-vector
+  // (w, x, y, z, w', x', y', z'), as for quaternions). Same pose, same Norm().
   DualQuaternion Canonical() const;
 
-  // Exponential of a pure dual quaternion (zero scalar parts) and logarithm of a unit one.
+  // Exponential of a pure dual quaternion (zero scalar parts) and logarithm of a unit one; see the
+  // file comment for the extension to non-zero scalar parts and non-unit q̌.
   DualQuaternion Exp() const;
   DualQuaternion Log() const;
 
   Eigen::Vector3d TransformPoint(const Eigen::Vector3d& p) const;   // R p + t
   Eigen::Vector3d TransformVector(const Eigen::Vector3d& v) const;  // R v
 
-  Eigen::Quaterniond Rotation() const;             // the (normalised) real part
-  Eigen::Vector3d Translation() const;             // 2 q' q*  (vector part)
+  Eigen::Quaterniond Rotation() const;  // the (normalised) real part
+  // Vector part of 2 q' q⁻¹ (= 2 q' q* for a unit q̌); unchanged when q̌ is scaled by a dual
+  // number, so it is the pose's translation even before Normalize().
+  Eigen::Vector3d Translation() const;
   Eigen::Quaterniond TranslationQuaternion() const;  // (0, t)
-  Eigen::Matrix4d ToMatrix() const;
-  Pose ToPose() const;
+  Eigen::Matrix4d ToMatrix() const;                  // homogeneous 4×4 of ToPose()
+  Pose ToPose() const;                               // (Rotation(), Translation())
+  // ScrewFromPose(ToPose()): the conventions of screw.h (identity, pure translation, θ = π).
   Screw ToScrew() const;
 
   DualQuaternion operator*(const DualQuaternion& other) const;

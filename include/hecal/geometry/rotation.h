@@ -38,6 +38,10 @@ AxisAngle AxisAngleFromMatrix(const Eigen::Matrix3d& R);
 Eigen::Matrix3d MatrixFromAxisAngle(const AxisAngle& axis_angle);  // axis normalised first
 
 // Tsai's P = 2 sin(θ/2) n. The inverse needs |P| ≤ 2 (values up to 2 + 1e-9 are clamped).
+// Conditioning: |P| is flat in θ at π (it changes by only (π − θ)²/4), so P itself carries the
+// angle there only to ~1e-16/cos(θ/2), at worst √ε ≈ 1.5e-8 rad at θ = π. MatrixFromTsaiRodrigues
+// is exact to rounding away from π and within that bound near it (the one exception to "exact
+// near π" above; it is the representation's, not the code's).
 Eigen::Vector3d TsaiRodriguesFromMatrix(const Eigen::Matrix3d& R);
 Eigen::Matrix3d MatrixFromTsaiRodrigues(const Eigen::Vector3d& P);
 

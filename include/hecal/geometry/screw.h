@@ -7,7 +7,11 @@
 // Pure translation (θ = 0, t ≠ 0): l = t/|t|, d = |t|, m = 0 (the line through the origin).
 // Identity: l = (1, 0, 0), θ = d = 0, m = 0. Near θ = 0 the line moves off to infinity (the
 // moment grows as 1/θ): that is geometry, not a numerical defect; callers that need a smooth
-// parameterisation use the twist (se3::Log) instead.
+// parameterisation use the twist (se3::Log) instead: se3::Log(T) = (θ l, θ m + d l).
+// At θ = π the axis sign is the one AxisAngleFromMatrix picks (largest |component| positive);
+// (l, m, d) and (−l, −m, −d) describe the same motion there.
+// PoseFromScrew normalises l and ignores any component of m along l. It rotates θ about the
+// line through p = l × m, then slides d along l: t = d l + sinθ m + (1 − cosθ) l × m.
 #pragma once
 
 #include <Eigen/Core>
