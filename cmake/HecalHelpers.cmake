@@ -20,6 +20,8 @@ install(TARGETS hecal_compile_options EXPORT hecalTargets)
 # Builds library hecal_<name> (alias hecal::<name>) from src/<name>/*.cc and one GoogleTest
 # executable per src/<name>/*_test.cc, registered with CTest under the label "unit".
 # A test file named *_slow_test.cc gets the label "slow" instead (kept out of the default run).
+# A test file named *_opencv_test.cc uses OpenCV as a peer and is built only with
+# HECAL_BUILD_VISION (the core libraries themselves never link OpenCV).
 function(hecal_add_module name)
   cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS;TEST_DEPENDS" ${ARGN})
   set(dir ${PROJECT_SOURCE_DIR}/src/${name})
@@ -43,6 +45,9 @@ function(hecal_add_module name)
   if(HECAL_BUILD_TESTS)
     foreach(test_source ${test_sources})
       get_filename_component(stem ${test_source} NAME_WE)
+      if(stem MATCHES "_opencv_test$" AND NOT HECAL_BUILD_VISION)
+        continue()
+      endif()
       hecal_add_test(${name}_${stem} ${test_source} DEPENDS ${target} ${ARG_TEST_DEPENDS})
     endforeach()
   endif()

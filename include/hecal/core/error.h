@@ -30,10 +30,20 @@ class InputError : public std::runtime_error {
  private:
   static std::string Format(const std::string& source, int line, const std::string& problem,
                             const std::string& fix) {
+    // Appends piece by piece: `":" + std::to_string(line)` trips GCC 12's -Wrestrict false
+    // positive (GCC bug 105329) in every -O2 -Werror translation unit that includes this header.
     std::string message = source;
-    if (line > 0) message += ":" + std::to_string(line);
-    message += ": " + problem;
-    if (!fix.empty()) message += " (fix: " + fix + ")";
+    if (line > 0) {
+      message += ':';
+      message += std::to_string(line);
+    }
+    message += ": ";
+    message += problem;
+    if (!fix.empty()) {
+      message += " (fix: ";
+      message += fix;
+      message += ')';
+    }
     return message;
   }
 
