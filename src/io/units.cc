@@ -2,7 +2,9 @@
 
 namespace hecal::io {
 
-double MetresPer(LengthUnit unit) { return unit == LengthUnit::kMillimetre ? 1e-3 : 1.0; }
+double MetresPer(LengthUnit unit) {
+  return unit == LengthUnit::kMillimetre ? 1e-3 : 1.0;
+}
 
 std::optional<LengthUnit> ParseLengthUnit(std::string_view text) {
   if (text == "m") return LengthUnit::kMetre;
@@ -10,6 +12,8 @@ std::optional<LengthUnit> ParseLengthUnit(std::string_view text) {
   return std::nullopt;
 }
 
-std::string_view UnitName(LengthUnit unit) { return unit == LengthUnit::kMillimetre ? "mm" : "m"; }
+std::string_view UnitName(LengthUnit unit) {
+  return unit == LengthUnit::kMillimetre ? "mm" : "m";
+}
 
 }  // namespace hecal::io

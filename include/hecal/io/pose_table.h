@@ -1,14 +1,39 @@
-// Pose tables: the CSV files hecal reads and writes (DESIGN.md §3, the contract).
+// Pose tables: the CSV files hecal reads and writes (DESIGN.md §3, the contract; the full rules,
+// with examples, are in docs/pose-files.md).
 //
-// CSV, '#' starts a comment line, first non-comment line is the header. Columns by name:
-// position x,y,z; exactly one rotation group (see rotation_format.h); optional id, stamp.
-// Units: --units m|mm (default m) and --degrees, or header suffixes (x_mm, roll_deg) which win.
-// Also accepted without a header: 16 numbers per line (row-major 4×4) or 12 numbers (3×4),
-// separated by commas, tabs or spaces; units then come from the flags.
+// Reading
+//   '#' lines are comments, blank lines are skipped; the first other line is the header, naming
+//   columns in any order, case-insensitively: position x,y,z; exactly one rotation group (see
+//   rotation_format.h: qw,qx,qy,qz | q1..q4 | rx,ry,rz | r11..r33 | a1,a2,a3 | roll,pitch,yaw |
+//   a,b,c | w,p,r); optional id (unique, non-empty text) and stamp (seconds). Comma-separated
+//   (fields trimmed, "double quotes" as in RFC 4180), or whitespace-separated when the header has
+//   no comma. CRLF and a UTF-8 BOM are accepted.
+//   Units: suffixes x_mm / x_m and _deg / _rad on angle columns win over the options; otherwise
+//   lengths are in options.units and angles in radians unless options.degrees (kuka a,b,c and
+//   fanuc w,p,r default to degrees). The three position columns share one suffix (or none), as
+//   do the angle columns.
+//   a1,a2,a3 take their sequence from a "# euler: SEQ" comment before the header (which wins) or
+//   from options.euler; preset columns have their own sequence and reject a different one.
+//   Without a header: 12 (3×4) or 16 (4×4, last row 0 0 0 1 within 1e-9) numbers per line,
+//   separated by commas and/or spaces/tabs, lengths in options.units.
+//   Quaternions are normalised (norm ≤ 1e-12 is an error; |norm − 1| > 1e-3 adds one entry to
+//   PoseTable::warnings); matrices must be orthonormal within 1e-6 (so3::OrthonormalityError) and
+//   are projected onto the nearest rotation; rotation vectors are taken modulo 2π.
+//   Every pose in memory is in metres and radians; `unit` remembers the file's length unit.
+//   Errors throw hecal::InputError(file, line, what, fix), one line each: NaN/Inf, not a number,
+//   wrong value count, unknown (with a suggestion), duplicate or unnamed column, two rotation
+//   groups, missing position/rotation columns, mixed or misplaced units, missing Euler sequence,
+//   non-orthonormal matrix (with how far off), bad 4×4 last row, zero quaternion, empty file or
+//   header only, duplicate or empty id, unclosed quote, unreadable file.
 //
-// In memory every pose is in metres and radians (the core's units); `unit` remembers the file's
-// length unit so results can be written back in it.
-// Readers throw hecal::InputError naming file, line, what is wrong and how to fix it.
+// Writing
+//   Optional '#' comments, then the header: id and stamp (when the rows have them and the options
+//   keep them), x,y,z, the rotation group. Units other than metres/radians are in the header
+//   (x_mm, rx_deg, a_deg), and euler:SEQ output starts with "# euler: SEQ", so a written file
+//   reads back to the same poses with default options. Numbers are the shortest text that reads
+//   back to the same double (values converted to mm or degrees: the shortest that converts back
+//   exactly, so 123.456 mm stays "123.456"). Quaternions have w ≥ 0, rotation vectors |ω| ≤ π,
+//   Euler angles are EulerFromMatrix's. Ids are quoted when needed.
 #pragma once
 
 #include <optional>
@@ -23,52 +48,61 @@
 namespace hecal::io {
 
 struct PoseRow {
-  Pose pose = Pose::Identity();     // metres
-  std::optional<std::string> id;    // the `id` column, when present
-  std::optional<double> stamp;      // the `stamp` column (seconds), when present
-  int line = 0;                     // 1-based line in the source file (for messages)
+  Pose pose = Pose::Identity();   // metres
+  std::optional<std::string> id;  // the `id` column, when present
+  std::optional<double> stamp;    // the `stamp` column (seconds), when present
+  int line = 0;                   // 1-based line in the source file (for messages)
 };
 
 struct PoseTable {
   std::vector<PoseRow> rows;
-  std::string source;                         // file name, for messages
-  LengthUnit unit = LengthUnit::kMetre;       // the file's length unit
-  std::optional<RotationFormat> rotation;     // the rotation group found (nullopt: matrix lines)
+  std::string source;                      // file name, for messages
+  LengthUnit unit = LengthUnit::kMetre;    // the file's length unit
+  std::optional<RotationFormat> rotation;  // the rotation group found (nullopt: matrix lines)
+  bool degrees = false;                    // the file's angles were in degrees (rotvec/Euler)
+  std::vector<std::string> warnings;       // "file:line: ..." notes (e.g. quaternion normalised)
 };
 
 struct PoseReadOptions {
-  LengthUnit units = LengthUnit::kMetre;      // --units; header suffixes win
-  bool degrees = false;                       // --degrees; header suffixes win
-  std::optional<EulerSequence> euler;         // --euler SEQ, for a1,a2,a3 columns
-  bool invert = false;                        // replace every pose by its inverse after reading
+  LengthUnit units = LengthUnit::kMetre;  // --units; header suffixes win
+  bool degrees = false;                   // --degrees; header suffixes win
+  std::optional<EulerSequence> euler;     // --euler SEQ, for a1,a2,a3 columns
+  bool invert = false;                    // replace every pose by its inverse after reading
 };
 
 struct PoseWriteOptions {
-  RotationFormat rotation;                    // --to
-  LengthUnit units = LengthUnit::kMetre;      // --units
-  bool degrees = false;                       // --degrees (presets kuka/fanuc default to degrees)
-  bool write_id = true;                       // write the id column when rows have ids
-  bool write_stamp = true;                    // write the stamp column when rows have stamps
-  std::vector<std::string> comments;          // '#' lines written before the header
+  RotationFormat rotation;                // --to
+  LengthUnit units = LengthUnit::kMetre;  // --units
+  bool degrees = false;                   // --degrees (presets kuka/fanuc default to degrees)
+  bool write_id = true;                   // write the id column when rows have ids
+  bool write_stamp = true;                // write the stamp column when rows have stamps
+  std::vector<std::string> comments;      // '#' lines written before the header
 };
 
+// Reads `path` (InputError when unreadable) and parses it; `source` of the table and of every
+// error is `path`.
 PoseTable ReadPoseTable(const std::string& path, const PoseReadOptions& options);
 // Same, from text already in memory; `source` names it in messages.
 PoseTable ParsePoseTable(std::string_view text, const std::string& source,
                          const PoseReadOptions& options);
 
+// The file text. Throws InputError when a value does not fit in a double in the output unit
+// (|x| > ~1.8e305 m written in mm), when only some rows have ids or stamps, or when an id holds
+// a line break; std::invalid_argument for an Euler format without a sequence.
 std::string FormatPoseTable(const PoseTable& table, const PoseWriteOptions& options);
 // Writes atomically (temporary file, then rename): never a partial file.
 void WritePoseTable(const std::string& path, const PoseTable& table,
                     const PoseWriteOptions& options);
 
-// Robot and camera rows paired into stations: by `id` when both tables have ids, else by order.
+// Robot and camera rows paired into stations: by `id` when every row of both tables has one (in
+// the robot table's order), else by order.
 struct Stations {
-  std::vector<Pose> robot;   // T_base_gripper_i
-  std::vector<Pose> camera;  // T_camera_target_i
+  std::vector<Pose> robot;       // T_base_gripper_i
+  std::vector<Pose> camera;      // T_camera_target_i
   std::vector<std::string> ids;  // the id, or the 0-based row index as text
 };
-// Throws InputError when lengths differ, ids do not match, or an id repeats.
+// Throws InputError when lengths differ (by order), when an id of one table is missing from the
+// other (naming the first such id and its line), or when an id repeats.
 Stations PairStations(const PoseTable& robot, const PoseTable& camera);
 
 }  // namespace hecal::io

@@ -31,9 +31,15 @@ struct RotationFormat {
   std::vector<std::string> ColumnNames() const;
   // The --to spelling: "quaternion", "rotvec", "matrix", "euler:ZYX", "kuka", ...
   std::string ToString() const;
+
+  friend bool operator==(const RotationFormat&, const RotationFormat&) = default;
 };
 
-// Parses the --to / --rotation spelling above; nullopt when unknown.
+// Parses the --to / --rotation spelling above; nullopt when unknown. Names are case-insensitive;
+// the Euler sequence after "euler:" is not (lowercase = extrinsic, uppercase = intrinsic).
 std::optional<RotationFormat> ParseRotationFormat(std::string_view text);
+
+// The accepted spellings, for help texts and error messages.
+std::string_view RotationFormatSpellings();
 
 }  // namespace hecal::io

@@ -1,0 +1,58 @@
+// `hecal import`: other tools' calibration-sample files → hecal's canonical robot/camera pose
+// tables (DESIGN.md §2–4). One reader per format, each in its own header (conventions there and in
+// docs/import-formats.md):
+//
+//   format        INPUT...                              conventions applied
+//   moveit        pose_samples.json                     none (T_base_eef, T_camera_target), m
+//   easy_handeye  NAME.samples (YAML)                   robot inverted for eye_on_base, m
+//   camodocal     TransformPairsInput.yml               none (T1 = T_base_ee, T2 = T_camera_tag), m
+//   ethz          ROBOT.csv CAMERA.csv (two streams)    camera inverted (T_W_E → T_E_W), m, stamps
+//   tabb          robot_cali.txt cali.txt | DIR         robot inverted (B_i = T_gripper_base), mm
+//   opencv-yaml   FILE.yml (calibrateHandEye arrays)    by key name (…2gripper / cam2… inverted)
+//   matrix16      ROBOT.txt [CAMERA.txt]                none unless
+//   --robot-inverse/--camera-inverse
+//
+// ImportFiles reads the files and runs the reader. Every reader rejects bad input with
+// hecal::InputError (file, line where known, what, how to fix): unreadable files, syntax errors,
+// NaN/Inf, rotations that are not orthonormal (within 1e-6, or the printed precision of the file;
+// see docs/import-formats.md), zero or non-unit quaternions, counts that disagree with the file's
+// own N / frameCount, and robot and camera counts that differ (except ethz, whose streams are
+// unsynchronised).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hecal/io/import_types.h"
+#include "hecal/io/units.h"
+
+namespace hecal::io {
+
+enum class ImportFormat { kMoveit, kEasyHandeye, kCamodocal, kEthz, kTabb, kOpenCvYaml, kMatrix16 };
+
+// "moveit" | "easy_handeye" | "camodocal" | "ethz" | "tabb" | "opencv-yaml" | "matrix16".
+std::optional<ImportFormat> ParseImportFormat(std::string_view text);
+std::string_view ImportFormatName(ImportFormat format);
+// "moveit|easy_handeye|camodocal|ethz|tabb|opencv-yaml|matrix16", for help and messages.
+std::string ImportFormatList();
+
+struct ImportOptions {
+  // --units: the length unit of formats whose files do not fix it (matrix16, opencv-yaml).
+  std::optional<LengthUnit> units;
+  // --setup: easy_handeye files that do not say eye_in_hand / eye_on_base.
+  std::optional<ImportSetup> setup;
+  // --robot-inverse / --camera-inverse: matrix16 files that hold the inverse poses.
+  bool robot_inverse = false;
+  bool camera_inverse = false;
+};
+
+// Reads `inputs` (paths; see the table above for how many) in `format`. Options that do not apply
+// to the format are rejected (InputError naming the flag), so a flag is never silently ignored.
+// For tabb, `inputs` is either the two files (robot_cali.txt first) or one directory holding
+// robot_cali.txt and cali.txt.
+ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& inputs,
+                          const ImportOptions& options);
+
+}  // namespace hecal::io

@@ -1,0 +1,172 @@
+#include "hecal/io/import.h"
+
+#include <filesystem>
+#include <system_error>
+
+#include "hecal/io/atomic_file.h"
+#include "hecal/io/import_camodocal.h"
+#include "hecal/io/import_easy_handeye.h"
+#include "hecal/io/import_ethz.h"
+#include "hecal/io/import_matrix16.h"
+#include "hecal/io/import_moveit.h"
+#include "hecal/io/import_opencv_yaml.h"
+#include "hecal/io/import_tabb.h"
+#include "import_internal.h"
+
+namespace hecal::io {
+namespace {
+
+using import_internal::Fail;
+
+struct FormatName {
+  ImportFormat format;
+  std::string_view name;
+};
+
+constexpr FormatName kFormats[] = {
+    {ImportFormat::kMoveit, "moveit"},       {ImportFormat::kEasyHandeye, "easy_handeye"},
+    {ImportFormat::kCamodocal, "camodocal"}, {ImportFormat::kEthz, "ethz"},
+    {ImportFormat::kTabb, "tabb"},           {ImportFormat::kOpenCvYaml, "opencv-yaml"},
+    {ImportFormat::kMatrix16, "matrix16"},
+};
+
+std::string_view InputsUsage(ImportFormat format) {
+  switch (format) {
+    case ImportFormat::kMoveit:
+      return "one pose_samples.json";
+    case ImportFormat::kEasyHandeye:
+      return "one samples YAML file";
+    case ImportFormat::kCamodocal:
+      return "one TransformPairsInput.yml";
+    case ImportFormat::kEthz:
+      return "two CSV files: the robot stream (poses_B_H), then the camera stream (poses_W_E)";
+    case ImportFormat::kTabb:
+      return "robot_cali.txt then cali.txt, or one directory holding both";
+    case ImportFormat::kOpenCvYaml:
+      return "one FileStorage YAML file";
+    case ImportFormat::kMatrix16:
+      return "the robot matrix file, optionally followed by the camera matrix file";
+  }
+  return "";
+}
+
+[[noreturn]] void WrongInputCount(ImportFormat format, size_t count) {
+  Fail("INPUT", 0,
+       std::string(ImportFormatName(format)) + " takes " + std::string(InputsUsage(format)) +
+           ", got " + std::to_string(count) + " input" + (count == 1 ? "" : "s"),
+       "see docs/import-formats.md");
+}
+
+bool IsDirectory(const std::string& path) {
+  std::error_code error;
+  return std::filesystem::is_directory(path, error);
+}
+
+std::string JoinPath(const std::string& directory, const char* name) {
+  return (std::filesystem::path(directory) / name).string();
+}
+
+void CheckOptions(ImportFormat format, const ImportOptions& options) {
+  const std::string name(ImportFormatName(format));
+  if (options.units && format != ImportFormat::kMatrix16 && format != ImportFormat::kOpenCvYaml) {
+    Fail("--units", 0,
+         name + " files fix their own length unit (" +
+             (format == ImportFormat::kTabb ? "mm" : "m") + "), so --units does not apply",
+         "drop --units (it is for matrix16 and opencv-yaml, whose files do not say)");
+  }
+  if (options.setup && format != ImportFormat::kEasyHandeye) {
+    Fail("--setup", 0, "does not apply to " + name + " (only easy_handeye needs it)",
+         "drop --setup");
+  }
+  if ((options.robot_inverse || options.camera_inverse) && format != ImportFormat::kMatrix16) {
+    Fail(options.robot_inverse ? "--robot-inverse" : "--camera-inverse", 0,
+         "does not apply to " + name + ", whose convention is fixed (see docs/import-formats.md)",
+         "drop the flag (it is for matrix16 files)");
+  }
+}
+
+}  // namespace
+
+std::optional<ImportFormat> ParseImportFormat(std::string_view text) {
+  for (const FormatName& entry : kFormats) {
+    if (entry.name == text) return entry.format;
+  }
+  return std::nullopt;
+}
+
+std::string_view ImportFormatName(ImportFormat format) {
+  for (const FormatName& entry : kFormats) {
+    if (entry.format == format) return entry.name;
+  }
+  return "";
+}
+
+std::string ImportFormatList() {
+  std::string list;
+  for (const FormatName& entry : kFormats) {
+    if (!list.empty()) list += '|';
+    list += entry.name;
+  }
+  return list;
+}
+
+ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& inputs,
+                          const ImportOptions& options) {
+  CheckOptions(format, options);
+  const size_t count = inputs.size();
+  switch (format) {
+    case ImportFormat::kMoveit:
+      if (count != 1) WrongInputCount(format, count);
+      return ParseMoveitSamples(ReadFile(inputs[0]), inputs[0]);
+    case ImportFormat::kEasyHandeye:
+      if (count != 1) WrongInputCount(format, count);
+      return ParseEasyHandeyeSamples(ReadFile(inputs[0]), inputs[0], options.setup);
+    case ImportFormat::kCamodocal:
+      if (count != 1) WrongInputCount(format, count);
+      return ParseCamodocalPairs(ReadFile(inputs[0]), inputs[0]);
+    case ImportFormat::kOpenCvYaml:
+      if (count != 1) WrongInputCount(format, count);
+      return ParseOpenCvHandEyeYaml(ReadFile(inputs[0]), inputs[0],
+                                    options.units.value_or(LengthUnit::kMetre));
+    case ImportFormat::kEthz: {
+      if (count != 2) WrongInputCount(format, count);
+      const std::string robot = ReadFile(inputs[0]);
+      const std::string camera = ReadFile(inputs[1]);
+      return ParseEthzStreams(robot, inputs[0], camera, inputs[1]);
+    }
+    case ImportFormat::kTabb: {
+      std::string robot_path;
+      std::string camera_path;
+      if (count == 1 && IsDirectory(inputs[0])) {
+        robot_path = JoinPath(inputs[0], "robot_cali.txt");
+        camera_path = JoinPath(inputs[0], "cali.txt");
+      } else if (count == 2) {
+        robot_path = inputs[0];
+        camera_path = inputs[1];
+      } else {
+        WrongInputCount(format, count);
+      }
+      const std::string robot = ReadFile(robot_path);
+      const std::string camera = ReadFile(camera_path);
+      return ParseTabb(robot, robot_path, camera, camera_path);
+    }
+    case ImportFormat::kMatrix16: {
+      if (count != 1 && count != 2) WrongInputCount(format, count);
+      if (count == 1 && options.camera_inverse) {
+        Fail("--camera-inverse", 0, "given without a camera matrix file",
+             "pass the camera file after the robot file, or drop --camera-inverse");
+      }
+      Matrix16Options matrix_options;
+      matrix_options.unit = options.units.value_or(LengthUnit::kMetre);
+      matrix_options.robot_inverse = options.robot_inverse;
+      matrix_options.camera_inverse = options.camera_inverse;
+      const std::string robot = ReadFile(inputs[0]);
+      if (count == 1) return ParseMatrix16(robot, inputs[0], std::nullopt, "", matrix_options);
+      const std::string camera = ReadFile(inputs[1]);
+      return ParseMatrix16(robot, inputs[0], std::string_view(camera), inputs[1], matrix_options);
+    }
+  }
+  Fail("--format", 0, "unknown import format", "use one of " + ImportFormatList());
+}
+
+}  // namespace hecal::io

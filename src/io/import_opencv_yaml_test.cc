@@ -1,0 +1,133 @@
+#include "hecal/io/import_opencv_yaml.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
+#include "hecal/io/import_moveit.h"
+#include "hecal/io/import_tabb.h"
+
+namespace hecal::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kSource = std::string(HECAL_SOURCE_DIR);
+// Hand-made fixtures in hecal's opencv-yaml layout (src/io/testdata/README.md).
+const std::string kTabbMm = kSource + "/src/io/testdata/opencv_handeye_tabb_mm.yml";
+const std::string kMoveit = kSource + "/src/io/testdata/opencv_handeye_moveit.yml";
+
+ImportedPoses Tabb() {
+  const std::string dir = kSource + "/data/tabb-rwhe-dataset1/";
+  return ParseTabb(ReadFile(dir + "robot_cali.txt"), "robot_cali.txt", ReadFile(dir + "cali.txt"),
+                   "cali.txt");
+}
+
+TEST(ImportOpenCvYaml, RotationMatricesAndVectorsInMillimetres) {
+  const ImportedPoses poses =
+      ParseOpenCvHandEyeYaml(ReadFile(kTabbMm), kTabbMm, LengthUnit::kMillimetre);
+  const ImportedPoses tabb = Tabb();
+  ASSERT_EQ(poses.robot.rows.size(), 12u);
+  ASSERT_EQ(poses.camera->rows.size(), 12u);
+  EXPECT_EQ(poses.robot.unit, LengthUnit::kMillimetre);
+  for (size_t i = 0; i < 12; ++i) {
+    EXPECT_TRUE(poses.robot.rows[i].pose.isApprox(tabb.robot.rows[i].pose, 1e-9)) << i;
+    EXPECT_TRUE(poses.camera->rows[i].pose.isApprox(tabb.camera->rows[i].pose, 1e-9)) << i;
+    EXPECT_EQ(*poses.robot.rows[i].id, *tabb.robot.rows[i].id);  // ids: [image0, ...]
+  }
+  EXPECT_THAT(poses.robot_notes[3], HasSubstr("gripper2base = T_base_gripper, used as is"));
+  // Without --units mm the same numbers are read as metres: 1000 times too far.
+  const ImportedPoses metres =
+      ParseOpenCvHandEyeYaml(ReadFile(kTabbMm), kTabbMm, LengthUnit::kMetre);
+  EXPECT_NEAR(metres.camera->rows[0].pose.translation().norm() /
+                  tabb.camera->rows[0].pose.translation().norm(),
+              1000.0, 1e-6);
+}
+
+TEST(ImportOpenCvYaml, InverseKeysAreInverted) {
+  const ImportedPoses poses =
+      ParseOpenCvHandEyeYaml(ReadFile(kMoveit), kMoveit, LengthUnit::kMetre);
+  const std::string path = kSource + "/data/moveit-calibration/pose_samples.json";
+  const ImportedPoses moveit = ParseMoveitSamples(ReadFile(path), path);
+  ASSERT_EQ(poses.robot.rows.size(), 10u);
+  for (size_t i = 0; i < 10; ++i) {
+    // T_base2gripper (the base in the gripper frame) becomes T_base_gripper = M_eef.
+    EXPECT_TRUE(poses.robot.rows[i].pose.isApprox(moveit.robot.rows[i].pose, 1e-12)) << i;
+    EXPECT_TRUE(poses.camera->rows[i].pose.isApprox(moveit.camera->rows[i].pose, 1e-12)) << i;
+  }
+  EXPECT_EQ(*poses.robot.rows[9].id, "9");
+  EXPECT_THAT(poses.robot_notes[3], HasSubstr("INVERTED"));
+}
+
+std::string List(const std::string& key, const std::string& entry, int count) {
+  std::string text = key + ":\n";
+  for (int i = 0; i < count; ++i) text += "   - " + entry + "\n";
+  return text;
+}
+
+const std::string kR = "[1, 0, 0, 0, 1, 0, 0, 0, 1]";
+const std::string kT = "[0.1, 0.2, 0.3]";
+
+std::string Arrays(int robot, int camera) {
+  return List("R_gripper2base", kR, robot) + List("t_gripper2base", kT, robot) +
+         List("R_target2cam", kR, camera) + List("t_target2cam", kT, camera);
+}
+
+TEST(ImportOpenCvYaml, PlainListsAndCameraInverse) {
+  const std::string text = List("R_gripper2base", kR, 1) + List("t_gripper2base", kT, 1) +
+                           List("T_cam2target", "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 5]]", 1);
+  const ImportedPoses poses = ParseOpenCvHandEyeYaml(text, "h.yml", LengthUnit::kMetre);
+  EXPECT_TRUE(poses.robot.rows[0].pose.translation().isApprox(Eigen::Vector3d(0.1, 0.2, 0.3)));
+  EXPECT_TRUE(poses.camera->rows[0].pose.translation().isApprox(Eigen::Vector3d(0, 0, -5)));
+}
+
+void ExpectError(const std::string& text, const std::string& part) {
+  try {
+    ParseOpenCvHandEyeYaml(text, "h.yml", LengthUnit::kMetre);
+    ADD_FAILURE() << "no error; expected " << part;
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr(part)) << text;
+  }
+}
+
+TEST(ImportOpenCvYaml, RejectsBadInput) {
+  ExpectError("", "not a YAML map");
+  ExpectError("%YAML:1.0\nR_gripper2base: [\n", "not valid YAML");
+  ExpectError("foo: 1\n", "no robot poses");
+  ExpectError(List("R_gripper2base", kR, 1) + List("t_gripper2base", kT, 1), "no camera poses");
+  ExpectError(Arrays(2, 1), "there are 2 robot poses");
+  ExpectError(List("R_gripper2base", kR, 2) + List("t_gripper2base", kT, 1) +
+                  List("R_target2cam", kR, 2) + List("t_target2cam", kT, 2),
+              "R_gripper2base has 2 entries but t_gripper2base has 1");
+  ExpectError(
+      List("R_gripper2base", kR, 1) + List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
+      "R_gripper2base has no matching t_gripper2base");
+  ExpectError(Arrays(1, 1) + List("T_base2gripper", "[1]", 1), "robot poses are given twice");
+  ExpectError("R_gripper2base: []\nt_gripper2base: []\nT_target2cam: []\n", "empty");
+  ExpectError("R_gripper2base:\nt_gripper2base:\n", "R_gripper2base is not a list of matrices");
+  ExpectError("R_gripper2base: 5\nt_gripper2base: []\n", "not a list of matrices");
+  ExpectError(List("R_gripper2base", "[1, 0, 0, 0]", 1) + List("t_gripper2base", kT, 1) +
+                  List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
+              "neither a 3x3 rotation matrix nor a 3x1 rotation vector");
+  ExpectError(List("R_gripper2base", "[1, 0, 0, 0, 1, 0, 0, 0, 1.1]", 1) +
+                  List("t_gripper2base", kT, 1) + List("R_target2cam", kR, 1) +
+                  List("t_target2cam", kT, 1),
+              "not orthonormal");
+  ExpectError(List("R_gripper2base", kR, 1) + List("t_gripper2base", "[1, 2]", 1) +
+                  List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
+              "not a 3-vector");
+  ExpectError(List("R_gripper2base", kR, 1) + List("t_gripper2base", "[.inf, 2, 3]", 1) +
+                  List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
+              "non-finite");
+  ExpectError(Arrays(1, 1) + "ids: [a, b]\n", "ids has 2 entries for 1 poses");
+  ExpectError(Arrays(2, 2) + "ids: [a, a]\n", "repeats");
+  ExpectError(List("T_gripper2base", "[[1, 0], [0, 1]]", 1) + List("R_target2cam", kR, 1) +
+                  List("t_target2cam", kT, 1),
+              "not a 4x4 or 3x4 transform");
+  ExpectError(List("T_gripper2base", "[[1, 0, 0, 0], [0, 1]]", 1), "row 1 has 2 values");
+  ExpectError(List("T_gripper2base", "{rows: 4, cols: 4, dt: u, data: []}", 1), "dt");
+}
+
+}  // namespace
+}  // namespace hecal::io

@@ -1,0 +1,171 @@
+#include "hecal/io/import_tabb.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
+#include "testing/pose_spread.h"
+
+namespace hecal::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kDir = std::string(HECAL_SOURCE_DIR) + "/data/tabb-rwhe-dataset1/";
+
+ImportedPoses LoadTabb() {
+  return ParseTabb(ReadFile(kDir + "robot_cali.txt"), kDir + "robot_cali.txt",
+                   ReadFile(kDir + "cali.txt"), kDir + "cali.txt");
+}
+
+// Tabb's own result (rwhe_AA_RPI/transformations.txt, mm): X = wTb = T_target_base and
+// Z = cTg = T_camera_gripper, with target2cam_i · X = Z · base2gripper_i.
+struct TabbAnswer {
+  Pose T_target_base;
+  Pose T_camera_gripper;
+};
+
+TabbAnswer ReadAnswer() {
+  std::istringstream in(ReadFile(kDir + "rwhe_AA_RPI/transformations.txt"));
+  std::string label;
+  Eigen::Matrix4d X;
+  Eigen::Matrix4d Z;
+  in >> label;  // X
+  for (int k = 0; k < 16; ++k) in >> X(k / 4, k % 4);
+  in >> label >> label;  // Z 0
+  for (int k = 0; k < 16; ++k) in >> Z(k / 4, k % 4);
+  EXPECT_TRUE(in) << "cannot parse transformations.txt";
+  const auto to_pose = [](const Eigen::Matrix4d& M) {
+    return testing::PoseOf(M.topLeftCorner<3, 3>(), M.topRightCorner<3, 1>() * 1e-3);
+  };
+  return {to_pose(X), to_pose(Z)};
+}
+
+// Eye-in-hand: T_base_target_i = T_base_gripper_i · X · T_camera_target_i, X = T_gripper_camera.
+std::vector<Pose> BaseTarget(const ImportedPoses& poses, const Pose& X, bool invert_robot) {
+  std::vector<Pose> targets;
+  for (size_t i = 0; i < poses.robot.rows.size(); ++i) {
+    const Pose& robot = poses.robot.rows[i].pose;
+    targets.push_back((invert_robot ? robot.inverse() : robot) * X * poses.camera->rows[i].pose);
+  }
+  return targets;
+}
+
+TEST(ImportTabb, RealDataMatchesTabbsAnswerPosePerPose) {
+  const ImportedPoses poses = LoadTabb();
+  ASSERT_EQ(poses.robot.rows.size(), 88u);
+  ASSERT_EQ(poses.camera->rows.size(), 88u);
+  EXPECT_EQ(poses.robot.unit, LengthUnit::kMillimetre);
+  EXPECT_EQ(poses.camera->unit, LengthUnit::kMillimetre);
+  EXPECT_EQ(poses.robot.rows[0].id, "image0");
+  EXPECT_EQ(poses.camera->rows[87].id, "image87");
+  EXPECT_EQ(poses.robot.rows[87].id, "image87");
+  // cali.txt line 1: t = (-267.636, 270.545, 2122.28) mm, stored in metres.
+  EXPECT_NEAR(poses.camera->rows[0].pose.translation().z(), 2.12228, 1e-9);
+
+  // SOURCE.md: per-pose consistency with Tabb's X and Z: mean 0.39 deg / 6.4 mm, max 1.8 deg /
+  // 15.7 mm (pose 76).
+  const TabbAnswer answer = ReadAnswer();
+  const Pose T_gripper_camera = answer.T_camera_gripper.inverse();
+  const Pose T_base_target = answer.T_target_base.inverse();
+  const std::vector<Pose> targets = BaseTarget(poses, T_gripper_camera, false);
+  const testing::Spread spread = testing::SpreadAround(targets, T_base_target);
+  std::printf(
+      "[tabb] per-pose consistency: mean %.3f deg / %.2f mm, max %.3f deg / %.2f mm "
+      "(pose %zu)\n",
+      spread.mean_rotation_deg, spread.mean_translation * 1e3, spread.max_rotation_deg,
+      spread.max_translation * 1e3, spread.worst_translation);
+  EXPECT_NEAR(spread.mean_rotation_deg, 0.39, 0.02);
+  EXPECT_NEAR(spread.mean_translation, 0.0064, 0.0003);
+  EXPECT_NEAR(spread.max_rotation_deg, 1.82, 0.05);
+  EXPECT_NEAR(spread.max_translation, 0.0157, 0.0005);
+  EXPECT_EQ(spread.worst_translation, 76u);
+
+  // Without the inverse (robot_cali.txt read as T_base_gripper) nothing is consistent.
+  const testing::Spread wrong =
+      testing::SpreadAround(BaseTarget(poses, T_gripper_camera, true), T_base_target);
+  EXPECT_GT(wrong.mean_rotation_deg, 30.0);
+  EXPECT_GT(wrong.mean_translation, 0.5);
+}
+
+TEST(ImportTabb, IntrinsicsComeFromCaliTxt) {
+  const ImportedPoses poses = LoadTabb();
+  ASSERT_TRUE(poses.intrinsics.has_value());
+  EXPECT_DOUBLE_EQ(poses.intrinsics->fx, 1081.59);
+  EXPECT_DOUBLE_EQ(poses.intrinsics->fy, 1083.49);
+  EXPECT_DOUBLE_EQ(poses.intrinsics->cx, 317.249);
+  EXPECT_DOUBLE_EQ(poses.intrinsics->cy, 245.791);
+  ASSERT_EQ(poses.intrinsics->distortion.size(), 5u);
+  EXPECT_DOUBLE_EQ(poses.intrinsics->distortion[0], -0.223875);
+  EXPECT_DOUBLE_EQ(poses.intrinsics->distortion[4], -0.0108216);
+}
+
+const std::string kRobotOne =
+    "1\n"
+    "1 0 0 10\n"
+    "0 1 0 20\n"
+    "0 0 1 30\n"
+    "0 0 0 1\n";
+const std::string kCameraLine =
+    "a.png 1000 0 320 0 1000 240 0 0 1 1 0 0 0 1 0 0 0 1 1 2 3 0.1 0.2 0 0 0.3 0 0 0 \n";
+
+TEST(ImportTabb, InvertsTheRobotPoseAndKeepsMillimetres) {
+  const ImportedPoses poses = ParseTabb(kRobotOne, "r.txt", "1\n" + kCameraLine, "c.txt");
+  // B = T_gripper_base with t = (10, 20, 30) mm → T_base_gripper has t = −(10, 20, 30) mm.
+  EXPECT_TRUE(
+      poses.robot.rows[0].pose.translation().isApprox(Eigen::Vector3d(-0.01, -0.02, -0.03), 1e-12));
+  EXPECT_TRUE(poses.camera->rows[0].pose.translation().isApprox(
+      Eigen::Vector3d(0.001, 0.002, 0.003), 1e-12));
+  EXPECT_EQ(poses.robot.rows[0].id, "a");
+}
+
+void ExpectError(const std::string& robot, const std::string& camera, const std::string& part) {
+  try {
+    ParseTabb(robot, "r.txt", camera, "c.txt");
+    ADD_FAILURE() << "no error; expected " << part;
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr(part));
+  }
+}
+
+TEST(ImportTabb, RejectsBadInput) {
+  const std::string camera = "1\n" + kCameraLine;
+  ExpectError("", camera, "r.txt: the file is empty");
+  ExpectError("x\n", camera, "r.txt:1: the first line should be the number of poses");
+  ExpectError("2\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera,
+              "r.txt:1: N is 2 but the file has 1 poses");
+  ExpectError("1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n", camera, "has only 3 of its 4 matrix rows");
+  ExpectError("1\n1 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "r.txt:2: expected 4 numbers");
+  ExpectError("1\n1 0 0 0\n0 1 0 nan\n0 0 1 0\n0 0 0 1\n", camera, "non-finite");
+  ExpectError("1\n1 0 0 0\n0 1 0 x\n0 0 1 0\n0 0 0 1\n", camera, "r.txt:3: field 4");
+  ExpectError("1\n1 0 0 0\n0 0.9 0 0\n0 0 1 0\n0 0 0 1\n", camera, "not orthonormal");
+  ExpectError(kRobotOne, "2\n" + kCameraLine, "c.txt:1: N is 2 but the file has 1 image lines");
+  ExpectError(kRobotOne, "1\na.png 1 2 3\n", "c.txt:2: expected 30 fields");
+  ExpectError(kRobotOne, "1\n" + std::string(kCameraLine).replace(0, 5, "12345"),
+              "should be the image name");
+  ExpectError(kRobotOne + "\n" + "1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "N is 1");
+  ExpectError("2\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",
+              camera, "has 2 robot poses but c.txt has 1 camera poses");
+  ExpectError(kRobotOne, "2\n" + kCameraLine + kCameraLine, "appears twice");
+  // Files given the wrong way round say so.
+  ExpectError(camera, kRobotOne, "looks like cali.txt");
+  // 6-decimal rotations pass (the printed precision is allowed for), 1e-4 errors do not.
+  ExpectError("1\n1 0 0 0\n0 1.0001 0 0\n0 0 1 0\n0 0 0 1\n", camera,
+              "more than the 1.0e-04 allowed for numbers printed to +-5.0e-05");
+  ExpectError("1\n1 0 0 0\n0 1.00004 0 0\n0 0 1 0\n0 0 0 1\n", camera,
+              "= 8.0e-05, more than the 3.0e-05 allowed" /* 6 x 5e-6 */);
+}
+
+TEST(ImportTabb, AllowsForTheSixDecimalsOfTheRealFiles) {
+  // Rotation about z by 0.3 rad printed with 6 decimals: off by ~1e-6, accepted.
+  const std::string robot = "1\n0.955336 -0.295520 0 0\n0.295520 0.955336 0 0\n0 0 1 0\n0 0 0 1\n";
+  EXPECT_NO_THROW(ParseTabb(robot, "r.txt", "1\n" + kCameraLine, "c.txt"));
+}
+
+}  // namespace
+}  // namespace hecal::io
