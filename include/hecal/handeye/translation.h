@@ -1,0 +1,18 @@
+// The translation step shared by every rotation-then-translation solver (Tsai–Lenz eq. 16,
+// Park–Martin, Horaud–Dornaika, Chou–Kamel, Shiu–Ahmad): with R_X known, each motion gives
+//        (R_Aij − I) · t_X = R_X · t_Bij − t_Aij,
+// solved in least squares over all motions by accumulating the 3×3 normal equations.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hecal/handeye/motion.h"
+
+namespace hecal::handeye {
+
+// Throws DegenerateError when the normal matrix is singular (all rotation axes parallel).
+Eigen::Vector3d SolveTranslation(const std::vector<Motion>& motions, const Eigen::Matrix3d& R_X);
+
+}  // namespace hecal::handeye

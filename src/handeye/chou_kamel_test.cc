@@ -1,0 +1,71 @@
+#include "hecal/handeye/chou_kamel.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "hecal/core/error.h"
+#include "hecal/geometry/so3.h"
+#include "hecal/sim/noise.h"
+#include "testing/handeye_solver_suite.h"
+
+namespace hecal::handeye {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+Motion MotionFor(const Pose& X, const Eigen::Vector3d& rotation_vector, std::mt19937_64& rng) {
+  const Pose B = MakePose(so3::Exp(rotation_vector), testing::RandomPose(rng).translation());
+  return {X * B * X.inverse(), B, 0, 1};
+}
+
+// Unit axes weigh every motion equally, so motions that barely rotate — their axes are noise —
+// must not enter: with 30 noisy motions of 0.05°–0.5° (axes essentially random) next to 10 good
+// ones, the estimate stays at the accuracy of the good ones.
+TEST(ChouKamel, NearZeroRotationsDoNotEnterTheUnitAxisSystem) {
+  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.05 * kDegree, 0.0};
+  std::mt19937_64 rng(51);
+  double worst_good = 0.0, worst_all = 0.0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Pose X = testing::RandomPose(rng, 0.1);
+    std::vector<Motion> motions;
+    std::uniform_real_distribution<double> large(0.5, 3.0), small(0.05 * kDegree, 0.5 * kDegree);
+    for (int k = 0; k < 10; ++k) {
+      motions.push_back(MotionFor(X, large(rng) * testing::RandomUnitVector(rng), rng));
+    }
+    for (Motion& m : motions) m.A = sim::AddNoise(m.A, noise, rng);
+    worst_good = std::max(worst_good, testing::Error(SolveChouKamel(motions), X).rotation);
+    for (int k = 0; k < 30; ++k) {
+      Motion m = MotionFor(X, small(rng) * testing::RandomUnitVector(rng), rng);
+      m.A = sim::AddNoise(m.A, noise, rng);
+      motions.push_back(m);
+    }
+    worst_all = std::max(worst_all, testing::Error(SolveChouKamel(motions), X).rotation);
+  }
+  std::printf("worst rotation error: %.3f deg from 10 good motions, %.3f deg with 30 tiny ones\n",
+              worst_good / kDegree, worst_all / kDegree);
+  EXPECT_LT(worst_all, 1.5 * worst_good);
+}
+
+// When the large motions alone do not determine q (their axes are parallel), the solver falls
+// back to every motion that rotates by more than kMinRotation.
+TEST(ChouKamel, FallsBackToSmallerMotionsWhenTheLargeOnesShareAnAxis) {
+  std::mt19937_64 rng(52);
+  const Pose X = testing::RandomPose(rng, 0.1);
+  const Eigen::Vector3d z = testing::RandomUnitVector(rng);
+  std::vector<Motion> motions;
+  for (double angle : {1.0, 2.0, 3.0}) motions.push_back(MotionFor(X, angle * z, rng));
+  for (int k = 0; k < 2; ++k) {  // 0.05 rad < 10% of 3 rad
+    motions.push_back(MotionFor(X, 0.05 * testing::RandomUnitVector(rng), rng));
+  }
+  testing::ExpectPoseNear(SolveChouKamel(motions), X, 1e-9, "X");
+  motions.resize(3);
+  EXPECT_THROW(SolveChouKamel(motions), DegenerateError);
+}
+
+}  // namespace
+}  // namespace hecal::handeye

@@ -1,0 +1,158 @@
+#include "hecal/handeye/observability.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hecal/core/error.h"
+#include "hecal/geometry/so3.h"
+#include "testing/handeye_solver_suite.h"
+#include "testing/moveit_dataset.h"
+#include "testing/tabb_dataset.h"
+
+namespace hecal::handeye {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// The DegenerateError thrown for `problem` (fails the test when nothing is thrown).
+DegenerateError Thrown(const Problem& problem) {
+  try {
+    CheckObservability(problem);
+  } catch (const DegenerateError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "no DegenerateError";
+  return DegenerateError("", "");
+}
+
+// Noise-free data whose stations' orientations are R_i = R0 · Exp(angle_i · axis_i).
+Problem StationsWithAxes(const std::vector<Eigen::Vector3d>& rotation_vectors, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const Eigen::Matrix3d R0 = testing::RandomRotation(rng);
+  std::vector<Pose> T_target_camera;
+  for (const Eigen::Vector3d& omega : rotation_vectors) {
+    T_target_camera.push_back(
+        MakePose(R0 * so3::Exp(omega), testing::RandomPose(rng, 0.5).translation()));
+  }
+  return testing::CaseFromCameraPoses(handeye::Setup::kEyeInHand, T_target_camera, rng)
+      .MeasuredProblem();
+}
+
+TEST(Observability, AcceptsTheThesisProtocol) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    for (int n : {3, 5, 15, 50}) {
+      EXPECT_NO_THROW(CheckObservability(testing::ThesisCase(setup, n, 40 + n).MeasuredProblem()));
+      EXPECT_NO_THROW(CheckObservability(
+          testing::ThesisCase(setup, n, 60 + n, 1.0 * kDegree, 1e-3).MeasuredProblem()));
+    }
+    EXPECT_NO_THROW(CheckObservability(testing::WideRotationCase(setup, 5, 7).MeasuredProblem()));
+  }
+}
+
+// Real data: small rotations (0–14°) mixed with pure translations, and rotations up to 175°.
+TEST(Observability, AcceptsTheRealDataSets) {
+  const testing::TabbDataset tabb = testing::LoadTabbDataset();
+  ASSERT_EQ(tabb.T_base_gripper.size(), 88u);
+  EXPECT_NO_THROW(CheckObservability(
+      MakeProblem(handeye::Setup::kEyeInHand, tabb.T_base_gripper, tabb.T_camera_target)));
+  const Problem moveit = testing::LoadMoveItProblem();
+  ASSERT_EQ(moveit.A.size(), 50u);
+  EXPECT_NO_THROW(CheckObservability(moveit));
+}
+
+TEST(Observability, FewerThanThreeStations) {
+  for (int n : {0, 1, 2}) {
+    const DegenerateError error =
+        Thrown(testing::ThesisCase(handeye::Setup::kEyeInHand, n, 3).MeasuredProblem());
+    EXPECT_NE(std::string(error.what()).find(std::to_string(n) + " station"), std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("at least 3"), std::string::npos) << error.what();
+  }
+}
+
+TEST(Observability, PureTranslationsLeaveTheTranslationUnobservable) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const DegenerateError error =
+        Thrown(testing::PureTranslationCase(setup, 6, 2).MeasuredProblem());
+    EXPECT_NE(error.unobservable().find("translation of X"), std::string::npos) << error.what();
+    EXPECT_NE(error.unobservable().find(XFrameName(setup)), std::string::npos) << error.what();
+    EXPECT_NE(error.unobservable().find("only translates"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("fix: rotate the robot"), std::string::npos);
+  }
+  // Rotations of 0.03° between stations still count as pure translations.
+  const Problem tiny =
+      StationsWithAxes({Eigen::Vector3d::Zero(), Eigen::Vector3d(5e-4, 0.0, 0.0),
+                        Eigen::Vector3d(0.0, 5e-4, 0.0), Eigen::Vector3d(0.0, 0.0, 1e-4)},
+                       3);
+  EXPECT_NE(Thrown(tiny).unobservable().find("only translates"), std::string::npos);
+}
+
+TEST(Observability, ParallelAxesLeaveTheTranslationAlongTheAxisUnobservable) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const DegenerateError error = Thrown(testing::ParallelAxesCase(setup, 6, 1).MeasuredProblem());
+    EXPECT_NE(error.unobservable().find("along the common rotation axis"), std::string::npos)
+        << error.what();
+    EXPECT_NE(error.unobservable().find(setup == handeye::Setup::kEyeInHand ? "gripper frame"
+                                                                            : "robot base frame"),
+              std::string::npos)
+        << error.what();
+    EXPECT_NE(error.unobservable().find("parallel axes"), std::string::npos) << error.what();
+  }
+}
+
+// The reported axis is the common rotation axis of the robot motions (up to sign), expressed in
+// the frame of X's translation (gripper for eye-in-hand).
+TEST(Observability, ParallelAxesMessageNamesTheAxis) {
+  const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, -2.0) / 3.0;
+  const Problem problem = StationsWithAxes({0.3 * axis, -1.2 * axis, 2.0 * axis, 0.9 * axis}, 11);
+  const Eigen::Vector3d axis_A =
+      so3::Log(problem.A[1].linear().transpose() * problem.A[0].linear()).normalized();
+  char expected[64];
+  const double sign = axis_A.x() >= 0.0 ? 1.0 : -1.0;
+  std::snprintf(expected, sizeof(expected), "(%.3f, %.3f, %.3f)", sign * axis_A.x(),
+                sign * axis_A.y(), sign * axis_A.z());
+  char flipped[64];
+  std::snprintf(flipped, sizeof(flipped), "(%.3f, %.3f, %.3f)", -sign * axis_A.x(),
+                -sign * axis_A.y(), -sign * axis_A.z());
+  const std::string message = Thrown(problem).unobservable();
+  EXPECT_TRUE(message.find(expected) != std::string::npos ||
+              message.find(flipped) != std::string::npos)
+      << message << " expected " << expected;
+}
+
+// Axes a small but real angle apart are accepted; closer than kParallelAxes they are not.
+TEST(Observability, AxisSpreadThreshold) {
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
+  for (double spread : {1.0 * kDegree, 0.2 * kDegree, 1e-5}) {
+    const Eigen::Vector3d tilted = so3::Exp(spread * Eigen::Vector3d::UnitZ()) * x;
+    const Problem problem =
+        StationsWithAxes({Eigen::Vector3d::Zero(), 1.0 * x, 1.0 * tilted, -1.0 * x}, 5);
+    if (spread > kParallelAxes) {
+      EXPECT_NO_THROW(CheckObservability(problem)) << spread;
+    } else {
+      EXPECT_THROW(CheckObservability(problem), DegenerateError) << spread;
+    }
+  }
+}
+
+// Many stations that only translate plus a few that rotate about two axes: observable.
+TEST(Observability, PureTranslationStationsAmongRotatingOnesAreFine) {
+  std::vector<Eigen::Vector3d> omegas(20, Eigen::Vector3d::Zero());
+  omegas.push_back(Eigen::Vector3d(0.1, 0.0, 0.0));
+  omegas.push_back(Eigen::Vector3d(0.0, 0.1, 0.0));
+  EXPECT_NO_THROW(CheckObservability(StationsWithAxes(omegas, 9)));
+}
+
+TEST(Observability, MismatchedPoseCountsAreAPreconditionViolation) {
+  Problem problem = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 1).MeasuredProblem();
+  problem.B.pop_back();
+  EXPECT_THROW(CheckObservability(problem), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hecal::handeye
