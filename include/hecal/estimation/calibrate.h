@@ -1,0 +1,72 @@
+// hecal's top-level hand–eye calibration: any method by name, residuals, outlier flags,
+// warnings. This is what `hecal calibrate` calls (DESIGN.md §4–5).
+//
+// Methods: the closed-form solvers through handeye::SolveClosedForm; `strobl` (strobl.h) and
+// `ml` (ml.h, the default) refined from every closed-form solution that succeeds
+// (initialization.h). Degenerate data are rejected first (handeye::CheckObservability).
+//
+// Residual of station i (problem.h, Z = A_i X B_i):  r_i = Log(Z⁻¹ · A_i · X · B_i) ∈ R⁶, (ω, v)
+// order, right perturbation of Z. Reported per station: the rotation angle |ω| and the
+// translation |t| of Z⁻¹ A_i X B_i (the target pose predicted by station i, seen from the
+// estimate), and the whitened residual sqrt(r_iᵀ Σ_i⁻¹ r_i / 6) with Σ_i the first-order
+// covariance of r_i under the noise model (station_covariance.h): ≈ 1 for an inlier.
+// Noise model: --robot-sigma / --camera-sigma when given; otherwise estimated from the residuals
+// (noise_estimation.h; equal split between robot and camera — only their combined effect is
+// identifiable from poses) and a warning says so.
+// Outliers: a station is flagged when its studentised residual exceeds the 3σ level (the χ²
+// quantile of p = 0.0027 for its degrees of freedom; noise_estimation.h), with flagged
+// stations excluded from the sigma estimate so that they cannot hide themselves. Flagged
+// stations stay in the estimate (use a robust loss to down-weight them); a warning lists them.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/geometry/types.h"
+#include "hecal/handeye/methods.h"
+#include "hecal/handeye/problem.h"
+
+namespace hecal::estimation {
+
+struct CalibrateOptions {
+  handeye::Method method = handeye::Method::kMl;
+  std::optional<PoseSigma> robot_sigma;   // --robot-sigma; estimated when absent
+  std::optional<PoseSigma> camera_sigma;  // --camera-sigma; estimated when absent
+  // Robust loss for ml: "none" | "huber" | "cauchy" (robust_loss.h); scale in whitened units
+  // per component (3: down-weight stations beyond the outlier level).
+  std::string robust_loss = "none";
+  double robust_scale = 3.0;
+};
+
+struct StationResidual {
+  double rotation = 0.0;     // radians, |ω| of r_i
+  double translation = 0.0;  // metres, |translation of Z⁻¹ A_i X B_i|
+  double whitened = 0.0;     // sqrt(r_iᵀ Σ_i⁻¹ r_i / 6): ≈ 1 for an inlier
+  bool outlier = false;      // studentised residual beyond the 3σ level
+};
+
+struct CalibrationResult {
+  handeye::Method method = handeye::Method::kMl;
+  Pose X = Pose::Identity();
+  Pose Z = Pose::Identity();
+  // Right-perturbation covariances, (rx, ry, rz, tx, ty, tz), radians and metres. Present when
+  // the method provides one (ml: Gauss–Newton inverse information of the whitened problem).
+  std::optional<Matrix6d> covariance_X;
+  std::optional<Matrix6d> covariance_Z;
+  std::vector<StationResidual> residuals;  // one per station, in problem order
+  double rotation_rms = 0.0;               // radians
+  double translation_rms = 0.0;            // metres
+  PoseSigma robot_sigma;                   // used (given or estimated)
+  PoseSigma camera_sigma;                  // used (given or estimated)
+  bool sigmas_estimated = false;
+  std::vector<std::string> warnings;
+};
+
+// Throws hecal::DegenerateError on degenerate data (handeye/observability.h), hecal::InputError
+// for invalid options (negative or all-zero sigmas, unknown robust loss; the source named is the
+// CLI flag).
+CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options);
+
+}  // namespace hecal::estimation

@@ -1,0 +1,27 @@
+// Starting points for the iterative refinements (ml, strobl): every closed-form solver of
+// handeye/methods.h run on the data. Initialisation must never be the weak point (issue 3: at
+// n = 5, σ = 1 mm / 1° a single Park–Martin start lands in a wrong local minimum in ~10% of
+// trials), so the refinements start from all of them and keep the lowest final cost. A solver
+// that throws (e.g. Daniilidis rejecting every motion pair) is skipped; degenerate data are
+// rejected before (CheckObservability) by the caller.
+#pragma once
+
+#include <vector>
+
+#include "hecal/handeye/methods.h"
+#include "hecal/handeye/problem.h"
+
+namespace hecal::estimation {
+
+struct InitialSolution {
+  handeye::Method method;
+  handeye::Solution solution;
+};
+
+// The closed-form solutions that succeeded, in AllMethods() order; empty if none did.
+std::vector<InitialSolution> InitialSolutions(const handeye::Problem& problem);
+
+// Just the solutions.
+std::vector<handeye::Solution> Solutions(const std::vector<InitialSolution>& initial);
+
+}  // namespace hecal::estimation

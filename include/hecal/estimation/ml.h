@@ -1,0 +1,70 @@
+// Method `ml` (hecal's default): the maximum-likelihood estimate of X and Z jointly from the
+// ABSOLUTE station poses (issue 3, "Refinement").
+//
+// Why absolute poses: the AX = XB motions A_ij = A_j⁻¹ A_i share measurements, so their noise is
+// correlated and no per-motion weighting is correct; the n loops Z = A_i X B_i have independent
+// noise (one robot and one camera measurement each).
+//
+// Cost (Gauss–Helmert maximum likelihood to first order):
+//        minimise over X, Z ∈ SE(3):   Σ_i ρ( r_iᵀ Σ_i⁻¹ r_i ),   r_i = Log(Z⁻¹ A_i X B_i)
+// with Σ_i the first-order covariance of r_i from the robot and camera noise
+// (station_covariance.h; it depends on X through the lever arms, so it is evaluated at the
+// current estimate and refreshed until X stops moving — 1e-3 rad / 1e-3·L), ρ the optional
+// robust loss (robust_loss.h). Solved with Ceres (Levenberg–Marquardt, dense QR) on
+// SE(3) × SE(3) with right perturbations and the analytic Jacobians of loop_residual.h.
+//
+// Noise levels: from --robot-sigma / --camera-sigma when given; otherwise estimated from the
+// residuals by REML variance components (noise_estimation.h: equal split between robot and
+// camera, one rotation and one translation scale, 6n − 12 degrees of freedom), alternating
+// with the pose estimate until the variances change by less than 1e-3 (relative).
+//
+// Multi-start: every start (normally all closed-form solutions, initialization.h) is refined
+// with the same initial noise model and one common whitening (Σ_i evaluated at the start of
+// lowest negative log-likelihood Σ ρ(r_iᵀΣ_i⁻¹r_i) + Σ log det Σ_i; Σ_i depends on X only
+// through the lever arms, so this moves no minimum and makes the costs directly comparable);
+// the lowest-cost optimum is kept and then refined with Σ_i refreshed at it. Starts are tried
+// in order of their initial cost; a start within 2° (and 0.035·L in translation) of an optimum
+// already found, for both X and Z, is skipped: it lies in that optimum's basin (wrong minima
+// of these problems are ≥ 9° away in the n = 5, σ = 1 study), and skipping keeps the typical
+// cost at a few solves.
+// Covariance: the Gauss–Newton inverse information (Σ_i w_i J_iᵀ Σ_i⁻¹ J_i)⁻¹ at the optimum
+// (12 × 12 over (δX, δZ), right perturbations, (ω, v) order; w_i = ρ'(s_i) the robust weights,
+// 1 without a robust loss), with the estimated variances when the sigmas were estimated.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "hecal/estimation/noise_estimation.h"
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/estimation/robust_loss.h"
+#include "hecal/handeye/problem.h"
+
+namespace hecal::estimation {
+
+struct MlOptions {
+  std::optional<PoseSigma> robot_sigma;   // estimated when absent (see above)
+  std::optional<PoseSigma> camera_sigma;  // estimated when absent
+  RobustLoss robust_loss = RobustLoss::kNone;
+  double robust_scale = 3.0;      // whitened units per component (robust_loss.h)
+  int max_noise_iterations = 10;  // pose / variance alternations
+};
+
+struct MlResult {
+  Pose X = Pose::Identity();
+  Pose Z = Pose::Identity();
+  Eigen::Matrix<double, 12, 12> covariance;  // (δX, δZ)
+  NoiseEstimate noise;                       // variances used, per-station tests
+  bool sigmas_estimated = false;
+  double cost = 0.0;        // Σ ρ(r_iᵀ Σ_i⁻¹ r_i) at the optimum
+  int solves = 0;           // Ceres solves run (all starts and refreshes)
+  int starts_refined = 0;   // starts actually refined (others were skipped)
+  int distinct_minima = 0;  // distinct optima reached from the starts
+};
+
+// Throws std::invalid_argument when `starts` is empty or the problem has fewer than 3 stations.
+MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::Solution>& starts,
+                  const MlOptions& options);
+
+}  // namespace hecal::estimation

@@ -1,0 +1,117 @@
+// Noise-level estimation from the residuals (variance components) and the per-station outlier
+// test, both on the problem linearised at an estimate (X, Z).
+//
+// Model. Station i's residual r_i = Log(Z⁻¹ A_i X B_i) (loop_residual.h) has, to first order,
+//        r_i ≈ r_i(X, Z) − J_i δ,   Cov(r_i) = Σ_i = Σ_k θ_k Q_ik        (station_covariance.h)
+// with δ = (δX, δZ) ∈ R¹² and the four variances θ = (σ_gr², σ_gt², σ_cr², σ_ct²) of the robot
+// (g) and camera (c) rotation / translation noise. Some θ_k are known (--robot-sigma /
+// --camera-sigma); the others are estimated, possibly tied together in groups that share one
+// value. From absolute poses alone robot and camera noise are NOT separately identifiable in
+// practice (both enter every residual; only the lever-arm structure of Q_ik tells them apart,
+// weakly), so when neither is given hecal ties them: σ_gr = σ_cr (one rotation group) and
+// σ_gt = σ_ct (one translation group) — an equal split of the noise between robot and camera,
+// estimating one rotation and one translation scale from the 6n − 12 degrees of freedom.
+// When one side is given, the other side's two variances are estimated.
+//
+// Estimator: restricted maximum likelihood (REML) of the variance components by Fisher scoring,
+// i.e. iterated Helmert / MINQUE estimation (Koch, "Parameter Estimation and Hypothesis Testing
+// in Linear Models", 2nd ed. 1999, §3.6; Förstner 1979). With W = blockdiag(Σ_i⁻¹) at the
+// current θ, N = Σ J_iᵀ Σ_i⁻¹ J_i, the re-fitted residuals r̂_i = r_i − J_i N⁻¹ Σ_j J_jᵀ Σ_j⁻¹ r_j,
+// P = W − W J N⁻¹ Jᵀ W and Q_g the sum of the components of group g, one step solves
+//        Σ_h tr(P Q_g P Q_h) θ_h = r̂ᵀ W Q_g W r̂ − tr(P Q_g P Q_known)       (one row per group)
+// for the group variances; each row states that the residual energy of a component equals its
+// expectation under the model (unbiased at the current weights). All traces are accumulated
+// per station with 12 × 12 matrices, O(n). (Should the 2 × 2 system be singular, Förstner's
+// ratio update θ_g ← θ_g · r̂ᵀ W Q_g W r̂ / tr(P Q_g) is used.) On a flat likelihood (few stations)
+// this iteration can cycle, so every step is safeguarded: it may not decrease the restricted
+// log-likelihood
+//        ℓ_R(θ) = −½ (Σ_i log det Σ_i + log det N + Σ_i r_iᵀ Σ_i⁻¹ r_i − bᵀ N⁻¹ b)
+// and is halved (geometrically) until it does not; a step to a non-positive variance (the
+// maximum is on the boundary θ_g = 0) is limited to a factor 10 decrease. Converged when the
+// variances change by less than 1e-6 (relative) or no ascent is left. Variances are floored so
+// that σ_t ≥ 1e-3 · σ_r · L and σ_r ≥ 1e-3 · σ_t / L (L = LengthScale; real robots and cameras
+// are far inside this range) and at 1e-30 absolute, so noise-free data give tiny but positive
+// sigmas instead of a division by zero.
+//
+// Outlier test (Baarda's data snooping, multivariate form). Station i's statistic is
+//   included:  T_i = r̂_iᵀ C_i⁺ r̂_i,  C_i = Σ_i − J_i N⁻¹ J_iᵀ  (its residual covariance)
+//   excluded:  T_i = r̂_iᵀ (Σ_i + J_i N⁻¹ J_iᵀ)⁻¹ r̂_i   (prediction from the other stations)
+// ~ χ²(rank C_i) under the model. The station is an outlier when T_i exceeds the χ² quantile of
+// the two-sided 3σ level (p = 0.0027; 20.06 for 6 degrees of freedom). Flagged stations are
+// excluded from the noise estimate and the test is repeated until the flags are stable, so a
+// gross outlier cannot inflate the estimated sigmas and hide itself (at most (n − 3)/2 stations
+// are excluded; beyond that the flags are reported but nothing is excluded).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "hecal/estimation/loop_residual.h"
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/estimation/station_covariance.h"
+#include "hecal/handeye/problem.h"
+
+namespace hecal::estimation {
+
+// One station linearised at (X, Z).
+struct StationLinearization {
+  Vector6d residual;           // r_i
+  Matrix6x12d jacobian;        // ∂r_i/∂(δX, δZ)
+  NoiseComponents components;  // Q_ik at X
+};
+
+std::vector<StationLinearization> LinearizeStations(const handeye::Problem& problem, const Pose& X,
+                                                    const Pose& Z);
+
+// Characteristic length of the data set: RMS camera-to-target distance |t(B_i)| (≥ 1 mm). Used
+// to compare rotations (rad) with translations (m).
+double LengthScale(const handeye::Problem& problem);
+
+// Which variances are known and which are estimated.
+struct NoiseSpec {
+  // Known variances; for estimated ones the starting value (≤ 0: derived from the residuals).
+  NoiseVariances variances{};
+  // −1: known; g ≥ 0: estimated, one shared value per group g (groups 0 and 1 at most).
+  std::array<int, kNumNoiseComponents> group{-1, -1, -1, -1};
+
+  // The rule above: both given → all known; one given → the other side's rotation and
+  // translation estimated; none → equal split (rotation group, translation group).
+  static NoiseSpec FromSigmas(const std::optional<PoseSigma>& robot,
+                              const std::optional<PoseSigma>& camera);
+  bool AnyEstimated() const;
+  int NumGroups() const;
+};
+
+struct StationTest {
+  double chi2 = 0.0;       // r_iᵀ Σ_i⁻¹ r_i at the linearisation point
+  double statistic = 0.0;  // T_i above
+  int dof = 0;             // its degrees of freedom
+  bool outlier = false;    // T_i > χ²_dof(0.9973)
+};
+
+struct NoiseEstimate {
+  NoiseVariances variances{};  // known or estimated, indexed by NoiseComponent
+  std::vector<StationTest> stations;
+  bool converged = true;  // the variance iteration converged (always, if none estimated)
+  int iterations = 0;     // variance iterations (0 if none estimated)
+
+  PoseSigma robot() const;
+  PoseSigma camera() const;
+};
+
+// Estimates the unknown variances of `spec` and tests every station. `length_scale`: see
+// LengthScale. Requires at least 3 stations.
+NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
+                            const NoiseSpec& spec, double length_scale);
+
+// Starting values for the estimated variances of `spec` (known ones copied) from the raw
+// residual energies: a rotation group gets Σ|ω_i|² / Σ tr(ω block of Q_ik); a translation group
+// the same on the v parts, net of what the rotation variances already explain there.
+NoiseVariances InitialNoiseGuess(const std::vector<StationLinearization>& stations,
+                                 const NoiseSpec& spec, double length_scale);
+
+// χ² quantile of the two-sided 3σ level for 1–6 degrees of freedom.
+double ThreeSigmaChiSquare(int dof);
+
+}  // namespace hecal::estimation

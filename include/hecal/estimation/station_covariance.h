@@ -1,0 +1,67 @@
+// First-order covariance of a station's residual r_i = Log(Z⁻¹ A_i X B_i) (loop_residual.h) from
+// the robot and camera measurement noise (pose_sigma.h), and the whitening that turns r_i into
+// a vector of independent unit-variance components.
+//
+// Noise (DESIGN.md §2, right perturbations): the robot reports G̃_i = G_i · Exp(δg),
+// G = T_base_gripper, δg ~ N(0, Σ_g); the camera reports B̃_i = B_i · Exp(δc), δc ~ N(0, Σ_c).
+//  - camera:  E_i → E_i · Exp(δc)                                  ⇒ ∂r/∂δc = Jr⁻¹(r_i)
+//  - robot, eye-in-hand (A_i = G_i):
+//             E_i → Z⁻¹ G_i Exp(δg) X B_i = E_i · Exp(Ad((X B_i)⁻¹) δg)
+//                                                                   ⇒ ∂r/∂δg = Jr⁻¹(r_i) Ad((X
+//                                                                   B_i)⁻¹)
+//  - robot, eye-to-hand (A_i = G_i⁻¹, so the noise enters on the LEFT of A_i: Ã_i = Exp(−δg) A_i):
+//             E_i → Z⁻¹ Exp(−δg) A_i X B_i = E_i · Exp(−Ad((A_i X B_i)⁻¹) δg)
+//                                                                   ⇒ ∂r/∂δg = −Jr⁻¹(r_i) Ad((A_i X
+//                                                                   B_i)⁻¹)
+// (X B_i = T_gripper_target and A_i X B_i ≈ Z = T_gripper_target are the target pose seen from
+// the flange: a rotation error of the robot moves the target by the lever arm |t|, which is why
+// robot rotation noise dominates the translation residuals.)
+// First order at r_i = 0 (Jr⁻¹ → I; the neglected factor is 1 + O(|r_i|)):
+//        Σ_i = J_g Σ_g J_gᵀ + Σ_c,    J_g = ±Ad(T_i),  T_i = (X B_i)⁻¹ | (A_i X B_i)⁻¹,
+// which depends on X and the measurements only. With Σ_g = diag(σ_gr² I, σ_gt² I) and
+// Σ_c = diag(σ_cr² I, σ_ct² I) it is linear in the four variances:
+//        Σ_i = σ_gr² Q_i[kRobotRotation] + σ_gt² Q_i[kRobotTranslation]
+//            + σ_cr² Q_i[kCameraRotation] + σ_ct² Q_i[kCameraTranslation],
+// which is the form the variance-component estimator (noise_estimation.h) works with.
+#pragma once
+
+#include <array>
+
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/geometry/types.h"
+#include "hecal/handeye/problem.h"
+
+namespace hecal::estimation {
+
+enum NoiseComponent {
+  kRobotRotation = 0,
+  kRobotTranslation = 1,
+  kCameraRotation = 2,
+  kCameraTranslation = 3,
+};
+inline constexpr int kNumNoiseComponents = 4;
+
+using NoiseComponents = std::array<Matrix6d, kNumNoiseComponents>;
+using NoiseVariances = std::array<double, kNumNoiseComponents>;  // σ², indexed by NoiseComponent
+
+// ∂r_i/∂δg at r_i = 0 (see above).
+Matrix6d RobotNoiseJacobian(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X);
+
+// The unit-variance components Q_i[k] of station (A, B) at the estimate X.
+NoiseComponents StationNoiseComponents(handeye::Setup setup, const Pose& A, const Pose& B,
+                                       const Pose& X);
+
+// Σ_i = Σ_k variances[k] · components[k].
+Matrix6d CombineComponents(const NoiseComponents& components, const NoiseVariances& variances);
+
+NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera);
+
+// Σ_i for the given noise model.
+Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
+                           const PoseSigma& robot, const PoseSigma& camera);
+
+// W = L⁻¹ with Σ = L Lᵀ (Cholesky), so |W r|² = rᵀ Σ⁻¹ r and W r has unit covariance.
+// Throws std::invalid_argument when Σ is not positive definite (e.g. every σ zero).
+Matrix6d WhiteningMatrix(const Matrix6d& covariance);
+
+}  // namespace hecal::estimation

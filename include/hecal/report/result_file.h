@@ -1,0 +1,35 @@
+// The calibration result file (DESIGN.md §5, the contract): JSON, or YAML when the output path
+// ends in .yaml / .yml. One object per method; `--method all` writes {"results": [ ... ]}.
+//
+// Units: lengths in the input's unit (`units.length`), angles in radians, except fields whose
+// name says _deg. Covariances are right-perturbation, (rx, ry, rz, tx, ty, tz), rad² / rad·unit /
+// unit², scaled to the output length unit.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hecal/estimation/calibrate.h"
+#include "hecal/handeye/problem.h"
+#include "hecal/io/units.h"
+
+namespace hecal::report {
+
+struct ResultDocument {
+  handeye::Setup setup = handeye::Setup::kEyeInHand;
+  io::LengthUnit unit = io::LengthUnit::kMetre;  // output length unit
+  std::vector<std::string> station_ids;           // one per station of the problem
+  std::vector<int> rejected;                      // indices into station_ids
+  std::vector<estimation::CalibrationResult> results;  // one, or one per method for `all`
+  bool all_methods = false;                       // write {"results": [...]}
+};
+
+enum class ResultFormat { kJson, kYaml };
+// By extension: .yaml / .yml → YAML, anything else JSON.
+ResultFormat ResultFormatForPath(const std::string& path);
+
+std::string FormatResult(const ResultDocument& document, ResultFormat format);
+// Atomic write (never a partial file).
+void WriteResult(const std::string& path, const ResultDocument& document);
+
+}  // namespace hecal::report

@@ -1,0 +1,136 @@
+// The thesis study (SPEC.md A.4), extended to every hecal method side by side: Monte-Carlo
+// trials on the thesis protocol (sim/thesis_protocol.h) for a list of settings (setup, number
+// of stations, which device is noisy, noise kind, noise level), every requested method solving
+// the IDENTICAL data set in each trial, errors against the truth, triangle-threshold outliers
+// (sim/triangle_threshold.h) and summaries (sim/summary_statistics.h), plus the first-order
+// (Cramér–Rao-type) bound of the `ml` estimate at the truth for comparison.
+//
+// Errors of an estimate X̂ against the truth X̃ (thesis §5.1): rotation = angle of R̃⁻¹ R̂
+// (radians here, degrees in files), translation = |t̂ − t̃| (metres here, mm in files). Only X,
+// the hand–eye transform, is scored (as in the thesis).
+//
+// Reproducibility: trial k of a setting draws its data from a std::mt19937_64 seeded with a
+// SplitMix64 hash of (seed, setup, stations, k), so
+//  - the same seed gives the same results whatever the number of threads (each trial is one job;
+//    results go to fixed slots);
+//  - settings that differ only in the noise share the same ground truth and station poses per
+//    trial (common random numbers: noise sweeps compare like with like).
+// Failures: a method that throws (e.g. DegenerateError) or returns a non-finite pose is a failed
+// trial (status and message kept, errors NaN); failures are not outliers and are left out of
+// the statistics.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/handeye/methods.h"
+#include "hecal/handeye/problem.h"
+#include "hecal/sim/noise.h"
+#include "hecal/sim/summary_statistics.h"
+
+namespace hecal::study {
+
+// Which measurements carry the noise.
+enum class NoiseOn { kRobot, kCamera, kBoth };
+// "robot" | "camera" | "both"; nullopt otherwise.
+std::optional<NoiseOn> ParseNoiseOn(std::string_view text);
+std::string_view NoiseOnName(NoiseOn noise_on);
+
+// One cell of the sweep.
+struct Setting {
+  handeye::Setup setup = handeye::Setup::kEyeInHand;
+  int stations = 15;
+  NoiseOn noise_on = NoiseOn::kBoth;
+  sim::NoiseModel::Kind noise_kind = sim::NoiseModel::Kind::kGaussian;
+  double translation_sigma = 0.0;  // metres, per component
+  double rotation_sigma = 0.0;     // radians, per component
+};
+
+// Per-component standard deviation of the noise a setting puts on one pose (zero for the
+// noise-free device): σ for Gaussian, σ/√3 for uniform on [−σ, σ], and σ for systematic (the
+// offset's magnitude; it is not random). This is what the bound uses.
+// The refinements (ml, strobl) are told these sigmas, except that
+//  - a device without noise gets 1e-3 of the other's sigma (a singular noise model has no
+//    whitening; the limit is the same estimator);
+//  - noise-free data get a nominal 1 mm / 1 mrad (the exact fit minimises any weighting);
+//  - when the level has a zero rotation or a zero translation part (e.g. --sigma 0/1), nothing
+//    is given and Calibrate estimates the noise from the residuals.
+estimation::PoseSigma RobotSigma(const Setting& setting);
+estimation::PoseSigma CameraSigma(const Setting& setting);
+
+struct StudyOptions {
+  std::vector<Setting> settings;
+  std::vector<handeye::Method> methods;  // in report order
+  int trials = 200;
+  uint64_t seed = 1;
+  int threads = 0;  // 0: std::thread::hardware_concurrency()
+};
+
+// Throws InputError (source "--<flag>") when options are unusable: no setting, no method,
+// trials < 1, stations < 3, negative sigma.
+void ValidateStudyOptions(const StudyOptions& options);
+
+enum class TrialStatus { kOk, kThrew, kNonFinite };
+std::string_view TrialStatusName(TrialStatus status);
+
+struct TrialResult {
+  int setting = 0;  // index into StudyOptions::settings
+  int trial = 0;
+  handeye::Method method = handeye::Method::kMl;
+  TrialStatus status = TrialStatus::kOk;
+  std::string message;             // exception text when kThrew
+  double rotation_error = 0.0;     // radians, NaN unless kOk
+  double translation_error = 0.0;  // metres, NaN unless kOk
+  // Triangle threshold (sim/triangle_threshold.h) on this setting's and method's rotation OR
+  // translation errors; errors below 1e-9 rad / 1e-9 m are rounding noise and never outliers.
+  bool outlier = false;
+};
+
+// A rotation and a translation magnitude: an error against the truth, or a bound.
+struct RotationTranslation {
+  double rotation = 0.0;     // radians
+  double translation = 0.0;  // metres
+};
+
+// First-order bound of one trial's data set: sqrt(trace) of the rotation and translation blocks
+// of the covariance of X from the ml information matrix at the truth — the RMS error an
+// efficient estimator reaches to first order. NaN when the information matrix is singular.
+using Bound = RotationTranslation;
+
+struct MethodSummary {
+  int setting = 0;
+  handeye::Method method = handeye::Method::kMl;
+  int trials = 0;
+  int failures = 0;
+  int outliers = 0;
+  sim::SummaryStatistics rotation;        // radians, over every finite trial (outliers included)
+  sim::SummaryStatistics translation;     // metres
+  double rotation_rmse_inliers = 0.0;     // radians, outliers removed (the thesis' statistic)
+  double translation_rmse_inliers = 0.0;  // metres
+  // Worst trial relative to its own bound: max over trials of error / bound (NaN without bound).
+  double worst_rotation_over_bound = 0.0;
+  double worst_translation_over_bound = 0.0;
+};
+
+struct StudyResult {
+  StudyOptions options;
+  std::vector<TrialResult> trials;         // setting-major, then trial, then method
+  std::vector<std::vector<Bound>> bounds;  // [setting][trial]
+  std::vector<Bound> setting_bounds;       // per setting: RMS of the trial bounds
+  std::vector<MethodSummary> summaries;    // setting-major, then method
+};
+
+// Runs every trial of every setting; throws InputError for invalid options.
+StudyResult RunStudy(const StudyOptions& options);
+
+// The per-trial seed (exposed for tests and for regenerating one trial's data).
+uint64_t TrialSeed(uint64_t seed, handeye::Setup setup, int stations, int trial);
+
+// Rotation angle of R̃⁻¹R̂ and translation distance of an estimate against the truth.
+RotationTranslation PoseError(const Pose& estimate, const Pose& truth);
+
+}  // namespace hecal::study

@@ -1,0 +1,36 @@
+// The study's files (issue 3, `hecal simulate --output / --summary`): CSV with a header line,
+// errors in degrees and millimetres, numbers with 9 significant digits ("nan" for a failed
+// trial), so the same seed gives byte-identical files.
+//
+// Trials (one row per setting × trial × method):
+//   setup,stations,noise_on,noise,sigma_mm,sigma_deg,trial,method,status,rotation_error_deg,
+//   translation_error_mm,outlier,bound_rotation_deg,bound_translation_mm,message
+//   status: ok | threw | non-finite; outlier: 0/1 (triangle threshold on the rotation OR the
+//   translation errors of that setting and method); bound_*: the trial's first-order bound
+//   (study.h); message: the exception text of a failed trial, double-quoted.
+// Summary (one row per setting × method):
+//   setup,stations,noise_on,noise,sigma_mm,sigma_deg,method,trials,failures,outliers,
+//   rotation_{median,rmse,p10,p90,max,rmse_inliers}_deg,
+//   translation_{median,rmse,p10,p90,max,rmse_inliers}_mm,
+//   bound_rotation_rmse_deg,bound_translation_rmse_mm,worst_rotation_over_bound,
+//   worst_translation_over_bound
+//   Statistics are over the finite trials, outliers included, except *_rmse_inliers (outliers
+//   removed, as the thesis reports). bound_*_rmse: RMS over the trials of the per-trial bound.
+//   worst_*_over_bound: the largest error / (that trial's bound).
+// sigma_mm / sigma_deg are the setting's noise parameter as given (for uniform noise, the
+// half-width; for systematic, the offset).
+#pragma once
+
+#include <string>
+
+#include "hecal/study/study.h"
+
+namespace hecal::study {
+
+std::string TrialsCsv(const StudyResult& result);
+std::string SummaryCsv(const StudyResult& result);
+
+// Number formatting shared by the CSV files and the CLI: 9 significant digits, "nan", "inf".
+std::string FormatNumber(double value);
+
+}  // namespace hecal::study

@@ -1,0 +1,40 @@
+#include "hecal/estimation/bound.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <stdexcept>
+
+#include "hecal/estimation/loop_residual.h"
+#include "hecal/estimation/station_covariance.h"
+
+namespace hecal::estimation {
+
+AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
+                              const PoseSigma& robot_sigma, const PoseSigma& camera_sigma) {
+  using Matrix12d = Eigen::Matrix<double, 12, 12>;
+  Matrix12d information = Matrix12d::Zero();
+  for (size_t i = 0; i < truth.A.size(); ++i) {
+    Matrix6x12d J;
+    LoopResidual(truth.A[i], truth.B[i], X, Z, &J);
+    const Matrix6d W = WhiteningMatrix(
+        StationCovariance(truth.setup, truth.A[i], truth.B[i], X, robot_sigma, camera_sigma));
+    const Matrix6x12d WJ = W * J;
+    information.noalias() += WJ.transpose() * WJ;
+  }
+  const Eigen::LDLT<Matrix12d> ldlt(information);
+  const double smallest = ldlt.vectorD().minCoeff();
+  if (ldlt.info() != Eigen::Success || !(smallest > 1e-12 * ldlt.vectorD().maxCoeff())) {
+    throw std::invalid_argument(
+        "FirstOrderBound: the information matrix is singular (degenerate "
+        "station set)");
+  }
+  AccuracyBound bound;
+  bound.covariance = ldlt.solve(Matrix12d::Identity());
+  bound.rotation_rmse_X = std::sqrt(bound.covariance.block<3, 3>(0, 0).trace());
+  bound.translation_rmse_X = std::sqrt(bound.covariance.block<3, 3>(3, 3).trace());
+  bound.rotation_rmse_Z = std::sqrt(bound.covariance.block<3, 3>(6, 6).trace());
+  bound.translation_rmse_Z = std::sqrt(bound.covariance.block<3, 3>(9, 9).trace());
+  return bound;
+}
+
+}  // namespace hecal::estimation

@@ -1,0 +1,108 @@
+#include "hecal/estimation/bound.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <numbers>
+#include <stdexcept>
+
+#include "hecal/estimation/station_covariance.h"
+#include "hecal/geometry/se3.h"
+#include "testing/handeye_cases.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Independent check: the Cramér–Rao bound of the FULL measurement model, with the true camera
+// poses T_i = T_camera_target_i as nuisance parameters, built by numeric differentiation and
+// reduced to (X, Z) by inverting the whole information matrix. Measurements (DESIGN.md §2):
+//   camera  B̃_i = T_i · Exp(n_c)                     e_c = Log(T_i⁻¹ B̃_i)
+//   robot   G̃_i = G_i(X, Z, T_i) · Exp(n_g)          e_g = Log(G_i⁻¹ G̃_i)
+//   eye-in-hand  G_i = Z T_i⁻¹ X⁻¹,   eye-to-hand  G_i = X T_i Z⁻¹.
+Eigen::MatrixXd FullModelBound(const sim::SimulatedData& data, const PoseSigma& robot,
+                               const PoseSigma& camera) {
+  const int n = static_cast<int>(data.T_camera_target_true.size());
+  const int parameters = 12 + 6 * n;
+  const int measurements = 12 * n;
+  auto predict_robot = [&](const Pose& X, const Pose& Z, const Pose& T) -> Pose {
+    return data.setup == handeye::Setup::kEyeInHand ? Z * T.inverse() * X.inverse()
+                                                    : X * T * Z.inverse();
+  };
+  // Stacked measurement residuals at the truth perturbed by δ (right perturbations).
+  auto residuals = [&](const Eigen::VectorXd& delta) {
+    const Pose X = data.X * se3::Exp(delta.segment<6>(0));
+    const Pose Z = data.Z * se3::Exp(delta.segment<6>(6));
+    Eigen::VectorXd e(measurements);
+    for (int i = 0; i < n; ++i) {
+      const Pose T = data.T_camera_target_true[i] * se3::Exp(delta.segment<6>(12 + 6 * i));
+      e.segment<6>(12 * i) = se3::Log(T.inverse() * data.T_camera_target_true[i]);
+      e.segment<6>(12 * i + 6) =
+          se3::Log(predict_robot(X, Z, T).inverse() * data.T_base_gripper_true[i]);
+    }
+    return e;
+  };
+  Eigen::MatrixXd J(measurements, parameters);
+  constexpr double h = 1e-6;
+  for (int k = 0; k < parameters; ++k) {
+    Eigen::VectorXd delta = Eigen::VectorXd::Zero(parameters);
+    delta(k) = h;
+    const Eigen::VectorXd plus = residuals(delta);
+    delta(k) = -h;
+    J.col(k) = (plus - residuals(delta)) / (2.0 * h);
+  }
+  Eigen::VectorXd weights(measurements);
+  const Vector6d camera_variance = PoseCovariance(camera).diagonal();
+  const Vector6d robot_variance = PoseCovariance(robot).diagonal();
+  for (int i = 0; i < n; ++i) {
+    weights.segment<6>(12 * i) = camera_variance.cwiseInverse();
+    weights.segment<6>(12 * i + 6) = robot_variance.cwiseInverse();
+  }
+  const Eigen::MatrixXd information = J.transpose() * weights.asDiagonal() * J;
+  return information.inverse().topLeftCorner(12, 12);
+}
+
+class BoundTest : public ::testing::TestWithParam<handeye::Setup> {};
+
+TEST_P(BoundTest, EqualsTheFullModelBoundWithNuisanceStationPoses) {
+  const sim::SimulatedData data = testing::ThesisCase(GetParam(), 5, 31);
+  const PoseSigma robot{1.0 * kDeg, 1e-3};
+  const PoseSigma camera{0.5 * kDeg, 2e-3};
+  const AccuracyBound bound =
+      FirstOrderBound(data.MeasuredProblem(), data.X, data.Z, robot, camera);
+  const Eigen::MatrixXd full = FullModelBound(data, robot, camera);
+  EXPECT_LT((bound.covariance - full).norm(), 1e-5 * full.norm()) << bound.covariance << "\n\n"
+                                                                  << full;
+  EXPECT_NEAR(bound.rotation_rmse_X, std::sqrt(full.block(0, 0, 3, 3).trace()), 1e-6 * kDeg);
+  EXPECT_NEAR(bound.translation_rmse_X, std::sqrt(full.block(3, 3, 3, 3).trace()), 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothSetups, BoundTest,
+                         ::testing::Values(handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand));
+
+TEST(FirstOrderBound, ScalesWithTheNoiseAndShrinksWithMoreStations) {
+  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 20, 32);
+  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma twice{2.0 * kDeg, 2e-3};
+  const handeye::Problem problem = data.MeasuredProblem();
+  const AccuracyBound one = FirstOrderBound(problem, data.X, data.Z, sigma, sigma);
+  const AccuracyBound two = FirstOrderBound(problem, data.X, data.Z, twice, twice);
+  EXPECT_NEAR(two.rotation_rmse_X / one.rotation_rmse_X, 2.0, 1e-9);
+  EXPECT_NEAR(two.translation_rmse_Z / one.translation_rmse_Z, 2.0, 1e-9);
+  handeye::Problem fewer = problem;
+  fewer.A.resize(5);
+  fewer.B.resize(5);
+  const AccuracyBound five = FirstOrderBound(fewer, data.X, data.Z, sigma, sigma);
+  EXPECT_GT(five.rotation_rmse_X, one.rotation_rmse_X);
+  EXPECT_GT(five.translation_rmse_X, one.translation_rmse_X);
+}
+
+TEST(FirstOrderBound, RejectsAZeroNoiseModel) {
+  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 33);
+  EXPECT_THROW(FirstOrderBound(data.MeasuredProblem(), data.X, data.Z, {}, {}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hecal::estimation

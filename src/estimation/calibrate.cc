@@ -1,0 +1,191 @@
+#include "hecal/estimation/calibrate.h"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "hecal/core/error.h"
+#include "hecal/estimation/initialization.h"
+#include "hecal/estimation/ml.h"
+#include "hecal/estimation/noise_estimation.h"
+#include "hecal/estimation/robust_loss.h"
+#include "hecal/estimation/strobl.h"
+#include "hecal/geometry/se3.h"
+#include "hecal/handeye/observability.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+void ValidateSigma(const std::optional<PoseSigma>& sigma, const char* flag) {
+  if (!sigma) return;
+  if (!std::isfinite(sigma->rotation) || !std::isfinite(sigma->translation) ||
+      sigma->rotation < 0.0 || sigma->translation < 0.0) {
+    throw InputError(flag, 0, "sigmas must be finite and non-negative",
+                     "give MM,DEG with values >= 0, e.g. 0.5,0.1");
+  }
+}
+
+std::string Format(const char* format, double a, double b) {
+  char buffer[128];
+  std::snprintf(buffer, sizeof(buffer), format, a, b);
+  return buffer;
+}
+
+std::string SigmaText(const PoseSigma& sigma) {
+  return Format("%.3g deg, %.3g mm", sigma.rotation * kRadToDeg, sigma.translation * 1e3);
+}
+
+std::string StationList(const std::vector<int>& stations) {
+  std::string text;
+  for (size_t k = 0; k < stations.size(); ++k) {
+    if (k > 0) text += k + 1 == stations.size() ? " and " : ", ";
+    text += std::to_string(stations[k] + 1);
+  }
+  return text;
+}
+
+std::vector<handeye::Solution> Starts(const handeye::Problem& problem) {
+  std::vector<handeye::Solution> starts = Solutions(InitialSolutions(problem));
+  if (starts.empty()) {
+    throw DegenerateError("X and Z (no closed-form solver found a starting point)",
+                          "check the pose conventions (try inverting the robot or camera poses) "
+                          "and use stations with large, varied rotations");
+  }
+  return starts;
+}
+
+}  // namespace
+
+CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options) {
+  ValidateSigma(options.robot_sigma, "--robot-sigma");
+  ValidateSigma(options.camera_sigma, "--camera-sigma");
+  if (options.robot_sigma && options.camera_sigma) {
+    const PoseSigma& r = *options.robot_sigma;
+    const PoseSigma& c = *options.camera_sigma;
+    if (r.rotation + c.rotation == 0.0 || r.translation + c.translation == 0.0) {
+      throw InputError("--robot-sigma", 0,
+                       "the robot and camera sigmas are both zero in rotation or in translation, "
+                       "so the noise model is singular",
+                       "give a non-zero value, or omit the sigma flags to estimate the noise");
+    }
+  }
+  const std::optional<RobustLoss> loss = ParseRobustLoss(options.robust_loss);
+  if (!loss) {
+    throw InputError("--robust-loss", 0, "unknown robust loss '" + options.robust_loss + "'",
+                     "use none, huber or cauchy");
+  }
+  if (!(options.robust_scale > 0.0) || !std::isfinite(options.robust_scale)) {
+    throw InputError("--robust-scale", 0, "the robust loss scale must be positive",
+                     "use e.g. 3 (whitened units)");
+  }
+  if (problem.A.size() != problem.B.size()) {
+    throw InputError("stations", 0, "the numbers of robot and camera poses differ",
+                     "give one camera pose per robot pose");
+  }
+  handeye::CheckObservability(problem);
+
+  CalibrationResult result;
+  result.method = options.method;
+  const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
+  const double L = LengthScale(problem);
+  NoiseEstimate noise;
+  if (options.method == handeye::Method::kMl) {
+    MlOptions ml_options;
+    ml_options.robot_sigma = options.robot_sigma;
+    ml_options.camera_sigma = options.camera_sigma;
+    ml_options.robust_loss = *loss;
+    ml_options.robust_scale = options.robust_scale;
+    const MlResult ml = RefineMl(problem, Starts(problem), ml_options);
+    result.X = ml.X;
+    result.Z = ml.Z;
+    result.covariance_X = ml.covariance.topLeftCorner<6, 6>();
+    result.covariance_Z = ml.covariance.bottomRightCorner<6, 6>();
+    noise = ml.noise;
+  } else {
+    handeye::Solution solution;
+    if (options.method == handeye::Method::kStrobl) {
+      const StroblResult strobl = RefineStrobl(problem, Starts(problem));
+      solution = {strobl.X, strobl.Z};
+    } else {
+      solution = handeye::SolveClosedForm(options.method, problem);
+    }
+    result.X = solution.X;
+    result.Z = solution.Z;
+    noise = EstimateNoise(LinearizeStations(problem, result.X, result.Z), spec, L);
+  }
+
+  // Per-station residuals and flags.
+  const size_t n = problem.A.size();
+  result.residuals.resize(n);
+  double rotation_sum = 0.0, translation_sum = 0.0;
+  std::vector<int> flagged;
+  for (size_t i = 0; i < n; ++i) {
+    const Pose E = result.Z.inverse() * problem.A[i] * result.X * problem.B[i];
+    StationResidual& residual = result.residuals[i];
+    residual.rotation = se3::Log(E).head<3>().norm();
+    residual.translation = E.translation().norm();
+    residual.whitened = std::sqrt(noise.stations[i].chi2 / 6.0);
+    residual.outlier = noise.stations[i].outlier;
+    rotation_sum += residual.rotation * residual.rotation;
+    translation_sum += residual.translation * residual.translation;
+    if (residual.outlier) flagged.push_back(static_cast<int>(i));
+  }
+  result.rotation_rms = std::sqrt(rotation_sum / static_cast<double>(n));
+  result.translation_rms = std::sqrt(translation_sum / static_cast<double>(n));
+  result.robot_sigma = noise.robot();
+  result.camera_sigma = noise.camera();
+  result.sigmas_estimated = spec.AnyEstimated();
+
+  // Warnings.
+  if (!options.robot_sigma && !options.camera_sigma) {
+    result.warnings.push_back(
+        "noise not given (--robot-sigma, --camera-sigma): estimated from the residuals as " +
+        SigmaText(result.robot_sigma) +
+        " per component for the robot and the same for the camera (from poses alone only "
+        "their combined effect is identifiable, so it is split equally)");
+  } else if (!options.camera_sigma) {
+    result.warnings.push_back(
+        "camera noise not given (--camera-sigma): estimated from the "
+        "residuals as " +
+        SigmaText(result.camera_sigma) + " per component");
+  } else if (!options.robot_sigma) {
+    result.warnings.push_back(
+        "robot noise not given (--robot-sigma): estimated from the "
+        "residuals as " +
+        SigmaText(result.robot_sigma) + " per component");
+  }
+  if (*loss != RobustLoss::kNone && options.method != handeye::Method::kMl) {
+    result.warnings.push_back("the robust loss applies to ml only; ignored for " +
+                              std::string(handeye::Info(options.method).name));
+  }
+  if (!noise.converged) {
+    result.warnings.push_back("the noise estimate did not converge; sigmas are approximate");
+  }
+  if (!flagged.empty()) {
+    if (flagged.size() > (n - 3) / 2) {
+      result.warnings.push_back(
+          std::to_string(flagged.size()) + " of " + std::to_string(n) +
+          " stations have residuals beyond 3 sigma of the noise model: " +
+          (spec.AnyEstimated() ? std::string("the residuals do not fit the noise model")
+                               : std::string("the given sigmas are too small")) +
+          ", or the pose conventions are wrong (try inverting the robot or camera poses)");
+    } else {
+      const bool one = flagged.size() == 1;
+      result.warnings.push_back(
+          std::string(one ? "station " : "stations ") + StationList(flagged) +
+          " (counted from 1 in input order) " + (one ? "has" : "have") +
+          " residuals beyond 3 sigma of the noise model (flagged as " +
+          (one ? "an outlier; it is" : "outliers; they are") + " still used" +
+          (options.method == handeye::Method::kMl && *loss == RobustLoss::kNone
+               ? std::string("; a robust loss such as huber down-weights outliers")
+               : std::string()) +
+          ")");
+    }
+  }
+  return result;
+}
+
+}  // namespace hecal::estimation

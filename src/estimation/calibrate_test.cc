@@ -1,0 +1,128 @@
+#include "hecal/estimation/calibrate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "hecal/core/error.h"
+#include "hecal/geometry/se3.h"
+#include "hecal/handeye/methods.h"
+#include "testing/handeye_cases.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+bool AnyWarningContains(const CalibrationResult& result, const std::string& text) {
+  for (const std::string& warning : result.warnings)
+    if (warning.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// Every method dispatches: closed-form ones return exactly handeye::SolveClosedForm's solution
+// (their accuracy is tested in src/handeye), strobl and ml recover noise-free data to 1e-9.
+TEST(Calibrate, EveryMethodDispatchesAndTheRefinementsAreExact) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const sim::SimulatedData data = testing::ThesisCase(setup, 8, 81);
+    const handeye::Problem problem = data.MeasuredProblem();
+    for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+      CalibrateOptions options;
+      options.method = info.method;
+      const CalibrationResult result = Calibrate(problem, options);
+      EXPECT_EQ(result.method, info.method);
+      ASSERT_EQ(result.residuals.size(), problem.A.size());
+      EXPECT_EQ(result.covariance_X.has_value(), info.method == handeye::Method::kMl) << info.name;
+      if (info.closed_form) {
+        const handeye::Solution direct = handeye::SolveClosedForm(info.method, problem);
+        EXPECT_TRUE(result.X.isApprox(direct.X, 1e-12)) << info.name;
+        EXPECT_TRUE(result.Z.isApprox(direct.Z, 1e-12)) << info.name;
+      } else {
+        EXPECT_LT(testing::Error(result.X, data.X).rotation, 1e-9) << info.name;
+        EXPECT_LT(testing::Error(result.X, data.X).translation, 1e-9) << info.name;
+        EXPECT_LT(testing::Error(result.Z, data.Z).rotation, 1e-9) << info.name;
+        EXPECT_LT(testing::Error(result.Z, data.Z).translation, 1e-9) << info.name;
+        EXPECT_LT(result.rotation_rms, 1e-9) << info.name;
+        EXPECT_LT(result.translation_rms, 1e-9) << info.name;
+      }
+    }
+  }
+}
+
+TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
+  const PoseSigma sigma{0.5 * kDeg, 1e-3};
+  const sim::SimulatedData data =
+      testing::ThesisCase(handeye::Setup::kEyeToHand, 15, 82, sigma.rotation, sigma.translation);
+  const handeye::Problem problem = data.MeasuredProblem();
+  const CalibrationResult estimated = Calibrate(problem, {});
+  EXPECT_EQ(estimated.method, handeye::Method::kMl);
+  EXPECT_TRUE(estimated.sigmas_estimated);
+  EXPECT_TRUE(AnyWarningContains(estimated, "estimated from the residuals"));
+  ASSERT_TRUE(estimated.covariance_X.has_value());
+  ASSERT_TRUE(estimated.covariance_Z.has_value());
+  EXPECT_GT((estimated.covariance_X->block<3, 3>(0, 0).trace()), 0.0);
+  // Residual summaries are consistent with the per-station values.
+  double rotation2 = 0.0, whitened2 = 0.0;
+  for (const StationResidual& r : estimated.residuals) {
+    rotation2 += r.rotation * r.rotation;
+    whitened2 += r.whitened * r.whitened;
+    EXPECT_FALSE(r.outlier);
+  }
+  EXPECT_NEAR(estimated.rotation_rms, std::sqrt(rotation2 / 15.0), 1e-12);
+  // Σ whitened² · 6 is the χ² of the fit: about 6n − 12 = 78 with the estimated noise.
+  EXPECT_NEAR(6.0 * whitened2, 78.0, 25.0);
+
+  CalibrateOptions given;
+  given.robot_sigma = sigma;
+  given.camera_sigma = sigma;
+  const CalibrationResult known = Calibrate(problem, given);
+  EXPECT_FALSE(known.sigmas_estimated);
+  EXPECT_FALSE(AnyWarningContains(known, "estimated"));
+  EXPECT_DOUBLE_EQ(known.robot_sigma.rotation, sigma.rotation);
+  EXPECT_LT(testing::Error(known.X, estimated.X).rotation, 0.1 * kDeg);
+}
+
+TEST(Calibrate, FlagsACorruptedStationAndSaysSo) {
+  const PoseSigma sigma{0.5 * kDeg, 1e-3};
+  sim::SimulatedData data =
+      testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 83, sigma.rotation, sigma.translation);
+  Vector6d gross;
+  gross << 5.0 * kDeg, 0.0, 0.0, 0.0, 0.02, 0.0;
+  data.T_base_gripper[9] = data.T_base_gripper[9] * se3::Exp(gross);
+  for (const bool given : {false, true}) {
+    CalibrateOptions options;
+    if (given) options.robot_sigma = options.camera_sigma = sigma;
+    const CalibrationResult result = Calibrate(data.MeasuredProblem(), options);
+    for (int i = 0; i < 15; ++i) EXPECT_EQ(result.residuals[i].outlier, i == 9) << i;
+    EXPECT_GT(result.residuals[9].whitened, 3.0);
+    EXPECT_TRUE(AnyWarningContains(result, "station 10 "));
+  }
+}
+
+TEST(Calibrate, RejectsBadOptionsAndDegenerateData) {
+  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 84);
+  const handeye::Problem problem = data.MeasuredProblem();
+  CalibrateOptions bad_loss;
+  bad_loss.robust_loss = "tukey";
+  EXPECT_THROW(Calibrate(problem, bad_loss), InputError);
+  CalibrateOptions negative;
+  negative.robot_sigma = PoseSigma{-1.0, 0.001};
+  EXPECT_THROW(Calibrate(problem, negative), InputError);
+  CalibrateOptions zero;
+  zero.robot_sigma = PoseSigma{0.0, 0.001};
+  zero.camera_sigma = PoseSigma{0.0, 0.001};
+  EXPECT_THROW(Calibrate(problem, zero), InputError);
+  CalibrateOptions robust_closed_form;
+  robust_closed_form.method = handeye::Method::kParkMartin;
+  robust_closed_form.robust_loss = "huber";
+  EXPECT_TRUE(AnyWarningContains(Calibrate(problem, robust_closed_form), "ml only"));
+  handeye::Problem two = problem;
+  two.A.resize(2);
+  two.B.resize(2);
+  EXPECT_THROW(Calibrate(two, {}), DegenerateError);
+}
+
+}  // namespace
+}  // namespace hecal::estimation

@@ -1,0 +1,214 @@
+#include "hecal/estimation/ml.h"
+
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "hecal/estimation/loop_residual.h"
+#include "hecal/estimation/se3_manifold.h"
+#include "hecal/estimation/station_covariance.h"
+#include "multi_start.h"
+#include "small_problem.h"
+
+namespace hecal::estimation {
+namespace {
+
+using Matrix12d = Eigen::Matrix<double, 12, 12>;
+
+constexpr double kRefreshRotation = 1e-3;     // rad: re-evaluate Σ_i when X moved more
+constexpr double kRefreshTranslation = 1e-3;  // × L
+constexpr int kMaxRefreshes = 5;
+constexpr double kNoiseTolerance = 1e-3;  // relative change of the variances
+
+struct Evaluation {
+  double cost = 0.0;  // Σ ρ(r_iᵀ Σ_i⁻¹ r_i)
+  double nll = 0.0;   // cost + Σ log det Σ_i
+};
+
+class MlSolver {
+ public:
+  MlSolver(const handeye::Problem& problem, const MlOptions& options)
+      : problem_(problem),
+        length_scale_(LengthScale(problem)),
+        loss_(MakeLoss(options.robust_loss, options.robust_scale)) {}
+
+  double length_scale() const { return length_scale_; }
+  int solves() const { return solves_; }
+
+  // Square roots W_i of Σ_i⁻¹ at X.
+  std::vector<Matrix6d> Whitening(const Pose& X, const NoiseVariances& theta) const {
+    std::vector<Matrix6d> W(problem_.A.size());
+    for (size_t i = 0; i < W.size(); ++i) {
+      W[i] = WhiteningMatrix(CombineComponents(
+          StationNoiseComponents(problem_.setup, problem_.A[i], problem_.B[i], X), theta));
+    }
+    return W;
+  }
+
+  Evaluation Evaluate(const handeye::Solution& solution, const NoiseVariances& theta) const {
+    const std::vector<Matrix6d> W = Whitening(solution.X, theta);
+    Evaluation evaluation;
+    double log_det = 0.0;
+    for (size_t i = 0; i < W.size(); ++i) {
+      const Vector6d r = LoopResidual(problem_.A[i], problem_.B[i], solution.X, solution.Z);
+      evaluation.cost += LossValue(loss_.get(), (W[i] * r).squaredNorm());
+      // W is triangular with det W = det(Σ)^(−1/2).
+      log_det -= 2.0 * W[i].diagonal().array().abs().log().sum();
+    }
+    evaluation.nll = evaluation.cost + log_det;
+    return evaluation;
+  }
+
+  // Minimises with Σ_i at the current X, re-evaluating Σ_i until X stops moving.
+  handeye::Solution Solve(const handeye::Solution& start, const NoiseVariances& theta) {
+    handeye::Solution current = start;
+    for (int refresh = 0; refresh < kMaxRefreshes; ++refresh) {
+      const handeye::Solution weights_at = current;
+      current = SolveOnce(current, Whitening(current.X, theta));
+      if (internal::NearSolution(current, weights_at, kRefreshRotation,
+                                 kRefreshTranslation * length_scale_)) {
+        break;
+      }
+    }
+    return current;
+  }
+
+  // One minimisation with the given whitening (Σ_i fixed).
+  handeye::Solution SolveWith(const handeye::Solution& start, const std::vector<Matrix6d>& W) {
+    return SolveOnce(start, W);
+  }
+
+  // Σ ρ(|W_i r_i|²) with the given whitening.
+  double CostWith(const handeye::Solution& solution, const std::vector<Matrix6d>& W) const {
+    double cost = 0.0;
+    for (size_t i = 0; i < W.size(); ++i) {
+      const Vector6d r = LoopResidual(problem_.A[i], problem_.B[i], solution.X, solution.Z);
+      cost += LossValue(loss_.get(), (W[i] * r).squaredNorm());
+    }
+    return cost;
+  }
+
+  // Gauss–Newton inverse information at the solution, robust weights ρ'(s_i).
+  Matrix12d Covariance(const handeye::Solution& solution, const NoiseVariances& theta) const {
+    const std::vector<Matrix6d> W = Whitening(solution.X, theta);
+    Matrix12d information = Matrix12d::Zero();
+    for (size_t i = 0; i < W.size(); ++i) {
+      Matrix6x12d J;
+      const Vector6d r = LoopResidual(problem_.A[i], problem_.B[i], solution.X, solution.Z, &J);
+      const Matrix6x12d WJ = W[i] * J;
+      const double weight = LossWeight(loss_.get(), (W[i] * r).squaredNorm());
+      information.noalias() += weight * WJ.transpose() * WJ;
+    }
+    const Eigen::LLT<Matrix12d> llt(information);
+    if (llt.info() == Eigen::Success) return llt.solve(Matrix12d::Identity());
+    return information.completeOrthogonalDecomposition().pseudoInverse();
+  }
+
+ private:
+  handeye::Solution SolveOnce(const handeye::Solution& start, const std::vector<Matrix6d>& W) {
+    ++solves_;
+    double x[kPoseAmbientSize], z[kPoseAmbientSize];
+    PoseToParameters(start.X, x);
+    PoseToParameters(start.Z, z);
+    ceres::Problem ceres_problem(internal::SmallProblemOptions());
+    ceres_problem.AddParameterBlock(x, kPoseAmbientSize, &manifold_);
+    ceres_problem.AddParameterBlock(z, kPoseAmbientSize, &manifold_);
+    for (size_t i = 0; i < W.size(); ++i) {
+      ceres_problem.AddResidualBlock(LoopCost::Create(problem_.A[i], problem_.B[i], W[i]),
+                                     loss_.get(), x, z);
+    }
+    ceres::Solver::Summary summary;
+    ceres::Solve(internal::SmallSolverOptions(), &ceres_problem, &summary);
+    return {PoseFromParameters(x), PoseFromParameters(z)};
+  }
+
+  const handeye::Problem& problem_;
+  double length_scale_;
+  std::unique_ptr<ceres::LossFunction> loss_;
+  Se3RightManifold manifold_;
+  int solves_ = 0;
+};
+
+double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
+  double change = 0.0;
+  for (int k = 0; k < kNumNoiseComponents; ++k) {
+    const double scale = std::max(std::abs(a[k]), std::abs(b[k]));
+    if (scale > 0.0) change = std::max(change, std::abs(a[k] - b[k]) / scale);
+  }
+  return change;
+}
+
+}  // namespace
+
+MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::Solution>& starts,
+                  const MlOptions& options) {
+  if (starts.empty()) throw std::invalid_argument("RefineMl: no starting solution");
+  if (problem.A.size() < 3 || problem.A.size() != problem.B.size()) {
+    throw std::invalid_argument("RefineMl: needs at least 3 stations with robot and camera poses");
+  }
+  MlSolver solver(problem, options);
+  const double L = solver.length_scale();
+  const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
+
+  // Initial noise model: the known values, and for the unknown ones the smallest residual-based
+  // guess over the starts (a wrong start has large residuals and would overstate the noise).
+  NoiseVariances theta = spec.variances;
+  if (spec.AnyEstimated()) {
+    for (int k = 0; k < kNumNoiseComponents; ++k)
+      if (spec.group[k] >= 0) theta[k] = std::numeric_limits<double>::infinity();
+    for (const handeye::Solution& start : starts) {
+      const NoiseVariances guess =
+          InitialNoiseGuess(LinearizeStations(problem, start.X, start.Z), spec, L);
+      for (int k = 0; k < kNumNoiseComponents; ++k)
+        if (spec.group[k] >= 0) theta[k] = std::min(theta[k], guess[k]);
+    }
+  }
+
+  // Multi-start with one common whitening, Σ_i at the start of lowest negative log-likelihood
+  // (Σ_i depends on X only through lever arms, so the minima are where they would be with
+  // per-start weights, and the costs compare directly); then Σ_i is refreshed at the winner.
+  MlResult result;
+  std::vector<double> start_nll(starts.size());
+  size_t best_start = 0;
+  for (size_t i = 0; i < starts.size(); ++i) {
+    start_nll[i] = solver.Evaluate(starts[i], theta).nll;
+    if (start_nll[i] < start_nll[best_start]) best_start = i;
+  }
+  const std::vector<Matrix6d> common = solver.Whitening(starts[best_start].X, theta);
+  const internal::MultiStartResult multi = internal::RunMultiStart(
+      starts, L, [&](const handeye::Solution& start) { return solver.CostWith(start, common); },
+      [&](const handeye::Solution& start) {
+        const handeye::Solution optimum = solver.SolveWith(start, common);
+        return internal::Optimum{optimum, solver.CostWith(optimum, common)};
+      });
+  result.starts_refined = multi.starts_refined;
+  result.distinct_minima = multi.distinct_minima;
+  handeye::Solution best = solver.Solve(multi.best.solution, theta);
+
+  // Alternate the noise estimate and the pose estimate.
+  NoiseSpec current = spec;
+  for (int iteration = 0; iteration < std::max(1, options.max_noise_iterations); ++iteration) {
+    current.variances = theta;
+    result.noise = EstimateNoise(LinearizeStations(problem, best.X, best.Z), current, L);
+    if (!spec.AnyEstimated()) break;
+    const double change = MaxRelativeChange(theta, result.noise.variances);
+    theta = result.noise.variances;
+    if (change < kNoiseTolerance) break;
+    best = solver.Solve(best, theta);
+  }
+
+  result.X = best.X;
+  result.Z = best.Z;
+  result.covariance = solver.Covariance(best, theta);
+  result.sigmas_estimated = spec.AnyEstimated();
+  result.cost = solver.Evaluate(best, theta).cost;
+  result.solves = solver.solves();
+  return result;
+}
+
+}  // namespace hecal::estimation

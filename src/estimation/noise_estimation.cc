@@ -1,0 +1,380 @@
+#include "hecal/estimation/noise_estimation.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace hecal::estimation {
+namespace {
+
+using Matrix12d = Eigen::Matrix<double, 12, 12>;
+using Vector12d = Eigen::Matrix<double, 12, 1>;
+
+constexpr int kMaxGroups = 2;
+constexpr double kAbsoluteFloor = 1e-30;  // variance floor (σ = 1e-15)
+constexpr double kRelativeFloor = 1e-6;   // variance ratio rotation·L² : translation, both ways
+constexpr double kMaxDecrease = 0.1;      // per step, towards a boundary optimum
+constexpr double kTolerance = 1e-6;       // relative change of the variances
+constexpr int kMaxVarianceIterations = 200;
+constexpr int kMaxExclusionRounds = 10;
+constexpr int kMaxHalvings = 30;
+
+bool IsRotation(int k) {
+  return k == kRobotRotation || k == kCameraRotation;
+}
+
+// Weighted linear re-fit over the included stations: N⁻¹, δ = N⁻¹ Σ Jᵀ Σ⁻¹ r, and the
+// restricted (REML) log-likelihood of the variances,
+//   ℓ_R(θ) = −½ (Σ_i log det Σ_i + log det N + Σ_i r_iᵀ Σ_i⁻¹ r_i − bᵀ N⁻¹ b),  b = Σ Jᵀ Σ⁻¹ r.
+struct Refit {
+  std::vector<Matrix6d> inverse_covariance;
+  Matrix12d N_inverse;
+  Vector12d delta;
+  double log_likelihood = 0.0;
+};
+
+Refit LinearRefit(const std::vector<StationLinearization>& stations,
+                  const std::vector<bool>& included, const NoiseVariances& theta) {
+  Refit refit;
+  Matrix12d N = Matrix12d::Zero();
+  Vector12d b = Vector12d::Zero();
+  double log_det_sigma = 0.0, quadratic = 0.0;
+  refit.inverse_covariance.reserve(stations.size());
+  for (size_t i = 0; i < stations.size(); ++i) {
+    const Eigen::LLT<Matrix6d> llt(CombineComponents(stations[i].components, theta));
+    if (llt.info() != Eigen::Success) {
+      throw std::invalid_argument(
+          "station covariance is not positive definite: the noise model needs a non-zero "
+          "rotation and translation sigma");
+    }
+    refit.inverse_covariance.push_back(llt.solve(Matrix6d::Identity()));
+    if (!included[i]) continue;
+    const Matrix6d& W = refit.inverse_covariance[i];
+    const Eigen::Matrix<double, 12, 6> JtW = stations[i].jacobian.transpose() * W;
+    N.noalias() += JtW * stations[i].jacobian;
+    b.noalias() += JtW * stations[i].residual;
+    log_det_sigma += 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+    quadratic += stations[i].residual.dot(W * stations[i].residual);
+  }
+  const Eigen::LLT<Matrix12d> llt(N);
+  if (llt.info() == Eigen::Success) {
+    refit.N_inverse = llt.solve(Matrix12d::Identity());
+    refit.delta = refit.N_inverse * b;
+    const double log_det_N = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+    refit.log_likelihood = -0.5 * (log_det_sigma + log_det_N + quadratic - b.dot(refit.delta));
+  } else {
+    refit.N_inverse = N.completeOrthogonalDecomposition().pseudoInverse();
+    refit.delta = refit.N_inverse * b;
+    refit.log_likelihood = -std::numeric_limits<double>::infinity();
+  }
+  return refit;
+}
+
+// Applies the floors to the estimated groups.
+void ApplyFloors(const NoiseSpec& spec, double length_scale, NoiseVariances* theta) {
+  double max_rotation = 0.0, max_translation = 0.0;
+  for (int k = 0; k < kNumNoiseComponents; ++k) {
+    double& maximum = IsRotation(k) ? max_rotation : max_translation;
+    maximum = std::max(maximum, (*theta)[k]);
+  }
+  const double L2 = length_scale * length_scale;
+  for (int k = 0; k < kNumNoiseComponents; ++k) {
+    if (spec.group[k] < 0) continue;
+    const double relative =
+        IsRotation(k) ? kRelativeFloor * max_translation / L2 : kRelativeFloor * max_rotation * L2;
+    (*theta)[k] = std::max({(*theta)[k], relative, kAbsoluteFloor});
+  }
+}
+
+// Starting values of the estimated groups from the raw residual energies.
+void InitialVariances(const std::vector<StationLinearization>& stations,
+                      const std::vector<bool>& included, const NoiseSpec& spec, double length_scale,
+                      NoiseVariances* theta) {
+  // Rotation groups first: they also explain part of the translation residuals (lever arms).
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int g = 0; g < spec.NumGroups(); ++g) {
+      std::vector<int> members;
+      for (int k = 0; k < kNumNoiseComponents; ++k)
+        if (spec.group[k] == g) members.push_back(k);
+      const bool rotation_group = IsRotation(members.front());
+      if (rotation_group != (pass == 0)) continue;
+      if ((*theta)[members.front()] > 0.0) continue;  // caller's starting value
+      const int block = rotation_group ? 0 : 3;
+      double energy = 0.0, unit = 0.0, explained = 0.0;
+      for (size_t i = 0; i < stations.size(); ++i) {
+        if (!included[i]) continue;
+        energy += stations[i].residual.segment<3>(block).squaredNorm();
+        for (int k : members) unit += stations[i].components[k].block<3, 3>(block, block).trace();
+        for (int k = 0; k < kNumNoiseComponents; ++k) {
+          if (spec.group[k] == g || (*theta)[k] <= 0.0) continue;
+          explained += (*theta)[k] * stations[i].components[k].block<3, 3>(block, block).trace();
+        }
+      }
+      const double value = std::max(energy - explained, 0.01 * energy) / std::max(unit, 1e-300);
+      for (int k : members) (*theta)[k] = value;
+    }
+  }
+  ApplyFloors(spec, length_scale, theta);
+}
+
+// One Fisher-scoring (Helmert) step for the estimated groups; returns the new variances.
+NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
+                            const std::vector<bool>& included, const NoiseSpec& spec,
+                            const NoiseVariances& theta, double length_scale) {
+  const int G = spec.NumGroups();
+  const Refit refit = LinearRefit(stations, included, theta);
+  const Matrix12d& Ni = refit.N_inverse;
+  // Index G is the known part Q_0 = Σ_{known k} θ_k Q_k.
+  const int M = G + 1;
+  double q[kMaxGroups + 1] = {};
+  double trace_WQ[kMaxGroups + 1] = {};
+  double trace_WQWQ[kMaxGroups + 1][kMaxGroups + 1] = {};
+  Matrix12d H[kMaxGroups + 1];
+  Matrix12d cross[kMaxGroups + 1][kMaxGroups + 1];
+  for (int g = 0; g < M; ++g) {
+    H[g].setZero();
+    for (int h = 0; h < M; ++h) cross[g][h].setZero();
+  }
+  for (size_t i = 0; i < stations.size(); ++i) {
+    if (!included[i]) continue;
+    const StationLinearization& s = stations[i];
+    const Matrix6d& W = refit.inverse_covariance[i];
+    const Vector6d r_hat = s.residual - s.jacobian * refit.delta;
+    Matrix6d WQ[kMaxGroups + 1];
+    for (int g = 0; g < M; ++g) {
+      Matrix6d Q = Matrix6d::Zero();
+      for (int k = 0; k < kNumNoiseComponents; ++k) {
+        if (g < G && spec.group[k] == g) Q += s.components[k];
+        if (g == G && spec.group[k] < 0) Q += theta[k] * s.components[k];
+      }
+      WQ[g] = W * Q;
+    }
+    const Eigen::Matrix<double, 6, 12> WJ = W * s.jacobian;
+    for (int g = 0; g < M; ++g) {
+      const Matrix6d WQW = WQ[g] * W;
+      q[g] += r_hat.dot(WQW * r_hat);
+      trace_WQ[g] += WQ[g].trace();
+      H[g].noalias() += s.jacobian.transpose() * WQW * s.jacobian;
+      for (int h = g; h < M; ++h) {
+        trace_WQWQ[g][h] += (WQ[g] * WQ[h]).trace();
+        cross[g][h].noalias() += s.jacobian.transpose() * (WQ[g] * WQ[h]) * WJ;
+      }
+    }
+  }
+  // tr(P Q_g P Q_h) = tr(WQ_gWQ_h) − 2 tr(N⁻¹ JᵀWQ_gWQ_hWJ) + tr(N⁻¹H_g N⁻¹H_h).
+  auto trace_PQPQ = [&](int g, int h) {
+    const int a = std::min(g, h), b = std::max(g, h);
+    return trace_WQWQ[a][b] - 2.0 * (Ni * cross[a][b]).trace() + (Ni * H[g] * Ni * H[h]).trace();
+  };
+  Eigen::Matrix2d S = Eigen::Matrix2d::Identity();
+  Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
+  for (int g = 0; g < G; ++g) {
+    rhs(g) = q[g] - trace_PQPQ(g, G);
+    for (int h = 0; h < G; ++h) S(g, h) = trace_PQPQ(g, h);
+  }
+  Eigen::Vector2d solution = Eigen::Vector2d::Zero();
+  solution.head(G) = S.topLeftCorner(G, G).colPivHouseholderQr().solve(rhs.head(G));
+  NoiseVariances next = theta;
+  for (int g = 0; g < G; ++g) {
+    int first = -1;
+    for (int k = 0; k < kNumNoiseComponents; ++k)
+      if (spec.group[k] == g && first < 0) first = k;
+    double value = solution(g);
+    if (!std::isfinite(value)) {
+      // Förstner's ratio update: positive whenever the residual energy is.
+      const double redundancy = trace_WQ[g] - (Ni * H[g]).trace();
+      value = redundancy > 0.0 ? theta[first] * q[g] / redundancy : theta[first];
+    }
+    // A non-positive solution means the maximum is on the boundary θ_g = 0: approach it by at
+    // most a factor 10 per step, until the floor holds it.
+    value = std::max(value, kMaxDecrease * theta[first]);
+    for (int k = 0; k < kNumNoiseComponents; ++k)
+      if (spec.group[k] == g) next[k] = value;
+  }
+  ApplyFloors(spec, length_scale, &next);
+  return next;
+}
+
+double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
+  double change = 0.0;
+  for (int k = 0; k < kNumNoiseComponents; ++k) {
+    if (a[k] == b[k]) continue;
+    change = std::max(change, std::abs(a[k] - b[k]) / std::max(std::abs(a[k]), std::abs(b[k])));
+  }
+  return change;
+}
+
+// The statistic T_i of every station for the given inclusion mask.
+std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
+                                      const std::vector<bool>& included,
+                                      const NoiseVariances& theta) {
+  const Refit refit = LinearRefit(stations, included, theta);
+  std::vector<StationTest> tests(stations.size());
+  for (size_t i = 0; i < stations.size(); ++i) {
+    const StationLinearization& s = stations[i];
+    const Matrix6d& W = refit.inverse_covariance[i];
+    StationTest& test = tests[i];
+    test.chi2 = s.residual.dot(W * s.residual);
+    const Vector6d r_hat = s.residual - s.jacobian * refit.delta;
+    const Matrix6d leverage = s.jacobian * refit.N_inverse * s.jacobian.transpose();
+    const Matrix6d sigma = CombineComponents(s.components, theta);
+    const Matrix6d C = included[i] ? Matrix6d(sigma - leverage) : Matrix6d(sigma + leverage);
+    // Pseudo-inverse in the metric of Σ: whiten with Σ = L Lᵀ first, so the rank decision is
+    // scale-free.
+    const Eigen::LLT<Matrix6d> llt(sigma);
+    const Matrix6d L_inverse = llt.matrixL().solve(Matrix6d::Identity());
+    const Matrix6d C_white = L_inverse * C * L_inverse.transpose();
+    const Vector6d r_white = L_inverse * r_hat;
+    const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(0.5 * (C_white + C_white.transpose()));
+    double statistic = 0.0;
+    int dof = 0;
+    for (int k = 0; k < 6; ++k) {
+      const double lambda = eigen.eigenvalues()(k);
+      if (lambda <= 1e-9) continue;
+      const double projection = eigen.eigenvectors().col(k).dot(r_white);
+      statistic += projection * projection / lambda;
+      ++dof;
+    }
+    test.statistic = statistic;
+    test.dof = dof;
+    test.outlier = dof > 0 && statistic > ThreeSigmaChiSquare(dof);
+  }
+  return tests;
+}
+
+}  // namespace
+
+std::vector<StationLinearization> LinearizeStations(const handeye::Problem& problem, const Pose& X,
+                                                    const Pose& Z) {
+  std::vector<StationLinearization> stations(problem.A.size());
+  for (size_t i = 0; i < problem.A.size(); ++i) {
+    stations[i].residual = LoopResidual(problem.A[i], problem.B[i], X, Z, &stations[i].jacobian);
+    stations[i].components = StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], X);
+  }
+  return stations;
+}
+
+double LengthScale(const handeye::Problem& problem) {
+  double sum = 0.0;
+  for (const Pose& B : problem.B) sum += B.translation().squaredNorm();
+  const double rms =
+      problem.B.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(problem.B.size()));
+  return std::max(rms, 1e-3);
+}
+
+NoiseSpec NoiseSpec::FromSigmas(const std::optional<PoseSigma>& robot,
+                                const std::optional<PoseSigma>& camera) {
+  NoiseSpec spec;
+  const PoseSigma zero;
+  spec.variances = Variances(robot.value_or(zero), camera.value_or(zero));
+  if (robot && camera) return spec;
+  if (robot) {
+    spec.group = {-1, -1, 0, 1};
+    spec.variances[kCameraRotation] = spec.variances[kCameraTranslation] = 0.0;
+  } else if (camera) {
+    spec.group = {0, 1, -1, -1};
+    spec.variances[kRobotRotation] = spec.variances[kRobotTranslation] = 0.0;
+  } else {
+    spec.group = {0, 1, 0, 1};
+    spec.variances = {};
+  }
+  return spec;
+}
+
+bool NoiseSpec::AnyEstimated() const {
+  return NumGroups() > 0;
+}
+
+int NoiseSpec::NumGroups() const {
+  int groups = 0;
+  for (int g : group) groups = std::max(groups, g + 1);
+  return groups;
+}
+
+PoseSigma NoiseEstimate::robot() const {
+  return {std::sqrt(variances[kRobotRotation]), std::sqrt(variances[kRobotTranslation])};
+}
+
+PoseSigma NoiseEstimate::camera() const {
+  return {std::sqrt(variances[kCameraRotation]), std::sqrt(variances[kCameraTranslation])};
+}
+
+NoiseVariances InitialNoiseGuess(const std::vector<StationLinearization>& stations,
+                                 const NoiseSpec& spec, double length_scale) {
+  NoiseVariances theta = spec.variances;
+  for (int k = 0; k < kNumNoiseComponents; ++k)
+    if (spec.group[k] >= 0) theta[k] = 0.0;
+  InitialVariances(stations, std::vector<bool>(stations.size(), true), spec, length_scale, &theta);
+  return theta;
+}
+
+double ThreeSigmaChiSquare(int dof) {
+  // Quantiles of χ²(dof) at p = erf(3/√2) = 0.99730020 (two-sided 3σ of a normal).
+  static constexpr double kQuantile[7] = {0.0,          9.0,          11.829158082, 14.156413609,
+                                          16.251340814, 18.205314008, 20.062086166};
+  if (dof < 1 || dof > 6) throw std::invalid_argument("ThreeSigmaChiSquare: dof must be 1..6");
+  return kQuantile[dof];
+}
+
+NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
+                            const NoiseSpec& spec, double length_scale) {
+  const size_t n = stations.size();
+  if (n < 3) throw std::invalid_argument("EstimateNoise needs at least 3 stations");
+  if (spec.NumGroups() > kMaxGroups) {
+    throw std::invalid_argument("EstimateNoise supports at most two variance groups");
+  }
+  NoiseEstimate estimate;
+  estimate.variances = spec.variances;
+  std::vector<bool> included(n, true);
+  const size_t max_excluded = (n - 3) / 2;
+  if (spec.AnyEstimated())
+    InitialVariances(stations, included, spec, length_scale, &estimate.variances);
+  for (int round = 0; round < kMaxExclusionRounds; ++round) {
+    if (spec.AnyEstimated()) {
+      estimate.converged = false;
+      double log_likelihood = LinearRefit(stations, included, estimate.variances).log_likelihood;
+      for (int iteration = 0; iteration < kMaxVarianceIterations; ++iteration) {
+        ++estimate.iterations;
+        NoiseVariances next =
+            VarianceStep(stations, included, spec, estimate.variances, length_scale);
+        // Safeguard: the scoring step must not decrease ℓ_R (on a flat likelihood, iterated
+        // MINQUE can cycle); halve it geometrically until it does not.
+        double next_log_likelihood = LinearRefit(stations, included, next).log_likelihood;
+        int halvings = 0;
+        while (!(next_log_likelihood >= log_likelihood) && halvings < kMaxHalvings) {
+          for (int k = 0; k < kNumNoiseComponents; ++k)
+            if (spec.group[k] >= 0) next[k] = std::sqrt(next[k] * estimate.variances[k]);
+          next_log_likelihood = LinearRefit(stations, included, next).log_likelihood;
+          ++halvings;
+        }
+        if (!(next_log_likelihood >= log_likelihood)) {
+          estimate.converged = true;  // no ascent left at working precision: the maximum
+          break;
+        }
+        const double change = MaxRelativeChange(next, estimate.variances);
+        estimate.variances = next;
+        log_likelihood = next_log_likelihood;
+        if (change < kTolerance) {
+          estimate.converged = true;
+          break;
+        }
+      }
+    }
+    estimate.stations = TestStations(stations, included, estimate.variances);
+    std::vector<bool> next_included(n, true);
+    size_t flagged = 0;
+    for (size_t i = 0; i < n; ++i) flagged += estimate.stations[i].outlier ? 1 : 0;
+    if (flagged <= max_excluded) {
+      for (size_t i = 0; i < n; ++i) next_included[i] = !estimate.stations[i].outlier;
+    }
+    if (next_included == included) break;
+    included = next_included;
+  }
+  return estimate;
+}
+
+}  // namespace hecal::estimation

@@ -1,0 +1,154 @@
+#include "hecal/estimation/noise_estimation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "hecal/geometry/se3.h"
+#include "hecal/sim/thesis_protocol.h"
+#include "testing/handeye_cases.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+sim::SimulatedData Simulate(handeye::Setup setup, int stations, const PoseSigma& robot,
+                            const PoseSigma& camera, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  sim::ProtocolOptions options;
+  options.setup = setup;
+  options.stations = stations;
+  return sim::SimulateThesisProtocol(
+      options, {sim::NoiseModel::Kind::kGaussian, robot.rotation, robot.translation},
+      {sim::NoiseModel::Kind::kGaussian, camera.rotation, camera.translation}, rng);
+}
+
+TEST(ThreeSigmaChiSquare, MatchesTheNormalTail) {
+  // χ²(1) at the 3σ level is 3² exactly; χ²(2) has the closed form −2 ln(0.0027).
+  EXPECT_NEAR(ThreeSigmaChiSquare(1), 9.0, 1e-9);
+  EXPECT_NEAR(ThreeSigmaChiSquare(2), -2.0 * std::log(std::erfc(3.0 / std::sqrt(2.0))), 1e-8);
+  EXPECT_NEAR(ThreeSigmaChiSquare(6), 20.062, 1e-3);
+}
+
+TEST(NoiseSpec, FollowsTheGivenSigmas) {
+  const PoseSigma robot{0.01, 0.001};
+  const PoseSigma camera{0.02, 0.002};
+  EXPECT_FALSE(NoiseSpec::FromSigmas(robot, camera).AnyEstimated());
+  const NoiseSpec none = NoiseSpec::FromSigmas(std::nullopt, std::nullopt);
+  EXPECT_EQ(none.NumGroups(), 2);
+  EXPECT_EQ(none.group[kRobotRotation], none.group[kCameraRotation]);
+  EXPECT_EQ(none.group[kRobotTranslation], none.group[kCameraTranslation]);
+  EXPECT_NE(none.group[kRobotRotation], none.group[kRobotTranslation]);
+  const NoiseSpec robot_known = NoiseSpec::FromSigmas(robot, std::nullopt);
+  EXPECT_LT(robot_known.group[kRobotRotation], 0);
+  EXPECT_DOUBLE_EQ(robot_known.variances[kRobotRotation], 1e-4);
+  EXPECT_GE(robot_known.group[kCameraTranslation], 0);
+}
+
+// The σ scale is recovered from the residuals: equal robot and camera noise (the estimator's
+// split), many stations so that the sampling error of the estimate is small. With n stations
+// the translation scale rests on ≈ 2n effective degrees of freedom here (most of the translation
+// residual is robot rotation noise times the lever arm), so n = 400 gives a relative standard
+// error ≈ 1/√(2·2n) ≈ 2.5% on σ_t, ~1% on σ_r; 7% is > 2.5σ for σ_t.
+TEST(EstimateNoise, RecoversTheSigmaScaleBothSetups) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const PoseSigma sigma{1.0 * kDeg, 1e-3};
+    const sim::SimulatedData data = Simulate(setup, 400, sigma, sigma, 21);
+    const handeye::Problem problem = data.MeasuredProblem();
+    const NoiseEstimate estimate =
+        EstimateNoise(LinearizeStations(problem, data.X, data.Z),
+                      NoiseSpec::FromSigmas(std::nullopt, std::nullopt), LengthScale(problem));
+    EXPECT_TRUE(estimate.converged);
+    EXPECT_NEAR(estimate.robot().rotation / sigma.rotation, 1.0, 0.03);
+    EXPECT_NEAR(estimate.robot().translation / sigma.translation, 1.0, 0.07);
+    EXPECT_DOUBLE_EQ(estimate.robot().rotation, estimate.camera().rotation);
+    int flagged = 0;
+    for (const StationTest& test : estimate.stations) flagged += test.outlier ? 1 : 0;
+    EXPECT_LE(flagged, 6);  // expected 400 · 0.0027 ≈ 1
+  }
+}
+
+// With the robot noise given, the camera's own rotation and translation sigmas are estimated.
+TEST(EstimateNoise, EstimatesTheCameraGivenTheRobot) {
+  const PoseSigma robot{0.2 * kDeg, 0.5e-3};
+  const PoseSigma camera{1.0 * kDeg, 3e-3};
+  const sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, 300, robot, camera, 22);
+  const handeye::Problem problem = data.MeasuredProblem();
+  const NoiseEstimate estimate =
+      EstimateNoise(LinearizeStations(problem, data.X, data.Z),
+                    NoiseSpec::FromSigmas(robot, std::nullopt), LengthScale(problem));
+  EXPECT_DOUBLE_EQ(estimate.robot().rotation, robot.rotation);
+  EXPECT_NEAR(estimate.camera().rotation / camera.rotation, 1.0, 0.06);
+  EXPECT_NEAR(estimate.camera().translation / camera.translation, 1.0, 0.08);
+}
+
+// Linearised anywhere near the optimum (here: a perturbed truth) the linear re-fit inside the
+// estimator removes the offset, so the estimate does not depend on the exact point.
+TEST(EstimateNoise, IndependentOfTheLinearisationPointNearTheOptimum) {
+  const PoseSigma sigma{0.5 * kDeg, 2e-3};
+  const sim::SimulatedData data = Simulate(handeye::Setup::kEyeToHand, 60, sigma, sigma, 23);
+  const handeye::Problem problem = data.MeasuredProblem();
+  const NoiseSpec spec = NoiseSpec::FromSigmas(std::nullopt, std::nullopt);
+  const double L = LengthScale(problem);
+  Vector6d offset;
+  offset << 0.002, -0.001, 0.001, 0.003, 0.001, -0.002;
+  const NoiseEstimate at_truth = EstimateNoise(LinearizeStations(problem, data.X, data.Z), spec, L);
+  const NoiseEstimate nearby = EstimateNoise(
+      LinearizeStations(problem, data.X * se3::Exp(offset), data.Z * se3::Exp(-offset)), spec, L);
+  EXPECT_NEAR(nearby.robot().rotation / at_truth.robot().rotation, 1.0, 0.01);
+  EXPECT_NEAR(nearby.robot().translation / at_truth.robot().translation, 1.0, 0.02);
+}
+
+// One corrupted station is flagged, the others are not, and it does not inflate the sigmas.
+TEST(EstimateNoise, FlagsACorruptedStationWithoutBeingMaskedByIt) {
+  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, 15, sigma, sigma, 24);
+  const sim::SimulatedData clean = data;
+  Vector6d gross;
+  gross << 0.0, 8.0 * kDeg, 0.0, 0.0, 0.0, 0.0;
+  data.T_camera_target[6] = data.T_camera_target[6] * se3::Exp(gross);
+  const NoiseSpec spec = NoiseSpec::FromSigmas(std::nullopt, std::nullopt);
+  const handeye::Problem problem = data.MeasuredProblem();
+  const NoiseEstimate estimate =
+      EstimateNoise(LinearizeStations(problem, data.X, data.Z), spec, LengthScale(problem));
+  for (int i = 0; i < 15; ++i) EXPECT_EQ(estimate.stations[i].outlier, i == 6) << "station " << i;
+  const handeye::Problem clean_problem = clean.MeasuredProblem();
+  const NoiseEstimate reference = EstimateNoise(LinearizeStations(clean_problem, clean.X, clean.Z),
+                                                spec, LengthScale(clean_problem));
+  // Excluding the flagged station, the sigma stays near the clean data's estimate (14 vs 15
+  // stations), instead of being inflated by the 8° error.
+  EXPECT_NEAR(estimate.robot().rotation / reference.robot().rotation, 1.0, 0.15);
+}
+
+TEST(EstimateNoise, GivenSigmasAreUsedAsIsAndTooSmallOnesFlagEverything) {
+  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, 15, sigma, sigma, 25);
+  const handeye::Problem problem = data.MeasuredProblem();
+  const PoseSigma small{0.05 * kDeg, 0.05e-3};
+  const NoiseEstimate estimate =
+      EstimateNoise(LinearizeStations(problem, data.X, data.Z), NoiseSpec::FromSigmas(small, small),
+                    LengthScale(problem));
+  EXPECT_EQ(estimate.iterations, 0);
+  EXPECT_DOUBLE_EQ(estimate.robot().rotation, small.rotation);
+  int flagged = 0;
+  for (const StationTest& test : estimate.stations) flagged += test.outlier ? 1 : 0;
+  EXPECT_GE(flagged, 13);
+}
+
+TEST(EstimateNoise, NoiseFreeDataGiveTinyPositiveSigmas) {
+  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeToHand, 8, 26);
+  const handeye::Problem problem = data.MeasuredProblem();
+  const NoiseEstimate estimate =
+      EstimateNoise(LinearizeStations(problem, data.X, data.Z),
+                    NoiseSpec::FromSigmas(std::nullopt, std::nullopt), LengthScale(problem));
+  EXPECT_GT(estimate.robot().rotation, 0.0);
+  EXPECT_LT(estimate.robot().rotation, 1e-9);
+  EXPECT_GT(estimate.robot().translation, 0.0);
+  EXPECT_LT(estimate.robot().translation, 1e-9);
+}
+
+}  // namespace
+}  // namespace hecal::estimation

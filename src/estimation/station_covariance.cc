@@ -1,0 +1,67 @@
+#include "hecal/estimation/station_covariance.h"
+
+#include <Eigen/Cholesky>
+#include <stdexcept>
+
+#include "hecal/geometry/se3.h"
+
+namespace hecal::estimation {
+namespace {
+
+// P_rot = diag(1,1,1,0,0,0) and P_trans = diag(0,0,0,1,1,1) sandwiched: J P Jᵀ.
+Matrix6d Sandwich(const Matrix6d& J, int block) {
+  const Eigen::Matrix<double, 6, 3> columns = J.middleCols<3>(3 * block);
+  return columns * columns.transpose();
+}
+
+Matrix6d DiagonalBlock(int block) {
+  Matrix6d P = Matrix6d::Zero();
+  P.block<3, 3>(3 * block, 3 * block).setIdentity();
+  return P;
+}
+
+}  // namespace
+
+Matrix6d RobotNoiseJacobian(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X) {
+  if (setup == handeye::Setup::kEyeInHand) return se3::Adjoint((X * B).inverse());
+  return -se3::Adjoint((A * X * B).inverse());
+}
+
+NoiseComponents StationNoiseComponents(handeye::Setup setup, const Pose& A, const Pose& B,
+                                       const Pose& X) {
+  const Matrix6d J = RobotNoiseJacobian(setup, A, B, X);
+  NoiseComponents Q;
+  Q[kRobotRotation] = Sandwich(J, 0);
+  Q[kRobotTranslation] = Sandwich(J, 1);
+  Q[kCameraRotation] = DiagonalBlock(0);
+  Q[kCameraTranslation] = DiagonalBlock(1);
+  return Q;
+}
+
+Matrix6d CombineComponents(const NoiseComponents& components, const NoiseVariances& variances) {
+  Matrix6d sigma = Matrix6d::Zero();
+  for (int k = 0; k < kNumNoiseComponents; ++k) sigma += variances[k] * components[k];
+  return sigma;
+}
+
+NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera) {
+  return {robot.rotation * robot.rotation, robot.translation * robot.translation,
+          camera.rotation * camera.rotation, camera.translation * camera.translation};
+}
+
+Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
+                           const PoseSigma& robot, const PoseSigma& camera) {
+  return CombineComponents(StationNoiseComponents(setup, A, B, X), Variances(robot, camera));
+}
+
+Matrix6d WhiteningMatrix(const Matrix6d& covariance) {
+  const Eigen::LLT<Matrix6d> llt(covariance);
+  if (llt.info() != Eigen::Success || !(llt.matrixLLT().diagonal().array() > 0.0).all()) {
+    throw std::invalid_argument(
+        "station covariance is not positive definite: the noise model needs a non-zero rotation "
+        "and translation sigma");
+  }
+  return llt.matrixL().solve(Matrix6d::Identity());
+}
+
+}  // namespace hecal::estimation

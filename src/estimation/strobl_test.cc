@@ -1,0 +1,75 @@
+#include "hecal/estimation/strobl.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "hecal/estimation/bound.h"
+#include "hecal/estimation/initialization.h"
+#include "hecal/geometry/se3.h"
+#include "testing/handeye_cases.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+class StroblTest : public ::testing::TestWithParam<handeye::Setup> {};
+
+TEST_P(StroblTest, NoiseFreeRecoversTheTruth) {
+  const handeye::Setup setup = GetParam();
+  for (const sim::SimulatedData& data :
+       {testing::ThesisCase(setup, 10, 71), testing::WideRotationCase(setup, 8, 72),
+        testing::WideRotationCase(setup, 6, 73, std::numbers::pi)}) {
+    const handeye::Problem problem = data.MeasuredProblem();
+    const StroblResult result = RefineStrobl(problem, Solutions(InitialSolutions(problem)));
+    EXPECT_LT(testing::Error(result.X, data.X).rotation, 1e-9);
+    EXPECT_LT(testing::Error(result.X, data.X).translation, 1e-9);
+    EXPECT_LT(testing::Error(result.Z, data.Z).rotation, 1e-9);
+    EXPECT_LT(testing::Error(result.Z, data.Z).translation, 1e-9);
+  }
+}
+
+TEST_P(StroblTest, NoiseFreeConvergesFromAPerturbedStart) {
+  const sim::SimulatedData data = testing::ThesisCase(GetParam(), 6, 74);
+  Vector6d offset;
+  offset << 0.05, -0.06, 0.04, 0.05, -0.03, 0.02;
+  const StroblResult result = RefineStrobl(
+      data.MeasuredProblem(), {{data.X * se3::Exp(offset), data.Z * se3::Exp(-offset)}});
+  EXPECT_LT(testing::Error(result.X, data.X).rotation, 1e-9);
+  EXPECT_LT(testing::Error(result.X, data.X).translation, 1e-9);
+}
+
+// With noise, the automatic weights are the RMS errors at the optimum, and the estimate is a
+// sensible one: within 2× the first-order bound on the thesis protocol (it ignores the lever-arm
+// structure of the noise, so it is not expected to reach the bound like ml).
+TEST_P(StroblTest, AutomaticWeightingAndAccuracyWithNoise) {
+  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  double error2 = 0.0, bound2 = 0.0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const sim::SimulatedData data =
+        testing::ThesisCase(GetParam(), 15, 7000 + trial, sigma.rotation, sigma.translation);
+    const handeye::Problem problem = data.MeasuredProblem();
+    const StroblResult result = RefineStrobl(problem, Solutions(InitialSolutions(problem)));
+    double rotation2 = 0.0;
+    for (size_t i = 0; i < problem.A.size(); ++i) {
+      const Pose E = result.Z.inverse() * problem.A[i] * result.X * problem.B[i];
+      rotation2 += se3::Log(E).head<3>().squaredNorm();
+    }
+    EXPECT_NEAR(result.sigma_rotation, std::sqrt(rotation2 / problem.A.size()), 1e-9);
+    EXPECT_GE(result.iterations, 1);
+    const AccuracyBound bound = FirstOrderBound(
+        handeye::MakeProblem(data.setup, data.T_base_gripper_true, data.T_camera_target_true),
+        data.X, data.Z, sigma, sigma);
+    error2 += std::pow(testing::Error(result.X, data.X).rotation, 2);
+    bound2 += bound.rotation_rmse_X * bound.rotation_rmse_X;
+  }
+  EXPECT_LT(std::sqrt(error2 / bound2), 2.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothSetups, StroblTest,
+                         ::testing::Values(handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand));
+
+}  // namespace
+}  // namespace hecal::estimation

@@ -1,0 +1,155 @@
+#include "hecal/report/result_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "hecal/geometry/rotation.h"
+#include "hecal/io/atomic_file.h"
+#include "hecal/version.h"
+
+namespace hecal::report {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+json MatrixJson(const Eigen::MatrixXd& M) {
+  json rows = json::array();
+  for (Eigen::Index r = 0; r < M.rows(); ++r) {
+    json row = json::array();
+    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// A pose in the output length unit: 4×4 matrix, translation, Hamilton quaternion (w, x, y, z).
+json PoseJson(const Pose& T, std::string_view frame, double scale) {
+  Eigen::Matrix4d M = T.matrix();
+  M.topRightCorner<3, 1>() *= scale;
+  const Eigen::Quaterniond q = QuaternionFromMatrix(T.linear());
+  const Eigen::Vector3d t = scale * T.translation();
+  return {{"frame", frame},
+          {"matrix", MatrixJson(M)},
+          {"translation", {t.x(), t.y(), t.z()}},
+          {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}}};
+}
+
+// Right-perturbation covariance from metres to the output unit: translation rows/columns scale.
+json CovarianceJson(const Matrix6d& covariance, double scale) {
+  Vector6d s;
+  s << 1.0, 1.0, 1.0, scale, scale, scale;
+  return MatrixJson(s.asDiagonal() * covariance * s.asDiagonal());
+}
+
+json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  json object = {
+      {"hecal_version", hecal::kVersion},
+      {"setup", handeye::SetupName(document.setup)},
+      {"method", handeye::Info(result.method).name},
+      {"units", {{"length", io::UnitName(document.unit)}, {"angle", "rad"}}},
+      {"X", PoseJson(result.X, handeye::XFrameName(document.setup), scale)},
+      {"Z", PoseJson(result.Z, handeye::ZFrameName(document.setup), scale)},
+  };
+  if (result.covariance_X && result.covariance_Z) {
+    object["covariance"] = {{"X", CovarianceJson(*result.covariance_X, scale)},
+                            {"Z", CovarianceJson(*result.covariance_Z, scale)},
+                            {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"}};
+  }
+  json per_station = json::array();
+  json used = json::array();
+  size_t k = 0;  // residuals are for the stations that were used, in order
+  for (size_t i = 0; i < document.station_ids.size(); ++i) {
+    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) !=
+        document.rejected.end()) {
+      continue;
+    }
+    used.push_back(document.station_ids[i]);
+    if (k < result.residuals.size()) {
+      const estimation::StationResidual& r = result.residuals[k++];
+      per_station.push_back({{"id", document.station_ids[i]},
+                             {"rotation_deg", r.rotation * kDegrees},
+                             {"translation", r.translation * scale},
+                             {"whitened", r.whitened},
+                             {"outlier", r.outlier}});
+    }
+  }
+  json rejected = json::array();
+  for (int i : document.rejected) rejected.push_back(document.station_ids.at(i));
+  object["residuals"] = {{"rotation_rms_deg", result.rotation_rms * kDegrees},
+                         {"translation_rms", result.translation_rms * scale},
+                         {"per_station", per_station}};
+  object["noise"] = {
+      {"robot_sigma", {{"rotation_deg", result.robot_sigma.rotation * kDegrees},
+                       {"translation", result.robot_sigma.translation * scale}}},
+      {"camera_sigma", {{"rotation_deg", result.camera_sigma.rotation * kDegrees},
+                        {"translation", result.camera_sigma.translation * scale}}},
+      {"estimated", result.sigmas_estimated}};
+  object["stations"] = {{"used", used}, {"rejected", rejected}};
+  object["warnings"] = result.warnings;
+  return object;
+}
+
+void EmitYaml(const json& value, YAML::Emitter& out) {
+  if (value.is_object()) {
+    out << YAML::BeginMap;
+    for (const auto& [key, item] : value.items()) {
+      out << YAML::Key << key << YAML::Value;
+      EmitYaml(item, out);
+    }
+    out << YAML::EndMap;
+  } else if (value.is_array()) {
+    // Numeric rows (matrices, vectors) read best as flow sequences.
+    const bool numeric = std::all_of(value.begin(), value.end(),
+                                     [](const json& item) { return item.is_number(); });
+    if (numeric) out << YAML::Flow;
+    out << YAML::BeginSeq;
+    for (const json& item : value) EmitYaml(item, out);
+    out << YAML::EndSeq;
+  } else if (value.is_string()) {
+    out << value.get<std::string>();
+  } else if (value.is_boolean()) {
+    out << value.get<bool>();
+  } else if (value.is_number_integer()) {
+    out << value.get<long long>();
+  } else if (value.is_number()) {
+    out << YAML::Precision(17) << value.get<double>();
+  } else {
+    out << YAML::Null;
+  }
+}
+
+}  // namespace
+
+ResultFormat ResultFormatForPath(const std::string& path) {
+  const auto ends_with = [&](std::string_view suffix) {
+    return path.size() >= suffix.size() &&
+           path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  return ends_with(".yaml") || ends_with(".yml") ? ResultFormat::kYaml : ResultFormat::kJson;
+}
+
+std::string FormatResult(const ResultDocument& document, ResultFormat format) {
+  json root;
+  if (document.all_methods) {
+    root = {{"results", json::array()}};
+    for (const auto& result : document.results) root["results"].push_back(ResultJson(document, result));
+  } else {
+    root = ResultJson(document, document.results.at(0));
+  }
+  if (format == ResultFormat::kJson) return root.dump(2) + "\n";
+  YAML::Emitter out;
+  EmitYaml(root, out);
+  return std::string(out.c_str()) + "\n";
+}
+
+void WriteResult(const std::string& path, const ResultDocument& document) {
+  io::WriteFileAtomically(path, FormatResult(document, ResultFormatForPath(path)));
+}
+
+}  // namespace hecal::report

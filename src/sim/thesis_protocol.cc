@@ -1,0 +1,80 @@
+#include "hecal/sim/thesis_protocol.h"
+
+#include <numbers>
+
+#include "hecal/geometry/euler.h"
+#include "hecal/geometry/so3.h"
+
+namespace hecal::sim {
+namespace {
+
+Eigen::Matrix3d UniformRotation(std::mt19937_64& rng) {
+  std::normal_distribution<double> normal;
+  return Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng))
+      .normalized()
+      .toRotationMatrix();
+}
+
+Eigen::Vector3d UniformBox(std::mt19937_64& rng, double half_side) {
+  std::uniform_real_distribution<double> uniform(-half_side, half_side);
+  return Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng));
+}
+
+// Random pose with uniform rotation and translation in [−offset, offset]³.
+Pose RandomPose(std::mt19937_64& rng, double offset) {
+  return MakePose(UniformRotation(rng), UniformBox(rng, offset));
+}
+
+// T_target_camera of one station: position in the cube around (0, 0, −d), orientation tilted
+// about the image-plane axes and spun about the optical axis. The nominal orientation (identity)
+// has the optical axis +z pointing at the target origin.
+Pose CameraInTarget(const ProtocolOptions& options, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> tilt(-options.max_tilt, options.max_tilt);
+  std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
+  const double alpha = tilt(rng);
+  const double beta = tilt(rng);
+  const double gamma = spin(rng);
+  const Eigen::Matrix3d R = ElementaryRotation(0, alpha) * ElementaryRotation(1, beta) *
+                            ElementaryRotation(2, gamma);
+  const Eigen::Vector3d position =
+      Eigen::Vector3d(0.0, 0.0, -options.start_distance) + UniformBox(rng, 0.5 * options.cube_side);
+  return MakePose(R, position);
+}
+
+}  // namespace
+
+handeye::Problem SimulatedData::MeasuredProblem() const {
+  return handeye::MakeProblem(setup, T_base_gripper, T_camera_target);
+}
+
+SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const NoiseModel& robot_noise,
+                                     const NoiseModel& camera_noise, std::mt19937_64& rng) {
+  SimulatedData data;
+  data.setup = options.setup;
+  // The flange offset is the small one: X for eye-in-hand (camera on the flange), Z for
+  // eye-to-hand (target on the flange).
+  if (options.setup == handeye::Setup::kEyeInHand) {
+    data.X = RandomPose(rng, options.hand_eye_offset);
+    data.Z = RandomPose(rng, options.other_offset);
+  } else {
+    data.X = RandomPose(rng, options.other_offset);
+    data.Z = RandomPose(rng, options.hand_eye_offset);
+  }
+  const Pose X_inverse = data.X.inverse();
+  for (int i = 0; i < options.stations; ++i) {
+    const Pose T_target_camera = CameraInTarget(options, rng);
+    const Pose B = T_target_camera.inverse();  // T_camera_target
+    const Pose A = data.Z * T_target_camera * X_inverse;  // from Z = A X B
+    const Pose T_base_gripper = options.setup == handeye::Setup::kEyeInHand ? A : A.inverse();
+    data.T_base_gripper_true.push_back(T_base_gripper);
+    data.T_camera_target_true.push_back(B);
+  }
+  // Noise after the truth so the noise-free data are the same whatever the noise model.
+  for (int i = 0; i < options.stations; ++i) {
+    data.T_base_gripper.push_back(AddNoise(data.T_base_gripper_true[i], robot_noise, rng));
+    data.T_camera_target.push_back(AddNoise(data.T_camera_target_true[i], camera_noise, rng));
+  }
+  return data;
+}
+
+}  // namespace hecal::sim

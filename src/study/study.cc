@@ -1,0 +1,323 @@
+#include "hecal/study/study.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <random>
+#include <stdexcept>
+#include <thread>
+
+#include "hecal/core/error.h"
+#include "hecal/estimation/bound.h"
+#include "hecal/estimation/calibrate.h"
+#include "hecal/geometry/so3.h"
+#include "hecal/sim/thesis_protocol.h"
+#include "hecal/sim/triangle_threshold.h"
+
+namespace hecal::study {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Errors below these are rounding noise, never outliers (sim/triangle_threshold.h).
+constexpr double kOutlierFloorRotation = 1e-9;     // radians
+constexpr double kOutlierFloorTranslation = 1e-9;  // metres
+
+uint64_t SplitMix64(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// RMS magnitude per component of the noise a model puts on a pose.
+estimation::PoseSigma ModelSigma(const Setting& setting) {
+  const double scale =
+      setting.noise_kind == sim::NoiseModel::Kind::kUniform ? 1.0 / std::sqrt(3.0) : 1.0;
+  return {scale * setting.rotation_sigma, scale * setting.translation_sigma};
+}
+
+sim::NoiseModel NoiseFor(const Setting& setting, bool noisy) {
+  sim::NoiseModel model;
+  model.kind = setting.noise_kind;
+  if (noisy) {
+    model.rotation_sigma = setting.rotation_sigma;
+    model.translation_sigma = setting.translation_sigma;
+  }
+  return model;
+}
+
+bool IsFinite(const Pose& T) {
+  return T.matrix().allFinite();
+}
+
+// The noise model the refinements are told (study.h, next to RobotSigma).
+void SetRefinementSigmas(const Setting& setting, estimation::CalibrateOptions* options) {
+  const estimation::PoseSigma robot = RobotSigma(setting);
+  const estimation::PoseSigma camera = CameraSigma(setting);
+  const double rotation = std::max(robot.rotation, camera.rotation);
+  const double translation = std::max(robot.translation, camera.translation);
+  if (rotation == 0.0 && translation == 0.0) {
+    // Noise-free: the exact fit is the minimiser whatever the weights.
+    options->robot_sigma = options->camera_sigma = estimation::PoseSigma{1e-3, 1e-3};
+    return;
+  }
+  if (rotation == 0.0 || translation == 0.0) return;  // estimated from the residuals
+  const double floor = 1e-3;
+  options->robot_sigma = estimation::PoseSigma{std::max(robot.rotation, floor * rotation),
+                                               std::max(robot.translation, floor * translation)};
+  options->camera_sigma = estimation::PoseSigma{std::max(camera.rotation, floor * rotation),
+                                                std::max(camera.translation, floor * translation)};
+}
+
+// One method on one data set. Closed-form methods go straight to their solver (what `hecal
+// bench` times); the refinements go through Calibrate with the noise model of the setting.
+Pose SolveX(handeye::Method method, const handeye::Problem& problem, const Setting& setting) {
+  if (handeye::Info(method).closed_form) return handeye::SolveClosedForm(method, problem).X;
+  estimation::CalibrateOptions options;
+  options.method = method;
+  SetRefinementSigmas(setting, &options);
+  return estimation::Calibrate(problem, options).X;
+}
+
+// The first-order bound of the data set at the truth: 0 without noise, NaN when the noise model
+// or the stations make the information singular.
+Bound BoundAtTruth(const sim::SimulatedData& data, const Setting& setting) {
+  const estimation::PoseSigma robot = RobotSigma(setting);
+  const estimation::PoseSigma camera = CameraSigma(setting);
+  if (robot.rotation + robot.translation + camera.rotation + camera.translation == 0.0) {
+    return {0.0, 0.0};
+  }
+  const handeye::Problem truth =
+      handeye::MakeProblem(data.setup, data.T_base_gripper_true, data.T_camera_target_true);
+  try {
+    const estimation::AccuracyBound bound =
+        estimation::FirstOrderBound(truth, data.X, data.Z, robot, camera);
+    return {bound.rotation_rmse_X, bound.translation_rmse_X};
+  } catch (const std::invalid_argument&) {
+    return {kNaN, kNaN};
+  }
+}
+
+struct Job {
+  int setting;
+  int trial;
+};
+
+}  // namespace
+
+std::optional<NoiseOn> ParseNoiseOn(std::string_view text) {
+  if (text == "robot") return NoiseOn::kRobot;
+  if (text == "camera") return NoiseOn::kCamera;
+  if (text == "both") return NoiseOn::kBoth;
+  return std::nullopt;
+}
+
+std::string_view NoiseOnName(NoiseOn noise_on) {
+  switch (noise_on) {
+    case NoiseOn::kRobot:
+      return "robot";
+    case NoiseOn::kCamera:
+      return "camera";
+    case NoiseOn::kBoth:
+      return "both";
+  }
+  return "both";
+}
+
+std::string_view TrialStatusName(TrialStatus status) {
+  switch (status) {
+    case TrialStatus::kOk:
+      return "ok";
+    case TrialStatus::kThrew:
+      return "threw";
+    case TrialStatus::kNonFinite:
+      return "non-finite";
+  }
+  return "ok";
+}
+
+estimation::PoseSigma RobotSigma(const Setting& setting) {
+  if (setting.noise_on == NoiseOn::kCamera) return {};
+  return ModelSigma(setting);
+}
+
+estimation::PoseSigma CameraSigma(const Setting& setting) {
+  if (setting.noise_on == NoiseOn::kRobot) return {};
+  return ModelSigma(setting);
+}
+
+void ValidateStudyOptions(const StudyOptions& options) {
+  if (options.settings.empty()) {
+    throw InputError("--stations", 0, "the study has no setting", "give at least one value");
+  }
+  if (options.methods.empty()) {
+    throw InputError("--method", 0, "no method selected", "name one or more methods, or all");
+  }
+  if (options.trials < 1) {
+    throw InputError("--trials", 0, "needs at least 1 trial, got " + std::to_string(options.trials),
+                     "e.g. --trials 200");
+  }
+  if (options.threads < 0) {
+    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+  }
+  for (const Setting& s : options.settings) {
+    if (s.stations < 3) {
+      throw InputError("--stations", 0,
+                       "needs at least 3 stations (2 motions), got " + std::to_string(s.stations),
+                       "the thesis' k motions are k + 1 stations");
+    }
+    if (!(s.translation_sigma >= 0.0) || !(s.rotation_sigma >= 0.0) ||
+        !std::isfinite(s.translation_sigma) || !std::isfinite(s.rotation_sigma)) {
+      throw InputError("--sigma", 0, "noise levels must be finite and non-negative",
+                       "e.g. --sigma 0,0.3,1");
+    }
+  }
+}
+
+uint64_t TrialSeed(uint64_t seed, handeye::Setup setup, int stations, int trial) {
+  uint64_t h = SplitMix64(seed);
+  h = SplitMix64(h ^ (setup == handeye::Setup::kEyeInHand ? 0x11ULL : 0x22ULL));
+  h = SplitMix64(h ^ static_cast<uint64_t>(stations));
+  return SplitMix64(h ^ static_cast<uint64_t>(trial));
+}
+
+RotationTranslation PoseError(const Pose& estimate, const Pose& truth) {
+  return {so3::Distance(truth.linear(), estimate.linear()),
+          (estimate.translation() - truth.translation()).norm()};
+}
+
+StudyResult RunStudy(const StudyOptions& options) {
+  ValidateStudyOptions(options);
+  StudyResult result;
+  result.options = options;
+  const int settings = static_cast<int>(options.settings.size());
+  const int methods = static_cast<int>(options.methods.size());
+  const int trials = options.trials;
+  const int jobs = settings * trials;
+  result.trials.resize(static_cast<size_t>(jobs) * methods);
+  result.bounds.assign(settings, std::vector<Bound>(trials));
+
+  auto run_job = [&](const Job& job) {
+    const Setting& setting = options.settings[job.setting];
+    std::mt19937_64 rng(TrialSeed(options.seed, setting.setup, setting.stations, job.trial));
+    sim::ProtocolOptions protocol;
+    protocol.setup = setting.setup;
+    protocol.stations = setting.stations;
+    const sim::SimulatedData data = sim::SimulateThesisProtocol(
+        protocol, NoiseFor(setting, setting.noise_on != NoiseOn::kCamera),
+        NoiseFor(setting, setting.noise_on != NoiseOn::kRobot), rng);
+    const handeye::Problem problem = data.MeasuredProblem();
+    const size_t base = (static_cast<size_t>(job.setting) * trials + job.trial) * methods;
+    for (int m = 0; m < methods; ++m) {
+      TrialResult& trial = result.trials[base + m];
+      trial.setting = job.setting;
+      trial.trial = job.trial;
+      trial.method = options.methods[m];
+      trial.rotation_error = trial.translation_error = kNaN;
+      try {
+        const Pose X = SolveX(trial.method, problem, setting);
+        if (!IsFinite(X)) {
+          trial.status = TrialStatus::kNonFinite;
+          continue;
+        }
+        const RotationTranslation error = PoseError(X, data.X);
+        trial.rotation_error = error.rotation;
+        trial.translation_error = error.translation;
+      } catch (const std::exception& e) {
+        trial.status = TrialStatus::kThrew;
+        trial.message = e.what();
+      }
+    }
+    result.bounds[job.setting][job.trial] = BoundAtTruth(data, setting);
+  };
+
+  std::atomic<int> next{0};
+  std::mutex mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (int j = next.fetch_add(1); j < jobs; j = next.fetch_add(1)) {
+      try {
+        run_job({j / trials, j % trials});
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+        next.store(jobs);
+        return;
+      }
+    }
+  };
+  int threads =
+      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  threads = std::clamp(threads, 1, std::max(jobs, 1));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
+
+  // Outliers and summaries per (setting, method), in a fixed order.
+  for (int s = 0; s < settings; ++s) {
+    double rotation_sq = 0.0, translation_sq = 0.0;
+    for (const Bound& b : result.bounds[s]) {
+      rotation_sq += b.rotation * b.rotation;
+      translation_sq += b.translation * b.translation;
+    }
+    result.setting_bounds.push_back(
+        {std::sqrt(rotation_sq / trials), std::sqrt(translation_sq / trials)});
+    for (int m = 0; m < methods; ++m) {
+      std::vector<double> rotation(trials), translation(trials);
+      for (int t = 0; t < trials; ++t) {
+        const TrialResult& trial =
+            result.trials[(static_cast<size_t>(s) * trials + t) * methods + m];
+        rotation[t] = trial.rotation_error;
+        translation[t] = trial.translation_error;
+      }
+      sim::TriangleThresholdOptions rotation_options, translation_options;
+      rotation_options.floor = kOutlierFloorRotation;
+      translation_options.floor = kOutlierFloorTranslation;
+      const sim::TriangleThresholdResult rotation_outliers =
+          sim::TriangleThreshold(rotation, rotation_options);
+      const sim::TriangleThresholdResult translation_outliers =
+          sim::TriangleThreshold(translation, translation_options);
+      MethodSummary summary;
+      summary.setting = s;
+      summary.method = options.methods[m];
+      summary.trials = trials;
+      summary.rotation = sim::Summarize(rotation);
+      summary.translation = sim::Summarize(translation);
+      summary.failures = summary.rotation.failures;
+      double inlier_rotation_sq = 0.0, inlier_translation_sq = 0.0;
+      int inliers = 0;
+      double worst_rotation = 0.0, worst_translation = 0.0;
+      for (int t = 0; t < trials; ++t) {
+        TrialResult& trial = result.trials[(static_cast<size_t>(s) * trials + t) * methods + m];
+        if (trial.status != TrialStatus::kOk) continue;
+        trial.outlier = rotation_outliers.outlier[t] || translation_outliers.outlier[t];
+        if (trial.outlier) {
+          ++summary.outliers;
+        } else {
+          ++inliers;
+          inlier_rotation_sq += rotation[t] * rotation[t];
+          inlier_translation_sq += translation[t] * translation[t];
+        }
+        const Bound& bound = result.bounds[s][t];
+        worst_rotation = std::max(worst_rotation, rotation[t] / bound.rotation);
+        worst_translation = std::max(worst_translation, translation[t] / bound.translation);
+      }
+      summary.rotation_rmse_inliers = inliers > 0 ? std::sqrt(inlier_rotation_sq / inliers) : kNaN;
+      summary.translation_rmse_inliers =
+          inliers > 0 ? std::sqrt(inlier_translation_sq / inliers) : kNaN;
+      const bool bounded = std::isfinite(result.setting_bounds[s].rotation) &&
+                           result.setting_bounds[s].rotation > 0.0;
+      summary.worst_rotation_over_bound = bounded ? worst_rotation : kNaN;
+      summary.worst_translation_over_bound = bounded ? worst_translation : kNaN;
+      result.summaries.push_back(summary);
+    }
+  }
+  return result;
+}
+
+}  // namespace hecal::study

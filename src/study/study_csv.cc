@@ -1,0 +1,88 @@
+#include "hecal/study/study_csv.h"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <sstream>
+
+namespace hecal::study {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kMm = 1000.0;
+
+std::string Quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += (c == '\n' || c == '\r') ? ' ' : c;
+  }
+  return out + "\"";
+}
+
+// The setting's leading columns: setup,stations,noise_on,noise,sigma_mm,sigma_deg
+std::string SettingColumns(const Setting& s) {
+  return std::string(handeye::SetupName(s.setup)) + "," + std::to_string(s.stations) + "," +
+         std::string(NoiseOnName(s.noise_on)) + "," +
+         std::string(sim::NoiseKindName(s.noise_kind)) + "," +
+         FormatNumber(s.translation_sigma * kMm) + "," + FormatNumber(s.rotation_sigma * kDeg);
+}
+
+void AppendStatistics(std::ostringstream& out, const sim::SummaryStatistics& s, double rmse_inliers,
+                      double scale) {
+  out << FormatNumber(s.median * scale) << ',' << FormatNumber(s.rmse * scale) << ','
+      << FormatNumber(s.p10 * scale) << ',' << FormatNumber(s.p90 * scale) << ','
+      << FormatNumber(s.max * scale) << ',' << FormatNumber(rmse_inliers * scale);
+}
+
+}  // namespace
+
+std::string FormatNumber(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.9g", value);
+  return buffer;
+}
+
+std::string TrialsCsv(const StudyResult& result) {
+  std::ostringstream out;
+  out << "setup,stations,noise_on,noise,sigma_mm,sigma_deg,trial,method,status,"
+         "rotation_error_deg,translation_error_mm,outlier,bound_rotation_deg,"
+         "bound_translation_mm,message\n";
+  for (const TrialResult& trial : result.trials) {
+    const Setting& setting = result.options.settings[trial.setting];
+    const Bound& bound = result.bounds[trial.setting][trial.trial];
+    out << SettingColumns(setting) << ',' << trial.trial << ',' << handeye::Info(trial.method).name
+        << ',' << TrialStatusName(trial.status) << ',' << FormatNumber(trial.rotation_error * kDeg)
+        << ',' << FormatNumber(trial.translation_error * kMm) << ',' << (trial.outlier ? 1 : 0)
+        << ',' << FormatNumber(bound.rotation * kDeg) << ','
+        << FormatNumber(bound.translation * kMm) << ','
+        << (trial.message.empty() ? std::string() : Quoted(trial.message)) << '\n';
+  }
+  return out.str();
+}
+
+std::string SummaryCsv(const StudyResult& result) {
+  std::ostringstream out;
+  out << "setup,stations,noise_on,noise,sigma_mm,sigma_deg,method,trials,failures,outliers,"
+         "rotation_median_deg,rotation_rmse_deg,rotation_p10_deg,rotation_p90_deg,"
+         "rotation_max_deg,rotation_rmse_inliers_deg,translation_median_mm,translation_rmse_mm,"
+         "translation_p10_mm,translation_p90_mm,translation_max_mm,translation_rmse_inliers_mm,"
+         "bound_rotation_rmse_deg,bound_translation_rmse_mm,worst_rotation_over_bound,"
+         "worst_translation_over_bound\n";
+  for (const MethodSummary& s : result.summaries) {
+    const Bound& bound = result.setting_bounds[s.setting];
+    out << SettingColumns(result.options.settings[s.setting]) << ',' << handeye::Info(s.method).name
+        << ',' << s.trials << ',' << s.failures << ',' << s.outliers << ',';
+    AppendStatistics(out, s.rotation, s.rotation_rmse_inliers, kDeg);
+    out << ',';
+    AppendStatistics(out, s.translation, s.translation_rmse_inliers, kMm);
+    out << ',' << FormatNumber(bound.rotation * kDeg) << ','
+        << FormatNumber(bound.translation * kMm) << ',' << FormatNumber(s.worst_rotation_over_bound)
+        << ',' << FormatNumber(s.worst_translation_over_bound) << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace hecal::study

@@ -1,0 +1,80 @@
+// Issue 3's "Done when" figures on the thesis protocol, as a slow test (label "slow"; a
+// few seconds on 2 cores in Release, much longer under sanitizers). `hecal simulate` produces
+// the same numbers for the issue note.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "hecal/study/study.h"
+
+namespace hecal::study {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::vector<Setting> Sweep(const std::vector<int>& stations, double mm, double deg) {
+  std::vector<Setting> settings;
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    for (int n : stations) {
+      Setting s;
+      s.setup = setup;
+      s.stations = n;
+      s.translation_sigma = mm * 1e-3;
+      s.rotation_sigma = deg * kDeg;
+      settings.push_back(s);
+    }
+  }
+  return settings;
+}
+
+std::vector<handeye::Method> Every() {
+  std::vector<handeye::Method> methods;
+  for (const handeye::MethodInfo& info : handeye::AllMethods()) methods.push_back(info.method);
+  return methods;
+}
+
+TEST(ThesisStudy, NoiseFreeEverySolverRecoversXTo1e9) {
+  StudyOptions options;
+  options.settings = Sweep({3, 5, 10, 20}, 0.0, 0.0);
+  options.methods = Every();
+  options.trials = 100;
+  const StudyResult result = RunStudy(options);
+  for (const MethodSummary& s : result.summaries) {
+    const std::string name(handeye::Info(s.method).name);
+    EXPECT_EQ(s.failures, 0) << name;
+    EXPECT_LT(s.rotation.max, 1e-9) << name;
+    EXPECT_LT(s.translation.max, 1e-9) << name;
+  }
+}
+
+TEST(ThesisStudy, MlReachesTheFirstOrderBoundAtFifteenStations) {
+  StudyOptions options;
+  options.settings = Sweep({15}, 1.0, 1.0);
+  options.methods = {handeye::Method::kMl};
+  options.trials = 200;
+  const StudyResult result = RunStudy(options);
+  for (const MethodSummary& s : result.summaries) {
+    const Bound& bound = result.setting_bounds[s.setting];
+    EXPECT_NEAR(s.rotation.rmse / bound.rotation, 1.0, 0.1);
+    EXPECT_NEAR(s.translation.rmse / bound.translation, 1.0, 0.1);
+    EXPECT_LT(s.worst_rotation_over_bound, 10.0);
+    EXPECT_LT(s.worst_translation_over_bound, 10.0);
+  }
+}
+
+TEST(ThesisStudy, NoCatastrophicClosedFormTrialAtLowNoise) {
+  StudyOptions options;
+  options.settings = Sweep({5, 10, 20}, 0.3, 0.3);
+  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+    if (info.closed_form) options.methods.push_back(info.method);
+  }
+  options.trials = 200;
+  const StudyResult result = RunStudy(options);
+  for (const MethodSummary& s : result.summaries) {
+    EXPECT_EQ(s.failures, 0) << handeye::Info(s.method).name;
+    EXPECT_LT(s.rotation.max, 10.0 * kDeg) << handeye::Info(s.method).name;
+  }
+}
+
+}  // namespace
+}  // namespace hecal::study
