@@ -4,14 +4,14 @@
 #include <exception>
 
 #include "hecal/core/error.h"
-#include "version.h"
+#include "hecal/version.h"
 
 namespace hecal::cli {
 namespace {
 
 constexpr Registrar kRegistrars[] = {
-    &RegisterPosesCommand,
-    &RegisterImportCommand,
+    &RegisterPosesCommand,    &RegisterImportCommand, &RegisterCalibrateCommand,
+    &RegisterSimulateCommand, &RegisterBenchCommand,
 };
 
 }  // namespace
@@ -19,7 +19,7 @@ constexpr Registrar kRegistrars[] = {
 int RunHecal(const std::vector<std::string>& argv, std::ostream& out, std::ostream& err) {
   const Io io{out, err};
   CLI::App app{"hecal — hand–eye calibration with honest uncertainty", "hecal"};
-  app.set_version_flag("--version", std::string(kVersion));
+  app.set_version_flag("--version", std::string(hecal::kVersion));
   app.require_subcommand(1);
   for (Registrar registrar : kRegistrars) registrar(app, io);
 

@@ -27,6 +27,9 @@ using Registrar = void (*)(CLI::App& app, const Io& io);
 // Registrars, one per subcommand file (keep in the order `hecal --help` lists them).
 void RegisterPosesCommand(CLI::App& app, const Io& io);
 void RegisterImportCommand(CLI::App& app, const Io& io);
+void RegisterCalibrateCommand(CLI::App& app, const Io& io);
+void RegisterSimulateCommand(CLI::App& app, const Io& io);
+void RegisterBenchCommand(CLI::App& app, const Io& io);
 
 // argv[0] is the program name, as in main().
 int RunHecal(const std::vector<std::string>& argv, std::ostream& out, std::ostream& err);

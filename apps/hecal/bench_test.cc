@@ -1,0 +1,88 @@
+// `hecal bench` through RunHecal: the JSON contract (DESIGN.md §4.2), the table, bad flags.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+
+namespace hecal::cli {
+namespace {
+
+struct Outcome {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+Outcome Hecal(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"hecal"};
+  for (const std::string& arg : args) argv.push_back(arg);
+  std::ostringstream out, err;
+  const int code = RunHecal(argv, out, err);
+  return {code, out.str(), err.str()};
+}
+
+TEST(BenchCommand, JsonHasOneObjectPerImplMethodAndStations) {
+  const Outcome run = Hecal({"bench", "--stations", "5,8", "--json", "--method",
+                             "park-martin,chou-kamel", "--datasets", "2", "--min-time", "0"});
+  ASSERT_EQ(run.code, 0) << run.err;
+  const nlohmann::json array = nlohmann::json::parse(run.out);
+  ASSERT_TRUE(array.is_array());
+  std::set<std::string> keys;
+  for (const nlohmann::json& row : array) {
+    for (const char* field : {"impl", "method", "stations", "us_per_solve", "rotation_error_deg",
+                              "translation_error"}) {
+      EXPECT_TRUE(row.contains(field)) << field;
+    }
+    EXPECT_GT(row["us_per_solve"].get<double>(), 0.0);
+    keys.insert(row["impl"].get<std::string>() + "/" + row["method"].get<std::string>() + "/" +
+                std::to_string(row["stations"].get<int>()));
+    if (row["impl"] == "hecal") {
+      // 0.1 mm / 0.1° noise: errors of a fraction of a degree and a few mm at most.
+      EXPECT_LT(row["rotation_error_deg"].get<double>(), 1.0);
+      EXPECT_LT(row["translation_error"].get<double>(), 0.01);
+      EXPECT_EQ(row["failures"].get<int>(), 0);
+    }
+  }
+  for (const char* key :
+       {"hecal/park-martin/5", "hecal/park-martin/8", "hecal/chou-kamel/5", "hecal/chou-kamel/8"}) {
+    EXPECT_TRUE(keys.count(key)) << key;
+  }
+#ifdef HECAL_HAVE_OPENCV_PEERS
+  EXPECT_TRUE(keys.count("opencv/park-martin/8"));
+  EXPECT_FALSE(keys.count("opencv/chou-kamel/8"));  // OpenCV has no Chou–Kamel
+  EXPECT_EQ(array.size(), 6u);
+#else
+  EXPECT_EQ(array.size(), 4u);
+#endif
+}
+
+TEST(BenchCommand, TablePrintsTheSpeedUp) {
+  const Outcome run = Hecal(
+      {"bench", "--stations", "6", "--method", "andreff", "--datasets", "1", "--min-time", "0"});
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("andreff"), std::string::npos);
+  EXPECT_NE(run.out.find("speed-up"), std::string::npos);
+}
+
+TEST(BenchCommand, BadFlagsExitTwo) {
+  for (const std::vector<std::string>& args :
+       std::vector<std::vector<std::string>>{{"bench", "--stations", "2"},
+                                             {"bench", "--method", "fast"},
+                                             {"bench", "--setup", "both"},
+                                             {"bench", "--datasets", "0"},
+                                             {"bench", "--sigma", "-0.1"},
+                                             {"bench", "--min-time", "-1"}}) {
+    const Outcome run = Hecal(args);
+    EXPECT_EQ(run.code, 2) << args[1];
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  }
+}
+
+}  // namespace
+}  // namespace hecal::cli

@@ -1,0 +1,213 @@
+// `hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand
+//                  [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
+//                  [--output result.json] [--units m|mm]`          (DESIGN.md §4)
+// Reads the two pose tables, pairs stations (by id, else by order), solves with the chosen
+// method(s), prints a readable summary and writes the result file (DESIGN.md §5).
+#include "hecal/estimation/calibrate.h"
+
+#include <CLI/CLI.hpp>
+#include <charconv>
+#include <cmath>
+#include <iomanip>
+#include <memory>
+#include <numbers>
+#include <sstream>
+
+#include "cli.h"
+#include "hecal/core/error.h"
+#include "hecal/geometry/rotation.h"
+#include "hecal/io/pose_table.h"
+#include "hecal/report/result_file.h"
+
+namespace hecal::cli {
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+struct CalibrateFlags {
+  std::string robot;
+  std::string camera;
+  std::string setup;
+  std::string method = "ml";
+  std::string robot_sigma;
+  std::string camera_sigma;
+  std::string output;
+  std::string units = "m";
+  bool degrees = false;
+  std::string euler;
+  bool robot_inverse = false;
+  bool camera_inverse = false;
+  std::string robust = "none";
+};
+
+// "MM,DEG" → PoseSigma in metres and radians.
+estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
+  const size_t comma = text.find(',');
+  double values[2] = {0.0, 0.0};
+  bool ok = comma != std::string::npos;
+  const std::string parts[2] = {text.substr(0, comma), ok ? text.substr(comma + 1) : std::string()};
+  for (int k = 0; ok && k < 2; ++k) {
+    const auto [end, error] =
+        std::from_chars(parts[k].data(), parts[k].data() + parts[k].size(), values[k]);
+    ok = error == std::errc() && end == parts[k].data() + parts[k].size() &&
+         std::isfinite(values[k]) && values[k] >= 0.0;
+  }
+  if (!ok) {
+    throw InputError(flag, 0, "expected two non-negative numbers MM,DEG, got '" + text + "'",
+                     "write e.g. " + flag + " 0.5,0.1 for 0.5 mm and 0.1 degree per axis");
+  }
+  return {values[1] / kDegrees, values[0] * 1e-3};
+}
+
+void PrintPose(std::ostream& out, std::string_view name, std::string_view frame, const Pose& T,
+               double scale, std::string_view unit) {
+  const AxisAngle aa = AxisAngleFromMatrix(T.linear());
+  out << name << " = " << frame << "\n";
+  for (int r = 0; r < 3; ++r) {
+    out << "  [";
+    for (int c = 0; c < 3; ++c) out << std::setw(11) << T.linear()(r, c);
+    out << " |" << std::setw(11) << T.translation()(r) * scale << " ]\n";
+  }
+  out << "  rotation " << aa.angle * kDegrees << " deg about (" << aa.axis.transpose()
+      << "), translation " << (T.translation() * scale).transpose() << " " << unit << "\n";
+}
+
+void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covariance, double scale,
+                std::string_view unit) {
+  const Vector6d sd = covariance.diagonal().cwiseSqrt();
+  out << "  1σ " << name << ": rotation (" << sd.head<3>().transpose() * kDegrees
+      << ") deg, translation (" << sd.tail<3>().transpose() * scale << ") " << unit << "\n";
+}
+
+void PrintSummary(std::ostream& out, const report::ResultDocument& document,
+                  const estimation::CalibrationResult& result) {
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  const std::string_view unit = io::UnitName(document.unit);
+  out << std::fixed << std::setprecision(6);
+  out << "method " << handeye::Info(result.method).name << " ("
+      << handeye::SetupName(document.setup) << ", " << result.residuals.size() << " stations)\n";
+  PrintPose(out, "X", handeye::XFrameName(document.setup), result.X, scale, unit);
+  PrintPose(out, "Z", handeye::ZFrameName(document.setup), result.Z, scale, unit);
+  if (result.covariance_X) PrintSigma(out, "X", *result.covariance_X, scale, unit);
+  if (result.covariance_Z) PrintSigma(out, "Z", *result.covariance_Z, scale, unit);
+  out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegrees << " deg, "
+      << result.translation_rms * scale << " " << unit << "\n";
+  out << "  station        rotation_deg   translation_" << unit << "   whitened\n";
+  size_t k = 0;
+  for (size_t i = 0; i < document.station_ids.size() && k < result.residuals.size(); ++i) {
+    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) !=
+        document.rejected.end()) {
+      continue;
+    }
+    const estimation::StationResidual& r = result.residuals[k++];
+    out << "  " << std::left << std::setw(14) << document.station_ids[i] << std::right
+        << std::setw(12) << r.rotation * kDegrees << std::setw(17) << r.translation * scale
+        << std::setw(11) << r.whitened << (r.outlier ? "   > 3σ, check this station" : "") << "\n";
+  }
+  for (const std::string& warning : result.warnings) out << "warning: " << warning << "\n";
+  out.unsetf(std::ios::floatfield);
+}
+
+void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
+  const auto setup = handeye::ParseSetup(flags.setup);
+  if (!setup) {
+    throw InputError("--setup", 0, "unknown setup '" + flags.setup + "'",
+                     "use eye-in-hand (camera on the robot) or eye-to-hand (camera fixed)");
+  }
+  const bool all = flags.method == "all";
+  const auto method = handeye::ParseMethod(flags.method);
+  if (!all && !method) {
+    std::string names;
+    for (const auto& info : handeye::AllMethods()) names += std::string(info.name) + " ";
+    throw InputError("--method", 0, "unknown method '" + flags.method + "'",
+                     "use one of: " + names + "all");
+  }
+  const auto units = io::ParseLengthUnit(flags.units);
+  if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
+  io::PoseReadOptions read;
+  read.units = *units;
+  read.degrees = flags.degrees;
+  if (!flags.euler.empty()) {
+    read.euler = EulerSequence::Parse(flags.euler);
+    if (!read.euler) {
+      throw InputError("--euler", 0, "unknown Euler sequence '" + flags.euler + "'",
+                       "use three axis letters, lowercase extrinsic (xyz) or uppercase intrinsic "
+                       "(ZYX)");
+    }
+  }
+  estimation::CalibrateOptions options;
+  if (!flags.robot_sigma.empty())
+    options.robot_sigma = ParseSigma("--robot-sigma", flags.robot_sigma);
+  if (!flags.camera_sigma.empty()) {
+    options.camera_sigma = ParseSigma("--camera-sigma", flags.camera_sigma);
+  }
+  options.robust_loss = flags.robust;
+  if (flags.robust != "none" && flags.robust != "huber" && flags.robust != "cauchy") {
+    throw InputError("--robust", 0, "unknown loss '" + flags.robust + "'",
+                     "use none, huber or cauchy");
+  }
+
+  io::PoseReadOptions robot_read = read;
+  robot_read.invert = flags.robot_inverse;
+  io::PoseReadOptions camera_read = read;
+  camera_read.invert = flags.camera_inverse;
+  const io::PoseTable robot = io::ReadPoseTable(flags.robot, robot_read);
+  const io::PoseTable camera = io::ReadPoseTable(flags.camera, camera_read);
+  const io::Stations stations = io::PairStations(robot, camera);
+  const handeye::Problem problem = handeye::MakeProblem(*setup, stations.robot, stations.camera);
+
+  report::ResultDocument document;
+  document.setup = *setup;
+  document.unit = robot.unit;
+  document.station_ids = stations.ids;
+  document.all_methods = all;
+  if (all) {
+    for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+      options.method = info.method;
+      document.results.push_back(estimation::Calibrate(problem, options));
+    }
+  } else {
+    options.method = *method;
+    document.results.push_back(estimation::Calibrate(problem, options));
+  }
+  for (size_t k = 0; k < document.results.size(); ++k) {
+    if (k > 0) io.out << "\n";
+    PrintSummary(io.out, document, document.results[k]);
+  }
+  if (!flags.output.empty()) {
+    report::WriteResult(flags.output, document);
+    io.out << "wrote " << flags.output << "\n";
+  }
+}
+
+}  // namespace
+
+void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
+  auto flags = std::make_shared<CalibrateFlags>();
+  CLI::App* command = app.add_subcommand(
+      "calibrate", "Solve the hand–eye calibration from robot and camera pose tables");
+  command->add_option("--robot", flags->robot, "Robot poses T_base_gripper (CSV, DESIGN.md §3)")
+      ->required();
+  command->add_option("--camera", flags->camera, "Camera poses T_camera_target (CSV)")->required();
+  command->add_option("--setup", flags->setup, "eye-in-hand (camera on the robot) | eye-to-hand")
+      ->required();
+  command->add_option("--method", flags->method, "Method name, or all (default ml)");
+  command->add_option("--robot-sigma", flags->robot_sigma,
+                      "Robot pose noise per axis, MM,DEG (estimated when absent)");
+  command->add_option("--camera-sigma", flags->camera_sigma,
+                      "Camera pose noise per axis, MM,DEG (estimated when absent)");
+  command->add_option("--output", flags->output, "Result file (.json, or .yaml/.yml)");
+  command->add_option("--units", flags->units,
+                      "Length unit of input columns without a suffix: m (default) or mm; "
+                      "results use the robot file's unit");
+  command->add_flag("--degrees", flags->degrees, "Angles without a suffix are in degrees");
+  command->add_option("--euler", flags->euler, "Euler sequence of a1,a2,a3 columns (e.g. ZYX)");
+  command->add_flag("--robot-inverse", flags->robot_inverse,
+                    "The robot file holds T_gripper_base: invert every pose");
+  command->add_flag("--camera-inverse", flags->camera_inverse,
+                    "The camera file holds T_target_camera: invert every pose");
+  command->add_option("--robust", flags->robust, "Robust loss for ml/strobl: none|huber|cauchy");
+  command->callback([flags, &io] { RunCalibrate(*flags, io); });
+}
+
+}  // namespace hecal::cli

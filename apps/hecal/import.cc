@@ -1,0 +1,227 @@
+// `hecal import`: see import.h and docs/import-formats.md.
+#include "import.h"
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <system_error>
+
+#include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
+#include "hecal/io/import.h"
+#include "hecal/io/pose_table.h"
+#include "hecal/io/units.h"
+#include "hecal/version.h"
+
+namespace hecal::cli {
+namespace {
+
+constexpr const char* kImportFooter =
+    R"(Formats and INPUTs (conventions: docs/import-formats.md):
+  moveit        pose_samples.json                 [M_eef, M_obj] pairs, m
+  easy_handeye  NAME.samples (YAML)               robot inverted for eye_on_base, m
+                (--setup eye-in-hand|eye-to-hand when the file does not say)
+  camodocal     TransformPairsInput.yml           T1_i = T_base_ee, T2_i = T_camera_marker, m
+  ethz          ROBOT.csv CAMERA.csv              camera stream (T_W_E) inverted; stamps kept;
+                                                  streams unsynchronised (not paired), m
+  tabb          robot_cali.txt cali.txt | DIR     robot (B_i = T_gripper_base) inverted, mm
+                (--intrinsics camera.yaml writes fx, fy, cx, cy and distortion from cali.txt)
+  opencv-yaml   FILE.yml                          R_/t_gripper2base, R_/t_target2cam (or T_...)
+                                                  lists; --units m|mm (default m)
+  matrix16      ROBOT.txt [CAMERA.txt]            16 numbers per line (row-major 4x4);
+                                                  --units m|mm, --robot-inverse, --camera-inverse
+Output: robot.csv = T_base_gripper, camera.csv = T_camera_target, quaternions qw,qx,qy,qz, an id
+  column, a stamp column when the source has stamps, lengths in the source's unit (x_mm for mm),
+  '#' lines naming the source, the convention applied and the units.
+Errors: one line on stderr, exit code 2, and no output file is written or changed.)";
+
+struct Output {
+  std::string path;
+  std::string contents;
+  std::string flag;
+};
+
+// The identity of an output path for the "two outputs are the same file" check.
+std::string PathKey(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+  return error ? std::filesystem::path(path).lexically_normal().string() : canonical.string();
+}
+
+// Writes every output or none: checks the directories first, remembers what each path held, and
+// restores it when a later write fails.
+void WriteAllOrNothing(const std::vector<Output>& outputs) {
+  namespace fs = std::filesystem;
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    for (size_t j = 0; j < i; ++j) {
+      if (PathKey(outputs[i].path) == PathKey(outputs[j].path)) {
+        throw InputError(outputs[i].flag, 0,
+                         "names the same file as " + outputs[j].flag + " (" + outputs[i].path + ")",
+                         "give each output its own file");
+      }
+    }
+  }
+  struct Previous {
+    bool existed = false;
+    std::string contents;
+  };
+  std::vector<Previous> previous(outputs.size());
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    const fs::path path(outputs[i].path);
+    const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    std::error_code error;
+    if (!fs::is_directory(parent, error)) {
+      throw InputError(outputs[i].path, 0, "directory " + parent.string() + " does not exist",
+                       "create it, or give " + outputs[i].flag +
+                           " a path in an existing "
+                           "directory");
+    }
+    if (fs::is_directory(path, error)) {
+      throw InputError(outputs[i].path, 0, "is a directory",
+                       "give " + outputs[i].flag + " a file name");
+    }
+    if (fs::is_regular_file(path, error)) {
+      previous[i].existed = true;
+      previous[i].contents = io::ReadFile(outputs[i].path);
+    }
+  }
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    try {
+      io::WriteFileAtomically(outputs[i].path, outputs[i].contents);
+    } catch (...) {
+      for (size_t j = 0; j < i; ++j) {
+        try {
+          if (previous[j].existed) {
+            io::WriteFileAtomically(outputs[j].path, previous[j].contents);
+          } else {
+            std::error_code ignored;
+            fs::remove(outputs[j].path, ignored);
+          }
+        } catch (...) {
+          // Best effort: the original error is the one to report.
+        }
+      }
+      throw;
+    }
+  }
+}
+
+std::string CsvText(const io::PoseTable& table, const std::vector<std::string>& notes,
+                    const std::string& format) {
+  io::PoseWriteOptions write;  // quaternion rotation (the default RotationFormat)
+  write.units = table.unit;
+  write.comments.push_back("written by hecal " + std::string(kVersion) + " import --format " +
+                           format);
+  write.comments.insert(write.comments.end(), notes.begin(), notes.end());
+  return io::FormatPoseTable(table, write);
+}
+
+}  // namespace
+
+void RunImport(const ImportCommandOptions& options, const Io& io) {
+  const std::optional<io::ImportFormat> format = io::ParseImportFormat(options.format);
+  if (!format) {
+    throw InputError("--format", 0, "unknown import format '" + options.format + "'",
+                     "use one of " + io::ImportFormatList());
+  }
+  io::ImportOptions import_options;
+  if (!options.units.empty()) {
+    import_options.units = io::ParseLengthUnit(options.units);
+    if (!import_options.units) {
+      throw InputError("--units", 0, "unknown length unit '" + options.units + "'", "use m or mm");
+    }
+  }
+  if (!options.setup.empty()) {
+    if (options.setup == "eye-in-hand") {
+      import_options.setup = io::ImportSetup::kEyeInHand;
+    } else if (options.setup == "eye-to-hand") {
+      import_options.setup = io::ImportSetup::kEyeToHand;
+    } else {
+      throw InputError("--setup", 0, "unknown setup '" + options.setup + "'",
+                       "use eye-in-hand or eye-to-hand");
+    }
+  }
+  import_options.robot_inverse = options.robot_inverse;
+  import_options.camera_inverse = options.camera_inverse;
+  const bool robot_only = *format == io::ImportFormat::kMatrix16 && options.inputs.size() == 1;
+  if (options.camera.empty() && !robot_only) {
+    throw InputError("--camera", 0, "is required for --format " + options.format,
+                     "give --camera camera.csv (only a robot-only matrix16 import may omit it)");
+  }
+  if (!options.camera.empty() && robot_only) {
+    throw InputError("--camera", 0, "given, but matrix16 got only a robot file",
+                     "pass the camera matrix file after the robot file, or drop --camera");
+  }
+  if (!options.intrinsics.empty() && *format != io::ImportFormat::kTabb) {
+    throw InputError("--intrinsics", 0,
+                     "only tabb sources hold intrinsics (cali.txt), not " + options.format,
+                     "drop --intrinsics");
+  }
+
+  const io::ImportedPoses imported = io::ImportFiles(*format, options.inputs, import_options);
+
+  std::vector<Output> outputs;
+  outputs.push_back(
+      {options.robot, CsvText(imported.robot, imported.robot_notes, options.format), "--robot"});
+  if (imported.camera) {
+    outputs.push_back({options.camera,
+                       CsvText(*imported.camera, imported.camera_notes, options.format),
+                       "--camera"});
+  }
+  if (!options.intrinsics.empty()) {
+    if (!imported.intrinsics) {
+      throw InputError(options.inputs.back(), 0,
+                       "the images do not share one camera model (intrinsics differ between "
+                       "lines), so no single camera.yaml can be written",
+                       "drop --intrinsics");
+    }
+    const std::vector<std::string> comments = {
+        "written by hecal " + std::string(kVersion) + " import --format " + options.format,
+        "source: " + imported.intrinsics->source +
+            " (K and plumb_bob distortion k1 k2 p1 p2 k3, pixels)",
+        "width and height are not in the source; add them if a tool needs them"};
+    outputs.push_back({options.intrinsics, io::FormatIntrinsicsYaml(*imported.intrinsics, comments),
+                       "--intrinsics"});
+  }
+  WriteAllOrNothing(outputs);
+
+  const std::string unit(io::UnitName(imported.robot.unit));
+  io.out << "hecal: wrote " << imported.robot.rows.size() << " robot poses (T_base_gripper, "
+         << unit << ") to " << options.robot;
+  if (imported.camera) {
+    io.out << " and " << imported.camera->rows.size() << " camera poses (T_camera_target, "
+           << io::UnitName(imported.camera->unit) << ") to " << options.camera;
+  }
+  if (!options.intrinsics.empty()) io.out << ", intrinsics to " << options.intrinsics;
+  io.out << "\n";
+  if (!imported.synchronised) {
+    io.out << "hecal: note: the robot and camera streams are unsynchronised; their rows are not "
+              "stations (associate them by stamp before calibrating)\n";
+  }
+}
+
+void RegisterImportCommand(CLI::App& app, const Io& io) {
+  CLI::App* command = app.add_subcommand(
+      "import", "Convert another tool's calibration samples into robot.csv and camera.csv");
+  auto options = std::make_shared<ImportCommandOptions>();
+  command->add_option("--format", options->format, io::ImportFormatList())->required();
+  command->add_option("inputs", options->inputs, "INPUT... (see below)")->required();
+  command->add_option("--robot", options->robot, "output: robot poses T_base_gripper (CSV)")
+      ->required();
+  command->add_option("--camera", options->camera, "output: camera poses T_camera_target (CSV)");
+  command->add_option("--units", options->units,
+                      "m|mm: length unit of matrix16 and opencv-yaml inputs (default m)");
+  command->add_option("--setup", options->setup,
+                      "eye-in-hand|eye-to-hand: for easy_handeye files that do not say");
+  command->add_flag("--robot-inverse", options->robot_inverse,
+                    "matrix16: the robot file holds T_gripper_base; invert it");
+  command->add_flag("--camera-inverse", options->camera_inverse,
+                    "matrix16: the camera file holds T_target_camera; invert it");
+  command->add_option("--intrinsics", options->intrinsics,
+                      "tabb: also write the camera intrinsics of cali.txt (camera.yaml)");
+  command->footer(kImportFooter);
+  command->callback([options, io] { RunImport(*options, io); });
+}
+
+}  // namespace hecal::cli

@@ -1,0 +1,107 @@
+// `hecal poses convert`: see poses.h and docs/pose-files.md.
+#include "poses.h"
+
+#include <CLI/CLI.hpp>
+#include <memory>
+
+#include "hecal/core/error.h"
+#include "hecal/io/pose_table.h"
+#include "hecal/io/rotation_format.h"
+#include "hecal/io/units.h"
+
+namespace hecal::cli {
+namespace {
+
+constexpr const char* kConvertFooter =
+    R"(Input: CSV with a header naming x,y,z and one rotation group
+  (qw,qx,qy,qz | rx,ry,rz | r11..r33 | a1,a2,a3 with --euler SEQ | roll,pitch,yaw | a,b,c |
+  w,p,r | q1..q4), optional id and stamp; or 12/16 numbers per line (row-major 3x4/4x4).
+Units: header suffixes (x_mm, a_deg, rx_rad) win over flags. Without suffixes the input is in
+  --input-units (default m) and radians (--input-degrees for degrees; kuka a,b,c and fanuc
+  w,p,r default to degrees).
+  --units and --degrees apply to the OUTPUT: length defaults to the input's unit, angles to
+  radians (kuka and fanuc are always written in degrees). Units other than m/rad are named in the
+  output header (x_mm, a_deg), so the file reads back the same without flags.
+  euler:SEQ output starts with a '# euler: SEQ' line that declares the sequence of a1,a2,a3.
+Output: id and stamp columns are kept; quaternions have qw >= 0; --invert writes T^-1.
+Errors: one line on stderr, exit code 2, and no output file.)";
+
+std::optional<io::LengthUnit> UnitFlag(const std::string& text, const char* flag) {
+  if (text.empty()) return std::nullopt;
+  const std::optional<io::LengthUnit> unit = io::ParseLengthUnit(text);
+  if (!unit) throw InputError(flag, 0, "unknown length unit '" + text + "'", "use m or mm");
+  return unit;
+}
+
+}  // namespace
+
+void RunPosesConvert(const PosesConvertOptions& options, const Io& io) {
+  const std::optional<io::RotationFormat> format = io::ParseRotationFormat(options.to);
+  if (!format) {
+    throw InputError("--to", 0, "unknown rotation format '" + options.to + "'",
+                     "use one of " + std::string(io::RotationFormatSpellings()));
+  }
+  const std::optional<io::LengthUnit> output_unit = UnitFlag(options.units, "--units");
+  io::PoseReadOptions read;
+  read.units = UnitFlag(options.input_units, "--input-units").value_or(io::LengthUnit::kMetre);
+  read.degrees = options.input_degrees;
+  read.invert = options.invert;
+  if (!options.euler.empty()) {
+    read.euler = EulerSequence::Parse(options.euler);
+    if (!read.euler) {
+      throw InputError("--euler", 0, "unknown Euler sequence '" + options.euler + "'",
+                       "use three axis letters, lowercase = extrinsic, uppercase = intrinsic "
+                       "(e.g. xyz, ZYX, ZXZ)");
+    }
+  }
+
+  const io::PoseTable table = io::ReadPoseTable(options.input, read);
+  for (const std::string& warning : table.warnings) io.err << "hecal: warning: " << warning << "\n";
+
+  io::PoseWriteOptions write;
+  write.rotation = *format;
+  write.units = output_unit.value_or(table.unit);
+  write.degrees = options.degrees;
+  io::WritePoseTable(options.output, table, write);
+
+  const bool angles = format->kind == io::RotationFormat::Kind::kRotationVector ||
+                      format->kind == io::RotationFormat::Kind::kEuler;
+  io.out << "hecal: wrote " << table.rows.size() << " poses to " << options.output << " ("
+         << format->ToString() << ", " << io::UnitName(write.units)
+         << (angles ? (options.degrees || format->angles_in_degrees ? ", degrees" : ", radians")
+                    : "")
+         << (options.invert ? ", inverted" : "") << ")\n";
+}
+
+void RegisterPosesCommand(CLI::App& app, const Io& io) {
+  CLI::App* poses = app.add_subcommand("poses", "Pose files: convert rotation forms and units");
+  poses->require_subcommand(1);
+
+  auto options = std::make_shared<PosesConvertOptions>();
+  CLI::App* convert =
+      poses->add_subcommand("convert", "Convert a pose table to another rotation form and/or unit");
+  convert->add_option("--input", options->input, "Input pose table (CSV or matrix lines)")
+      ->required();
+  convert->add_option("--output", options->output, "Output CSV (written atomically)")->required();
+  convert
+      ->add_option("--to", options->to,
+                   "Rotation form: quaternion | rotvec | matrix | euler:SEQ (e.g. euler:ZYX, "
+                   "euler:xyz; lowercase = extrinsic, uppercase = intrinsic) | rpy | kuka | "
+                   "fanuc | abb | ur")
+      ->required();
+  convert->add_option("--units", options->units,
+                      "Output length unit m|mm (default: the input's unit)");
+  convert->add_flag("--degrees", options->degrees,
+                    "Output angles in degrees (rotvec, euler:SEQ, rpy; kuka/fanuc always are)");
+  convert->add_flag("--invert", options->invert, "Write the inverse of every pose");
+  convert->add_option("--input-units", options->input_units,
+                      "Input length unit m|mm when the header has no suffix (default m)");
+  convert->add_flag("--input-degrees", options->input_degrees,
+                    "Input angles in degrees when the header has no suffix");
+  convert->add_option("--euler", options->euler,
+                      "Euler sequence of a1,a2,a3 input columns (e.g. ZYX, xyz)");
+  convert->footer(kConvertFooter);
+  convert->callback([options, io] { RunPosesConvert(*options, io); });
+}
+
+}  // namespace hecal::cli

@@ -1,0 +1,201 @@
+// `hecal simulate`: see simulate.h.
+#include "simulate.h"
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+
+#include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
+#include "hecal/study/study.h"
+#include "hecal/study/study_csv.h"
+#include "list_flags.h"
+
+namespace hecal::cli {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+constexpr const char* kFooter =
+    R"(The thesis study (SPEC.md A.4): thesis-protocol data sets (random hand-eye
+transform, camera 1 m from the target, stations in a 1 m cube, +-45 deg tilt, free spin about
+the optical axis), noise on the robot and/or camera poses, every method on the same data per
+trial. Errors: angle of R_true^-1 R_est (deg) and translation distance (mm) of X.
+List flags sweep: the study runs every combination (setup x noise-on x noise x sigma x stations).
+--sigma levels: n = n mm and n deg per component (the thesis' "n mm / n deg"); MM/DEG for
+  different values, e.g. --sigma 0,0.3,1,0.2/0.05. Uniform: half-width; systematic: offset.
+--stations counts poses (k motions = k + 1 stations), at least 3.
+Outliers: triangle threshold on a smoothed log-histogram of each setting's errors (per method).
+Bound: first-order (Cramer-Rao-type) RMSE of the ml estimate at the truth, RMS over trials.
+Same --seed, same CSV files whatever --threads.)";
+
+std::vector<SigmaLevel> ParseSigmaLevels(const std::string& text) {
+  std::vector<SigmaLevel> levels;
+  for (const std::string& item : SplitList("--sigma", text)) {
+    levels.push_back(ParseSigmaLevel("--sigma", item));
+  }
+  return levels;
+}
+
+std::string Fixed(double value, int precision) {
+  if (!std::isfinite(value)) return study::FormatNumber(value);
+  char buffer[48];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", precision, value);
+  return buffer;
+}
+
+// Fixed-point for ordinary magnitudes, scientific for the tiny errors of noise-free data.
+std::string Readable(double value) {
+  if (std::isfinite(value) && value != 0.0 && std::abs(value) < 1e-3) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof(buffer), "%.2e", value);
+    return buffer;
+  }
+  return Fixed(value, 4);
+}
+
+std::string Pad(const std::string& text, size_t width, bool left_align = false) {
+  if (text.size() >= width) return text;
+  const std::string padding(width - text.size(), ' ');
+  return left_align ? text + padding : padding + text;
+}
+
+void PrintTable(const study::StudyResult& result, std::ostream& out) {
+  const auto& settings = result.options.settings;
+  size_t row = 0;
+  for (size_t s = 0; s < settings.size(); ++s) {
+    const study::Setting& setting = settings[s];
+    out << handeye::SetupName(setting.setup) << ", " << setting.stations << " stations, "
+        << sim::NoiseKindName(setting.noise_kind) << " noise on "
+        << study::NoiseOnName(setting.noise_on) << ", sigma "
+        << study::FormatNumber(setting.translation_sigma * 1000.0) << " mm / "
+        << study::FormatNumber(setting.rotation_sigma * kDeg) << " deg, " << result.options.trials
+        << " trials\n";
+    const study::Bound& bound = result.setting_bounds[s];
+    out << "  first-order bound (ml at the truth): rotation RMSE "
+        << Readable(bound.rotation * kDeg) << " deg, translation RMSE "
+        << Readable(bound.translation * 1000.0) << " mm\n";
+    out << "  " << Pad("method", 18, true) << Pad("fail", 5) << Pad("outl", 5)
+        << Pad("rot median", 12) << Pad("rmse", 10) << Pad("p10", 10) << Pad("p90", 10)
+        << Pad("max [deg]", 11) << Pad("tra median", 12) << Pad("rmse", 10) << Pad("p10", 10)
+        << Pad("p90", 10) << Pad("max [mm]", 11) << "\n";
+    for (; row < result.summaries.size() && result.summaries[row].setting == static_cast<int>(s);
+         ++row) {
+      const study::MethodSummary& m = result.summaries[row];
+      out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+          << Pad(std::to_string(m.failures), 5) << Pad(std::to_string(m.outliers), 5)
+          << Pad(Readable(m.rotation.median * kDeg), 12)
+          << Pad(Readable(m.rotation.rmse * kDeg), 10) << Pad(Readable(m.rotation.p10 * kDeg), 10)
+          << Pad(Readable(m.rotation.p90 * kDeg), 10) << Pad(Readable(m.rotation.max * kDeg), 11)
+          << Pad(Readable(m.translation.median * 1000.0), 12)
+          << Pad(Readable(m.translation.rmse * 1000.0), 10)
+          << Pad(Readable(m.translation.p10 * 1000.0), 10)
+          << Pad(Readable(m.translation.p90 * 1000.0), 10)
+          << Pad(Readable(m.translation.max * 1000.0), 11) << "\n";
+    }
+    out << "\n";
+  }
+}
+
+}  // namespace
+
+void RunSimulate(const SimulateFlags& flags, const Io& io) {
+  study::StudyOptions options;
+  std::vector<handeye::Setup> setups;
+  for (const std::string& item : SplitList("--setup", flags.setup)) {
+    const std::optional<handeye::Setup> setup = handeye::ParseSetup(item);
+    if (!setup) {
+      throw InputError("--setup", 0, "unknown setup '" + item + "'",
+                       "use eye-in-hand or eye-to-hand (or both, comma separated)");
+    }
+    setups.push_back(*setup);
+  }
+  const std::vector<int> stations = ParseIntList("--stations", flags.stations, 3);
+  std::vector<study::NoiseOn> noise_on;
+  for (const std::string& item : SplitList("--noise-on", flags.noise_on)) {
+    const std::optional<study::NoiseOn> value = study::ParseNoiseOn(item);
+    if (!value) {
+      throw InputError("--noise-on", 0, "unknown value '" + item + "'",
+                       "use robot, camera or both");
+    }
+    noise_on.push_back(*value);
+  }
+  std::vector<sim::NoiseModel::Kind> kinds;
+  for (const std::string& item : SplitList("--noise", flags.noise)) {
+    const std::optional<sim::NoiseModel::Kind> kind = sim::ParseNoiseKind(item);
+    if (!kind) {
+      throw InputError("--noise", 0, "unknown noise kind '" + item + "'",
+                       "use gaussian, uniform or systematic");
+    }
+    kinds.push_back(*kind);
+  }
+  const std::vector<SigmaLevel> sigmas = ParseSigmaLevels(flags.sigma);
+  options.methods = ParseMethodList("--method", flags.method);
+  if (flags.trials < 1) {
+    throw InputError("--trials", 0, "needs at least 1 trial", "e.g. --trials 200");
+  }
+  if (flags.threads < 0) {
+    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+  }
+  options.trials = flags.trials;
+  options.threads = flags.threads;
+  options.seed = flags.seed;
+  for (handeye::Setup setup : setups) {
+    for (study::NoiseOn on : noise_on) {
+      for (sim::NoiseModel::Kind kind : kinds) {
+        for (const SigmaLevel& sigma : sigmas) {
+          for (int n : stations) {
+            study::Setting setting;
+            setting.setup = setup;
+            setting.stations = n;
+            setting.noise_on = on;
+            setting.noise_kind = kind;
+            setting.translation_sigma = sigma.mm * 1e-3;
+            setting.rotation_sigma = sigma.deg / kDeg;
+            options.settings.push_back(setting);
+          }
+        }
+      }
+    }
+  }
+
+  const study::StudyResult result = study::RunStudy(options);
+  if (!flags.output.empty()) io::WriteFileAtomically(flags.output, study::TrialsCsv(result));
+  if (!flags.summary.empty()) io::WriteFileAtomically(flags.summary, study::SummaryCsv(result));
+  PrintTable(result, io.out);
+  if (!flags.output.empty()) io.out << "hecal: wrote per-trial errors to " << flags.output << "\n";
+  if (!flags.summary.empty()) io.out << "hecal: wrote the summary to " << flags.summary << "\n";
+}
+
+void RegisterSimulateCommand(CLI::App& app, const Io& io) {
+  auto flags = std::make_shared<SimulateFlags>();
+  CLI::App* simulate = app.add_subcommand(
+      "simulate", "The thesis study: every method on simulated data, errors and summaries");
+  simulate->add_option("--setup", flags->setup, "eye-in-hand | eye-to-hand (list sweeps)")
+      ->capture_default_str();
+  simulate->add_option("--stations", flags->stations, "Stations per data set (list sweeps, >= 3)")
+      ->capture_default_str();
+  simulate->add_option("--trials", flags->trials, "Random data sets per setting")
+      ->capture_default_str();
+  simulate->add_option("--noise-on", flags->noise_on, "robot | camera | both (list sweeps)")
+      ->capture_default_str();
+  simulate->add_option("--noise", flags->noise, "gaussian | uniform | systematic (list sweeps)")
+      ->capture_default_str();
+  simulate
+      ->add_option("--sigma", flags->sigma,
+                   "Noise levels: n (= n mm and n deg per component) or MM/DEG (list sweeps)")
+      ->capture_default_str();
+  simulate->add_option("--method", flags->method, "Method name(s), comma separated, or all")
+      ->capture_default_str();
+  simulate->add_option("--seed", flags->seed, "Random seed")->capture_default_str();
+  simulate->add_option("--threads", flags->threads, "Worker threads (0 = every core)")
+      ->capture_default_str();
+  simulate->add_option("--output", flags->output, "Per-trial CSV (written atomically)");
+  simulate->add_option("--summary", flags->summary, "Summary CSV (written atomically)");
+  simulate->footer(kFooter);
+  simulate->callback([flags, io] { RunSimulate(*flags, io); });
+}
+
+}  // namespace hecal::cli

@@ -1,0 +1,46 @@
+// `hecal simulate`: the thesis study (SPEC.md A.4, issue 3) on hecal's solvers, side by side.
+//
+//   hecal simulate [--setup eye-in-hand|eye-to-hand[,...]]      default eye-in-hand
+//                  [--stations N[,N...]]                        default 3,5,10,15,20
+//                  [--trials N]                                 default 200
+//                  [--noise-on robot|camera|both[,...]]         default both
+//                  [--noise gaussian|uniform|systematic[,...]]  default gaussian
+//                  [--sigma LEVEL[,LEVEL...]]                   default 0,0.3,1
+//                  [--method NAME[,NAME...]|all]                default all
+//                  [--seed N] [--threads N]                     default 1, 0 (= every core)
+//                  [--output trials.csv] [--summary summary.csv]
+// Every list flag is a sweep; the study runs the Cartesian product (setup × noise-on × noise ×
+// sigma × stations). A noise LEVEL is either one number n — n mm on each translation component
+// and n degrees on each rotation component, the thesis' "n mm / n°" — or MM/DEG for different
+// values (e.g. 0.2/0.05). For uniform noise the level is the half-width (±n); for systematic
+// noise it is the constant offset per component.
+// Stations count poses (the thesis' k motions are k + 1 stations); at least 3.
+// Prints a table per setting (stdout); --output and --summary write the CSV files of
+// study/study_csv.h atomically. Bad flags are InputError (exit 2, one line on stderr).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "cli.h"
+
+namespace hecal::cli {
+
+struct SimulateFlags {
+  std::string setup = "eye-in-hand";
+  std::string stations = "3,5,10,15,20";
+  int trials = 200;
+  std::string noise_on = "both";
+  std::string noise = "gaussian";
+  std::string sigma = "0,0.3,1";
+  std::string method = "all";
+  uint64_t seed = 1;
+  int threads = 0;
+  std::string output;
+  std::string summary;
+};
+
+// Runs the study; throws hecal::InputError for bad flags.
+void RunSimulate(const SimulateFlags& flags, const Io& io);
+
+}  // namespace hecal::cli

@@ -1,0 +1,111 @@
+// `hecal simulate` through RunHecal: flags, files, exit codes.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+
+namespace hecal::cli {
+namespace {
+
+struct Outcome {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+Outcome Hecal(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"hecal"};
+  for (const std::string& arg : args) argv.push_back(arg);
+  std::ostringstream out, err;
+  const int code = RunHecal(argv, out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::string ReadAll(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+class SimulateCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("hecal_simulate_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(SimulateCommand, WritesTrialsAndSummaryAndPrintsATable) {
+  const Outcome run =
+      Hecal({"simulate", "--stations", "5", "--trials", "4", "--sigma", "0.1,0.2/0.05", "--method",
+             "park-martin,ml", "--setup", "eye-in-hand,eye-to-hand", "--output", Path("trials.csv"),
+             "--summary", Path("summary.csv")});
+  ASSERT_EQ(run.code, 0) << run.err;
+  const std::string trials = ReadAll(Path("trials.csv"));
+  const std::string summary = ReadAll(Path("summary.csv"));
+  // 2 setups × 2 sigma levels × 1 station count = 4 settings; × 4 trials × 2 methods.
+  EXPECT_EQ(std::count(trials.begin(), trials.end(), '\n'), 1 + 4 * 4 * 2);
+  EXPECT_EQ(std::count(summary.begin(), summary.end(), '\n'), 1 + 4 * 2);
+  EXPECT_NE(trials.find("\neye-to-hand,5,both,gaussian,0.2,0.05,3,ml,ok,"), std::string::npos);
+  EXPECT_NE(summary.find("rotation_rmse_deg"), std::string::npos);
+  EXPECT_NE(
+      run.out.find("eye-to-hand, 5 stations, gaussian noise on both, sigma 0.2 mm / 0.05 deg"),
+      std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("first-order bound"), std::string::npos);
+  EXPECT_NE(run.out.find("park-martin"), std::string::npos);
+}
+
+TEST_F(SimulateCommand, SameSeedSameFileWhateverTheThreads) {
+  const std::vector<std::string> common = {
+      "simulate", "--stations",        "4,6",     "--trials", "5",          "--sigma", "0.3",
+      "--method", "tsai-lenz,andreff", "--noise", "uniform",  "--noise-on", "camera",  "--seed",
+      "7"};
+  std::vector<std::string> one = common, two = common;
+  one.insert(one.end(), {"--threads", "1", "--output", Path("one.csv")});
+  two.insert(two.end(), {"--threads", "2", "--output", Path("two.csv")});
+  ASSERT_EQ(Hecal(one).code, 0);
+  ASSERT_EQ(Hecal(two).code, 0);
+  const std::string a = ReadAll(Path("one.csv"));
+  EXPECT_FALSE(a.empty());
+  EXPECT_EQ(a, ReadAll(Path("two.csv")));
+  EXPECT_NE(a.find(",camera,uniform,0.3,0.3,"), std::string::npos);
+}
+
+TEST_F(SimulateCommand, BadFlagsExitTwoWithOneLine) {
+  const std::vector<std::vector<std::string>> bad = {
+      {"simulate", "--stations", "2"},        {"simulate", "--stations", "5,,10"},
+      {"simulate", "--stations", "five"},     {"simulate", "--sigma", "-1"},
+      {"simulate", "--sigma", "1/x"},         {"simulate", "--method", "opencv"},
+      {"simulate", "--noise", "pink"},        {"simulate", "--noise-on", "table"},
+      {"simulate", "--setup", "eye-on-hand"}, {"simulate", "--trials", "0"},
+      {"simulate", "--threads", "-2"},
+  };
+  for (const std::vector<std::string>& args : bad) {
+    const Outcome run = Hecal(args);
+    EXPECT_EQ(run.code, 2) << args.back();
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  }
+  // A missing output directory: exit 2 and no file.
+  const Outcome run = Hecal({"simulate", "--stations", "3", "--trials", "1", "--method", "andreff",
+                             "--output", Path("missing/dir/trials.csv")});
+  EXPECT_EQ(run.code, 2) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("missing/dir/trials.csv")));
+}
+
+}  // namespace
+}  // namespace hecal::cli

@@ -1,0 +1,14 @@
+// libFuzzer target for the JSON importer (MoveIt Calibration pose_samples.json). The whole input
+// is the file. Any exception other than hecal::InputError, any crash, and any accepted input that
+// breaks testing/import_properties.h is a finding.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "testing/import_properties.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  hecal::testing::RunImportProperty(hecal::testing::ImportReader::kMoveit, 0, text);
+  return 0;
+}

@@ -1,0 +1,19 @@
+// libFuzzer target for the plain-text importers: tabb (robot_cali.txt + cali.txt), ethz (two pose
+// CSVs) and matrix16. The first byte picks the reader (byte % 3) and its options (byte / 3:
+// matrix16 units and inverses); the rest is the file, or two files separated by a 0x1e byte.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "testing/import_properties.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size == 0) return 0;
+  using hecal::testing::ImportReader;
+  constexpr ImportReader kReaders[] = {ImportReader::kTabb, ImportReader::kEthz,
+                                       ImportReader::kMatrix16};
+  const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
+  hecal::testing::RunImportProperty(kReaders[data[0] % 3], static_cast<unsigned char>(data[0] / 3),
+                                    text);
+  return 0;
+}
