@@ -49,8 +49,8 @@ constexpr MethodInfo kMethods[] = {
      "(SVD), rejecting inconsistent motions; good when translations are accurate",
      true},
     {Method::kAndreff, "andreff",
-     "Andreff 2001: rotation by linear least squares on the Kronecker form "
-     "(I - R_B (x) R_A) vec R_X = 0, then translation; no angles or axes, robust",
+     "Andreff 2001: rotation and translation jointly by linear least squares on the Kronecker "
+     "form (12 unknowns), rotation orthogonalised, translation re-solved; no angles or axes",
      true},
     {Method::kShiuAhmad, "shiu-ahmad",
      "Shiu-Ahmad 1989: rotation from each motion's one-parameter family (axis equations) by "

@@ -1,0 +1,112 @@
+// Real data: data/rwhe-kuka2 (Ali et al. 2019, 28 eye-in-hand chessboard views on a KUKA arm;
+// see its SOURCE.md). Camera poses come from the images with OpenCV as a tool (the chessboard
+// detector and PnP; hecal's own image pipeline is a later layer): findChessboardCornersSB on the
+// 24×17 inner corners with 15 mm squares, then solvePnP with the reference intrinsics of
+// SOURCE.md. Robot poses: RobotPosesVec.txt, row-major 4×4 T_base_tcp in metres.
+// Independent truth: SOURCE.md's reference X = T_gripper_camera (OpenCV PARK, confirmed by
+// TSAI/HORAUD/DANIILIDIS/SHAH to 1 mm), rvec (−1.20742, 1.28362, −1.18276),
+// t = (0.01439, −0.10790, −0.08187) m; suggested tolerance 0.1° / 2 mm.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <numbers>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+#include <vector>
+
+#include "hecal/estimation/calibrate.h"
+#include "hecal/geometry/rotation.h"
+#include "hecal/geometry/so3.h"
+#include "hecal/handeye/methods.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+Pose PoseFromOpenCv(const cv::Mat& rvec, const cv::Mat& tvec) {
+  const Eigen::Vector3d w(rvec.at<double>(0), rvec.at<double>(1), rvec.at<double>(2));
+  const Eigen::Vector3d t(tvec.at<double>(0), tvec.at<double>(1), tvec.at<double>(2));
+  return MakePose(so3::Exp(w), t);
+}
+
+struct Kuka2 {
+  std::vector<Pose> T_base_gripper;
+  std::vector<Pose> T_camera_target;
+};
+
+Kuka2 LoadKuka2() {
+  const std::string dir = std::string(HECAL_SOURCE_DIR) + "/data/rwhe-kuka2/";
+  Kuka2 data;
+  std::ifstream robot(dir + "RobotPosesVec.txt");
+  Eigen::Matrix4d M;
+  while (true) {
+    for (int k = 0; k < 16; ++k) robot >> M(k / 4, k % 4);
+    if (!robot) break;
+    data.T_base_gripper.emplace_back(M);
+  }
+
+  const cv::Matx33d K(1056.2855, 0, 958.7994, 0, 1056.4172, 586.9487, 0, 0, 1);
+  const cv::Vec<double, 5> distortion(-0.131337, 0.099230, 0.000133, 0.000312, -0.049132);
+  const cv::Size pattern(24, 17);
+  constexpr double kSquare = 0.015;
+  std::vector<cv::Point3d> board;
+  for (int r = 0; r < pattern.height; ++r) {
+    for (int c = 0; c < pattern.width; ++c) board.emplace_back(c * kSquare, r * kSquare, 0.0);
+  }
+  for (std::size_t i = 1; i <= data.T_base_gripper.size(); ++i) {
+    const std::string name = dir + "images/im_" + (i < 10 ? "0" : "") + std::to_string(i) + ".png";
+    const cv::Mat image = cv::imread(name, cv::IMREAD_GRAYSCALE);
+    std::vector<cv::Point2f> corners;
+    if (image.empty() ||
+        !cv::findChessboardCornersSB(image, pattern, corners,
+                                     cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_ACCURACY)) {
+      ADD_FAILURE() << "no chessboard in " << name;
+      return {};
+    }
+    cv::Mat rvec, tvec;
+    cv::solvePnP(board, corners, K, distortion, rvec, tvec);
+    data.T_camera_target.push_back(PoseFromOpenCv(rvec, tvec));
+  }
+  return data;
+}
+
+TEST(Kuka2RealData, EveryMethodMatchesTheReferenceX) {
+  const Kuka2 data = LoadKuka2();
+  ASSERT_EQ(data.T_base_gripper.size(), 28u);
+  ASSERT_EQ(data.T_camera_target.size(), 28u);
+  const handeye::Problem problem =
+      handeye::MakeProblem(handeye::Setup::kEyeInHand, data.T_base_gripper, data.T_camera_target);
+  const Pose reference =
+      MakePose(so3::Exp(Eigen::Vector3d(-1.20742, 1.28362, -1.18276)),
+               Eigen::Vector3d(0.01439, -0.10790, -0.08187));
+
+  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+    CalibrateOptions options;
+    options.method = info.method;
+    const CalibrationResult result = Calibrate(problem, options);
+    const Pose difference = reference.inverse() * result.X;
+    const double rotation = so3::Log(difference.linear()).norm();
+    const double translation = (result.X.translation() - reference.translation()).norm();
+    // (SOURCE.md: OpenCV's ANDREFF is ~3 cm off here; hecal's re-solves the translation for
+    // the orthogonalised rotation, andreff.h step 3.)
+    // Daniilidis and Andreff weigh translation rows against rotation rows algebraically
+    // (translations normalised by their RMS), so PnP depth noise tilts their rotation: measured
+    // 0.156° / 1.2 mm and 0.101° / 0.25 mm. Every other method is within 0.05° / 1.1 mm of the
+    // reference (ml 0.014° / 0.41 mm).
+    const bool algebraic_joint =
+        info.method == handeye::Method::kDaniilidis || info.method == handeye::Method::kAndreff;
+    EXPECT_LT(rotation, (algebraic_joint ? 0.25 : 0.1) * kDeg) << info.name;
+    EXPECT_LT(translation, 0.002) << info.name;
+    if (info.method == handeye::Method::kMl) {
+      // The target stays put in the base frame to sub-millimetre (SOURCE.md: < 0.5 mm std).
+      EXPECT_LT(result.translation_rms, 1.5e-3);
+      EXPECT_LT(result.rotation_rms, 0.2 * kDeg);
+      ASSERT_TRUE(result.covariance_X.has_value());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hecal::estimation
