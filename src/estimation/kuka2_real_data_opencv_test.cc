@@ -78,9 +78,8 @@ TEST(Kuka2RealData, EveryMethodMatchesTheReferenceX) {
   ASSERT_EQ(data.T_camera_target.size(), 28u);
   const handeye::Problem problem =
       handeye::MakeProblem(handeye::Setup::kEyeInHand, data.T_base_gripper, data.T_camera_target);
-  const Pose reference =
-      MakePose(so3::Exp(Eigen::Vector3d(-1.20742, 1.28362, -1.18276)),
-               Eigen::Vector3d(0.01439, -0.10790, -0.08187));
+  const Pose reference = MakePose(so3::Exp(Eigen::Vector3d(-1.20742, 1.28362, -1.18276)),
+                                  Eigen::Vector3d(0.01439, -0.10790, -0.08187));
 
   for (const handeye::MethodInfo& info : handeye::AllMethods()) {
     CalibrateOptions options;

@@ -84,12 +84,13 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
   object["residuals"] = {{"rotation_rms_deg", result.rotation_rms * kDegrees},
                          {"translation_rms", result.translation_rms * scale},
                          {"per_station", per_station}};
-  object["noise"] = {
-      {"robot_sigma", {{"rotation_deg", result.robot_sigma.rotation * kDegrees},
+  object["noise"] = {{"robot_sigma",
+                      {{"rotation_deg", result.robot_sigma.rotation * kDegrees},
                        {"translation", result.robot_sigma.translation * scale}}},
-      {"camera_sigma", {{"rotation_deg", result.camera_sigma.rotation * kDegrees},
-                        {"translation", result.camera_sigma.translation * scale}}},
-      {"estimated", result.sigmas_estimated}};
+                     {"camera_sigma",
+                      {{"rotation_deg", result.camera_sigma.rotation * kDegrees},
+                       {"translation", result.camera_sigma.translation * scale}}},
+                     {"estimated", result.sigmas_estimated}};
   object["stations"] = {{"used", used}, {"rejected", rejected}};
   object["warnings"] = result.warnings;
   return object;
@@ -105,8 +106,8 @@ void EmitYaml(const json& value, YAML::Emitter& out) {
     out << YAML::EndMap;
   } else if (value.is_array()) {
     // Numeric rows (matrices, vectors) read best as flow sequences.
-    const bool numeric = std::all_of(value.begin(), value.end(),
-                                     [](const json& item) { return item.is_number(); });
+    const bool numeric =
+        std::all_of(value.begin(), value.end(), [](const json& item) { return item.is_number(); });
     if (numeric) out << YAML::Flow;
     out << YAML::BeginSeq;
     for (const json& item : value) EmitYaml(item, out);
@@ -138,7 +139,8 @@ std::string FormatResult(const ResultDocument& document, ResultFormat format) {
   json root;
   if (document.all_methods) {
     root = {{"results", json::array()}};
-    for (const auto& result : document.results) root["results"].push_back(ResultJson(document, result));
+    for (const auto& result : document.results)
+      root["results"].push_back(ResultJson(document, result));
   } else {
     root = ResultJson(document, document.results.at(0));
   }

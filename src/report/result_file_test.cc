@@ -71,8 +71,8 @@ TEST(ResultFile, JsonFollowsTheContract) {
   EXPECT_EQ(j["stations"]["rejected"], json({"b"}));
   ASSERT_EQ(j["residuals"]["per_station"].size(), 2u);
   EXPECT_EQ(j["residuals"]["per_station"][1]["id"], "c");
-  EXPECT_NEAR(j["residuals"]["per_station"][1]["rotation_deg"].get<double>(),
-              0.02 * 180.0 / M_PI, 1e-12);
+  EXPECT_NEAR(j["residuals"]["per_station"][1]["rotation_deg"].get<double>(), 0.02 * 180.0 / M_PI,
+              1e-12);
   EXPECT_NEAR(j["residuals"]["per_station"][1]["translation"].get<double>(), 4.0, 1e-12);
   EXPECT_TRUE(j["residuals"]["per_station"][1]["outlier"].get<bool>());
   EXPECT_NEAR(j["residuals"]["translation_rms"].get<double>(), 3.2, 1e-12);

@@ -34,8 +34,8 @@ Pose CameraInTarget(const ProtocolOptions& options, std::mt19937_64& rng) {
   const double alpha = tilt(rng);
   const double beta = tilt(rng);
   const double gamma = spin(rng);
-  const Eigen::Matrix3d R = ElementaryRotation(0, alpha) * ElementaryRotation(1, beta) *
-                            ElementaryRotation(2, gamma);
+  const Eigen::Matrix3d R =
+      ElementaryRotation(0, alpha) * ElementaryRotation(1, beta) * ElementaryRotation(2, gamma);
   const Eigen::Vector3d position =
       Eigen::Vector3d(0.0, 0.0, -options.start_distance) + UniformBox(rng, 0.5 * options.cube_side);
   return MakePose(R, position);
@@ -63,7 +63,7 @@ SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const Noise
   const Pose X_inverse = data.X.inverse();
   for (int i = 0; i < options.stations; ++i) {
     const Pose T_target_camera = CameraInTarget(options, rng);
-    const Pose B = T_target_camera.inverse();  // T_camera_target
+    const Pose B = T_target_camera.inverse();             // T_camera_target
     const Pose A = data.Z * T_target_camera * X_inverse;  // from Z = A X B
     const Pose T_base_gripper = options.setup == handeye::Setup::kEyeInHand ? A : A.inverse();
     data.T_base_gripper_true.push_back(T_base_gripper);

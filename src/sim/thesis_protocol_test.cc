@@ -10,11 +10,10 @@
 namespace hecal::sim {
 namespace {
 
-
 double MaxModelError(const SimulatedData& data, bool measured) {
-  const auto problem = handeye::MakeProblem(
-      data.setup, measured ? data.T_base_gripper : data.T_base_gripper_true,
-      measured ? data.T_camera_target : data.T_camera_target_true);
+  const auto problem =
+      handeye::MakeProblem(data.setup, measured ? data.T_base_gripper : data.T_base_gripper_true,
+                           measured ? data.T_camera_target : data.T_camera_target_true);
   double worst = 0.0;
   for (size_t i = 0; i < problem.A.size(); ++i) {
     const Pose Z_i = problem.A[i] * data.X * problem.B[i];
@@ -36,7 +35,8 @@ TEST(ThesisProtocol, NoiseFreeDataSatisfyTheModelInBothSetups) {
     for (int i = 0; i < 20; ++i) {
       const Pose& G = data.T_base_gripper[i];
       const Pose& C = data.T_camera_target[i];
-      const Pose lhs = setup == handeye::Setup::kEyeInHand ? G * data.X * C : G.inverse() * data.X * C;
+      const Pose lhs =
+          setup == handeye::Setup::kEyeInHand ? G * data.X * C : G.inverse() * data.X * C;
       EXPECT_LT((lhs.matrix() - data.Z.matrix()).norm(), 1e-12);
     }
   }
@@ -60,9 +60,9 @@ TEST(ThesisProtocol, GeometryFollowsTheThesis) {
     const Eigen::Vector3d optical_axis = T_target_camera.linear().col(2);
     EXPECT_GE(optical_axis.z(), std::cos(std::numbers::pi / 2) - 1e-12);
     if (i > 0) {
-      max_relative_angle =
-          std::max(max_relative_angle, so3::Distance(data.T_camera_target[0].linear(),
-                                                     data.T_camera_target[i].linear()));
+      max_relative_angle = std::max(
+          max_relative_angle,
+          so3::Distance(data.T_camera_target[0].linear(), data.T_camera_target[i].linear()));
     }
   }
   // Free spin about the optical axis: relative rotations come close to 180°.

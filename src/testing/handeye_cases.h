@@ -16,8 +16,7 @@
 namespace hecal::testing {
 
 inline sim::SimulatedData ThesisCase(handeye::Setup setup, int stations, uint64_t seed,
-                                     double rotation_sigma = 0.0,
-                                     double translation_sigma = 0.0) {
+                                     double rotation_sigma = 0.0, double translation_sigma = 0.0) {
   std::mt19937_64 rng(seed);
   sim::ProtocolOptions options;
   options.setup = setup;
@@ -48,8 +47,7 @@ inline sim::SimulatedData WideRotationCase(handeye::Setup setup, int stations, u
       T_target_camera.linear() =
           T_target_camera.linear() * so3::Exp(RandomRotationVector(rng, theta));
       std::uniform_real_distribution<double> box(-0.5, 0.5);
-      T_target_camera.translation() =
-          Eigen::Vector3d(box(rng), box(rng), -1.0 + box(rng));
+      T_target_camera.translation() = Eigen::Vector3d(box(rng), box(rng), -1.0 + box(rng));
     }
     const Pose B = T_target_camera.inverse();
     const Pose A = data.Z * T_target_camera * X.inverse();

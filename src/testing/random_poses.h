@@ -2,13 +2,12 @@
 // geometry property test must cover (identity, exactly π about each axis, tiny angles, near π).
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "hecal/geometry/types.h"
 
@@ -43,16 +42,13 @@ inline Pose RandomPose(std::mt19937_64& rng, double scale = 1.0) {
 inline std::vector<Eigen::Vector3d> EdgeCaseRotationVectors(std::mt19937_64& rng) {
   constexpr double pi = std::numbers::pi;
   std::vector<Eigen::Vector3d> cases = {
-      Eigen::Vector3d::Zero(),
-      pi * Eigen::Vector3d::UnitX(),
-      pi * Eigen::Vector3d::UnitY(),
-      pi * Eigen::Vector3d::UnitZ(),
-      -pi * Eigen::Vector3d::UnitZ(),
-      pi * Eigen::Vector3d(1, 1, 1).normalized(),
+      Eigen::Vector3d::Zero(),         pi * Eigen::Vector3d::UnitX(),
+      pi * Eigen::Vector3d::UnitY(),   pi * Eigen::Vector3d::UnitZ(),
+      -pi * Eigen::Vector3d::UnitZ(),  pi * Eigen::Vector3d(1, 1, 1).normalized(),
       1e-9 * Eigen::Vector3d::UnitX(),
   };
-  for (double angle : {1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 0.1, pi / 2, pi - 1e-2, pi - 1e-6,
-                       pi - 1e-9, pi}) {
+  for (double angle :
+       {1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 0.1, pi / 2, pi - 1e-2, pi - 1e-6, pi - 1e-9, pi}) {
     for (int i = 0; i < 3; ++i) cases.push_back(RandomRotationVector(rng, angle));
   }
   return cases;

@@ -19,12 +19,11 @@
 // deterministic answer where a1 and a3 are not separately observable.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include <Eigen/Core>
 
 namespace hecal {
 

@@ -26,7 +26,9 @@ Eigen::Matrix3d RightJacobianInverse(const Eigen::Vector3d& omega);
 Eigen::Matrix3d LeftJacobian(const Eigen::Vector3d& omega);
 Eigen::Matrix3d LeftJacobianInverse(const Eigen::Vector3d& omega);
 
-inline Eigen::Matrix3d Adjoint(const Eigen::Matrix3d& R) { return R; }
+inline Eigen::Matrix3d Adjoint(const Eigen::Matrix3d& R) {
+  return R;
+}
 
 // Geodesic interpolation R0 · Exp(s · Log(R0ᵀ R1)); s = 0 gives R0, s = 1 gives R1.
 Eigen::Matrix3d Interpolate(const Eigen::Matrix3d& R0, const Eigen::Matrix3d& R1, double s);

@@ -19,8 +19,8 @@
 
 namespace hecal::handeye {
 
-inline constexpr double kMinRotation = 1e-3;      // rad: below this a motion is a translation
-inline constexpr double kParallelAxes = 1e-3;     // rad: spread of axes below this is parallel
+inline constexpr double kMinRotation = 1e-3;   // rad: below this a motion is a translation
+inline constexpr double kParallelAxes = 1e-3;  // rad: spread of axes below this is parallel
 
 // Throws hecal::DegenerateError naming what cannot be observed and what data would fix it.
 void CheckObservability(const Problem& problem);

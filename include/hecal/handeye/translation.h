@@ -4,9 +4,8 @@
 // solved in least squares over all motions by accumulating the 3×3 normal equations.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "hecal/handeye/motion.h"
 

@@ -17,11 +17,11 @@ namespace hecal::report {
 
 struct ResultDocument {
   handeye::Setup setup = handeye::Setup::kEyeInHand;
-  io::LengthUnit unit = io::LengthUnit::kMetre;  // output length unit
-  std::vector<std::string> station_ids;           // one per station of the problem
-  std::vector<int> rejected;                      // indices into station_ids
+  io::LengthUnit unit = io::LengthUnit::kMetre;        // output length unit
+  std::vector<std::string> station_ids;                // one per station of the problem
+  std::vector<int> rejected;                           // indices into station_ids
   std::vector<estimation::CalibrationResult> results;  // one, or one per method for `all`
-  bool all_methods = false;                       // write {"results": [...]}
+  bool all_methods = false;                            // write {"results": [...]}
 };
 
 enum class ResultFormat { kJson, kYaml };

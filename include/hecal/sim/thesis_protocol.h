@@ -27,21 +27,21 @@ namespace hecal::sim {
 struct ProtocolOptions {
   handeye::Setup setup = handeye::Setup::kEyeInHand;
   int stations = 15;
-  double start_distance = 1.0;         // metres, camera to target at the start
-  double cube_side = 1.0;              // metres
+  double start_distance = 1.0;           // metres, camera to target at the start
+  double cube_side = 1.0;                // metres
   double max_tilt = 0.7853981633974483;  // radians (45°), about the image-plane axes
-  double hand_eye_offset = 0.05;       // metres, |translation component| of the flange offset
-  double other_offset = 1.0;           // metres, |translation component| of the other unknown
+  double hand_eye_offset = 0.05;         // metres, |translation component| of the flange offset
+  double other_offset = 1.0;             // metres, |translation component| of the other unknown
 };
 
 struct SimulatedData {
   handeye::Setup setup;
-  Pose X;                              // truth (problem.h meaning for the setup)
-  Pose Z;                              // truth
+  Pose X;  // truth (problem.h meaning for the setup)
+  Pose Z;  // truth
   std::vector<Pose> T_base_gripper_true;
   std::vector<Pose> T_camera_target_true;
-  std::vector<Pose> T_base_gripper;    // measured (noisy)
-  std::vector<Pose> T_camera_target;   // measured (noisy)
+  std::vector<Pose> T_base_gripper;   // measured (noisy)
+  std::vector<Pose> T_camera_target;  // measured (noisy)
 
   handeye::Problem MeasuredProblem() const;
 };
