@@ -8,24 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "cli_test_util.h"
 
 namespace hecal::cli {
 namespace {
 
-struct Outcome {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-Outcome Hecal(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {"hecal"};
-  for (const std::string& arg : args) argv.push_back(arg);
-  std::ostringstream out, err;
-  const int code = RunHecal(argv, out, err);
-  return {code, out.str(), err.str()};
-}
+using cli_test::Hecal;
+using cli_test::Outcome;
 
 TEST(BenchCommand, JsonHasOneObjectPerImplMethodAndStations) {
   const Outcome run = Hecal({"bench", "--stations", "5,8", "--json", "--method",

@@ -6,8 +6,10 @@
 #include "hecal/estimation/calibrate.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <iomanip>
 #include <memory>
 #include <numbers>
@@ -108,6 +110,39 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
   out.unsetf(std::ios::floatfield);
 }
 
+// `--method all`: one line per method, side by side, with the difference from ml.
+void PrintComparison(std::ostream& out, const report::ResultDocument& document) {
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  const std::string_view unit = io::UnitName(document.unit);
+  const auto ml = std::find_if(document.results.begin(), document.results.end(),
+                               [](const auto& r) { return r.method == handeye::Method::kMl; });
+  const std::string length = "res_" + std::string(unit);
+  out << "\nside by side (X " << handeye::XFrameName(document.setup) << ")\n  " << std::left
+      << std::setw(16) << "method" << std::right << std::setw(11) << "tx" << std::setw(12) << "ty"
+      << std::setw(12) << "tz" << std::setw(12) << "res_deg" << std::setw(9) << length;
+  if (ml != document.results.end())
+    out << std::setw(12) << "vs_ml_deg" << std::setw(10) << "vs_ml_" + std::string(unit);
+  out << "\n";
+  out << std::fixed;
+  for (const estimation::CalibrationResult& r : document.results) {
+    const Eigen::Vector3d t = r.X.translation() * scale;
+    out << "  " << std::left << std::setw(16) << handeye::Info(r.method).name << std::right
+        << std::setprecision(6) << std::setw(11) << t.x() << std::setw(12) << t.y() << std::setw(12)
+        << t.z() << std::setprecision(4) << std::setw(12) << r.rotation_rms * kDegrees
+        << std::setw(9) << r.translation_rms * scale;
+    if (ml != document.results.end()) {
+      const Pose d = ml->X.inverse() * r.X;
+      out << std::setw(12) << AxisAngleFromMatrix(d.linear()).angle * kDegrees << std::setw(10)
+          << (r.X.translation() - ml->X.translation()).norm() * scale;
+    }
+    out << "\n";
+  }
+  for (const report::MethodFailure& failure : document.failures)
+    out << "  " << std::left << std::setw(16) << handeye::Info(failure.method).name << std::right
+        << "refused: " << failure.message << "\n";
+  out.unsetf(std::ios::floatfield);
+}
+
 void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   const auto setup = handeye::ParseSetup(flags.setup);
   if (!setup) {
@@ -162,10 +197,19 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   document.station_ids = stations.ids;
   document.all_methods = all;
   if (all) {
+    // Degenerate data stop every method: then the first error is the answer. A method that
+    // refuses data the others accept is reported and skipped.
+    std::exception_ptr first_error;
     for (const handeye::MethodInfo& info : handeye::AllMethods()) {
       options.method = info.method;
-      document.results.push_back(estimation::Calibrate(problem, options));
+      try {
+        document.results.push_back(estimation::Calibrate(problem, options));
+      } catch (const DegenerateError& error) {
+        if (!first_error) first_error = std::current_exception();
+        document.failures.push_back({info.method, error.what()});
+      }
     }
+    if (document.results.empty()) std::rethrow_exception(first_error);
   } else {
     options.method = *method;
     document.results.push_back(estimation::Calibrate(problem, options));
@@ -174,6 +218,7 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
     if (k > 0) io.out << "\n";
     PrintSummary(io.out, document, document.results[k]);
   }
+  if (all) PrintComparison(io.out, document);
   if (!flags.output.empty()) {
     report::WriteResult(flags.output, document);
     io.out << "wrote " << flags.output << "\n";

@@ -9,45 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "cli_test_util.h"
 
 namespace hecal::cli {
 namespace {
 
-struct Outcome {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-Outcome Hecal(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {"hecal"};
-  for (const std::string& arg : args) argv.push_back(arg);
-  std::ostringstream out, err;
-  const int code = RunHecal(argv, out, err);
-  return {code, out.str(), err.str()};
-}
-
-std::string ReadAll(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-class SimulateCommand : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("hecal_simulate_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::filesystem::path dir_;
-};
+using cli_test::Hecal;
+using cli_test::Outcome;
+using SimulateCommand = cli_test::CliTest;
 
 TEST_F(SimulateCommand, WritesTrialsAndSummaryAndPrintsATable) {
   const Outcome run =
@@ -55,8 +24,8 @@ TEST_F(SimulateCommand, WritesTrialsAndSummaryAndPrintsATable) {
              "park-martin,ml", "--setup", "eye-in-hand,eye-to-hand", "--output", Path("trials.csv"),
              "--summary", Path("summary.csv")});
   ASSERT_EQ(run.code, 0) << run.err;
-  const std::string trials = ReadAll(Path("trials.csv"));
-  const std::string summary = ReadAll(Path("summary.csv"));
+  const std::string trials = Read(("trials.csv"));
+  const std::string summary = Read(("summary.csv"));
   // 2 setups × 2 sigma levels × 1 station count = 4 settings; × 4 trials × 2 methods.
   EXPECT_EQ(std::count(trials.begin(), trials.end(), '\n'), 1 + 4 * 4 * 2);
   EXPECT_EQ(std::count(summary.begin(), summary.end(), '\n'), 1 + 4 * 2);
@@ -80,9 +49,9 @@ TEST_F(SimulateCommand, SameSeedSameFileWhateverTheThreads) {
   two.insert(two.end(), {"--threads", "2", "--output", Path("two.csv")});
   ASSERT_EQ(Hecal(one).code, 0);
   ASSERT_EQ(Hecal(two).code, 0);
-  const std::string a = ReadAll(Path("one.csv"));
+  const std::string a = Read(("one.csv"));
   EXPECT_FALSE(a.empty());
-  EXPECT_EQ(a, ReadAll(Path("two.csv")));
+  EXPECT_EQ(a, Read(("two.csv")));
   EXPECT_NE(a.find(",camera,uniform,0.3,0.3,"), std::string::npos);
 }
 

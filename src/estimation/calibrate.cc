@@ -138,6 +138,13 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
   result.sigmas_estimated = spec.AnyEstimated();
+  // Now that the robot noise is known (given or estimated): is every direction of X's
+  // translation observed by more than noise? (observability.h)
+  if (std::string weak =
+          handeye::CheckObservabilityUnderNoise(problem, result.robot_sigma.rotation);
+      !weak.empty()) {
+    result.warnings.push_back(std::move(weak));
+  }
 
   // Warnings.
   if (!options.robot_sigma && !options.camera_sigma) {

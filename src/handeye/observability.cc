@@ -60,6 +60,14 @@ bool AnyRotation(const std::vector<Pose>& A) {
   return false;
 }
 
+// (O1): the normal matrix of the translation step over all station pairs.
+Eigen::Matrix3d TranslationNormalMatrix(const std::vector<Pose>& A) {
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  for (const Pose& pose : A) M += pose.linear();
+  const double n = static_cast<double>(A.size());
+  return n * n * Eigen::Matrix3d::Identity() - M.transpose() * M;
+}
+
 }  // namespace
 
 void CheckObservability(const Problem& problem) {
@@ -83,12 +91,7 @@ void CheckObservability(const Problem& problem) {
             Degrees(kMinRotation) + ")",
         "rotate the robot between stations, about at least two different axes");
   }
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  for (const Pose& A : problem.A) M += A.linear();
-  const Eigen::Matrix3d N =
-      static_cast<double>(n) * static_cast<double>(n) * Eigen::Matrix3d::Identity() -
-      M.transpose() * M;  // (O1)
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(N);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(TranslationNormalMatrix(problem.A));
   const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
   const double W = 0.5 * lambda.sum();
   const double s1 = std::max(W - lambda(0), 0.0);
@@ -103,6 +106,39 @@ void CheckObservability(const Problem& problem) {
             Degrees(spread) + ")",
         "rotate the robot about at least two clearly different axes (tilt as well as spin)");
   }
+}
+
+std::string CheckObservabilityUnderNoise(const Problem& problem, double robot_rotation_sigma) {
+  const double pairs = 0.5 * static_cast<double>(problem.A.size() * (problem.A.size() - 1));
+  const double floor = pairs * 4.0 * robot_rotation_sigma * robot_rotation_sigma;
+  if (!(floor > 0.0)) return {};
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(TranslationNormalMatrix(problem.A));
+  const Eigen::Vector3d rho = eigen.eigenvalues() / floor;  // ascending
+  const std::string x = "the translation of X (" + std::string(XFrameName(problem.setup)) + ")";
+  const std::string noise = "the robot rotation noise (" + Degrees(robot_rotation_sigma) + ")";
+  char ratio[64];
+  std::snprintf(ratio, sizeof(ratio), "%.3g times", rho(0));
+  if (rho(2) < kNoiseDegenerate) {
+    throw DegenerateError(
+        x + ": the robot's rotations between stations are within " + noise +
+            ", so it effectively only translates",
+        "rotate the robot between stations by tens of degrees, about at least two different "
+        "axes");
+  }
+  const std::string along = " along " + Direction(eigen.eigenvectors().col(0)) + " of the " +
+                            TranslationFrame(problem.setup) + " frame";
+  if (rho(0) < kNoiseDegenerate) {
+    throw DegenerateError(
+        x + along + ": the robot's rotation axes differ only by " + noise +
+            " (the axes' spread observes it " + ratio + " what noise alone would)",
+        "rotate the robot about at least two clearly different axes (tilt as well as spin)");
+  }
+  if (rho(0) < kNoiseWeak) {
+    return x + along + " is weakly observed: the rotation axes' spread observes it only " + ratio +
+           " what " + noise +
+           " alone would; tilt the robot about more different axes to pin it down";
+  }
+  return {};
 }
 
 }  // namespace hecal::handeye

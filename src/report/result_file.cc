@@ -43,7 +43,9 @@ json PoseJson(const Pose& T, std::string_view frame, double scale) {
 json CovarianceJson(const Matrix6d& covariance, double scale) {
   Vector6d s;
   s << 1.0, 1.0, 1.0, scale, scale, scale;
-  return MatrixJson(s.asDiagonal() * covariance * s.asDiagonal());
+  // Written exactly symmetric (the solver's inverse is symmetric only to rounding).
+  const Matrix6d scaled = s.asDiagonal() * covariance * s.asDiagonal();
+  return MatrixJson(0.5 * (scaled + scaled.transpose()));
 }
 
 json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
@@ -141,6 +143,12 @@ std::string FormatResult(const ResultDocument& document, ResultFormat format) {
     root = {{"results", json::array()}};
     for (const auto& result : document.results)
       root["results"].push_back(ResultJson(document, result));
+    for (const MethodFailure& failure : document.failures) {
+      root["results"].push_back({{"hecal_version", hecal::kVersion},
+                                 {"setup", handeye::SetupName(document.setup)},
+                                 {"method", handeye::Info(failure.method).name},
+                                 {"error", failure.message}});
+    }
   } else {
     root = ResultJson(document, document.results.at(0));
   }

@@ -90,6 +90,17 @@ TEST(ResultFile, AllMethodsWritesAResultsArray) {
   EXPECT_EQ(j["results"][1]["method"], "ml");
 }
 
+TEST(ResultFile, AllMethodsListsAMethodThatRefusedWithItsReason) {
+  ResultDocument document = MakeDocument();
+  document.all_methods = true;
+  document.failures.push_back({handeye::Method::kDaniilidis, "inconsistent motions"});
+  const json j = json::parse(FormatResult(document, ResultFormat::kJson));
+  ASSERT_EQ(j["results"].size(), 2u);
+  EXPECT_EQ(j["results"][1]["method"], "daniilidis");
+  EXPECT_EQ(j["results"][1]["error"], "inconsistent motions");
+  EXPECT_FALSE(j["results"][1].contains("X"));
+}
+
 TEST(ResultFile, YamlCarriesTheSameValues) {
   const ResultDocument document = MakeDocument();
   const json j = json::parse(FormatResult(document, ResultFormat::kJson));

@@ -1,5 +1,7 @@
 // The calibration result file (DESIGN.md §5, the contract): JSON, or YAML when the output path
-// ends in .yaml / .yml. One object per method; `--method all` writes {"results": [ ... ]}.
+// ends in .yaml / .yml. One object per method; `--method all` writes {"results": [ ... ]}, where
+// a method that refused the data (e.g. Daniilidis' consistency check) appears as
+// {"hecal_version", "setup", "method", "error": "<why>"} so that every method is accounted for.
 //
 // Units: lengths in the input's unit (`units.length`), angles in radians, except fields whose
 // name says _deg. Covariances are right-perturbation, (rx, ry, rz, tx, ty, tz), rad² / rad·unit /
@@ -15,6 +17,12 @@
 
 namespace hecal::report {
 
+// A method of `--method all` that refused the data, with its DegenerateError message.
+struct MethodFailure {
+  handeye::Method method = handeye::Method::kMl;
+  std::string message;
+};
+
 struct ResultDocument {
   handeye::Setup setup = handeye::Setup::kEyeInHand;
   io::LengthUnit unit = io::LengthUnit::kMetre;        // output length unit
@@ -22,6 +30,7 @@ struct ResultDocument {
   std::vector<int> rejected;                           // indices into station_ids
   std::vector<estimation::CalibrationResult> results;  // one, or one per method for `all`
   bool all_methods = false;                            // write {"results": [...]}
+  std::vector<MethodFailure> failures;                 // `all` only: methods that refused
 };
 
 enum class ResultFormat { kJson, kYaml };

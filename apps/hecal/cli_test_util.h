@@ -1,0 +1,55 @@
+// Test support for the CLI tests: run `hecal` in-process through RunHecal (capturing stdout,
+// stderr and the exit code) inside a fresh per-test temporary directory.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+#include "hecal/io/atomic_file.h"
+
+namespace hecal::cli::cli_test {
+
+struct Outcome {
+  int code = 0;
+  std::string out;
+  std::string err;
+};
+
+inline Outcome Hecal(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"hecal"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::ostringstream out, err;
+  const int code = RunHecal(argv, out, err);
+  return {code, out.str(), err.str()};
+}
+
+// A fixture with its own directory, removed after the test.
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("hecal_cli_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name() + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string Write(const std::string& name, const std::string& contents) const {
+    io::WriteFileAtomically(Path(name), contents);
+    return Path(name);
+  }
+  std::string Read(const std::string& name) const { return io::ReadFile(Path(name)); }
+
+  std::filesystem::path dir_;
+};
+
+}  // namespace hecal::cli::cli_test
