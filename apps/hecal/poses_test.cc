@@ -12,6 +12,7 @@
 #include "cli.h"
 #include "csv_test_util.h"
 #include "hecal/io/atomic_file.h"
+#include "testing/elementary_rotations.h"
 
 namespace hecal::cli {
 namespace {
@@ -22,15 +23,10 @@ using ::testing::StartsWith;
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-Eigen::Matrix3d Rx(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()).matrix();
-}
-Eigen::Matrix3d Ry(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()).matrix();
-}
-Eigen::Matrix3d Rz(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).matrix();
-}
+// Independent definitions (not the library's Euler code): elementary rotations composed by hand.
+using testing::Rx;
+using testing::Ry;
+using testing::Rz;
 
 using csv_test::Csv;
 

@@ -12,6 +12,7 @@
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
+#include "testing/elementary_rotations.h"
 #include "testing/random_poses.h"
 
 namespace hecal::io {
@@ -23,15 +24,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
 // Independent definitions (not the library's Euler code): elementary rotations composed by hand.
-Eigen::Matrix3d Rx(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()).matrix();
-}
-Eigen::Matrix3d Ry(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()).matrix();
-}
-Eigen::Matrix3d Rz(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).matrix();
-}
+using testing::Rx;
+using testing::Ry;
+using testing::Rz;
 
 PoseTable Parse(std::string_view text, const PoseReadOptions& options = {}) {
   return ParsePoseTable(text, "poses.csv", options);
