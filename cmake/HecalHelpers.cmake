@@ -17,7 +17,8 @@ install(TARGETS hecal_compile_options EXPORT hecalTargets)
 
 # hecal_add_module(<name> [DEPENDS <public targets>...] [PRIVATE_DEPENDS <targets>...]
 #                  [TEST_DEPENDS <targets>...])
-# Builds library hecal_<name> (alias hecal::<name>) from src/<name>/*.cc and one GoogleTest
+# Builds library hecal_<name> (alias hecal::<name>) from src/<name>/*.cc (an INTERFACE library
+# when the module has headers only) and one GoogleTest
 # executable per src/<name>/*_test.cc, registered with CTest under the label "unit".
 # A test file named *_slow_test.cc gets the label "slow" instead (kept out of the default run).
 # A test file named *_opencv_test.cc uses OpenCV as a peer and is built only with
@@ -32,13 +33,21 @@ function(hecal_add_module name)
     list(REMOVE_ITEM lib_sources ${test_sources})
   endif()
   set(target hecal_${name})
-  add_library(${target} ${lib_sources})
+  if(lib_sources)
+    add_library(${target} ${lib_sources})
+    set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    set(scope PUBLIC)
+    target_link_libraries(${target} PRIVATE ${ARG_PRIVATE_DEPENDS} hecal_compile_options)
+  else()  # a header-only module
+    add_library(${target} INTERFACE)
+    set(scope INTERFACE)
+  endif()
   add_library(hecal::${name} ALIAS ${target})
-  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON)
-  target_include_directories(${target} PUBLIC
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
+  target_include_directories(${target} ${scope}
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-  target_link_libraries(${target} PUBLIC ${ARG_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS} hecal_compile_options)
+  target_link_libraries(${target} ${scope} ${ARG_DEPENDS})
   install(TARGETS ${target} EXPORT hecalTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
