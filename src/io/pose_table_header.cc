@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <unordered_map>
 
+#include "closest_name.h"
 #include "hecal/core/error.h"
 
 namespace hecal::io::pose_table_internal {
@@ -101,20 +102,6 @@ std::string Lowercase(std::string_view text) {
   return lower;
 }
 
-size_t EditDistance(std::string_view a, std::string_view b) {
-  std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    current[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
-    }
-    std::swap(previous, current);
-  }
-  return previous[b.size()];
-}
-
 // A likely intended column for an unknown name, or "".
 std::string SuggestColumn(std::string_view name) {
   static constexpr std::pair<std::string_view, std::string_view> kAliases[] = {
@@ -131,7 +118,7 @@ std::string SuggestColumn(std::string_view name) {
   std::string best;
   size_t best_distance = 3;
   for (const KnownColumn& column : kKnownColumns) {
-    const size_t distance = EditDistance(name, column.name);
+    const size_t distance = internal::EditDistance(name, column.name);
     // Single-letter names are only suggested for a one-character slip.
     const size_t limit = column.name.size() == 1 ? 1 : 2;
     if (distance <= limit && distance < best_distance) {

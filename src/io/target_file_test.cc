@@ -1,0 +1,175 @@
+#include "hecal/io/target_file.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
+
+namespace hecal::io {
+namespace {
+
+using pose::TargetType;
+using ::testing::HasSubstr;
+
+pose::TargetSpec Parse(const std::string& text) {
+  return ParseTargetYaml(text, "target.yaml");
+}
+
+// The InputError a text raises.
+InputError ErrorOf(const std::string& text) {
+  try {
+    Parse(text);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return InputError("", 0, "", "");
+}
+
+void ExpectError(const std::string& text, int line, const std::string& problem) {
+  const InputError error = ErrorOf(text);
+  EXPECT_EQ(error.source(), "target.yaml");
+  EXPECT_EQ(error.line(), line) << error.what();
+  EXPECT_THAT(error.problem(), HasSubstr(problem)) << error.what();
+  EXPECT_FALSE(error.fix().empty()) << error.what();
+}
+
+TEST(TargetFile, Chessboard) {
+  const pose::TargetSpec spec = Parse("type: chessboard\ncols: 9\nrows: 6\nsquare: 0.025\n");
+  EXPECT_EQ(spec.type, TargetType::kChessboard);
+  EXPECT_EQ(spec.cols, 9);
+  EXPECT_EQ(spec.rows, 6);
+  EXPECT_EQ(spec.square, 0.025);
+  EXPECT_EQ(pose::ObjectPoints(spec).size(), 54u);
+}
+
+TEST(TargetFile, CharucoInMillimetres) {
+  // The moveit board (data/moveit-calibration/SOURCE.md), written in millimetres.
+  const pose::TargetSpec spec = Parse(
+      "# moveit_calibration test board\n"
+      "type: charuco\ncols: 5\nrows: 7\nsquare: 28.157\nmarker: 17.6\n"
+      "dictionary: DICT_5X5_250\nunits: mm\n");
+  EXPECT_EQ(spec.type, TargetType::kCharuco);
+  EXPECT_NEAR(spec.square, 0.028157, 1e-15);
+  EXPECT_NEAR(spec.marker, 0.0176, 1e-15);
+  EXPECT_EQ(spec.dictionary, "DICT_5X5_250");
+  EXPECT_EQ(pose::ObjectPoints(spec).size(), 24u);
+}
+
+TEST(TargetFile, ArucoGrid) {
+  const pose::TargetSpec spec = Parse(
+      "type: aruco_grid\ncols: 4\nrows: 3\nmarker: 0.0256\nspacing: 0.0066\n"
+      "dictionary: DICT_4X4_250\n");
+  EXPECT_EQ(spec.type, TargetType::kArucoGrid);
+  EXPECT_EQ(spec.marker, 0.0256);
+  EXPECT_EQ(spec.spacing, 0.0066);
+  EXPECT_EQ(spec.first_id, 0);
+  EXPECT_EQ(pose::ObjectPoints(spec).size(), 48u);
+}
+
+TEST(TargetFile, AprilTagGridWithFirstId) {
+  const pose::TargetSpec spec = Parse(
+      "{type: apriltag_grid, cols: 6, rows: 6, marker: 0.088, spacing: 0.0264, family: tag36h11, "
+      "first_id: 100}");
+  EXPECT_EQ(spec.type, TargetType::kAprilTagGrid);
+  EXPECT_EQ(spec.family, "tag36h11");
+  EXPECT_EQ(spec.first_id, 100);
+  EXPECT_EQ(spec.spacing, 0.0264);
+}
+
+TEST(TargetFile, CircleGrids) {
+  const pose::TargetSpec circles = Parse("type: circles\ncols: 4\nrows: 5\nsquare: 0.02\n");
+  EXPECT_EQ(circles.type, TargetType::kCircles);
+  const pose::TargetSpec acircles =
+      Parse("type: acircles\ncols: 4\nrows: 11\nsquare: 20\nunits: mm\n");
+  EXPECT_EQ(acircles.type, TargetType::kAsymmetricCircles);
+  EXPECT_NEAR(acircles.square, 0.02, 1e-15);
+  EXPECT_EQ(pose::ObjectPoints(acircles).size(), 44u);
+}
+
+TEST(TargetFile, ReadsAFile) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "hecal_target_file_test.yaml").string();
+  WriteFileAtomically(path, "type: chessboard\ncols: 7\nrows: 5\nsquare: 0.03\n");
+  EXPECT_EQ(ReadTargetFile(path).cols, 7);
+  std::filesystem::remove(path);
+  EXPECT_THROW(ReadTargetFile(path), InputError);
+}
+
+const std::string kChessboard = "type: chessboard\ncols: 9\nrows: 6\nsquare: 0.025\n";
+
+TEST(TargetFile, StructureErrors) {
+  ExpectError("", 0, "empty");
+  ExpectError("- chessboard\n- 9\n", 1, "not a map");
+  ExpectError("type: chessboard\ncols: [9\n", 3, "not valid YAML");
+  ExpectError(kChessboard + "sqaure: 0.02\n", 5, "unknown key \"sqaure\" (did you mean 'square'?)");
+  ExpectError(kChessboard + "colour: red\n", 5, "unknown key \"colour\"");
+  ExpectError(kChessboard + "? [a, b]\n: 1\n", 5, "a key is not a plain name");
+  ExpectError(kChessboard + "rows: 7\n", 5, "key 'rows' is given twice (first on line 3)");
+  ExpectError("cols: 9\nrows: 6\nsquare: 0.025\n", 0, "has no 'type'");
+  ExpectError("type: checkerboard\ncols: 9\n", 1, "unknown target type \"checkerboard\"");
+  ExpectError("type: chesboard\ncols: 9\n", 1, "(did you mean 'chessboard'?)");
+  ExpectError("type: [chessboard]\n", 1, "type is not a single value");
+  ExpectError(kChessboard + "units: cm\n", 5, "units is \"cm\"");
+}
+
+TEST(TargetFile, KeysPerType) {
+  ExpectError("type: chessboard\ncols: 9\nrows: 6\n", 1, "chessboard targets need 'square'");
+  ExpectError("type: charuco\ncols: 5\nrows: 7\nsquare: 0.03\ndictionary: DICT_5X5_250\n", 1,
+              "charuco targets need 'marker'");
+  ExpectError("type: aruco_grid\ncols: 4\nrows: 3\nmarker: 0.03\nspacing: 0.01\n", 1,
+              "aruco_grid targets need 'dictionary'");
+  ExpectError("type: apriltag_grid\ncols: 4\nrows: 3\nmarker: 0.03\nfamily: tag36h11\n", 1,
+              "apriltag_grid targets need 'spacing'");
+  ExpectError(kChessboard + "marker: 0.01\n", 5, "'marker' does not apply to chessboard targets");
+  const InputError unused = ErrorOf(kChessboard + "dictionary: DICT_5X5_250\n");
+  EXPECT_THAT(unused.fix(), HasSubstr("(charuco, aruco_grid)"));
+  ExpectError(
+      "type: charuco\ncols: 5\nrows: 7\nsquare: 0.03\nmarker: 0.02\ndictionary: DICT_5X5_250\n"
+      "first_id: 4\n",
+      7, "'first_id' does not apply to charuco targets");
+}
+
+TEST(TargetFile, ValueErrors) {
+  ExpectError("type: chessboard\ncols: [9, 6]\nrows: 6\nsquare: 0.02\n", 2,
+              "cols is not a number (found a list)");
+  ExpectError("type: chessboard\ncols: 9\nrows: 6.5\nsquare: 0.02\n", 3, "not a whole number");
+  ExpectError("type: chessboard\ncols: nine\nrows: 6\nsquare: 0.02\n", 2, "not a number");
+  ExpectError("type: chessboard\ncols: -9\nrows: 6\nsquare: 0.02\n", 2, "not a whole number");
+  ExpectError("type: chessboard\ncols: 9\nrows: 1\nsquare: 0.02\n", 3, "rows is 1");
+  ExpectError("type: chessboard\ncols: 9\nrows: 0\nsquare: 0.02\n", 3, "rows is 0");
+  ExpectError("type: chessboard\ncols: 9\nrows: 6\nsquare: -0.02\n", 4, "positive length");
+  ExpectError("type: chessboard\ncols: 9\nrows: 6\nsquare: .nan\n", 4, "positive length");
+  ExpectError("type: chessboard\ncols: 9\nrows: 6\nsquare: 0\n", 4, "positive length");
+  ExpectError("type: chessboard\ncols: 9\nrows: 6\nsquare: {a: 1}\n", 4, "found a map");
+  ExpectError(
+      "type: charuco\ncols: 5\nrows: 7\nsquare: 20\nmarker: 20\ndictionary: DICT_5X5_250\n"
+      "units: mm\n",
+      5, "the ChArUco marker (0.02 m) must be smaller than the square (0.02 m)");
+  ExpectError(
+      "type: charuco\ncols: 2\nrows: 7\nsquare: 0.03\nmarker: 0.02\n"
+      "dictionary: DICT_5X5_250\n",
+      2, "3 to 1000 squares");
+  ExpectError(
+      "type: charuco\ncols: 5\nrows: 7\nsquare: 0.03\nmarker: 0.02\n"
+      "dictionary: DICT_5x5_250\n",
+      6, "unknown ArUco dictionary 'DICT_5x5_250' (did you mean 'DICT_5X5_250'?)");
+  EXPECT_NO_THROW(
+      Parse("type: charuco\ncols: 5\nrows: 7\nsquare: 0.03\nmarker: 0.02\n"
+            "dictionary: DICT_4X4_50\n"));  // 17 markers, 50 ids
+  ExpectError(
+      "type: apriltag_grid\ncols: 6\nrows: 6\nmarker: 0.088\nspacing: 0.0264\n"
+      "family: tag36h12\n",
+      6, "unknown AprilTag family 'tag36h12' (did you mean");
+  ExpectError(
+      "type: apriltag_grid\ncols: 6\nrows: 6\nmarker: 0.088\nspacing: 0.0264\n"
+      "family: tag36h11\nfirst_id: 560\n",
+      7, "marker ids 560 to 595 but tag36h11 has only 587 ids");
+  ExpectError("type: acircles\ncols: 4\nrows: 10\nsquare: 0.02\n", 3, "even number of rows");
+}
+
+}  // namespace
+}  // namespace hecal::io
