@@ -1,0 +1,72 @@
+// Test support for the vision tests: a planar board, camera poses that look at it from chosen
+// directions, and pixels projected with OpenCV's own plumb_bob model (cv::projectPoints, the
+// reference for pose/camera_model.h), optionally with Gaussian pixel noise.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <opencv2/calib3d.hpp>
+#include <random>
+#include <vector>
+
+#include "hecal/geometry/types.h"
+#include "hecal/pose/camera_model.h"
+
+namespace hecal::vision::testing {
+
+// Inner corners of a cols × rows chessboard, row-major, in the target frame (z = 0, metres).
+inline std::vector<Eigen::Vector3d> BoardPoints(int cols, int rows, double square) {
+  std::vector<Eigen::Vector3d> points;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) points.emplace_back(c * square, r * square, 0.0);
+  }
+  return points;
+}
+
+// T_camera_target of a camera at `eye` (target frame) looking at `centre`, its x axis kept
+// perpendicular to the target's y axis, then turned by `pan` (radians, about the camera's own x
+// and y axes) so the target moves across the image. The target frame's z points into the board,
+// so a camera on the board's front side sits at negative z.
+inline Pose LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& centre,
+                   const Eigen::Vector2d& pan = Eigen::Vector2d::Zero()) {
+  const Eigen::Vector3d z = (centre - eye).normalized();
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitY().cross(z).normalized();
+  Eigen::Matrix3d R_target_camera;
+  R_target_camera << x, z.cross(x), z;
+  const Pose T_target_camera = MakePose(R_target_camera, eye);
+  const Eigen::Matrix3d turn = (Eigen::AngleAxisd(pan.x(), Eigen::Vector3d::UnitX()) *
+                                Eigen::AngleAxisd(pan.y(), Eigen::Vector3d::UnitY()))
+                                   .toRotationMatrix();
+  return MakePose(turn, Eigen::Vector3d::Zero()) * T_target_camera.inverse();
+}
+
+inline std::vector<Eigen::Vector2d> Project(const std::vector<Eigen::Vector3d>& points,
+                                            const Pose& T_camera_target,
+                                            const pose::CameraModel& camera) {
+  std::vector<cv::Point3d> object;
+  for (const Eigen::Vector3d& p : points) object.emplace_back(p.x(), p.y(), p.z());
+  const Eigen::AngleAxisd angle_axis(T_camera_target.linear());
+  const Eigen::Vector3d w = angle_axis.angle() * angle_axis.axis();
+  const Eigen::Vector3d t = T_camera_target.translation();
+  const cv::Matx33d K(camera.fx, 0.0, camera.cx, 0.0, camera.fy, camera.cy, 0.0, 0.0, 1.0);
+  std::vector<cv::Point2d> image;
+  cv::projectPoints(object, cv::Vec3d(w.x(), w.y(), w.z()), cv::Vec3d(t.x(), t.y(), t.z()), K,
+                    cv::Vec<double, 5>(camera.distortion.data()), image);
+  std::vector<Eigen::Vector2d> pixels;
+  for (const cv::Point2d& q : image) pixels.emplace_back(q.x, q.y);
+  return pixels;
+}
+
+inline void AddNoise(double sigma_px, std::mt19937_64& rng, std::vector<Eigen::Vector2d>* pixels) {
+  std::normal_distribution<double> noise(0.0, sigma_px);
+  for (Eigen::Vector2d& p : *pixels) p += Eigen::Vector2d(noise(rng), noise(rng));
+}
+
+// Rotation angle between two poses (radians) and translation distance (metres).
+inline double RotationError(const Pose& a, const Pose& b) {
+  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
+}
+inline double TranslationError(const Pose& a, const Pose& b) {
+  return (a.translation() - b.translation()).norm();
+}
+
+}  // namespace hecal::vision::testing
