@@ -1,0 +1,71 @@
+// Joint refinement of the reprojection error over X, Z and the robot poses (issue 4, "End to
+// end"): the image-level maximum-likelihood estimate, which `hecal calibrate --images` runs after
+// the pose-level `ml` (ml.h) has given X and Z.
+//
+// Model (reprojection_cost.h): station i has a measured robot pose G̃_i = T_base_gripper_i and the
+// detected pixels u_ik of target points P_k. Unknowns: X, Z and the true robot poses G_i.
+//        minimise  Σ_ik ‖(π(B_i(X, Z, G_i) · P_k) − u_ik) / σ_px‖²
+//                + Σ_i ‖W_robot · Log(G̃_i⁻¹ G_i)‖²
+// i.e. the pixels are measurements with isotropic noise σ_px and the robot poses are noisy
+// measurements with the right-perturbation noise model of --robot-sigma (W_robot =
+// diag(1/σ_rot, 1/σ_trans)). When the robot sigma is zero in rotation or translation the robot
+// poses are held fixed (treated as exact). The camera model (intrinsics, distortion) is fixed:
+// calibrate it first (vision/intrinsics_calibration.h). Solved with Ceres (Levenberg–Marquardt,
+// dense normal Cholesky — 12 + 6n unknowns) on Se3RightManifold blocks.
+//
+// Pixel noise: --pixel-sigma when given; otherwise estimated from the residuals as
+// σ̂² = Σ ‖π(B_i P_k) − u_ik‖² / (2m − 12) over the m points (the robot priors bring as many
+// residuals as robot unknowns), alternated with the
+// estimate until it changes by less than 1e-3 (relative) — only the pixel term is rescaled, the
+// robot prior keeps its given weight.
+// Covariance of (X, Z): the (X, Z) block of the Gauss–Newton inverse information over all
+// unknowns (the robot poses marginalised), right perturbations, (ω, v) order, metres/radians.
+// Per-image report: reprojection RMS (px) of each station; a station is flagged when its RMS
+// exceeds 3 σ̂_px (a detection or robot-pose problem).
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/geometry/types.h"
+#include "hecal/handeye/problem.h"
+#include "hecal/pose/camera_model.h"
+
+namespace hecal::estimation {
+
+// The detected points of one station's image.
+struct ImagePoints {
+  std::vector<Eigen::Vector3d> target;  // P_k, target frame, metres
+  std::vector<Eigen::Vector2d> pixels;  // u_k, pixels (same order)
+};
+
+struct ReprojectionOptions {
+  handeye::Setup setup = handeye::Setup::kEyeInHand;
+  pose::CameraModel camera;
+  PoseSigma robot_sigma;              // per axis; zero rotation or translation: robot held fixed
+  std::optional<double> pixel_sigma;  // px; estimated when absent
+  int max_sigma_iterations = 10;
+};
+
+struct ReprojectionResult {
+  Pose X = Pose::Identity();
+  Pose Z = Pose::Identity();
+  Eigen::Matrix<double, 12, 12> covariance;  // (δX, δZ)
+  std::vector<Pose> T_base_gripper;          // refined robot poses
+  std::vector<double> image_rms_px;          // per station
+  std::vector<bool> image_outlier;           // RMS > 3 σ̂_px
+  double rms_px = 0.0;                       // over every point
+  double pixel_sigma = 0.0;                  // used (given or estimated)
+  bool pixel_sigma_estimated = false;
+};
+
+// Requires T_base_gripper.size() == images.size() and a start (X0, Z0) close enough for the
+// target to stay in front of every camera (the pose-level ml estimate). Throws DegenerateError
+// for fewer than 3 images or 2m ≤ 12 pixel residuals; InputError for invalid sigmas.
+ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
+                                      const std::vector<ImagePoints>& images, const Pose& X0,
+                                      const Pose& Z0, const ReprojectionOptions& options);
+
+}  // namespace hecal::estimation

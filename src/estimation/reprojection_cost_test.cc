@@ -1,0 +1,105 @@
+#include "hecal/estimation/reprojection_cost.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <random>
+
+#include "hecal/geometry/se3.h"
+#include "testing/image_stations.h"
+#include "testing/random_poses.h"
+
+namespace hecal::estimation {
+namespace {
+
+// The analytic Jacobians (lifted into the ambient layout) match central differences of the
+// residual along right perturbations of X, Z and G, for both setups.
+TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
+  std::mt19937_64 rng(3);
+  const pose::CameraModel camera = testing::TestCamera();
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const testing::ImageStations stations =
+        testing::MakeImageStations(setup, 4, 11, {sim::NoiseModel::Kind::kGaussian, 0, 0}, 0.0);
+    for (size_t i = 0; i < stations.images.size(); ++i) {
+      const Eigen::Vector3d P = stations.images[i].target[7];
+      const Eigen::Vector2d u(300.0, 200.0);
+      const ReprojectionCost cost(setup, camera, P, u, 0.5);
+      std::array<Pose, 3> poses = {stations.data.X, stations.data.Z,
+                                   stations.data.T_base_gripper_true[i]};
+      std::array<std::array<double, kPoseAmbientSize>, 3> parameters;
+      for (int b = 0; b < 3; ++b) PoseToParameters(poses[b], parameters[b].data());
+      const double* blocks[3] = {parameters[0].data(), parameters[1].data(), parameters[2].data()};
+      Eigen::Vector2d r;
+      std::array<Eigen::Matrix<double, 2, kPoseAmbientSize, Eigen::RowMajor>, 3> J;
+      double* jacobians[3] = {J[0].data(), J[1].data(), J[2].data()};
+      ASSERT_TRUE(cost.Evaluate(blocks, r.data(), jacobians));
+      for (int b = 0; b < 3; ++b) {
+        EXPECT_EQ(J[b].col(6).norm(), 0.0);
+        for (int k = 0; k < 6; ++k) {
+          constexpr double h = 1e-6;
+          Vector6d e = Vector6d::Zero();
+          e(k) = h;
+          Eigen::Vector2d r_plus, r_minus;
+          for (double sign : {1.0, -1.0}) {
+            std::array<double, kPoseAmbientSize> moved;
+            PoseToParameters(poses[b] * se3::Exp(sign * e), moved.data());
+            const double* perturbed[3] = {blocks[0], blocks[1], blocks[2]};
+            perturbed[b] = moved.data();
+            ASSERT_TRUE(cost.Evaluate(perturbed, (sign > 0 ? r_plus : r_minus).data(), nullptr));
+          }
+          const Eigen::Vector2d numeric = (r_plus - r_minus) / (2.0 * h);
+          EXPECT_LT((numeric - J[b].col(k)).norm(), 1e-5 * (1.0 + numeric.norm()))
+              << "block " << b << " column " << k;
+        }
+      }
+    }
+  }
+}
+
+TEST(ReprojectionCost, CameraFromUnknownsFollowsTheModel) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const testing::ImageStations stations =
+        testing::MakeImageStations(setup, 5, 12, {sim::NoiseModel::Kind::kGaussian, 0, 0}, 0.0);
+    for (size_t i = 0; i < 5; ++i) {
+      const Pose B = CameraFromUnknowns(setup, stations.data.X, stations.data.Z,
+                                        stations.data.T_base_gripper_true[i]);
+      EXPECT_TRUE(B.isApprox(stations.data.T_camera_target_true[i], 1e-12));
+    }
+  }
+}
+
+TEST(RobotPosePriorCost, IsTheWhitenedLogAndItsJacobian) {
+  std::mt19937_64 rng(5);
+  const Pose measured = testing::RandomPose(rng, 1.0);
+  const Pose G =
+      measured * se3::Exp((Vector6d() << 0.01, -0.02, 0.005, 0.003, 0.001, -0.002).finished());
+  const RobotPosePriorCost cost(measured, 0.002, 0.0005);
+  std::array<double, kPoseAmbientSize> p;
+  PoseToParameters(G, p.data());
+  const double* blocks[1] = {p.data()};
+  Vector6d r;
+  Eigen::Matrix<double, 6, kPoseAmbientSize, Eigen::RowMajor> J;
+  double* jacobians[1] = {J.data()};
+  ASSERT_TRUE(cost.Evaluate(blocks, r.data(), jacobians));
+  Vector6d expected = se3::Log(measured.inverse() * G);
+  expected.head<3>() /= 0.002;
+  expected.tail<3>() /= 0.0005;
+  EXPECT_LT((r - expected).norm(), 1e-9);
+  for (int k = 0; k < 6; ++k) {
+    constexpr double h = 1e-7;
+    Vector6d e = Vector6d::Zero();
+    e(k) = h;
+    std::array<double, kPoseAmbientSize> plus, minus;
+    PoseToParameters(G * se3::Exp(e), plus.data());
+    PoseToParameters(G * se3::Exp(-e), minus.data());
+    Vector6d rp, rm;
+    const double* bp[1] = {plus.data()};
+    const double* bm[1] = {minus.data()};
+    ASSERT_TRUE(cost.Evaluate(bp, rp.data(), nullptr));
+    ASSERT_TRUE(cost.Evaluate(bm, rm.data(), nullptr));
+    EXPECT_LT(((rp - rm) / (2 * h) - J.col(k).head<6>()).norm(), 1e-4 * (1.0 + J.col(k).norm()));
+  }
+}
+
+}  // namespace
+}  // namespace hecal::estimation
