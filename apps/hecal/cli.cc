@@ -10,8 +10,9 @@ namespace hecal::cli {
 namespace {
 
 constexpr Registrar kRegistrars[] = {
-    &RegisterPosesCommand,    &RegisterImportCommand, &RegisterCalibrateCommand,
-    &RegisterSimulateCommand, &RegisterBenchCommand,
+    &RegisterPosesCommand,     &RegisterImportCommand, &RegisterDetectCommand,
+    &RegisterCalibrateCommand, &RegisterPoseCommand,   &RegisterSimulateCommand,
+    &RegisterBenchCommand,
 };
 
 }  // namespace

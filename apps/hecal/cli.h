@@ -27,7 +27,9 @@ using Registrar = void (*)(CLI::App& app, const Io& io);
 // Registrars, one per subcommand file (keep in the order `hecal --help` lists them).
 void RegisterPosesCommand(CLI::App& app, const Io& io);
 void RegisterImportCommand(CLI::App& app, const Io& io);
+void RegisterDetectCommand(CLI::App& app, const Io& io);
 void RegisterCalibrateCommand(CLI::App& app, const Io& io);
+void RegisterPoseCommand(CLI::App& app, const Io& io);
 void RegisterSimulateCommand(CLI::App& app, const Io& io);
 void RegisterBenchCommand(CLI::App& app, const Io& io);
 
