@@ -14,6 +14,7 @@
 #include "testing/handeye_solver_suite.h"
 #include "testing/moveit_dataset.h"
 #include "testing/tabb_dataset.h"
+#include "testing/thrown.h"
 
 namespace hecal::handeye {
 namespace {
@@ -22,13 +23,7 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 // The DegenerateError thrown for `problem` (fails the test when nothing is thrown).
 DegenerateError Thrown(const Problem& problem) {
-  try {
-    CheckObservability(problem);
-  } catch (const DegenerateError& error) {
-    return error;
-  }
-  ADD_FAILURE() << "no DegenerateError";
-  return DegenerateError("", "");
+  return testing::Thrown<DegenerateError>([&] { CheckObservability(problem); });
 }
 
 // Noise-free data whose stations' orientations are R_i = R0 · Exp(angle_i · axis_i).
@@ -160,13 +155,7 @@ Problem WithRobotNoise(const sim::SimulatedData& data, double sigma, uint64_t se
 }
 
 DegenerateError ThrownUnderNoise(const Problem& problem, double sigma) {
-  try {
-    CheckObservabilityUnderNoise(problem, sigma);
-  } catch (const DegenerateError& error) {
-    return error;
-  }
-  ADD_FAILURE() << "no DegenerateError";
-  return DegenerateError("", "");
+  return testing::Thrown<DegenerateError>([&] { CheckObservabilityUnderNoise(problem, sigma); });
 }
 
 TEST(ObservabilityUnderNoise, NoisyParallelAxesAndPureTranslationsAreDegenerate) {

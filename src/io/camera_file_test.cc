@@ -11,6 +11,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_tabb.h"
 #include "hecal/io/import_types.h"
+#include "testing/thrown.h"
 
 namespace hecal::io {
 namespace {
@@ -24,21 +25,12 @@ pose::CameraModel Parse(const std::string& text) {
 }
 
 InputError ErrorOf(const std::string& text) {
-  try {
-    Parse(text);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for:\n" << text;
-  return InputError("", 0, "", "");
+  SCOPED_TRACE(text);
+  return testing::Thrown<InputError>([&] { Parse(text); });
 }
 
 void ExpectError(const std::string& text, int line, const std::string& problem) {
-  const InputError error = ErrorOf(text);
-  EXPECT_EQ(error.source(), "camera.yaml");
-  EXPECT_EQ(error.line(), line) << error.what();
-  EXPECT_THAT(error.problem(), HasSubstr(problem)) << error.what();
-  EXPECT_FALSE(error.fix().empty()) << error.what();
+  testing::ExpectInputError(ErrorOf(text), "camera.yaml", line, problem);
 }
 
 // The moveit ChArUco camera (data/moveit-calibration/SOURCE.md).

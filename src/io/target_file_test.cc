@@ -7,6 +7,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
+#include "testing/thrown.h"
 
 namespace hecal::io {
 namespace {
@@ -20,21 +21,12 @@ pose::TargetSpec Parse(const std::string& text) {
 
 // The InputError a text raises.
 InputError ErrorOf(const std::string& text) {
-  try {
-    Parse(text);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for:\n" << text;
-  return InputError("", 0, "", "");
+  SCOPED_TRACE(text);
+  return testing::Thrown<InputError>([&] { Parse(text); });
 }
 
 void ExpectError(const std::string& text, int line, const std::string& problem) {
-  const InputError error = ErrorOf(text);
-  EXPECT_EQ(error.source(), "target.yaml");
-  EXPECT_EQ(error.line(), line) << error.what();
-  EXPECT_THAT(error.problem(), HasSubstr(problem)) << error.what();
-  EXPECT_FALSE(error.fix().empty()) << error.what();
+  testing::ExpectInputError(ErrorOf(text), "target.yaml", line, problem);
 }
 
 TEST(TargetFile, Chessboard) {
