@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The main job on bundled real data: imports MoveIt Calibration's 50 real eye-to-hand pose pairs
 # (data/moveit-calibration, BSD-3-Clause), calibrates with every method side by side and with the
-# default maximum-likelihood method, and writes out/result.json (+ out/all-methods.json).
+# default maximum-likelihood method, and writes out/result.json (+ out/all-methods.json); then
+# calibrates from the 28 real chessboard images of data/rwhe-kuka2 and its KUKA poses in one step
+# (detection, intrinsics, PnP, ml, joint reprojection refinement) → out/kuka2-images.json.
 # Installs the Debian packages it needs and builds if needed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,4 +21,8 @@ mkdir -p out
   --setup eye-to-hand --method all --output out/all-methods.json > out/all-methods.txt
 "$hecal" calibrate --robot out/moveit-robot.csv --camera out/moveit-camera.csv \
   --setup eye-to-hand --output out/result.json
+"$hecal" calibrate --images data/rwhe-kuka2/images --target data/rwhe-kuka2/target.yaml \
+  --robot data/rwhe-kuka2/RobotPosesVec.txt --setup eye-in-hand \
+  --output out/kuka2-images.json > out/kuka2-images.txt
 echo "results: out/result.json (ml), out/all-methods.json and out/all-methods.txt (every method)"
+echo "         out/kuka2-images.json and out/kuka2-images.txt (from the rwhe-kuka2 images)"

@@ -1,9 +1,5 @@
-// `hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand
-//                  [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
-//                  [--output result.json] [--units m|mm]`          (DESIGN.md §4)
-// Reads the two pose tables, pairs stations (by id, else by order), solves with the chosen
-// method(s), prints a readable summary and writes the result file (DESIGN.md §5).
-#include "hecal/estimation/calibrate.h"
+// `hecal calibrate` from pose tables, and the flags and summary of every form: see calibrate.h.
+#include "calibrate.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -15,32 +11,13 @@
 #include <numbers>
 #include <sstream>
 
-#include "cli.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/rotation.h"
-#include "hecal/io/pose_table.h"
-#include "hecal/report/result_file.h"
 
 namespace hecal::cli {
 namespace {
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-struct CalibrateFlags {
-  std::string robot;
-  std::string camera;
-  std::string setup;
-  std::string method = "ml";
-  std::string robot_sigma;
-  std::string camera_sigma;
-  std::string output;
-  std::string units = "m";
-  bool degrees = false;
-  std::string euler;
-  bool robot_inverse = false;
-  bool camera_inverse = false;
-  std::string robust = "none";
-};
 
 // "MM,DEG" → PoseSigma in metres and radians.
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
@@ -81,6 +58,8 @@ void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covari
       << ") deg, translation (" << sd.tail<3>().transpose() * scale << ") " << unit << "\n";
 }
 
+}  // namespace
+
 void PrintSummary(std::ostream& out, const report::ResultDocument& document,
                   const estimation::CalibrationResult& result) {
   const double scale = 1.0 / io::MetresPer(document.unit);
@@ -109,6 +88,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
   for (const std::string& warning : result.warnings) out << "warning: " << warning << "\n";
   out.unsetf(std::ios::floatfield);
 }
+
+namespace {
 
 // `--method all`: one line per method, side by side, with the difference from ml.
 void PrintComparison(std::ostream& out, const report::ResultDocument& document) {
@@ -143,15 +124,19 @@ void PrintComparison(std::ostream& out, const report::ResultDocument& document) 
   out.unsetf(std::ios::floatfield);
 }
 
-void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
+}  // namespace
+
+CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
+  CalibrateSettings settings;
   const auto setup = handeye::ParseSetup(flags.setup);
   if (!setup) {
     throw InputError("--setup", 0, "unknown setup '" + flags.setup + "'",
                      "use eye-in-hand (camera on the robot) or eye-to-hand (camera fixed)");
   }
-  const bool all = flags.method == "all";
+  settings.setup = *setup;
+  settings.all = flags.method == "all";
   const auto method = handeye::ParseMethod(flags.method);
-  if (!all && !method) {
+  if (!settings.all && !method) {
     std::string names;
     for (const auto& info : handeye::AllMethods()) names += std::string(info.name) + " ";
     throw InputError("--method", 0, "unknown method '" + flags.method + "'",
@@ -159,7 +144,8 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   }
   const auto units = io::ParseLengthUnit(flags.units);
   if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
-  io::PoseReadOptions read;
+  if (method) settings.options.method = *method;
+  io::PoseReadOptions& read = settings.read;
   read.units = *units;
   read.degrees = flags.degrees;
   if (!flags.euler.empty()) {
@@ -170,7 +156,7 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
                        "(ZYX)");
     }
   }
-  estimation::CalibrateOptions options;
+  estimation::CalibrateOptions& options = settings.options;
   if (!flags.robot_sigma.empty())
     options.robot_sigma = ParseSigma("--robot-sigma", flags.robot_sigma);
   if (!flags.camera_sigma.empty()) {
@@ -181,7 +167,23 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
     throw InputError("--robust", 0, "unknown loss '" + flags.robust + "'",
                      "use none, huber or cauchy");
   }
+  if (flags.images.empty() == flags.camera.empty()) {
+    throw InputError(flags.images.empty() ? "--camera" : "--images", 0,
+                     flags.images.empty() ? "neither --camera nor --images was given"
+                                          : "--camera and --images were both given",
+                     "give the camera poses (--camera camera.csv) or the images they come from "
+                     "(--images DIR --target target.yaml), not both");
+  }
+  return settings;
+}
 
+namespace {
+
+void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, const Io& io) {
+  const handeye::Setup setup = settings.setup;
+  const bool all = settings.all;
+  estimation::CalibrateOptions& options = settings.options;
+  const io::PoseReadOptions& read = settings.read;
   io::PoseReadOptions robot_read = read;
   robot_read.invert = flags.robot_inverse;
   io::PoseReadOptions camera_read = read;
@@ -189,10 +191,10 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   const io::PoseTable robot = io::ReadPoseTable(flags.robot, robot_read);
   const io::PoseTable camera = io::ReadPoseTable(flags.camera, camera_read);
   const io::Stations stations = io::PairStations(robot, camera);
-  const handeye::Problem problem = handeye::MakeProblem(*setup, stations.robot, stations.camera);
+  const handeye::Problem problem = handeye::MakeProblem(setup, stations.robot, stations.camera);
 
   report::ResultDocument document;
-  document.setup = *setup;
+  document.setup = setup;
   document.unit = robot.unit;
   document.station_ids = stations.ids;
   document.all_methods = all;
@@ -211,7 +213,6 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
     }
     if (document.results.empty()) std::rethrow_exception(first_error);
   } else {
-    options.method = *method;
     document.results.push_back(estimation::Calibrate(problem, options));
   }
   for (size_t k = 0; k < document.results.size(); ++k) {
@@ -225,15 +226,34 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   }
 }
 
+void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
+  const CalibrateSettings settings = ParseCalibrateFlags(flags);
+  if (flags.images.empty()) {
+    RunCalibratePoses(flags, settings, io);
+  } else {
+    RunCalibrateImages(flags, settings, io);
+  }
+}
+
 }  // namespace
 
 void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   auto flags = std::make_shared<CalibrateFlags>();
   CLI::App* command = app.add_subcommand(
-      "calibrate", "Solve the hand–eye calibration from robot and camera pose tables");
+      "calibrate",
+      "Solve the hand–eye calibration from robot poses and camera poses (or target images)");
   command->add_option("--robot", flags->robot, "Robot poses T_base_gripper (CSV, DESIGN.md §3)")
       ->required();
-  command->add_option("--camera", flags->camera, "Camera poses T_camera_target (CSV)")->required();
+  command->add_option("--camera", flags->camera, "Camera poses T_camera_target (CSV)");
+  command->add_option("--images", flags->images,
+                      "Instead of --camera: folder of target images, one per robot pose");
+  command->add_option("--target", flags->target, "With --images: target.yaml");
+  command->add_option("--intrinsics", flags->intrinsics,
+                      "With --images: camera.yaml (estimated from the images when absent)");
+  command->add_option("--pixel-sigma", flags->pixel_sigma,
+                      "With --images: pixel noise per axis, px (estimated when absent)");
+  command->add_option("--threads", flags->threads,
+                      "With --images: detection threads (default 0 = every core)");
   command->add_option("--setup", flags->setup, "eye-in-hand (camera on the robot) | eye-to-hand")
       ->required();
   command->add_option("--method", flags->method, "Method name, or all (default ml)");

@@ -7,32 +7,15 @@
 #include "hecal/core/error.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include <algorithm>
-#include <array>
-#include <cctype>
-#include <cmath>
-#include <exception>
 #include <filesystem>
-#include <iomanip>
-#include <numbers>
-#include <opencv2/core/utility.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <optional>
-#include <sstream>
-#include <string_view>
 #include <vector>
 
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/pose_table.h"
-#include "hecal/io/target_file.h"
-#include "hecal/pose/pose_refinement.h"
-#include "hecal/pose/target.h"
-#include "hecal/vision/detection.h"
-#include "hecal/vision/intrinsics_calibration.h"
-#include "hecal/vision/opencv_pnp.h"
-#include "hecal/vision/order_consistency.h"
+#include "image_set.h"
 #endif
 
 namespace hecal::cli {
@@ -42,311 +25,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Hand–eye calibration needs 3 stations (2 motions); Zhang's intrinsics need 3 views.
-constexpr int kMinViews = 3;
-
-// One image: where it is, what was found, and what became of it.
-struct ImageRecord {
-  fs::path path;
-  cv::Size size;
-  vision::Detection detection;
-  std::string skipped;  // why the image is not used; empty when used
-  std::optional<pose::RefinementResult> pose;
-};
-
-bool IsImageFile(const fs::path& path) {
-  constexpr std::array<std::string_view, 6> kExtensions = {".png", ".jpg", ".jpeg",
-                                                           ".bmp", ".tif", ".tiff"};
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
-}
-
-std::vector<ImageRecord> ListImages(const std::string& dir) {
-  std::error_code error;
-  if (!fs::is_directory(dir, error)) {
-    throw InputError(dir, 0, "not a directory, or it does not exist",
-                     "give --images the folder that holds the target images");
-  }
-  std::vector<ImageRecord> images;
-  for (fs::directory_iterator it(dir, error); !error && it != fs::directory_iterator();
-       it.increment(error)) {
-    std::error_code status_error;
-    if (it->is_regular_file(status_error) && IsImageFile(it->path())) {
-      images.push_back(ImageRecord{it->path(), {}, {}, {}, {}});
-    }
-  }
-  if (error) {
-    throw InputError(dir, 0, "cannot list the directory: " + error.message(),
-                     "check that it is readable");
-  }
-  if (images.empty()) {
-    throw InputError(dir, 0, "no images (png, jpg, jpeg, bmp, tif, tiff) in the directory",
-                     "put the target images there, or give --images the right folder");
-  }
-  std::sort(images.begin(), images.end(), [](const ImageRecord& a, const ImageRecord& b) {
-    return a.path.filename().string() < b.path.filename().string();
-  });
-  return images;
-}
-
-// Sets OpenCV's thread count for the command and restores it afterwards (tests run commands
-// in-process).
-class OpenCvThreads {
- public:
-  explicit OpenCvThreads(int threads) : previous_(cv::getNumThreads()) {
-    cv::setNumThreads(threads == 0 ? -1 : threads);  // -1: OpenCV's default, every core
-  }
-  ~OpenCvThreads() { cv::setNumThreads(previous_); }
-  OpenCvThreads(const OpenCvThreads&) = delete;
-  OpenCvThreads& operator=(const OpenCvThreads&) = delete;
-
- private:
-  int previous_;
-};
-
-// Reads and detects every image, in parallel over images. Errors are raised after the loop, for
-// the first image in file-name order, so the message does not depend on the scheduling.
-void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
-               std::vector<ImageRecord>* images) {
-  std::vector<std::exception_ptr> errors(images->size());
-  cv::parallel_for_(
-      cv::Range(0, static_cast<int>(images->size())),
-      [&](const cv::Range& range) {
-        for (int i = range.start; i < range.end; ++i) {
-          ImageRecord& image = (*images)[static_cast<std::size_t>(i)];
-          try {
-            const cv::Mat pixels = cv::imread(image.path.string(), cv::IMREAD_GRAYSCALE);
-            if (pixels.empty()) {
-              throw InputError(image.path.string(), 0, "cannot read the image",
-                               "replace the file with a readable png/jpg/bmp/tif, or remove it");
-            }
-            image.size = pixels.size();
-            image.detection = vision::DetectTarget(pixels, target);
-          } catch (...) {
-            errors[static_cast<std::size_t>(i)] = std::current_exception();
-          }
-        }
-      },
-      static_cast<double>(images->size()));
-  for (const std::exception_ptr& error : errors) {
-    if (!error) continue;
-    try {
-      std::rethrow_exception(error);
-    } catch (const InputError& e) {
-      // DetectTarget's complaints about the target spec name "target": point at the file.
-      if (e.source() == "target") throw InputError(target_file, 0, e.problem(), e.fix());
-      throw;
-    }
-  }
-}
-
-void CheckSameSize(const std::vector<ImageRecord>& images) {
-  const ImageRecord& first = images.front();
-  for (const ImageRecord& image : images) {
-    if (image.size != first.size) {
-      throw InputError(
-          image.path.string(), 0,
-          "the image is " + std::to_string(image.size.width) + "x" +
-              std::to_string(image.size.height) + " but " + first.path.filename().string() +
-              " is " + std::to_string(first.size.width) + "x" + std::to_string(first.size.height),
-          "use images of one camera at one resolution");
-    }
-  }
-}
-
-// Half-turn ambiguous detections made consistent across the images (image rule); those that
-// stay ambiguous, and every other unusable detection, get their reason in `skipped`.
-void ResolveAndMarkUnusable(const pose::TargetSpec& target, std::vector<ImageRecord>* images) {
-  std::vector<vision::Detection> detections;
-  for (const ImageRecord& image : *images) detections.push_back(image.detection);
-  vision::ResolveOrder(target, vision::OrderOptions{}, &detections);
-  for (std::size_t i = 0; i < images->size(); ++i) {
-    ImageRecord& image = (*images)[i];
-    image.detection = std::move(detections[i]);
-    if (image.detection.status == vision::DetectionStatus::kAmbiguous) {
-      image.skipped =
-          "point order undecided (a half-turn-symmetric pattern): " + image.detection.message;
-    } else if (!image.detection.usable()) {
-      image.skipped = image.detection.message;
-    }
-  }
-}
-
-int CountUsed(const std::vector<ImageRecord>& images) {
-  return static_cast<int>(std::count_if(images.begin(), images.end(),
-                                        [](const ImageRecord& i) { return i.skipped.empty(); }));
-}
-
-std::string Describe(const pose::TargetSpec& target) {
-  return std::string(pose::TargetTypeName(target.type)) + " " + std::to_string(target.cols) + "x" +
-         std::to_string(target.rows);
-}
-
-// At least kMinViews usable images, with a message that says what to check.
-void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::TargetSpec& target,
-                      const DetectFlags& flags) {
-  const int used = CountUsed(images);
-  if (used >= kMinViews) return;
-  const bool none_seen = std::all_of(images.begin(), images.end(), [](const ImageRecord& i) {
-    return i.detection.status == vision::DetectionStatus::kNotFound;
-  });
-  const std::string count = std::to_string(images.size()) + " image(s) in " + flags.images;
-  if (none_seen) {
-    throw InputError(
-        flags.target, 0, "the target (" + Describe(target) + ") was found in none of the " + count,
-        target.type == pose::TargetType::kChessboard
-            ? "check cols/rows in target.yaml: cols/rows are INNER corners for a chessboard "
-              "(a board of 25x18 squares has 24x17 inner corners)"
-            : "check type, cols, rows and dictionary/family in target.yaml against the printed "
-              "target");
-  }
-  throw InputError(
-      flags.images, 0, "the target is usable in only " + std::to_string(used) + " of the " + count,
-      "hand-eye calibration and intrinsics estimation need at least " + std::to_string(kMinViews) +
-          " views: add images with the whole target visible and sharp");
-}
-
-std::vector<Eigen::Vector3d> ObjectPointsOf(const vision::Detection& detection,
-                                            const std::vector<pose::ObjectPoint>& board) {
-  std::vector<Eigen::Vector3d> points;
-  for (const vision::ImagePoint& p : detection.points) {
-    points.push_back(board[static_cast<std::size_t>(p.id)].position);
-  }
-  return points;
-}
-
-std::vector<Eigen::Vector2d> PixelsOf(const vision::Detection& detection) {
-  std::vector<Eigen::Vector2d> pixels;
-  for (const vision::ImagePoint& p : detection.points) pixels.push_back(p.pixel);
-  return pixels;
-}
-
-std::string Fixed(double value, int decimals) {
-  if (!std::isfinite(value)) return "-";
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(decimals) << value;
-  return text.str();
-}
-
-void CheckIntrinsicsSize(const pose::CameraModel& camera, const std::string& path, cv::Size size) {
-  if ((camera.width > 0 || camera.height > 0) &&
-      (camera.width != size.width || camera.height != size.height)) {
-    throw InputError(path, 0,
-                     "the intrinsics are for " + std::to_string(camera.width) + "x" +
-                         std::to_string(camera.height) + " images but the images are " +
-                         std::to_string(size.width) + "x" + std::to_string(size.height),
-                     "use the intrinsics of this camera at this resolution, or leave out "
-                     "--intrinsics to estimate them from the images");
-  }
-}
-
-vision::IntrinsicsResult EstimateIntrinsics(const std::vector<ImageRecord>& images,
-                                            const std::vector<pose::ObjectPoint>& board,
-                                            cv::Size size, const Io& io) {
-  std::vector<vision::CalibrationView> views;
-  for (const ImageRecord& image : images) {
-    if (!image.skipped.empty()) continue;
-    views.push_back({ObjectPointsOf(image.detection, board), PixelsOf(image.detection)});
-  }
-  vision::IntrinsicsResult result;
-  try {
-    result = vision::CalibrateIntrinsics(views, size.width, size.height);
-  } catch (const DegenerateError& e) {
-    throw InputError("--intrinsics", 0,
-                     "cannot estimate the intrinsics from the " + std::to_string(views.size()) +
-                         " usable images (" + e.what() + ")",
-                     "give --intrinsics camera.yaml, or images with the target tilted "
-                     "differently in each");
-  }
-  // Nearly parallel boards leave focal length and distance confounded; calibrateCamera's σ do
-  // not show it (intrinsics_calibration.h), so the estimate is refused rather than used.
-  const vision::IntrinsicsOptions defaults;
-  if (result.normal_spread_deg < defaults.min_normal_spread_deg) {
-    throw InputError("--intrinsics", 0,
-                     "cannot estimate the intrinsics: the target is nearly parallel in all " +
-                         std::to_string(views.size()) + " usable images (normals within " +
-                         Fixed(result.normal_spread_deg, 1) +
-                         " deg), so focal length and distance are confounded",
-                     "give --intrinsics camera.yaml, or add images with the target tilted by "
-                     "20-45 deg in different directions");
-  }
-  const pose::CameraModel& c = result.camera;
-  const vision::IntrinsicsSigma& s = result.sigma;
-  io.out << "intrinsics: estimated from " << views.size() << " images (cv::calibrateCamera), RMS "
-         << Fixed(result.rms_px, 4) << " px; the points cover " << Fixed(100 * result.coverage, 0)
-         << "% of the image, board normals spread over " << Fixed(result.normal_spread_deg, 1)
-         << " deg\n"
-         << "  fx " << Fixed(c.fx, 3) << " ± " << Fixed(s.fx, 3) << "  fy " << Fixed(c.fy, 3)
-         << " ± " << Fixed(s.fy, 3) << "  cx " << Fixed(c.cx, 3) << " ± " << Fixed(s.cx, 3)
-         << "  cy " << Fixed(c.cy, 3) << " ± " << Fixed(s.cy, 3) << " px (1 sigma)\n  ";
-  constexpr std::array<std::string_view, 5> kNames = {"k1", "k2", "p1", "p2", "k3"};
-  for (std::size_t k = 0; k < kNames.size(); ++k) {
-    io.out << (k == 0 ? "" : "  ") << kNames[k] << " " << Fixed(c.distortion[k], 6) << " ± "
-           << Fixed(s.distortion[k], 6);
-  }
-  io.out << "\n";
-  for (const std::string& warning : result.warnings) {
-    io.err << "hecal: warning: intrinsics: " << warning << "\n";
-  }
-  return result;
-}
-
-// LM-refined pose of every used image; an image whose pose fails is skipped with the reason.
-void EstimatePoses(const std::vector<pose::ObjectPoint>& board, const pose::CameraModel& camera,
-                   std::vector<ImageRecord>* images) {
-  for (ImageRecord& image : *images) {
-    if (!image.skipped.empty()) continue;
-    const std::vector<Eigen::Vector3d> object = ObjectPointsOf(image.detection, board);
-    const std::vector<Eigen::Vector2d> pixels = PixelsOf(image.detection);
-    try {
-      const Pose start = vision::SolvePnPOpenCvRefined(object, pixels, camera);
-      image.pose = pose::RefinePose(start, object, pixels, camera);
-    } catch (const DegenerateError& e) {
-      image.skipped = std::string("no pose: ") + e.what();
-    }
-  }
-}
-
-void PrintReport(const std::vector<ImageRecord>& images, std::ostream& out) {
-  std::size_t width = 5;
-  for (const ImageRecord& image : images) {
-    width = std::max(width, image.path.filename().string().size());
-  }
-  out << std::left << std::setw(static_cast<int>(width) + 2) << "image" << std::setw(11) << "status"
-      << std::setw(11) << "points" << std::setw(10) << "sharp_px" << std::setw(9) << "rms_px"
-      << std::setw(10) << "sigma_mm"
-      << "sigma_deg\n";
-  for (const ImageRecord& image : images) {
-    const vision::Detection& d = image.detection;
-    out << std::setw(static_cast<int>(width) + 2) << image.path.filename().string() << std::setw(11)
-        << vision::DetectionStatusName(d.status) << std::setw(11)
-        << (std::to_string(d.num_points()) + "/" + std::to_string(d.total_points)) << std::setw(10)
-        << Fixed(d.sharpness, 2);
-    if (image.pose.has_value() && image.skipped.empty()) {
-      const Matrix6d& C = image.pose->covariance;
-      const double sigma_deg =
-          std::sqrt(C.topLeftCorner<3, 3>().trace() / 3.0) * 180.0 / std::numbers::pi;
-      const double sigma_mm = std::sqrt(C.bottomRightCorner<3, 3>().trace() / 3.0) * 1e3;
-      out << std::setw(9) << Fixed(image.pose->rms_px, 3) << std::setw(10) << Fixed(sigma_mm, 3)
-          << Fixed(sigma_deg, 4) << "\n";
-    } else if (!image.skipped.empty()) {
-      out << "skipped: " << image.skipped << "\n";
-    } else {
-      out << "\n";
-    }
-  }
-  out << std::right;
-}
-
 std::string PointsCsv(const std::vector<ImageRecord>& images) {
   std::string text =
       "# hecal detect: detected target points, pixels (origin at the centre of the top-left "
       "pixel)\nid,point_id,u,v\n";
   for (const ImageRecord& image : images) {
-    if (!image.skipped.empty()) continue;
-    const std::string id = io::QuoteField(image.path.stem().string());
+    if (!image.used()) continue;
+    const std::string id = io::QuoteField(image.id());
     for (const vision::ImagePoint& p : image.detection.points) {
       text += id;
       text += ',';
@@ -378,76 +63,44 @@ void CheckOutputDirectory(const std::string& output) {
 }  // namespace
 
 void RunDetect(const DetectFlags& flags, const Io& io) {
-  if (flags.threads < 0) {
-    throw InputError("--threads", 0, "must be >= 0, got " + std::to_string(flags.threads),
-                     "give a thread count, or 0 for every core");
-  }
   CheckOutputDirectory(flags.output);
-  const pose::TargetSpec target = io::ReadTargetFile(flags.target);
-  const std::vector<pose::ObjectPoint> board = pose::ObjectPoints(target);
-  std::optional<pose::CameraModel> given;
-  if (!flags.intrinsics.empty()) given = io::ReadCameraFile(flags.intrinsics);
-  std::vector<ImageRecord> images = ListImages(flags.images);
-  io.out << "hecal detect: " << images.size() << " image(s) in " << flags.images << ", target "
-         << Describe(target) << " (" << board.size() << " points)" << std::endl;
-  {
-    const OpenCvThreads threads(flags.threads);
-    DetectAll(target, flags.target, &images);
-  }
-  CheckSameSize(images);
-  const cv::Size size = images.front().size;
-  if (given) CheckIntrinsicsSize(*given, flags.intrinsics, size);
-  ResolveAndMarkUnusable(target, &images);
-  if (CountUsed(images) < kMinViews) PrintReport(images, io.out);
-  CheckEnoughViews(images, target, flags);
-
-  std::optional<vision::IntrinsicsResult> estimated;
-  pose::CameraModel camera;
-  if (given) {
-    camera = *given;
-    io.out << "intrinsics: " << flags.intrinsics << " (fx " << camera.fx << ", fy " << camera.fy
-           << ", cx " << camera.cx << ", cy " << camera.cy << " px)\n";
-  } else {
-    estimated = EstimateIntrinsics(images, board, size, io);
-    camera = estimated->camera;
-  }
-  EstimatePoses(board, camera, &images);
-  PrintReport(images, io.out);
-  CheckEnoughViews(images, target, flags);
+  const ImageSet set = DetectImageSet({flags.images, flags.target, flags.intrinsics, flags.threads},
+                                      "hecal detect", io);
 
   // Every file's text first, then the writes, the pose table last.
   const std::string stem = OutputStem(flags.output);
   io::PoseTable table;
   table.source = flags.output;
-  for (const ImageRecord& image : images) {
-    if (!image.skipped.empty()) continue;
+  for (const ImageRecord& image : set.images) {
+    if (!image.used()) continue;
     io::PoseRow row;
     row.pose = image.pose->T_camera_target;
-    row.id = image.path.stem().string();
+    row.id = image.id();
     table.rows.push_back(row);
   }
   io::PoseWriteOptions write;
   write.comments = {
       "hecal detect: T_camera_target of each image (id = image file stem), metres",
-      "images: " + flags.images + "; target: " + flags.target + " (" + Describe(target) + ")",
-      "intrinsics: " +
-          (estimated ? "estimated from the images, " + stem + ".camera.yaml" : flags.intrinsics)};
+      "images: " + flags.images + "; target: " + flags.target + " (" + Describe(set.target) + ")",
+      "intrinsics: " + (set.estimated ? "estimated from the images, " + stem + ".camera.yaml"
+                                      : flags.intrinsics)};
   const std::string pose_text = io::FormatPoseTable(table, write);
-  const std::string points_text = PointsCsv(images);
+  const std::string points_text = PointsCsv(set.images);
   std::string camera_text;
-  if (estimated) {
+  if (set.estimated) {
     camera_text = io::FormatCameraYaml(
-        camera, {"estimated by hecal detect (cv::calibrateCamera) from " +
-                     std::to_string(estimated->view_rms_px.size()) + " images in " + flags.images +
-                     ", " + std::to_string(size.width) + "x" + std::to_string(size.height),
-                 "RMS reprojection error " + io::FormatDouble(estimated->rms_px) + " px"});
+        set.camera,
+        {"estimated by hecal detect (cv::calibrateCamera) from " +
+             std::to_string(set.estimated->view_rms_px.size()) + " images in " + flags.images +
+             ", " + std::to_string(set.size.width) + "x" + std::to_string(set.size.height),
+         "RMS reprojection error " + io::FormatDouble(set.estimated->rms_px) + " px"});
   }
   io::WriteFileAtomically(stem + ".points.csv", points_text);
-  if (estimated) io::WriteFileAtomically(stem + ".camera.yaml", camera_text);
+  if (set.estimated) io::WriteFileAtomically(stem + ".camera.yaml", camera_text);
   io::WriteFileAtomically(flags.output, pose_text);
   io.out << "hecal: wrote " << table.rows.size() << " poses to " << flags.output
          << " (T_camera_target, m, quaternion), points to " << stem << ".points.csv"
-         << (estimated ? ", intrinsics to " + stem + ".camera.yaml" : std::string()) << "\n";
+         << (set.estimated ? ", intrinsics to " + stem + ".camera.yaml" : std::string()) << "\n";
 }
 
 #else

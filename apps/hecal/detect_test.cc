@@ -28,6 +28,7 @@
 #include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
 #include "hecal/vision/render.h"
+#include "rendered_views_test_util.h"
 #endif
 
 namespace hecal::cli {
@@ -38,70 +39,14 @@ using cli_test::Hecal;
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-// 9 × 6 inner corners (cols + rows odd: the square colours fix the order), 25 mm squares.
-constexpr const char* kTargetYaml = "type: chessboard\ncols: 9\nrows: 6\nsquare: 0.025\n";
-
-pose::TargetSpec Board() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = 9;
-  target.rows = 6;
-  target.square = 0.025;
-  return target;
-}
-
-pose::CameraModel TrueCamera() {
-  pose::CameraModel camera;
-  camera.fx = 620.0;
-  camera.fy = 622.0;
-  camera.cx = 321.5;
-  camera.cy = 238.0;
-  camera.width = 640;
-  camera.height = 480;
-  camera.distortion = {-0.12, 0.05, 0.0, 0.0, 0.0};
-  return camera;
-}
-
-std::string CameraYaml(const pose::CameraModel& c) {
-  std::ostringstream yaml;
-  yaml << std::setprecision(17) << "fx: " << c.fx << "\nfy: " << c.fy << "\ncx: " << c.cx
-       << "\ncy: " << c.cy << "\nwidth: " << c.width << "\nheight: " << c.height
-       << "\ndistortion:\n  model: plumb_bob\n  coefficients: [" << c.distortion[0] << ", "
-       << c.distortion[1] << ", " << c.distortion[2] << ", " << c.distortion[3] << ", "
-       << c.distortion[4] << "]\n";
-  return yaml.str();
-}
-
-// The camera `distance` from the board centre, tilted by `tilt` towards `azimuth` (x right,
-// y down on the board), looking at the centre and then panned by (pan_x, pan_y) radians about
-// its own x and y axes so the board lands in different parts of the image.
-Pose ViewPose(double distance, double tilt, double azimuth, double pan_x, double pan_y) {
-  const Eigen::Vector3d centre(0.1, 0.0625, 0.0);  // of the 8 × 5 squares between the corners
-  const Eigen::Vector3d eye =
-      centre + distance * Eigen::Vector3d(std::sin(tilt) * std::cos(azimuth),
-                                          std::sin(tilt) * std::sin(azimuth), -std::cos(tilt));
-  const Eigen::Vector3d z = (centre - eye).normalized();
-  const Eigen::Vector3d x = Eigen::Vector3d::UnitY().cross(z).normalized();
-  Eigen::Matrix3d R_target_camera;
-  R_target_camera << x, z.cross(x), z;
-  const Pose T_target_camera = MakePose(R_target_camera, eye);
-  const Eigen::Matrix3d pan = (Eigen::AngleAxisd(pan_x, Eigen::Vector3d::UnitX()) *
-                               Eigen::AngleAxisd(pan_y, Eigen::Vector3d::UnitY()))
-                                  .toRotationMatrix();
-  return MakePose(pan, Eigen::Vector3d::Zero()) * T_target_camera.inverse();
-}
-
-// Six views, tilted 15–35° in different directions, spread over the image.
-std::vector<Pose> Views() {
-  std::vector<Pose> views;
-  for (int k = 0; k < 6; ++k) {
-    views.push_back(ViewPose(0.38 + 0.02 * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg, k * 60.0 * kDeg,
-                             (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12)));
-  }
-  return views;
-}
+using rendered_views::Board;
+using rendered_views::CameraYaml;
+using rendered_views::kDeg;
+using rendered_views::kTargetYaml;
+using rendered_views::RotationErrorDeg;
+using rendered_views::TranslationErrorMm;
+using rendered_views::TrueCamera;
+using rendered_views::Views;
 
 // Three views of a board parallel to the image plane, moved sideways and back.
 std::vector<Pose> ParallelViews() {
@@ -119,20 +64,15 @@ class DetectTest : public CliTest {
  protected:
   static void SetUpTestSuite() {
     std::filesystem::create_directories(RenderDir());
-    vision::RenderOptions options;
-    options.blur_sigma = 0.6;
-    options.noise_sigma = 1.0;
-    options.supersampling = 4;
-    const auto render = [&options](const std::string& name, const Pose& T_camera_target) {
-      options.seed += 1;
-      cv::imwrite((RenderDir() / name).string(),
-                  vision::RenderTarget(Board(), TrueCamera(), T_camera_target, options));
-    };
+    std::uint64_t seed = 1;
     const std::vector<Pose> views = Views();
-    for (std::size_t i = 0; i < views.size(); ++i) render(ViewName(i), views[i]);
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      rendered_views::RenderView(views[i], ++seed, RenderDir() / ViewName(i));
+    }
     const std::vector<Pose> parallel = ParallelViews();
     for (std::size_t i = 0; i < parallel.size(); ++i) {
-      render("parallel_" + std::to_string(i) + ".png", parallel[i]);
+      rendered_views::RenderView(parallel[i], ++seed,
+                                 RenderDir() / ("parallel_" + std::to_string(i) + ".png"));
     }
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
@@ -162,14 +102,6 @@ class DetectTest : public CliTest {
 
   std::string TargetFile() { return Write("target.yaml", kTargetYaml); }
 };
-
-// Rotation angle between two poses (deg) and translation distance (mm).
-double RotationErrorDeg(const Pose& a, const Pose& b) {
-  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() / kDeg;
-}
-double TranslationErrorMm(const Pose& a, const Pose& b) {
-  return 1e3 * (a.translation() - b.translation()).norm();
-}
 
 Pose RowPose(const csv_test::Csv& csv, std::size_t row) {
   const Eigen::Quaterniond q(csv.Number(row, "qw"), csv.Number(row, "qx"), csv.Number(row, "qy"),

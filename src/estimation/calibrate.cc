@@ -59,6 +59,28 @@ std::vector<handeye::Solution> Starts(const handeye::Problem& problem) {
 
 }  // namespace
 
+std::vector<int> SetStationResiduals(const handeye::Problem& problem, const NoiseEstimate& noise,
+                                     CalibrationResult* result) {
+  const size_t n = problem.A.size();
+  result->residuals.resize(n);
+  double rotation_sum = 0.0, translation_sum = 0.0;
+  std::vector<int> flagged;
+  for (size_t i = 0; i < n; ++i) {
+    const Pose E = result->Z.inverse() * problem.A[i] * result->X * problem.B[i];
+    StationResidual& residual = result->residuals[i];
+    residual.rotation = se3::Log(E).head<3>().norm();
+    residual.translation = E.translation().norm();
+    residual.whitened = std::sqrt(noise.stations[i].chi2 / 6.0);
+    residual.outlier = noise.stations[i].outlier;
+    rotation_sum += residual.rotation * residual.rotation;
+    translation_sum += residual.translation * residual.translation;
+    if (residual.outlier) flagged.push_back(static_cast<int>(i));
+  }
+  result->rotation_rms = std::sqrt(rotation_sum / static_cast<double>(n));
+  result->translation_rms = std::sqrt(translation_sum / static_cast<double>(n));
+  return flagged;
+}
+
 CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options) {
   ValidateSigma(options.robot_sigma, "--robot-sigma");
   ValidateSigma(options.camera_sigma, "--camera-sigma");
@@ -117,24 +139,8 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
     noise = EstimateNoise(LinearizeStations(problem, result.X, result.Z), spec, L);
   }
 
-  // Per-station residuals and flags.
+  const std::vector<int> flagged = SetStationResiduals(problem, noise, &result);
   const size_t n = problem.A.size();
-  result.residuals.resize(n);
-  double rotation_sum = 0.0, translation_sum = 0.0;
-  std::vector<int> flagged;
-  for (size_t i = 0; i < n; ++i) {
-    const Pose E = result.Z.inverse() * problem.A[i] * result.X * problem.B[i];
-    StationResidual& residual = result.residuals[i];
-    residual.rotation = se3::Log(E).head<3>().norm();
-    residual.translation = E.translation().norm();
-    residual.whitened = std::sqrt(noise.stations[i].chi2 / 6.0);
-    residual.outlier = noise.stations[i].outlier;
-    rotation_sum += residual.rotation * residual.rotation;
-    translation_sum += residual.translation * residual.translation;
-    if (residual.outlier) flagged.push_back(static_cast<int>(i));
-  }
-  result.rotation_rms = std::sqrt(rotation_sum / static_cast<double>(n));
-  result.translation_rms = std::sqrt(translation_sum / static_cast<double>(n));
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
   result.sigmas_estimated = spec.AnyEstimated();

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "hecal/core/error.h"
@@ -18,6 +19,15 @@ namespace hecal::estimation {
 namespace {
 
 using Parameters = std::array<double, kPoseAmbientSize>;
+
+struct VarianceComponent {
+  double squared_sum = 0.0;  // of the whitened residuals of the group
+  double redundancy = 0.0;   // m_k − tr(N⁻¹ N_k)
+};
+
+// Smallest robot sigmas the estimate may reach (radians, metres): far below any real robot, and
+// keeps the robot prior's weights within the solver's numerical range on noise-free data.
+constexpr double kMinRobotSigma = 1e-7;
 
 Parameters ToParameters(const Pose& T) {
   Parameters p;
@@ -59,14 +69,13 @@ class Refinement {
       : measured_(T_base_gripper),
         images_(images),
         options_(options),
+        robot_sigma_(options.robot_sigma),
         x_(ToParameters(X0)),
         z_(ToParameters(Z0)) {
     for (const Pose& G : T_base_gripper) g_.push_back(ToParameters(G));
   }
 
-  bool RobotFree() const {
-    return options_.robot_sigma.rotation > 0.0 && options_.robot_sigma.translation > 0.0;
-  }
+  bool RobotFree() const { return robot_sigma_.rotation > 0.0 && robot_sigma_.translation > 0.0; }
 
   // Solves at pixel sigma `sigma`; returns the sum of squared pixel residuals (px²).
   double Solve(double sigma) {
@@ -74,6 +83,17 @@ class Refinement {
     Build(sigma, &problem);
     ceres::Solver::Options solver = internal::SmallSolverOptions();
     solver.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
+    if (RobotFree()) {
+      // Each image's residuals touch X, Z and its own robot pose only: eliminate the robot poses
+      // (6×6 blocks) and solve the 12×12 Schur complement — 20× faster than the dense normal
+      // equations of 12 + 6n unknowns on 28 images of 408 points.
+      solver.linear_solver_type = ceres::DENSE_SCHUR;
+      auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+      for (Parameters& g : g_) ordering->AddElementToGroup(g.data(), 0);
+      ordering->AddElementToGroup(x_.data(), 1);
+      ordering->AddElementToGroup(z_.data(), 1);
+      solver.linear_solver_ordering = ordering;
+    }
     ceres::Solver::Summary summary;
     ceres::Solve(solver, &problem, &summary);
     return PixelSquaredSum();
@@ -81,24 +101,33 @@ class Refinement {
 
   // (X, Z) block of the inverse Gauss–Newton information at pixel sigma `sigma`.
   Eigen::Matrix<double, 12, 12> Covariance(double sigma) {
-    ceres::Problem problem(internal::SmallProblemOptions());
-    Build(sigma, &problem);
-    ceres::CRSMatrix crs;
-    ceres::Problem::EvaluateOptions evaluate;
-    evaluate.parameter_blocks = blocks_;
-    problem.Evaluate(evaluate, nullptr, nullptr, nullptr, &crs);
-    Eigen::MatrixXd information = Eigen::MatrixXd::Zero(crs.num_cols, crs.num_cols);
-    for (int r = 0; r < crs.num_rows; ++r) {
-      for (int a = crs.rows[r]; a < crs.rows[r + 1]; ++a) {
-        for (int b = crs.rows[r]; b < crs.rows[r + 1]; ++b) {
-          information(crs.cols[a], crs.cols[b]) += crs.values[a] * crs.values[b];
+    const Linearization linear = Linearize(sigma);
+    return linear.inverse.topLeftCorner<12, 12>();
+  }
+
+  // Variance components at pixel sigma `sigma` and the current robot sigma (Förstner 1979;
+  // Koch 1999 §3.6): for the pixel rows and the robot prior's rotation and translation rows,
+  // the whitened squared residual sum and the redundancy m_k − tr(N⁻¹ N_k).
+  std::array<VarianceComponent, 3> VarianceComponents(double sigma) {
+    const Linearization linear = Linearize(sigma);
+    std::array<VarianceComponent, 3> components{};
+    const ceres::CRSMatrix& J = linear.jacobian;
+    for (int r = 0; r < J.num_rows; ++r) {
+      double leverage = 0.0;  // J_r N⁻¹ J_rᵀ
+      for (int a = J.rows[r]; a < J.rows[r + 1]; ++a) {
+        for (int b = J.rows[r]; b < J.rows[r + 1]; ++b) {
+          leverage += J.values[a] * linear.inverse(J.cols[a], J.cols[b]) * J.values[b];
         }
       }
+      VarianceComponent& component = components[linear.group[static_cast<size_t>(r)]];
+      component.squared_sum +=
+          linear.residuals[static_cast<size_t>(r)] * linear.residuals[static_cast<size_t>(r)];
+      component.redundancy += 1.0 - leverage;
     }
-    const Eigen::MatrixXd inverse =
-        information.ldlt().solve(Eigen::MatrixXd::Identity(crs.num_cols, crs.num_cols));
-    return inverse.topLeftCorner<12, 12>();
+    return components;
   }
+
+  PoseSigma& robot_sigma() { return robot_sigma_; }
 
   Pose X() const { return PoseFromParameters(x_.data()); }
   Pose Z() const { return PoseFromParameters(z_.data()); }
@@ -116,6 +145,39 @@ class Refinement {
   }
 
  private:
+  struct Linearization {
+    ceres::CRSMatrix jacobian;      // whitened
+    std::vector<double> residuals;  // whitened
+    std::vector<int> group;         // per row: 0 pixel, 1 robot rotation, 2 robot translation
+    Eigen::MatrixXd inverse;        // N⁻¹, N = JᵀJ over every unknown
+  };
+
+  Linearization Linearize(double sigma) {
+    ceres::Problem problem(internal::SmallProblemOptions());
+    Build(sigma, &problem);
+    Linearization linear;
+    ceres::Problem::EvaluateOptions evaluate;
+    evaluate.parameter_blocks = blocks_;
+    problem.Evaluate(evaluate, nullptr, &linear.residuals, nullptr, &linear.jacobian);
+    const ceres::CRSMatrix& J = linear.jacobian;
+    Eigen::MatrixXd information = Eigen::MatrixXd::Zero(J.num_cols, J.num_cols);
+    for (int r = 0; r < J.num_rows; ++r) {
+      for (int a = J.rows[r]; a < J.rows[r + 1]; ++a) {
+        for (int b = J.rows[r]; b < J.rows[r + 1]; ++b) {
+          information(J.cols[a], J.cols[b]) += J.values[a] * J.values[b];
+        }
+      }
+    }
+    linear.inverse = information.ldlt().solve(Eigen::MatrixXd::Identity(J.num_cols, J.num_cols));
+    // Rows in the order Build adds the residual blocks: per station its pixels (2 rows each),
+    // then its robot prior (3 rotation, 3 translation rows) when the robot poses are free.
+    for (const ImagePoints& image : images_) {
+      linear.group.insert(linear.group.end(), 2 * image.target.size(), 0);
+      if (RobotFree()) linear.group.insert(linear.group.end(), {1, 1, 1, 2, 2, 2});
+    }
+    return linear;
+  }
+
   void Build(double sigma, ceres::Problem* problem) {
     blocks_ = {x_.data(), z_.data()};
     for (Parameters& g : g_) blocks_.push_back(g.data());
@@ -129,8 +191,7 @@ class Refinement {
       }
       if (RobotFree()) {
         problem->AddResidualBlock(
-            new RobotPosePriorCost(measured_[i], options_.robot_sigma.rotation,
-                                   options_.robot_sigma.translation),
+            new RobotPosePriorCost(measured_[i], robot_sigma_.rotation, robot_sigma_.translation),
             nullptr, g_[i].data());
       } else {
         problem->SetParameterBlockConstant(g_[i].data());
@@ -148,6 +209,7 @@ class Refinement {
   const std::vector<Pose>& measured_;
   const std::vector<ImagePoints>& images_;
   const ReprojectionOptions& options_;
+  PoseSigma robot_sigma_;
   Parameters x_;
   Parameters z_;
   std::vector<Parameters> g_;
@@ -175,15 +237,37 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
 
   ReprojectionResult result;
   result.pixel_sigma_estimated = !options.pixel_sigma;
+  result.robot_sigma_estimated = options.estimate_robot_sigma && refinement.RobotFree();
   double sigma = options.pixel_sigma.value_or(1.0);
   for (int iteration = 0; iteration < options.max_sigma_iterations; ++iteration) {
     const double squared = refinement.Solve(sigma);
-    if (options.pixel_sigma) break;
-    const double estimate = std::max(std::sqrt(squared / dof), 1e-12);
-    const bool converged = std::abs(estimate - sigma) <= 1e-3 * sigma;
-    sigma = estimate;
-    if (converged) break;
+    if (!result.pixel_sigma_estimated && !result.robot_sigma_estimated) break;
+    if (!result.robot_sigma_estimated) {
+      const double estimate = std::max(std::sqrt(squared / dof), 1e-12);
+      const bool converged = std::abs(estimate - sigma) <= 1e-3 * sigma;
+      sigma = estimate;
+      if (converged) break;
+      continue;
+    }
+    // Each group's variance scaled by its whitened squared sum over its redundancy.
+    const std::array<VarianceComponent, 3> c = refinement.VarianceComponents(sigma);
+    const auto scale = [](const VarianceComponent& component) {
+      return component.redundancy > 0.5 ? std::sqrt(component.squared_sum / component.redundancy)
+                                        : 1.0;
+    };
+    PoseSigma& robot = refinement.robot_sigma();
+    const std::array<double, 3> factors = {result.pixel_sigma_estimated ? scale(c[0]) : 1.0,
+                                           scale(c[1]), scale(c[2])};
+    sigma = std::max(sigma * factors[0], 1e-12);
+    robot.rotation = std::max(robot.rotation * factors[1], kMinRobotSigma);
+    robot.translation = std::max(robot.translation * factors[2], kMinRobotSigma);
+    if (std::all_of(factors.begin(), factors.end(),
+                    [](double f) { return std::abs(f - 1.0) <= 1e-3; })) {
+      refinement.Solve(sigma);
+      break;
+    }
   }
+  result.robot_sigma = refinement.robot_sigma();
   result.pixel_sigma = sigma;
   result.X = refinement.X();
   result.Z = refinement.Z();

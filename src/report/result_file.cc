@@ -48,6 +48,60 @@ json CovarianceJson(const Matrix6d& covariance, double scale) {
   return MatrixJson(0.5 * (scaled + scaled.transpose()));
 }
 
+json CameraJson(const pose::CameraModel& camera) {
+  return {{"fx", camera.fx},
+          {"fy", camera.fy},
+          {"cx", camera.cx},
+          {"cy", camera.cy},
+          {"width", camera.width},
+          {"height", camera.height},
+          {"distortion",
+           {{"model", "plumb_bob"},
+            {"coefficients",
+             std::vector<double>(camera.distortion.begin(), camera.distortion.end())}}}};
+}
+
+// The used stations' ids, in order.
+std::vector<std::string> UsedIds(const ResultDocument& document) {
+  std::vector<std::string> used;
+  for (size_t i = 0; i < document.station_ids.size(); ++i) {
+    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) ==
+        document.rejected.end()) {
+      used.push_back(document.station_ids[i]);
+    }
+  }
+  return used;
+}
+
+json ImagesJson(const ResultDocument& document, const ImageReport& report) {
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  json intrinsics = CameraJson(report.camera);
+  intrinsics["source"] = report.intrinsics_source;
+  if (report.intrinsics_rms_px) intrinsics["rms_px"] = *report.intrinsics_rms_px;
+  json per_image = json::array();
+  const std::vector<std::string> used = UsedIds(document);
+  for (size_t k = 0; k < used.size() && k < report.image_rms_px.size(); ++k) {
+    per_image.push_back({{"id", used[k]},
+                         {"rms_px", report.image_rms_px[k]},
+                         {"outlier", static_cast<bool>(report.image_outlier.at(k))}});
+  }
+  json skipped = json::array();
+  for (size_t k = 0; k < document.rejected.size() && k < report.skipped_reasons.size(); ++k) {
+    skipped.push_back({{"id", document.station_ids.at(document.rejected[k])},
+                       {"reason", report.skipped_reasons[k]}});
+  }
+  return {{"intrinsics", intrinsics},
+          {"pixel_sigma_px", report.pixel_sigma},
+          {"pixel_sigma_estimated", report.pixel_sigma_estimated},
+          {"reprojection_rms_px", report.rms_px},
+          {"per_image", per_image},
+          {"skipped", skipped},
+          {"pose_level",
+           {{"method", handeye::Info(report.pose_level.method).name},
+            {"X", PoseJson(report.pose_level.X, handeye::XFrameName(document.setup), scale)},
+            {"Z", PoseJson(report.pose_level.Z, handeye::ZFrameName(document.setup), scale)}}}};
+}
+
 json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   json object = {
@@ -95,6 +149,10 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
                      {"estimated", result.sigmas_estimated}};
   object["stations"] = {{"used", used}, {"rejected", rejected}};
   object["warnings"] = result.warnings;
+  if (document.images) {
+    object["refinement"] = "reprojection";
+    object["images"] = ImagesJson(document, *document.images);
+  }
   return object;
 }
 

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/geometry/types.h"
 #include "hecal/handeye/methods.h"
@@ -68,5 +69,11 @@ struct CalibrationResult {
 // for invalid options (negative or all-zero sigmas, unknown robust loss; the source named is the
 // CLI flag).
 CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options);
+
+// Fills result->residuals, rotation_rms and translation_rms at result->X, result->Z, with the
+// whitened residuals and outlier flags of `noise` (noise_estimation.h, linearised at the same
+// X, Z); returns the indices of the flagged stations.
+std::vector<int> SetStationResiduals(const handeye::Problem& problem, const NoiseEstimate& noise,
+                                     CalibrationResult* result);
 
 }  // namespace hecal::estimation

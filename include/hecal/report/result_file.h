@@ -8,12 +8,14 @@
 // unit², scaled to the output length unit.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "hecal/estimation/calibrate.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/io/units.h"
+#include "hecal/pose/camera_model.h"
 
 namespace hecal::report {
 
@@ -21,6 +23,21 @@ namespace hecal::report {
 struct MethodFailure {
   handeye::Method method = handeye::Method::kMl;
   std::string message;
+};
+
+// `hecal calibrate --images`: the image level of the result, written as "images" (and
+// "refinement": "reprojection"). Per-image vectors follow the used stations, in order.
+struct ImageReport {
+  std::string intrinsics_source;  // the camera.yaml given, or "estimated from the images"
+  pose::CameraModel camera;
+  std::optional<double> intrinsics_rms_px;  // when estimated: calibrateCamera's RMS
+  double pixel_sigma = 0.0;                 // px, given or estimated
+  bool pixel_sigma_estimated = false;
+  double rms_px = 0.0;  // reprojection RMS over every point at the result
+  std::vector<double> image_rms_px;
+  std::vector<bool> image_outlier;
+  std::vector<std::string> skipped_reasons;  // one per ResultDocument::rejected, same order
+  estimation::CalibrationResult pose_level;  // X, Z before the reprojection refinement
 };
 
 struct ResultDocument {
@@ -31,6 +48,7 @@ struct ResultDocument {
   std::vector<estimation::CalibrationResult> results;  // one, or one per method for `all`
   bool all_methods = false;                            // write {"results": [...]}
   std::vector<MethodFailure> failures;                 // `all` only: methods that refused
+  std::optional<ImageReport> images;                   // `calibrate --images` only
 };
 
 enum class ResultFormat { kJson, kYaml };

@@ -7,11 +7,12 @@
 // top-left pixel, u to the right, v down. The image may be grey or BGR(A); it is converted to grey.
 //
 // Per target type (OpenCV 4.6 + contrib aruco, libapriltag 3.3):
-//   chessboard     cv::findChessboardCornersSB(EXHAUSTIVE | ACCURACY); when it finds nothing,
-//                  cv::findChessboardCorners(ADAPTIVE_THRESH | NORMALIZE_IMAGE) with the corners
+//   chessboard     cv::findChessboardCorners(ADAPTIVE_THRESH | NORMALIZE_IMAGE) with the corners
 //                  refined from the edges between the squares (detection_edges.cc: intersections
 //                  of the fitted grid lines; on real images as accurate as the SB detector's
-//                  ACCURACY mode and twice as accurate as cv::cornerSubPix). All or nothing.
+//                  ACCURACY mode and twice as accurate as cv::cornerSubPix, at a 50th of its
+//                  time); when it finds nothing, cv::findChessboardCornersSB(EXHAUSTIVE |
+//                  ACCURACY), which copes with blur and uneven light. All or nothing.
 //   circles,       cv::findCirclesGrid(SYMMETRIC_GRID | ASYMMETRIC_GRID), retried with CLUSTERING
 //   acircles       when it fails (the default finder misses grids turned by about a quarter turn),
 //                  with a blob detector that accepts blobs up to (image area / number of circles);
@@ -123,11 +124,12 @@ struct Detection {
 };
 
 struct DetectOptions {
-  int min_points = 4;               // partial detections need at least this many points (≥ 4)
-  bool allow_partial = true;        // false: marker targets must show every point
-  bool chessboard_fallback = true;  // try findChessboardCorners when the SB detector fails
-  int apriltag_max_hamming = 1;     // corrected bits accepted by libapriltag (0..2)
-  double apriltag_decimate = 1.0;   // libapriltag quad_decimate (1 = full resolution)
+  int min_points = 4;                 // partial detections need at least this many points (≥ 4)
+  bool allow_partial = true;          // false: marker targets must show every point
+  bool chessboard_fast_first = true;  // findChessboardCorners + edge refinement, SB on failure;
+                                      // false: findChessboardCornersSB only
+  int apriltag_max_hamming = 1;       // corrected bits accepted by libapriltag (0..2)
+  double apriltag_decimate = 1.0;     // libapriltag quad_decimate (1 = full resolution)
 
   // True when the options are usable; otherwise says why in *error.
   bool IsValid(std::string* error) const;

@@ -1,0 +1,78 @@
+// `hecal calibrate` (DESIGN.md §4):
+//   hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand
+//                   [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
+//                   [--output result.json] [--units m|mm]
+//   hecal calibrate --images DIR --target target.yaml [--intrinsics camera.yaml]
+//                   --robot robot.csv --setup ... [--pixel-sigma PX] [--threads N] ...
+// From pose tables (calibrate.cc): pairs stations (by id, else by order), solves with the chosen
+// method(s), prints a readable summary and writes the result file (DESIGN.md §5).
+// From images (calibrate_images.cc): see RunCalibrateImages below.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "cli.h"
+#include "hecal/estimation/calibrate.h"
+#include "hecal/handeye/problem.h"
+#include "hecal/io/pose_table.h"
+#include "hecal/report/result_file.h"
+
+namespace hecal::cli {
+
+struct CalibrateFlags {
+  std::string robot;
+  std::string camera;
+  std::string images;       // --images DIR (instead of --camera)
+  std::string target;       // --target target.yaml (with --images)
+  std::string intrinsics;   // --intrinsics camera.yaml (with --images; estimated when absent)
+  std::string pixel_sigma;  // --pixel-sigma PX (with --images; estimated when absent)
+  int threads = 0;          // --threads (with --images; 0 = every core)
+  std::string setup;
+  std::string method = "ml";
+  std::string robot_sigma;
+  std::string camera_sigma;
+  std::string output;
+  std::string units = "m";
+  bool degrees = false;
+  std::string euler;
+  bool robot_inverse = false;
+  bool camera_inverse = false;
+  std::string robust = "none";
+};
+
+// The flags every form shares, checked.
+struct CalibrateSettings {
+  handeye::Setup setup = handeye::Setup::kEyeInHand;
+  bool all = false;                      // --method all
+  estimation::CalibrateOptions options;  // method (unless all), sigmas, robust loss
+  io::PoseReadOptions read;              // --units, --degrees, --euler (robot and camera files)
+};
+
+// Throws InputError naming the flag for every bad value, and when neither or both of --camera
+// and --images are given.
+CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
+
+// The readable summary of one result: X, Z, their 1σ, the residuals of every station.
+void PrintSummary(std::ostream& out, const report::ResultDocument& document,
+                  const estimation::CalibrationResult& result);
+
+// `hecal calibrate --images` (issue 4, "End to end"):
+//   1. the image front end of image_set.h: detection, intrinsics (given or estimated), PnP poses
+//      with covariances, and the per-image report;
+//   2. pairing with the robot rows (DESIGN.md §4.1): when every robot row has an id, the image
+//      whose file stem equals it (each image needs a row; rows without an image are left out
+//      with a note); otherwise by sorted file name — one robot row per image file, in order,
+//      counting the images where the target was not usable (their rows are left out);
+//   3. estimation::CalibrateFromImages: the pose-level method (--method, ml by default; not
+//      `all`), then the joint reprojection refinement over X, Z and the robot poses;
+//   4. the summary, a per-image reprojection table (RMS px, flag), and the result file with
+//      "refinement": "reprojection" and an "images" section (intrinsics, pixel sigma, per-image
+//      RMS and flags, skipped images and why, the pose-level X and Z). Skipped images are the
+//      result's rejected stations.
+// Errors (InputError, exit 2, nothing written): those of image_set.h, of the robot file, the
+// pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera.
+void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
+                        const Io& io);
+
+}  // namespace hecal::cli

@@ -1,0 +1,199 @@
+// `hecal calibrate --images`: see calibrate.h.
+#include "calibrate.h"
+#include "hecal/core/error.h"
+
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "hecal/estimation/image_calibration.h"
+#include "hecal/geometry/rotation.h"
+#include "image_set.h"
+#endif
+
+namespace hecal::cli {
+
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+namespace {
+
+std::optional<double> ParsePixelSigma(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
+      value <= 0.0) {
+    throw InputError("--pixel-sigma", 0, "expected a positive number of pixels, got '" + text + "'",
+                     "write e.g. --pixel-sigma 0.1, or leave it out to estimate it");
+  }
+  return value;
+}
+
+// The robot row of every image (DESIGN.md §4.1): by id = file stem when every row has an id,
+// else by sorted file name. Returns one pose per image of `set`, in its order.
+std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& set,
+                                    const std::string& images_dir, const Io& io) {
+  const bool by_id =
+      !robot.rows.empty() && std::all_of(robot.rows.begin(), robot.rows.end(),
+                                         [](const io::PoseRow& row) { return row.id.has_value(); });
+  std::vector<Pose> poses;
+  if (!by_id) {
+    if (robot.rows.size() != set.images.size()) {
+      throw InputError(robot.source, 0,
+                       "has " + std::to_string(robot.rows.size()) + " poses but " + images_dir +
+                           " has " + std::to_string(set.images.size()) + " images",
+                       "give one robot pose per image file, in sorted file-name order (images "
+                       "where the target is not found count too), or add an id column equal to "
+                       "each image's file stem");
+    }
+    for (const io::PoseRow& row : robot.rows) poses.push_back(row.pose);
+    return poses;
+  }
+  std::map<std::string, const io::PoseRow*> rows;
+  for (const io::PoseRow& row : robot.rows) {
+    if (const auto [it, inserted] = rows.emplace(*row.id, &row); !inserted) {
+      throw InputError(
+          robot.source, row.line,
+          "id '" + *row.id + "' repeats (first at line " + std::to_string(it->second->line) + ")",
+          "give every row its own id");
+    }
+  }
+  for (const ImageRecord& image : set.images) {
+    const auto match = rows.find(image.id());
+    if (match == rows.end()) {
+      throw InputError(
+          robot.source, 0,
+          "no row with id '" + image.id() + "' for the image " + image.path.filename().string(),
+          "add the robot pose of that image with id = its file stem, remove the "
+          "image, or drop the id column to pair by sorted file name");
+    }
+    poses.push_back(match->second->pose);
+    rows.erase(match);
+  }
+  for (const auto& [id, row] : rows) {
+    io.err << "hecal: note: " << robot.source << ":" << row->line << ": id '" << id
+           << "' has no image in " << images_dir << "; left out\n";
+  }
+  return poses;
+}
+
+void PrintImageTable(std::ostream& out, const report::ResultDocument& document,
+                     const report::ImageReport& report) {
+  out << std::fixed << std::setprecision(3) << "reprojection: RMS " << report.rms_px
+      << " px over every point; pixel sigma " << report.pixel_sigma << " px ("
+      << (report.pixel_sigma_estimated ? "estimated" : "given") << ")\n  image          rms_px\n";
+  size_t k = 0;
+  for (size_t i = 0; i < document.station_ids.size(); ++i) {
+    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) !=
+        document.rejected.end()) {
+      continue;
+    }
+    out << "  " << std::left << std::setw(14) << document.station_ids[i] << std::right
+        << std::setw(7) << report.image_rms_px[k]
+        << (report.image_outlier[k] ? "   > 3σ, check this image" : "") << "\n";
+    ++k;
+  }
+  out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace
+
+void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
+                        const Io& io) {
+  if (settings.all) {
+    throw InputError("--method", 0, "--method all is not available with --images",
+                     "run hecal detect to write camera.csv, then hecal calibrate --camera "
+                     "camera.csv --method all; or give one method");
+  }
+  if (flags.camera_inverse) {
+    throw InputError("--camera-inverse", 0, "applies to --camera files only",
+                     "leave it out: poses from --images are T_camera_target");
+  }
+  if (flags.target.empty()) {
+    throw InputError("--target", 0, "--images needs --target",
+                     "give the target description, e.g. --target target.yaml (docs/targets.md)");
+  }
+  const std::optional<double> pixel_sigma = ParsePixelSigma(flags.pixel_sigma);
+  io::PoseReadOptions robot_read = settings.read;
+  robot_read.invert = flags.robot_inverse;
+  const io::PoseTable robot = io::ReadPoseTable(flags.robot, robot_read);
+
+  const ImageSet set = DetectImageSet({flags.images, flags.target, flags.intrinsics, flags.threads},
+                                      "hecal calibrate", io);
+  const std::vector<Pose> robot_poses = RobotPosePerImage(robot, set, flags.images, io);
+
+  report::ResultDocument document;
+  document.setup = settings.setup;
+  document.unit = robot.unit;
+  report::ImageReport report;
+  std::vector<estimation::ImageStation> stations;
+  for (size_t i = 0; i < set.images.size(); ++i) {
+    const ImageRecord& image = set.images[i];
+    document.station_ids.push_back(image.id());
+    if (!image.used()) {
+      document.rejected.push_back(static_cast<int>(i));
+      report.skipped_reasons.push_back(image.skipped);
+      continue;
+    }
+    estimation::ImageStation station;
+    station.T_base_gripper = robot_poses[i];
+    station.T_camera_target = image.pose->T_camera_target;
+    station.camera_covariance = image.pose->covariance;
+    station.points = {ObjectPointsOf(image.detection, set.board), PixelsOf(image.detection)};
+    stations.push_back(std::move(station));
+  }
+
+  estimation::ImageCalibrationOptions options;
+  options.setup = settings.setup;
+  options.calibrate = settings.options;
+  options.camera = set.camera;
+  options.pixel_sigma = pixel_sigma;
+  const estimation::ImageCalibrationResult result =
+      estimation::CalibrateFromImages(stations, options);
+
+  report.intrinsics_source =
+      set.estimated ? std::string("estimated from the images") : flags.intrinsics;
+  report.camera = set.camera;
+  if (set.estimated) report.intrinsics_rms_px = set.estimated->rms_px;
+  report.pixel_sigma = result.reprojection.pixel_sigma;
+  report.pixel_sigma_estimated = result.reprojection.pixel_sigma_estimated;
+  report.rms_px = result.reprojection.rms_px;
+  report.image_rms_px = result.reprojection.image_rms_px;
+  report.image_outlier = result.reprojection.image_outlier;
+  report.pose_level = result.pose_level;
+  document.results.push_back(result.result);
+  document.images = report;
+
+  const Pose step = result.pose_level.X.inverse() * result.result.X;
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  io.out << "\npose level (" << handeye::Info(result.pose_level.method).name
+         << " on the PnP poses), then the joint reprojection refinement moved X by "
+         << std::setprecision(4)
+         << AxisAngleFromMatrix(step.linear()).angle * 180.0 / std::numbers::pi << " deg, "
+         << (result.result.X.translation() - result.pose_level.X.translation()).norm() * scale
+         << " " << io::UnitName(document.unit) << "\n";
+  io.out.unsetf(std::ios::floatfield);
+  PrintSummary(io.out, document, result.result);
+  PrintImageTable(io.out, document, report);
+  if (!flags.output.empty()) {
+    report::WriteResult(flags.output, document);
+    io.out << "wrote " << flags.output << "\n";
+  }
+}
+
+#else
+
+void RunCalibrateImages(const CalibrateFlags&, const CalibrateSettings&, const Io&) {
+  throw InputError("hecal calibrate --images", 0,
+                   "this hecal was built without the vision layer (OpenCV)",
+                   "rebuild with -DHECAL_BUILD_VISION=ON, or give --camera camera.csv");
+}
+
+#endif
+
+}  // namespace hecal::cli

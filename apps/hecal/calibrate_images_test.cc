@@ -1,0 +1,207 @@
+// `hecal calibrate --images` end to end on rendered images (rendered_views_test_util.h) of a
+// known scene: a chessboard seen by a camera on a robot (eye-in-hand) or by a fixed camera with
+// the board on the robot (eye-to-hand), the robot poses computed from the chosen views and a
+// known X and Z (Z = A_i X B_i, handeye/problem.h). Checks X and Z against that truth, the result
+// file's image section, the pairing rules of DESIGN.md §4.1, and bad input (exit 2, nothing
+// written).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "calibrate.h"
+#include "cli_test_util.h"
+
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "rendered_views_test_util.h"
+#endif
+
+namespace hecal::cli {
+namespace {
+
+using cli_test::CliTest;
+using cli_test::Hecal;
+
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+
+using nlohmann::json;
+using rendered_views::kDeg;
+
+constexpr int kViews = 8;
+
+// X and Z of the scene (metres): a camera 10 cm off the flange, looking along the flange's x;
+// the board 60 cm in front of the robot base.
+Pose TrueX() {
+  return MakePose(Eigen::AngleAxisd(100 * kDeg, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
+                      .toRotationMatrix(),
+                  Eigen::Vector3d(0.04, -0.03, 0.10));
+}
+Pose TrueZ() {
+  return MakePose(
+      Eigen::AngleAxisd(170 * kDeg, Eigen::Vector3d(1.0, 0.1, 0.0).normalized()).toRotationMatrix(),
+      Eigen::Vector3d(0.6, 0.1, 0.05));
+}
+
+// The robot pose T_base_gripper that makes the camera see the board from view B (Z = A X B).
+Pose RobotPose(handeye::Setup setup, const Pose& B) {
+  const Pose A = TrueZ() * B.inverse() * TrueX().inverse();
+  return setup == handeye::Setup::kEyeInHand ? A : A.inverse();
+}
+
+std::string ViewName(int i) {
+  return "view_0" + std::to_string(i);
+}
+
+// Images rendered once for the suite.
+class CalibrateImagesTest : public CliTest {
+ protected:
+  static void SetUpTestSuite() {
+    std::filesystem::create_directories(RenderDir());
+    const std::vector<Pose> views = rendered_views::Views(kViews);
+    for (int i = 0; i < kViews; ++i) {
+      rendered_views::RenderView(views[static_cast<size_t>(i)], 100 + i,
+                                 RenderDir() / (ViewName(i) + ".png"));
+    }
+  }
+  static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
+  static std::filesystem::path RenderDir() {
+    return std::filesystem::temp_directory_path() /
+           ("hecal_calibrate_images_test_renders_" + std::to_string(::getpid()));
+  }
+
+  // robot.csv: one row per view in `order` (indices into the views), with an id column when
+  // `ids`; a row per index, so an index out of range gives an extra row.
+  std::string RobotFile(handeye::Setup setup, const std::vector<int>& order, bool ids) {
+    const std::vector<Pose> views = rendered_views::Views(kViews + 1);
+    std::ostringstream csv;
+    csv << std::setprecision(17) << (ids ? "id," : "") << "x,y,z,qw,qx,qy,qz\n";
+    for (int i : order) {
+      const Pose G = RobotPose(setup, views[static_cast<size_t>(i)]);
+      const Eigen::Quaterniond q(G.linear());
+      if (ids) csv << ViewName(i) << ",";
+      csv << G.translation().x() << "," << G.translation().y() << "," << G.translation().z() << ","
+          << q.w() << "," << q.x() << "," << q.y() << "," << q.z() << "\n";
+    }
+    return Write("robot.csv", csv.str());
+  }
+  static std::vector<int> AllViews() {
+    std::vector<int> order(kViews);
+    for (int i = 0; i < kViews; ++i) order[static_cast<size_t>(i)] = i;
+    return order;
+  }
+
+  std::vector<std::string> Args(handeye::Setup setup, const std::string& robot) {
+    return {"calibrate",
+            "--images",
+            RenderDir().string(),
+            "--target",
+            Write("target.yaml", rendered_views::kTargetYaml),
+            "--intrinsics",
+            Write("camera.yaml", rendered_views::CameraYaml(rendered_views::TrueCamera())),
+            "--robot",
+            robot,
+            "--setup",
+            std::string(handeye::SetupName(setup)),
+            "--output",
+            Path("result.json")};
+  }
+};
+
+Pose PoseOf(const json& object) {
+  Eigen::Matrix4d M;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) M(r, c) = object["matrix"][r][c].get<double>();
+  }
+  return Pose(M);
+}
+
+// Both setups, robot poses exact: X and Z from the rendered images within what sub-pixel
+// corners (≈0.03 px) allow: measured ≤ 0.01° and ≤ 0.05 mm; asserted at 0.05° and 0.3 mm. The
+// result file carries the image section (DESIGN.md §5 plus "refinement" and "images").
+TEST_F(CalibrateImagesTest, RecoversXAndZFromRenderedImages) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const cli_test::Outcome run = Hecal(Args(setup, RobotFile(setup, AllViews(), false)));
+    ASSERT_EQ(run.code, 0) << run.err;
+    const json result = json::parse(Read("result.json"));
+    const std::string name(handeye::SetupName(setup));
+    EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05) << name;
+    EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 0.3) << name;
+    EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["Z"]), TrueZ()), 0.05) << name;
+    EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["Z"]), TrueZ()), 0.3) << name;
+    EXPECT_EQ(result["X"]["frame"], std::string(handeye::XFrameName(setup)));
+    EXPECT_EQ(result["refinement"], "reprojection");
+    EXPECT_EQ(result["method"], "ml");
+    const json& images = result["images"];
+    ASSERT_EQ(images["per_image"].size(), static_cast<size_t>(kViews));
+    EXPECT_EQ(images["per_image"][3]["id"], "view_03");
+    EXPECT_LT(images["reprojection_rms_px"].get<double>(), 0.2);
+    EXPECT_TRUE(images["pixel_sigma_estimated"].get<bool>());
+    EXPECT_EQ(images["intrinsics"]["fx"].get<double>(), 620.0);
+    EXPECT_EQ(result["stations"]["used"].size(), static_cast<size_t>(kViews));
+    EXPECT_TRUE(result["stations"]["rejected"].empty());
+    EXPECT_EQ(result["covariance"]["X"].size(), 6u);
+    EXPECT_EQ(images["pose_level"]["method"], "ml");
+    EXPECT_NE(run.out.find("reprojection: RMS"), std::string::npos) << run.out;
+  }
+}
+
+// With ids, robot rows pair with the image whose file stem is the id, in any order, and a row
+// without an image is left out with a note; the result is the one of the ordered file.
+TEST_F(CalibrateImagesTest, PairsRobotRowsByIdInAnyOrder) {
+  const handeye::Setup setup = handeye::Setup::kEyeInHand;
+  std::vector<int> order = AllViews();
+  std::reverse(order.begin(), order.end());
+  order.push_back(kViews);  // view_08 has no image
+  const cli_test::Outcome run = Hecal(Args(setup, RobotFile(setup, order, true)));
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("id 'view_08' has no image"), std::string::npos) << run.err;
+  const json result = json::parse(Read("result.json"));
+  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_EQ(result["stations"]["used"][0], "view_00");
+}
+
+TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
+  const handeye::Setup setup = handeye::Setup::kEyeInHand;
+  const auto refuses = [&](std::vector<std::string> args, const std::string& expected) {
+    const cli_test::Outcome run = Hecal(args);
+    EXPECT_EQ(run.code, 2) << run.out << run.err;
+    EXPECT_NE(run.err.find(expected), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(Path("result.json")));
+  };
+  // By order, one robot row per image file.
+  std::vector<int> short_order = AllViews();
+  short_order.pop_back();
+  refuses(Args(setup, RobotFile(setup, short_order, false)), "has 7 poses but");
+  // By id, every image needs its row.
+  refuses(Args(setup, RobotFile(setup, short_order, true)), "no row with id 'view_07'");
+  std::vector<std::string> args = Args(setup, RobotFile(setup, AllViews(), false));
+  std::vector<std::string> all = args;
+  all.insert(all.end(), {"--method", "all"});
+  refuses(all, "--method all is not available with --images");
+  std::vector<std::string> both = args;
+  both.insert(both.end(), {"--camera", Write("camera.csv", "x,y,z,qw,qx,qy,qz\n")});
+  refuses(both, "--camera and --images were both given");
+  std::vector<std::string> no_target = args;
+  no_target.erase(no_target.begin() + 3, no_target.begin() + 5);
+  refuses(no_target, "--images needs --target");
+  std::vector<std::string> bad_sigma = args;
+  bad_sigma.insert(bad_sigma.end(), {"--pixel-sigma", "-1"});
+  refuses(bad_sigma, "--pixel-sigma");
+  const cli_test::Outcome neither =
+      Hecal({"calibrate", "--robot", RobotFile(setup, AllViews(), false), "--setup", "eye-in-hand",
+             "--output", Path("result.json")});
+  EXPECT_EQ(neither.code, 2);
+  EXPECT_NE(neither.err.find("neither --camera nor --images"), std::string::npos) << neither.err;
+}
+
+#endif
+}  // namespace
+}  // namespace hecal::cli

@@ -1,0 +1,108 @@
+// Test support for the CLI tests on rendered images (detect_test, calibrate_images_test): a 9 × 6
+// chessboard, a known camera, views of the board from chosen directions, and their rendering
+// (vision/render.h) into a folder of PNG files.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <numbers>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "hecal/geometry/types.h"
+#include "hecal/pose/camera_model.h"
+#include "hecal/pose/target.h"
+#include "hecal/vision/render.h"
+
+namespace hecal::cli::rendered_views {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// 9 × 6 inner corners (cols + rows odd: the square colours fix the order), 25 mm squares.
+constexpr const char* kTargetYaml = "type: chessboard\ncols: 9\nrows: 6\nsquare: 0.025\n";
+
+inline pose::TargetSpec Board() {
+  pose::TargetSpec target;
+  target.type = pose::TargetType::kChessboard;
+  target.cols = 9;
+  target.rows = 6;
+  target.square = 0.025;
+  return target;
+}
+
+inline pose::CameraModel TrueCamera() {
+  pose::CameraModel camera;
+  camera.fx = 620.0;
+  camera.fy = 622.0;
+  camera.cx = 321.5;
+  camera.cy = 238.0;
+  camera.width = 640;
+  camera.height = 480;
+  camera.distortion = {-0.12, 0.05, 0.0, 0.0, 0.0};
+  return camera;
+}
+
+inline std::string CameraYaml(const pose::CameraModel& c) {
+  std::ostringstream yaml;
+  yaml << std::setprecision(17) << "fx: " << c.fx << "\nfy: " << c.fy << "\ncx: " << c.cx
+       << "\ncy: " << c.cy << "\nwidth: " << c.width << "\nheight: " << c.height
+       << "\ndistortion:\n  model: plumb_bob\n  coefficients: [" << c.distortion[0] << ", "
+       << c.distortion[1] << ", " << c.distortion[2] << ", " << c.distortion[3] << ", "
+       << c.distortion[4] << "]\n";
+  return yaml.str();
+}
+
+// T_camera_target of the camera `distance` from the board centre, tilted by `tilt` towards
+// `azimuth` (x right, y down on the board), looking at the centre and then panned by (pan_x,
+// pan_y) radians about its own x and y axes so the board lands in different parts of the image.
+inline Pose ViewPose(double distance, double tilt, double azimuth, double pan_x, double pan_y) {
+  const Eigen::Vector3d centre(0.1, 0.0625, 0.0);  // of the 8 × 5 squares between the corners
+  const Eigen::Vector3d eye =
+      centre + distance * Eigen::Vector3d(std::sin(tilt) * std::cos(azimuth),
+                                          std::sin(tilt) * std::sin(azimuth), -std::cos(tilt));
+  const Eigen::Vector3d z = (centre - eye).normalized();
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitY().cross(z).normalized();
+  Eigen::Matrix3d R_target_camera;
+  R_target_camera << x, z.cross(x), z;
+  const Pose T_target_camera = MakePose(R_target_camera, eye);
+  const Eigen::Matrix3d pan = (Eigen::AngleAxisd(pan_x, Eigen::Vector3d::UnitX()) *
+                               Eigen::AngleAxisd(pan_y, Eigen::Vector3d::UnitY()))
+                                  .toRotationMatrix();
+  return MakePose(pan, Eigen::Vector3d::Zero()) * T_target_camera.inverse();
+}
+
+// `count` views, tilted 15–35° in directions 60° apart, spread over the image.
+inline std::vector<Pose> Views(int count = 6) {
+  std::vector<Pose> views;
+  for (int k = 0; k < count; ++k) {
+    views.push_back(ViewPose(0.38 + 0.02 * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg, k * 60.0 * kDeg,
+                             (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12)));
+  }
+  return views;
+}
+
+// Renders the board seen from T_camera_target into `path` (slight blur and noise, as a real
+// camera; `seed` for the noise).
+inline void RenderView(const Pose& T_camera_target, std::uint64_t seed,
+                       const std::filesystem::path& path) {
+  vision::RenderOptions options;
+  options.blur_sigma = 0.6;
+  options.noise_sigma = 1.0;
+  options.supersampling = 4;
+  options.seed = seed;
+  cv::imwrite(path.string(), vision::RenderTarget(Board(), TrueCamera(), T_camera_target, options));
+}
+
+// Rotation angle between two poses (deg) and translation distance (mm).
+inline double RotationErrorDeg(const Pose& a, const Pose& b) {
+  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() / kDeg;
+}
+inline double TranslationErrorMm(const Pose& a, const Pose& b) {
+  return 1e3 * (a.translation() - b.translation()).norm();
+}
+
+}  // namespace hecal::cli::rendered_views

@@ -1,0 +1,124 @@
+// CalibrateFromImages on simulated image stations (testing/image_stations.h): PnP poses from the
+// projected pixels (pose::RefinePose, started at the true pose), then the whole chain against the
+// known X and Z.
+#include "hecal/estimation/image_calibration.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "hecal/geometry/se3.h"
+#include "hecal/pose/pose_refinement.h"
+#include "testing/image_stations.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::vector<ImageStation> Stations(const testing::ImageStations& s) {
+  std::vector<ImageStation> stations;
+  for (size_t i = 0; i < s.images.size(); ++i) {
+    const pose::RefinementResult pnp =
+        pose::RefinePose(s.data.T_camera_target_true[i], s.images[i].target, s.images[i].pixels,
+                         testing::TestCamera());
+    stations.push_back(
+        {s.data.T_base_gripper[i], pnp.T_camera_target, pnp.covariance, s.images[i]});
+  }
+  return stations;
+}
+
+ImageCalibrationOptions Options(handeye::Setup setup) {
+  ImageCalibrationOptions options;
+  options.setup = setup;
+  options.camera = testing::TestCamera();
+  return options;
+}
+
+TEST(CalibrateFromImages, NoiseFreeImagesGiveTheTruth) {
+  const sim::NoiseModel none{sim::NoiseModel::Kind::kGaussian, 0.0, 0.0};
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const testing::ImageStations s = testing::MakeImageStations(setup, 8, 5, none, 0.0);
+    ImageCalibrationOptions options = Options(setup);
+    options.pixel_sigma = 0.5;
+    const ImageCalibrationResult result = CalibrateFromImages(Stations(s), options);
+    EXPECT_LT(se3::Log(s.data.X.inverse() * result.result.X).norm(), 1e-8)
+        << handeye::SetupName(setup);
+    EXPECT_LT(se3::Log(s.data.Z.inverse() * result.result.Z).norm(), 1e-8);
+    EXPECT_LT(result.reprojection.rms_px, 1e-6);
+    ASSERT_EQ(result.result.residuals.size(), 8u);
+    EXPECT_LT(result.result.translation_rms, 1e-9);
+    ASSERT_TRUE(result.result.covariance_X.has_value());
+  }
+}
+
+// The camera noise of the pose level comes from the PnP covariances (not estimated), so only the
+// robot noise is estimated and the warning says so; with the robot noise known, nothing is.
+TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
+  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.02 * kDeg, 0.1e-3};
+  const testing::ImageStations s =
+      testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 9, robot, 0.3);
+  const std::vector<ImageStation> stations = Stations(s);
+  double rotation = 0.0;
+  for (const ImageStation& station : stations) {
+    rotation += station.camera_covariance.topLeftCorner<3, 3>().trace() / 3.0;
+  }
+  const ImageCalibrationResult result =
+      CalibrateFromImages(stations, Options(handeye::Setup::kEyeInHand));
+  EXPECT_NEAR(result.pose_level.camera_sigma.rotation, std::sqrt(rotation / 12.0), 1e-15);
+  ASSERT_FALSE(result.result.warnings.empty());
+  EXPECT_NE(result.result.warnings.front().find("estimated with the pixel noise"),
+            std::string::npos)
+      << result.result.warnings.front();
+  // The joint estimate of the robot noise: its effect at the target, 1 m from the flange,
+  // sqrt(σ_t² + (σ_r · 1 m)²), is the simulated one (0.36 mm) within 30% (12 stations). Its split
+  // between rotation and translation is weakly identifiable — both move the camera, and only
+  // the camera's rotation (0.01–0.02° per image here) tells them apart — so it is not asserted.
+  EXPECT_TRUE(result.reprojection.robot_sigma_estimated);
+  const auto at_target = [](const PoseSigma& sigma) {
+    return std::hypot(sigma.translation, sigma.rotation * 1.0);
+  };
+  EXPECT_NEAR(at_target(result.result.robot_sigma) / at_target({0.02 * kDeg, 0.1e-3}), 1.0, 0.3);
+}
+
+// Issue 4: the reprojection refinement is at least as accurate as the pose-level ml it starts
+// from. 100 data sets of 10 images, 0.5 px pixel noise, robot noise 0.01° / 0.05 mm, both
+// estimated: RMS X error over the data sets, rotation and translation. Measured: eye-in-hand
+// 0.117° / 2.10 mm → 0.045° / 0.81 mm, eye-to-hand 0.108° / 1.95 mm → 0.027° / 0.47 mm.
+// The covariance with estimated sigmas is somewhat optimistic: mean squared Mahalanobis
+// distance of X 9.2 (eye-in-hand) and 7.9 (eye-to-hand) against 6, because the robot noise's
+// split between rotation and translation is weakly identifiable (see above); asserted below 10.
+TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
+  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kDeg, 0.05e-3};
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    double pose_rotation = 0.0, pose_translation = 0.0;
+    double image_rotation = 0.0, image_translation = 0.0, mahalanobis = 0.0;
+    constexpr int kTrials = 100;
+    for (int trial = 0; trial < kTrials; ++trial) {
+      const testing::ImageStations s =
+          testing::MakeImageStations(setup, 10, 500 + trial, robot, 0.5);
+      const ImageCalibrationResult result = CalibrateFromImages(Stations(s), Options(setup));
+      const Vector6d pose_error = se3::Log(s.data.X.inverse() * result.pose_level.X);
+      const Vector6d image_error = se3::Log(s.data.X.inverse() * result.result.X);
+      pose_rotation += pose_error.head<3>().squaredNorm();
+      pose_translation += pose_error.tail<3>().squaredNorm();
+      image_rotation += image_error.head<3>().squaredNorm();
+      image_translation += image_error.tail<3>().squaredNorm();
+      mahalanobis += image_error.dot(result.result.covariance_X->ldlt().solve(image_error));
+    }
+    const std::string name(handeye::SetupName(setup));
+    EXPECT_LE(image_rotation, pose_rotation) << name;
+    EXPECT_LE(image_translation, pose_translation) << name;
+    EXPECT_LT(mahalanobis / kTrials, 10.0) << name;
+    std::printf(
+        "%s: RMS X error pose-level ml %.4f deg / %.4f mm, reprojection %.4f deg / %.4f mm, "
+        "mean Mahalanobis %.2f\n",
+        name.c_str(), std::sqrt(pose_rotation / kTrials) / kDeg,
+        1e3 * std::sqrt(pose_translation / kTrials), std::sqrt(image_rotation / kTrials) / kDeg,
+        1e3 * std::sqrt(image_translation / kTrials), mahalanobis / kTrials);
+  }
+}
+
+}  // namespace
+}  // namespace hecal::estimation
