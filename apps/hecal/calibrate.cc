@@ -254,6 +254,8 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "With --images: pixel noise per axis, px (estimated when absent)");
   command->add_option("--threads", flags->threads,
                       "With --images: detection threads (default 0 = every core)");
+  command->add_flag("--refine-intrinsics", flags->refine_intrinsics,
+                    "With --images: refine the intrinsics with X and Z in the joint refinement");
   command->add_option("--setup", flags->setup, "eye-in-hand (camera on the robot) | eye-to-hand")
       ->required();
   command->add_option("--method", flags->method, "Method name, or all (default ml)");

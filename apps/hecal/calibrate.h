@@ -28,6 +28,7 @@ struct CalibrateFlags {
   std::string intrinsics;   // --intrinsics camera.yaml (with --images; estimated when absent)
   std::string pixel_sigma;  // --pixel-sigma PX (with --images; estimated when absent)
   int threads = 0;          // --threads (with --images; 0 = every core)
+  bool refine_intrinsics = false;  // --refine-intrinsics (with --images)
   std::string setup;
   std::string method = "ml";
   std::string robot_sigma;
@@ -65,7 +66,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 //      with a note); otherwise by sorted file name — one robot row per image file, in order,
 //      counting the images where the target was not usable (their rows are left out);
 //   3. estimation::CalibrateFromImages: the pose-level method (--method, ml by default; not
-//      `all`), then the joint reprojection refinement over X, Z and the robot poses;
+//      `all`), then the joint reprojection refinement over X, Z and the robot poses (and the
+//      intrinsics with --refine-intrinsics);
 //   4. the summary, a per-image reprojection table (RMS px, flag), and the result file with
 //      "refinement": "reprojection" and an "images" section (intrinsics, pixel sigma, per-image
 //      RMS and flags, skipped images and why, the pose-level X and Z). Skipped images are the

@@ -4,6 +4,7 @@
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <iomanip>
@@ -82,6 +83,21 @@ std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& 
   return poses;
 }
 
+void PrintRefinedIntrinsics(std::ostream& out, const pose::CameraModel& before,
+                            const report::ImageReport& report) {
+  constexpr std::array<const char*, pose::kNumIntrinsics> kNames = {"fx", "fy", "cx", "cy", "k1",
+                                                                    "k2", "p1", "p2", "k3"};
+  const pose::IntrinsicParameters start = pose::IntrinsicsOf(before);
+  const pose::IntrinsicParameters refined = pose::IntrinsicsOf(report.camera);
+  out << "intrinsics refined with X and Z (before → after ± 1σ):\n";
+  for (int k = 0; k < pose::kNumIntrinsics; ++k) {
+    out << "  " << kNames[static_cast<size_t>(k)] << " " << std::setprecision(k < 4 ? 7 : 5)
+        << start(k) << " → " << refined(k) << " ± " << std::setprecision(2)
+        << (*report.intrinsics_sigma)[static_cast<size_t>(k)] << "\n";
+  }
+  out << std::setprecision(6);
+}
+
 void PrintImageTable(std::ostream& out, const report::ResultDocument& document,
                      const report::ImageReport& report) {
   out << std::fixed << std::setprecision(3) << "reprojection: RMS " << report.rms_px
@@ -153,13 +169,21 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   options.calibrate = settings.options;
   options.camera = set.camera;
   options.pixel_sigma = pixel_sigma;
+  options.refine_intrinsics = flags.refine_intrinsics;
   const estimation::ImageCalibrationResult result =
       estimation::CalibrateFromImages(stations, options);
 
   report.intrinsics_source =
       set.estimated ? std::string("estimated from the images") : flags.intrinsics;
-  report.camera = set.camera;
+  report.camera = result.reprojection.camera;
   if (set.estimated) report.intrinsics_rms_px = set.estimated->rms_px;
+  if (result.reprojection.intrinsics_covariance) {
+    std::array<double, pose::kNumIntrinsics> sigma{};
+    for (int k = 0; k < pose::kNumIntrinsics; ++k) {
+      sigma[static_cast<size_t>(k)] = std::sqrt((*result.reprojection.intrinsics_covariance)(k, k));
+    }
+    report.intrinsics_sigma = sigma;
+  }
   report.pixel_sigma = result.reprojection.pixel_sigma;
   report.pixel_sigma_estimated = result.reprojection.pixel_sigma_estimated;
   report.rms_px = result.reprojection.rms_px;
@@ -179,6 +203,7 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
          << " " << io::UnitName(document.unit) << "\n";
   io.out.unsetf(std::ios::floatfield);
   PrintSummary(io.out, document, result.result);
+  if (report.intrinsics_sigma) PrintRefinedIntrinsics(io.out, set.camera, report);
   PrintImageTable(io.out, document, report);
   if (!flags.output.empty()) {
     report::WriteResult(flags.output, document);

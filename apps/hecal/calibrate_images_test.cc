@@ -15,6 +15,7 @@
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -150,6 +151,37 @@ TEST_F(CalibrateImagesTest, RecoversXAndZFromRenderedImages) {
     EXPECT_EQ(images["pose_level"]["method"], "ml");
     EXPECT_NE(run.out.find("reprojection: RMS"), std::string::npos) << run.out;
   }
+}
+
+// --refine-intrinsics from intrinsics 1% / 2 px off (6 px in focal length): the refined focal
+// length and principal point return to the rendering camera's (measured within 0.07 px and
+// 0.08 px; asserted within 1.5 px and 1 px), X to the truth, and the file says so.
+TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
+  const handeye::Setup setup = handeye::Setup::kEyeInHand;
+  pose::CameraModel off = rendered_views::TrueCamera();
+  off.fx *= 1.01;
+  off.fy *= 1.01;
+  off.cx += 2.0;
+  off.cy -= 2.0;
+  std::vector<std::string> args = Args(setup, RobotFile(setup, AllViews(), false));
+  args[6] = Write("off.yaml", rendered_views::CameraYaml(off));
+  args.push_back("--refine-intrinsics");
+  const cli_test::Outcome run = Hecal(args);
+  ASSERT_EQ(run.code, 0) << run.err;
+  const json result = json::parse(Read("result.json"));
+  const json& intrinsics = result["images"]["intrinsics"];
+  EXPECT_TRUE(intrinsics["refined"].get<bool>());
+  EXPECT_NEAR(intrinsics["fx"].get<double>(), 620.0, 1.5);
+  EXPECT_NEAR(intrinsics["fy"].get<double>(), 622.0, 1.5);
+  EXPECT_NEAR(intrinsics["cx"].get<double>(), 321.5, 1.0);
+  EXPECT_NEAR(intrinsics["cy"].get<double>(), 238.0, 1.0);
+  EXPECT_EQ(intrinsics["sigma"]["values"].size(), 9u);
+  std::printf("refined fx %.3f fy %.3f cx %.3f cy %.3f (truth 620 622 321.5 238)\n",
+              intrinsics["fx"].get<double>(), intrinsics["fy"].get<double>(),
+              intrinsics["cx"].get<double>(), intrinsics["cy"].get<double>());
+  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.1);
+  EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 1.0);
+  EXPECT_NE(run.out.find("intrinsics refined with X and Z"), std::string::npos) << run.out;
 }
 
 // With ids, robot rows pair with the image whose file stem is the id, in any order, and a row

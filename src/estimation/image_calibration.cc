@@ -65,6 +65,7 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   reprojection.robot_sigma = out.pose_level.robot_sigma;
   reprojection.pixel_sigma = options.pixel_sigma;
   reprojection.estimate_robot_sigma = !options.calibrate.robot_sigma;
+  reprojection.refine_intrinsics = options.refine_intrinsics;
   out.reprojection =
       RefineReprojection(robot, points, out.pose_level.X, out.pose_level.Z, reprojection);
 

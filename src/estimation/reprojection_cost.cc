@@ -46,12 +46,13 @@ bool ReprojectionCost::Evaluate(double const* const* parameters, double* residua
   const Pose X = PoseFromParameters(parameters[0]);
   const Pose Z = PoseFromParameters(parameters[1]);
   const Pose G = PoseFromParameters(parameters[2]);
+  const pose::CameraModel camera = pose::WithIntrinsics(camera_, parameters[3]);
   const Pose B = CameraFromUnknowns(setup_, X, Z, G);
   const Eigen::Vector3d p = B * point_;
   if (!(p.z() > 0.0)) return false;
   Eigen::Matrix<double, 2, 3> J_pi;
   const bool want = jacobians != nullptr;
-  const Eigen::Vector2d u = pose::Project(camera_, p, want ? &J_pi : nullptr);
+  const Eigen::Vector2d u = pose::Project(camera, p, want ? &J_pi : nullptr);
   Eigen::Map<Eigen::Vector2d> residual(residuals);
   residual = inverse_sigma_ * (u - pixel_);
   if (!want) return true;
@@ -76,6 +77,11 @@ bool ReprojectionCost::Evaluate(double const* const* parameters, double* residua
       dp = X.linear().transpose() * G.linear() * Columns(-Skew(y), I);
     }
     Lift<2>(J * dp, jacobians[2]);
+  }
+  if (jacobians[3] != nullptr) {
+    Eigen::Map<Eigen::Matrix<double, 2, pose::kNumIntrinsics, Eigen::RowMajor>> J_intrinsics(
+        jacobians[3]);
+    J_intrinsics = inverse_sigma_ * pose::ProjectionIntrinsicsJacobian(camera, p);
   }
   return true;
 }

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 
 #include "hecal/geometry/se3.h"
@@ -12,8 +14,9 @@
 namespace hecal::estimation {
 namespace {
 
-// The analytic Jacobians (lifted into the ambient layout) match central differences of the
-// residual along right perturbations of X, Z and G, for both setups.
+// The residual is the whitened pixel error of the model, and the analytic Jacobians (lifted into
+// the ambient layout) match central differences of the residual along right perturbations of X,
+// Z and G and along each intrinsic parameter, for both setups.
 TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
   std::mt19937_64 rng(3);
   const pose::CameraModel camera = testing::TestCamera();
@@ -28,11 +31,20 @@ TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
                                    stations.data.T_base_gripper_true[i]};
       std::array<std::array<double, kPoseAmbientSize>, 3> parameters;
       for (int b = 0; b < 3; ++b) PoseToParameters(poses[b], parameters[b].data());
-      const double* blocks[3] = {parameters[0].data(), parameters[1].data(), parameters[2].data()};
+      const pose::IntrinsicParameters intrinsics = pose::IntrinsicsOf(camera);
+      const double* blocks[4] = {parameters[0].data(), parameters[1].data(), parameters[2].data(),
+                                 intrinsics.data()};
       Eigen::Vector2d r;
       std::array<Eigen::Matrix<double, 2, kPoseAmbientSize, Eigen::RowMajor>, 3> J;
-      double* jacobians[3] = {J[0].data(), J[1].data(), J[2].data()};
+      Eigen::Matrix<double, 2, pose::kNumIntrinsics, Eigen::RowMajor> J_intrinsics;
+      double* jacobians[4] = {J[0].data(), J[1].data(), J[2].data(), J_intrinsics.data()};
       ASSERT_TRUE(cost.Evaluate(blocks, r.data(), jacobians));
+      EXPECT_LT(
+          (r - (pose::Project(camera, CameraFromUnknowns(setup, poses[0], poses[1], poses[2]) * P) -
+                u) /
+                   0.5)
+              .norm(),
+          1e-9);
       for (int b = 0; b < 3; ++b) {
         EXPECT_EQ(J[b].col(6).norm(), 0.0);
         for (int k = 0; k < 6; ++k) {
@@ -43,7 +55,7 @@ TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
           for (double sign : {1.0, -1.0}) {
             std::array<double, kPoseAmbientSize> moved;
             PoseToParameters(poses[b] * se3::Exp(sign * e), moved.data());
-            const double* perturbed[3] = {blocks[0], blocks[1], blocks[2]};
+            const double* perturbed[4] = {blocks[0], blocks[1], blocks[2], blocks[3]};
             perturbed[b] = moved.data();
             ASSERT_TRUE(cost.Evaluate(perturbed, (sign > 0 ? r_plus : r_minus).data(), nullptr));
           }
@@ -51,6 +63,20 @@ TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
           EXPECT_LT((numeric - J[b].col(k)).norm(), 1e-5 * (1.0 + numeric.norm()))
               << "block " << b << " column " << k;
         }
+      }
+      for (int k = 0; k < pose::kNumIntrinsics; ++k) {
+        const double h = 1e-5 * std::max(1.0, std::abs(intrinsics(k)));
+        pose::IntrinsicParameters plus = intrinsics, minus = intrinsics;
+        plus(k) += h;
+        minus(k) -= h;
+        Eigen::Vector2d r_plus, r_minus;
+        const double* blocks_plus[4] = {blocks[0], blocks[1], blocks[2], plus.data()};
+        const double* blocks_minus[4] = {blocks[0], blocks[1], blocks[2], minus.data()};
+        ASSERT_TRUE(cost.Evaluate(blocks_plus, r_plus.data(), nullptr));
+        ASSERT_TRUE(cost.Evaluate(blocks_minus, r_minus.data(), nullptr));
+        const Eigen::Vector2d numeric = (r_plus - r_minus) / (2.0 * h);
+        EXPECT_LT((numeric - J_intrinsics.col(k)).norm(), 1e-6 * (1.0 + numeric.norm()))
+            << "intrinsic " << k;
       }
     }
   }

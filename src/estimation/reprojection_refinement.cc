@@ -71,7 +71,8 @@ class Refinement {
         options_(options),
         robot_sigma_(options.robot_sigma),
         x_(ToParameters(X0)),
-        z_(ToParameters(Z0)) {
+        z_(ToParameters(Z0)),
+        k_(pose::IntrinsicsOf(options.camera)) {
     for (const Pose& G : T_base_gripper) g_.push_back(ToParameters(G));
   }
 
@@ -92,6 +93,7 @@ class Refinement {
       for (Parameters& g : g_) ordering->AddElementToGroup(g.data(), 0);
       ordering->AddElementToGroup(x_.data(), 1);
       ordering->AddElementToGroup(z_.data(), 1);
+      ordering->AddElementToGroup(k_.data(), 1);
       solver.linear_solver_ordering = ordering;
     }
     ceres::Solver::Summary summary;
@@ -132,14 +134,22 @@ class Refinement {
   Pose X() const { return PoseFromParameters(x_.data()); }
   Pose Z() const { return PoseFromParameters(z_.data()); }
   Pose G(size_t i) const { return PoseFromParameters(g_[i].data()); }
+  pose::CameraModel Camera() const { return pose::WithIntrinsics(options_.camera, k_.data()); }
+
+  // Covariance of the intrinsics (refine_intrinsics only): their block of the inverse
+  // information, after X and Z.
+  Eigen::Matrix<double, pose::kNumIntrinsics, pose::kNumIntrinsics> IntrinsicsCovariance(
+      double sigma) {
+    return Linearize(sigma).inverse.block<pose::kNumIntrinsics, pose::kNumIntrinsics>(12, 12);
+  }
 
   // Squared pixel error of every point of station i, summed (px²), and the point count.
   double StationSquaredSum(size_t i) const {
     const Pose B = CameraFromUnknowns(options_.setup, X(), Z(), G(i));
+    const pose::CameraModel camera = Camera();
     double sum = 0.0;
     for (size_t k = 0; k < images_[i].target.size(); ++k) {
-      sum += (pose::Project(options_.camera, B * images_[i].target[k]) - images_[i].pixels[k])
-                 .squaredNorm();
+      sum += (pose::Project(camera, B * images_[i].target[k]) - images_[i].pixels[k]).squaredNorm();
     }
     return sum;
   }
@@ -178,16 +188,26 @@ class Refinement {
     return linear;
   }
 
+  // Blocks in the order of the information matrix: X, Z, the intrinsics when refined, the robot
+  // poses when free (constant blocks have no columns).
   void Build(double sigma, ceres::Problem* problem) {
+    for (double* block : {x_.data(), z_.data()}) {
+      problem->AddParameterBlock(block, kPoseAmbientSize, &manifold_);
+    }
+    for (Parameters& g : g_) problem->AddParameterBlock(g.data(), kPoseAmbientSize, &manifold_);
+    problem->AddParameterBlock(k_.data(), pose::kNumIntrinsics);
+    if (!options_.refine_intrinsics) problem->SetParameterBlockConstant(k_.data());
     blocks_ = {x_.data(), z_.data()};
-    for (Parameters& g : g_) blocks_.push_back(g.data());
-    for (double* block : blocks_) problem->AddParameterBlock(block, kPoseAmbientSize, &manifold_);
+    if (options_.refine_intrinsics) blocks_.push_back(k_.data());
+    if (RobotFree()) {
+      for (Parameters& g : g_) blocks_.push_back(g.data());
+    }
     for (size_t i = 0; i < images_.size(); ++i) {
       for (size_t k = 0; k < images_[i].target.size(); ++k) {
         problem->AddResidualBlock(
             new ReprojectionCost(options_.setup, options_.camera, images_[i].target[k],
                                  images_[i].pixels[k], sigma),
-            nullptr, x_.data(), z_.data(), g_[i].data());
+            nullptr, x_.data(), z_.data(), g_[i].data(), k_.data());
       }
       if (RobotFree()) {
         problem->AddResidualBlock(
@@ -197,7 +217,6 @@ class Refinement {
         problem->SetParameterBlockConstant(g_[i].data());
       }
     }
-    if (!RobotFree()) blocks_.resize(2);  // constant blocks have no columns
   }
 
   double PixelSquaredSum() const {
@@ -213,6 +232,7 @@ class Refinement {
   Parameters x_;
   Parameters z_;
   std::vector<Parameters> g_;
+  pose::IntrinsicParameters k_;
   std::vector<double*> blocks_;
   Se3RightManifold manifold_;
 };
@@ -228,7 +248,8 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
   for (const ImagePoints& image : images) points += image.target.size();
   // The robot priors add 6n residuals for the 6n robot unknowns, so the pixel degrees of freedom
   // are 2m − 12 whether the robot poses are free or fixed.
-  const double dof = 2.0 * static_cast<double>(points) - 12.0;
+  const double dof = 2.0 * static_cast<double>(points) - 12.0 -
+                     (options.refine_intrinsics ? pose::kNumIntrinsics : 0.0);
   if (images.size() < 3 || dof < 1.0) {
     throw DegenerateError("X and Z from " + std::to_string(images.size()) + " image(s) with " +
                               std::to_string(points) + " detected point(s)",
@@ -272,6 +293,9 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
   result.X = refinement.X();
   result.Z = refinement.Z();
   result.covariance = refinement.Covariance(sigma);
+  result.camera = refinement.Camera();
+  if (options.refine_intrinsics)
+    result.intrinsics_covariance = refinement.IntrinsicsCovariance(sigma);
   double total = 0.0;
   for (size_t i = 0; i < images.size(); ++i) {
     result.T_base_gripper.push_back(refinement.G(i));

@@ -84,6 +84,41 @@ Eigen::Vector2d Project(const CameraModel& camera, const Eigen::Vector3d& point_
   return {camera.fx * distorted.x() + camera.cx, camera.fy * distorted.y() + camera.cy};
 }
 
+IntrinsicParameters IntrinsicsOf(const CameraModel& camera) {
+  IntrinsicParameters parameters;
+  parameters << camera.fx, camera.fy, camera.cx, camera.cy, camera.distortion[0],
+      camera.distortion[1], camera.distortion[2], camera.distortion[3], camera.distortion[4];
+  return parameters;
+}
+
+CameraModel WithIntrinsics(const CameraModel& camera, const double* parameters) {
+  CameraModel out = camera;
+  out.fx = parameters[0];
+  out.fy = parameters[1];
+  out.cx = parameters[2];
+  out.cy = parameters[3];
+  for (int k = 0; k < 5; ++k) out.distortion[static_cast<size_t>(k)] = parameters[4 + k];
+  return out;
+}
+
+Eigen::Matrix<double, 2, kNumIntrinsics> ProjectionIntrinsicsJacobian(
+    const CameraModel& camera, const Eigen::Vector3d& point_camera) {
+  const double x = point_camera.x() / point_camera.z();
+  const double y = point_camera.y() / point_camera.z();
+  const Eigen::Vector2d distorted = Distort(camera.distortion, {x, y}, nullptr);
+  const double r2 = x * x + y * y;
+  Eigen::Matrix<double, 2, 5> d_distortion;  // ∂(x_d, y_d) / ∂(k1, k2, p1, p2, k3)
+  d_distortion << x * r2, x * r2 * r2, 2.0 * x * y, r2 + 2.0 * x * x, x * r2 * r2 * r2,  //
+      y * r2, y * r2 * r2, r2 + 2.0 * y * y, 2.0 * x * y, y * r2 * r2 * r2;
+  Eigen::Matrix<double, 2, kNumIntrinsics> J = Eigen::Matrix<double, 2, kNumIntrinsics>::Zero();
+  J(0, 0) = distorted.x();
+  J(1, 1) = distorted.y();
+  J(0, 2) = 1.0;
+  J(1, 3) = 1.0;
+  J.rightCols<5>() = Eigen::Vector2d(camera.fx, camera.fy).asDiagonal() * d_distortion;
+  return J;
+}
+
 std::optional<Eigen::Vector2d> Undistort(const CameraModel& camera, const Eigen::Vector2d& pixel) {
   const Eigen::Vector2d target((pixel.x() - camera.cx) / camera.fx,
                                (pixel.y() - camera.cy) / camera.fy);

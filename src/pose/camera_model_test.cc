@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -73,6 +74,35 @@ TEST(CameraModel, JacobianMatchesCentralDifferences) {
       // Central differences err by O(h²·f''') plus rounding O(ε·u/h): ~1e-5 of the entries.
       EXPECT_LT((J - numeric).cwiseAbs().maxCoeff(), 1e-5 * J.cwiseAbs().maxCoeff())
           << "camera k1 " << camera.distortion[0] << " point " << X.transpose();
+    }
+  }
+}
+
+// The intrinsics vector round-trips, and its Jacobian matches central differences (the
+// projection is linear in fx, fy, cx, cy and the distortion coefficients, so the differences are
+// exact up to rounding).
+TEST(CameraModel, IntrinsicsJacobianMatchesCentralDifferences) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> lateral(-0.6, 0.6), depth(0.3, 3.0);
+  for (const CameraModel& camera : TestCameras()) {
+    const IntrinsicParameters k = IntrinsicsOf(camera);
+    const CameraModel same = WithIntrinsics(camera, k.data());
+    EXPECT_EQ(IntrinsicsOf(same), k);
+    EXPECT_EQ(same.width, camera.width);
+    for (int trial = 0; trial < 50; ++trial) {
+      const double z = depth(rng);
+      const Eigen::Vector3d X(lateral(rng) * z, lateral(rng) * z, z);
+      const Eigen::Matrix<double, 2, kNumIntrinsics> J = ProjectionIntrinsicsJacobian(camera, X);
+      for (int i = 0; i < kNumIntrinsics; ++i) {
+        const double h = 1e-4 * std::max(1.0, std::abs(k(i)));
+        IntrinsicParameters plus = k, minus = k;
+        plus(i) += h;
+        minus(i) -= h;
+        const Eigen::Vector2d numeric = (Project(WithIntrinsics(camera, plus.data()), X) -
+                                         Project(WithIntrinsics(camera, minus.data()), X)) /
+                                        (2.0 * h);
+        EXPECT_LT((J.col(i) - numeric).norm(), 1e-6 * (1.0 + numeric.norm())) << "parameter " << i;
+      }
     }
   }
 }

@@ -78,6 +78,12 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
   json intrinsics = CameraJson(report.camera);
   intrinsics["source"] = report.intrinsics_source;
   if (report.intrinsics_rms_px) intrinsics["rms_px"] = *report.intrinsics_rms_px;
+  intrinsics["refined"] = report.intrinsics_sigma.has_value();
+  if (report.intrinsics_sigma) {
+    intrinsics["sigma"] = {{"order", "fx, fy, cx, cy, k1, k2, p1, p2, k3"},
+                           {"values", std::vector<double>(report.intrinsics_sigma->begin(),
+                                                          report.intrinsics_sigma->end())}};
+  }
   json per_image = json::array();
   const std::vector<std::string> used = UsedIds(document);
   for (size_t k = 0; k < used.size() && k < report.image_rms_px.size(); ++k) {

@@ -12,10 +12,11 @@
 //   2. Image level: the joint refinement of the reprojection error over X, Z and the robot poses
 //      (reprojection_refinement.h), started from step 1, with the pixel sigma given or estimated
 //      and the robot sigma given or — started from step 1's — estimated jointly with it as
-//      variance components. The pose-level camera model above is isotropic and uncorrelated,
-//      which a PnP pose is not (its rotation and translation errors are strongly correlated
-//      through the target distance), so step 1's robot sigma can be several times off; the
-//      joint estimate sees each image's true pose uncertainty through its pixels.
+//      variance components; with refine_intrinsics, the intrinsics too. The pose-level camera model
+//      above is isotropic and uncorrelated, which a PnP pose is not (its rotation and translation
+//      errors are strongly correlated through the target distance), so step 1's robot sigma can be
+//      several times off; the joint estimate sees each image's true pose uncertainty through its
+//      pixels.
 //   3. The result: step 1's result with X, Z, their covariance and the robot sigma replaced by
 //      step 2's, and the pose-level residuals, whitened residuals and outlier flags of every
 //      station recomputed at step 2's X, Z with step 1's sigmas. Step 2 flags the images whose
@@ -45,6 +46,7 @@ struct ImageCalibrationOptions {
   CalibrateOptions calibrate;         // step 1 (camera_sigma: from the PnP covariances if absent)
   pose::CameraModel camera;           // the intrinsics of every image
   std::optional<double> pixel_sigma;  // px; estimated when absent
+  bool refine_intrinsics = false;     // step 2 refines the intrinsics too
 };
 
 struct ImageCalibrationResult {

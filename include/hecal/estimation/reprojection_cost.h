@@ -19,6 +19,9 @@
 //                                            ∂p/∂ε = R_Xᵀ R_G [ −[y]×  I ]
 // and ∂r/∂ε = J_π ∂p/∂ε / σ_px. The blocks are on Se3RightManifold (se3_manifold.h), which
 // expects these tangent Jacobians "lifted" into the first six of seven ambient columns.
+// A fourth block holds the intrinsics (pose::IntrinsicsOf order: fx, fy, cx, cy, k1, k2, p1, p2,
+// k3); ∂r/∂k = pose::ProjectionIntrinsicsJacobian / σ_px. Hold it constant to keep the camera
+// model fixed.
 // A point behind the camera (z ≤ 0) makes Evaluate return false, so Ceres rejects the step.
 #pragma once
 
@@ -38,9 +41,11 @@ Pose CameraFromUnknowns(handeye::Setup setup, const Pose& X, const Pose& Z,
                         const Pose& T_base_gripper);
 
 class ReprojectionCost final
-    : public ceres::SizedCostFunction<2, kPoseAmbientSize, kPoseAmbientSize, kPoseAmbientSize> {
+    : public ceres::SizedCostFunction<2, kPoseAmbientSize, kPoseAmbientSize, kPoseAmbientSize,
+                                      pose::kNumIntrinsics> {
  public:
-  // parameters: X, Z, G (7 ambient doubles each). The camera model is copied.
+  // parameters: X, Z, G (7 ambient doubles each), the intrinsics (9). `camera` gives the image
+  // size only; its intrinsics are the fourth block's.
   ReprojectionCost(handeye::Setup setup, const pose::CameraModel& camera,
                    const Eigen::Vector3d& point_target, const Eigen::Vector2d& pixel,
                    double pixel_sigma);

@@ -9,27 +9,27 @@
 // i.e. the pixels are measurements with isotropic noise σ_px and the robot poses are noisy
 // measurements with the right-perturbation noise model of --robot-sigma (W_robot =
 // diag(1/σ_rot, 1/σ_trans)). When the robot sigma is zero in rotation or translation the robot
-// poses are held fixed (treated as exact). The camera model (intrinsics, distortion) is fixed:
-// calibrate it first (vision/intrinsics_calibration.h). Solved with Ceres (Levenberg–Marquardt,
-// dense Schur complement: the robot poses eliminated, 12 unknowns left; with the robot fixed, dense
-// normal Cholesky on the 12) on Se3RightManifold blocks.
+// poses are held fixed (treated as exact). The camera model (intrinsics, distortion) is fixed, or
+// refined with X and Z (refine_intrinsics: 9 more unknowns; the covariance of X and Z then
+// includes the intrinsics' uncertainty). Solved with Ceres (Levenberg–Marquardt,
+// dense Schur complement: the robot poses eliminated, 12 unknowns left (21 with the intrinsics);
+// with the robot fixed, dense normal Cholesky) on Se3RightManifold blocks.
 //
 // Pixel noise: --pixel-sigma when given; otherwise estimated from the residuals as
-// σ̂² = Σ ‖π(B_i P_k) − u_ik‖² / (2m − 12) over the m points (the robot priors bring as many
-// residuals as robot unknowns), alternated with the
-// estimate until it changes by less than 1e-3 (relative) — only the pixel term is rescaled, the
-// robot prior keeps its given weight.
-// Robot noise (estimate_robot_sigma): the pixel, robot-rotation and robot-translation variances
-// are estimated together as variance components (Förstner 1979; Koch, "Parameter Estimation and
-// Hypothesis Testing in Linear Models", 1999, §3.6): each group's variance is multiplied by
-// (its whitened squared residual sum) / (its redundancy m_k − tr(N⁻¹ N_k)), N the Gauss–Newton
-// information over all unknowns and N_k its part from the group's rows, re-solving in between,
-// until every factor is within 1e-3 of 1. Unlike the pose-level estimate, this sees each image's
-// true (anisotropic, correlated) pose uncertainty through its pixels.
-// Covariance of (X, Z): the (X, Z) block of the Gauss–Newton inverse information over all
-// unknowns (the robot poses marginalised), right perturbations, (ω, v) order, metres/radians.
-// Per-image report: reprojection RMS (px) of each station; a station is flagged when its RMS
-// exceeds 3 σ̂_px (a detection or robot-pose problem).
+// σ̂² = Σ ‖π(B_i P_k) − u_ik‖² / (2m − 12 [− 9 with the intrinsics]) over the m points (the robot
+// priors bring as many residuals as robot unknowns), alternated with the estimate until it changes
+// by less than 1e-3 (relative) — only the pixel term is rescaled, the robot prior keeps its given
+// weight. Robot noise (estimate_robot_sigma): the pixel, robot-rotation and robot-translation
+// variances are estimated together as variance components (Förstner 1979; Koch, "Parameter
+// Estimation and Hypothesis Testing in Linear Models", 1999, §3.6): each group's variance is
+// multiplied by (its whitened squared residual sum) / (its redundancy m_k − tr(N⁻¹ N_k)), N the
+// Gauss–Newton information over all unknowns and N_k its part from the group's rows, re-solving in
+// between, until every factor is within 1e-3 of 1. Unlike the pose-level estimate, this sees each
+// image's true (anisotropic, correlated) pose uncertainty through its pixels. Covariance of (X, Z):
+// the (X, Z) block of the Gauss–Newton inverse information over all unknowns (the robot poses
+// marginalised), right perturbations, (ω, v) order, metres/radians. Per-image report: reprojection
+// RMS (px) of each station; a station is flagged when its RMS exceeds 3 σ̂_px (a detection or
+// robot-pose problem).
 #pragma once
 
 #include <Eigen/Core>
@@ -57,6 +57,9 @@ struct ReprojectionOptions {
   // Estimate the robot sigma (rotation and translation) with the pixel sigma, robot_sigma being
   // the starting value; needs robot_sigma > 0 in both (free robot poses).
   bool estimate_robot_sigma = false;
+  // Refine the intrinsics (pose::IntrinsicsOf: fx, fy, cx, cy, k1, k2, p1, p2, k3) with X and Z,
+  // `camera` being the starting value.
+  bool refine_intrinsics = false;
   int max_sigma_iterations = 30;
 };
 
@@ -72,6 +75,10 @@ struct ReprojectionResult {
   bool pixel_sigma_estimated = false;
   PoseSigma robot_sigma;  // used (given or estimated)
   bool robot_sigma_estimated = false;
+  pose::CameraModel camera;  // the intrinsics used: given, or refined
+  // refine_intrinsics: their covariance (pose::IntrinsicsOf order; px², px, 1).
+  std::optional<Eigen::Matrix<double, pose::kNumIntrinsics, pose::kNumIntrinsics>>
+      intrinsics_covariance;
 };
 
 // Requires T_base_gripper.size() == images.size() and a start (X0, Z0) close enough for the

@@ -48,6 +48,21 @@ Eigen::Vector2d Project(const CameraModel& camera, const Eigen::Vector3d& point_
 Eigen::Vector2d Project(const CameraModel& camera, const Eigen::Vector3d& point_camera,
                         Eigen::Matrix<double, 2, 3>* jacobian);
 
+// The intrinsic parameters as one vector, in the order (fx, fy, cx, cy, k1, k2, p1, p2, k3) —
+// the unknowns of a refinement of the intrinsics (estimation/reprojection_refinement.h).
+constexpr int kNumIntrinsics = 9;
+using IntrinsicParameters = Eigen::Matrix<double, kNumIntrinsics, 1>;
+IntrinsicParameters IntrinsicsOf(const CameraModel& camera);
+// `camera` (its width and height) with the intrinsics `parameters` (kNumIntrinsics values).
+CameraModel WithIntrinsics(const CameraModel& camera, const double* parameters);
+
+// d(u, v) / d(IntrinsicsOf(camera)) (2×9) at a point in the camera frame (z > 0): with (x, y)
+// the normalised and (x_d, y_d) the distorted coordinates, u = fx·x_d + cx, v = fy·y_d + cy and
+//   ∂x_d/∂(k1, k2, k3) = x·(r², r⁴, r⁶),  ∂x_d/∂p1 = 2xy,        ∂x_d/∂p2 = r² + 2x²,
+//   ∂y_d/∂(k1, k2, k3) = y·(r², r⁴, r⁶),  ∂y_d/∂p1 = r² + 2y²,   ∂y_d/∂p2 = 2xy.
+Eigen::Matrix<double, 2, kNumIntrinsics> ProjectionIntrinsicsJacobian(
+    const CameraModel& camera, const Eigen::Vector3d& point_camera);
+
 // Normalised, undistorted image coordinates (x, y) of a pixel — the inverse of Project up to
 // depth (see above); nullopt when it does not converge or lands on the folded branch (far
 // outside the image for strong distortion). Without distortion it is exact and never nullopt.

@@ -8,6 +8,7 @@
 // unit², scaled to the output length unit.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,10 +29,12 @@ struct MethodFailure {
 // `hecal calibrate --images`: the image level of the result, written as "images" (and
 // "refinement": "reprojection"). Per-image vectors follow the used stations, in order.
 struct ImageReport {
-  std::string intrinsics_source;  // the camera.yaml given, or "estimated from the images"
-  pose::CameraModel camera;
+  std::string intrinsics_source;            // the camera.yaml given, or "estimated from the images"
+  pose::CameraModel camera;                 // used by the result: given, estimated or refined
   std::optional<double> intrinsics_rms_px;  // when estimated: calibrateCamera's RMS
-  double pixel_sigma = 0.0;                 // px, given or estimated
+  // When refined in the joint problem: 1σ of (fx, fy, cx, cy, k1, k2, p1, p2, k3).
+  std::optional<std::array<double, pose::kNumIntrinsics>> intrinsics_sigma;
+  double pixel_sigma = 0.0;  // px, given or estimated
   bool pixel_sigma_estimated = false;
   double rms_px = 0.0;  // reprojection RMS over every point at the result
   std::vector<double> image_rms_px;
