@@ -224,6 +224,15 @@ TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
   std::vector<std::string> no_target = args;
   no_target.erase(no_target.begin() + 3, no_target.begin() + 5);
   refuses(no_target, "--images needs --target");
+  // The image front end's errors (image_set.h): a wrong board size (8 × 6 corners on a 9 × 6
+  // board: the SB detector finds it in one image, in part of the board), a missing intrinsics
+  // file.
+  std::vector<std::string> wrong_board = args;
+  wrong_board[4] = Write("wrong.yaml", "type: chessboard\ncols: 8\nrows: 6\nsquare: 0.025\n");
+  refuses(wrong_board, "check cols/rows in " + wrong_board[4]);
+  std::vector<std::string> no_intrinsics = args;
+  no_intrinsics[6] = Path("missing.yaml");
+  refuses(no_intrinsics, "missing.yaml");
   std::vector<std::string> bad_sigma = args;
   bad_sigma.insert(bad_sigma.end(), {"--pixel-sigma", "-1"});
   refuses(bad_sigma, "--pixel-sigma");

@@ -174,7 +174,8 @@ void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::Target
   throw InputError(
       flags.images, 0, "the target is usable in only " + std::to_string(used) + " of the " + count,
       "hand-eye calibration and intrinsics estimation need at least " + std::to_string(kMinViews) +
-          " views: add images with the whole target visible and sharp");
+          " views: add images with the whole target visible and sharp, and check cols/rows in " +
+          flags.target + " (a board of the wrong size may be found in part of some images)");
 }
 
 std::string Fixed(double value, int decimals) {

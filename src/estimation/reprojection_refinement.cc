@@ -283,7 +283,7 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
     robot.rotation = std::max(robot.rotation * factors[1], kMinRobotSigma);
     robot.translation = std::max(robot.translation * factors[2], kMinRobotSigma);
     if (std::all_of(factors.begin(), factors.end(),
-                    [](double f) { return std::abs(f - 1.0) <= 1e-3; })) {
+                    [](double f) { return std::abs(f - 1.0) <= 1e-2; })) {
       refinement.Solve(sigma);
       break;
     }

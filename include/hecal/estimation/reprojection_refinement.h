@@ -19,17 +19,24 @@
 // σ̂² = Σ ‖π(B_i P_k) − u_ik‖² / (2m − 12 [− 9 with the intrinsics]) over the m points (the robot
 // priors bring as many residuals as robot unknowns), alternated with the estimate until it changes
 // by less than 1e-3 (relative) — only the pixel term is rescaled, the robot prior keeps its given
-// weight. Robot noise (estimate_robot_sigma): the pixel, robot-rotation and robot-translation
+// weight.
+//
+// Robot noise (estimate_robot_sigma): the pixel, robot-rotation and robot-translation
 // variances are estimated together as variance components (Förstner 1979; Koch, "Parameter
 // Estimation and Hypothesis Testing in Linear Models", 1999, §3.6): each group's variance is
 // multiplied by (its whitened squared residual sum) / (its redundancy m_k − tr(N⁻¹ N_k)), N the
 // Gauss–Newton information over all unknowns and N_k its part from the group's rows, re-solving in
-// between, until every factor is within 1e-3 of 1. Unlike the pose-level estimate, this sees each
-// image's true (anisotropic, correlated) pose uncertainty through its pixels. Covariance of (X, Z):
-// the (X, Z) block of the Gauss–Newton inverse information over all unknowns (the robot poses
-// marginalised), right perturbations, (ω, v) order, metres/radians. Per-image report: reprojection
-// RMS (px) of each station; a station is flagged when its RMS exceeds 3 σ̂_px (a detection or
-// robot-pose problem).
+// between, until every factor is within 1e-2 of 1 (the estimates' own sampling error is several
+// times larger: ≈ 1/√(2·redundancy), 11% for the robot sigmas of 28 stations). Unlike the
+// pose-level estimate, this sees each image's true (anisotropic, correlated) pose uncertainty
+// through its pixels.
+//
+// Covariance of (X, Z): the (X, Z) block of the Gauss–Newton inverse
+// information over all unknowns (the robot poses marginalised), right perturbations, (ω, v) order,
+// metres/radians.
+//
+// Per-image report: reprojection RMS (px) of each station; a station is flagged
+// when its RMS exceeds 3 σ̂_px (a detection or robot-pose problem).
 #pragma once
 
 #include <Eigen/Core>
