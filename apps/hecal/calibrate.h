@@ -61,10 +61,11 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 // `hecal calibrate --images` (issue 4, "End to end"):
 //   1. the image front end of image_set.h: detection, intrinsics (given or estimated), PnP poses
 //      with covariances, and the per-image report;
-//   2. pairing with the robot rows (DESIGN.md §4.1): when every robot row has an id, the image
-//      whose file stem equals it (each image needs a row; rows without an image are left out
-//      with a note); otherwise by sorted file name — one robot row per image file, in order,
-//      counting the images where the target was not usable (their rows are left out);
+//   2. pairing with the robot rows (DESIGN.md §4.1): when every robot row has an id and some id
+//      is an image's file stem, by id (each image needs a row; rows without an image are left
+//      out with a note); otherwise by sorted file name — one robot row per image file, in order,
+//      counting the images where the target was not usable (their rows are left out); ids that
+//      name no image (such as the row numbers of `hecal import`) get a note;
 //   3. estimation::CalibrateFromImages: the pose-level method (--method, ml by default; not
 //      `all`), then the joint reprojection refinement over X, Z and the robot poses (and the
 //      intrinsics with --refine-intrinsics);

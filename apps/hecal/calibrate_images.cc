@@ -35,13 +35,25 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
   return value;
 }
 
-// The robot row of every image (DESIGN.md §4.1): by id = file stem when every row has an id,
-// else by sorted file name. Returns one pose per image of `set`, in its order.
+// The robot row of every image (DESIGN.md §4.1): by id = file stem when the rows have ids and
+// they name the images, else by sorted file name. Ids that name no image at all (e.g. the row
+// numbers `hecal import` writes) do not pair by id: then the rows pair by order, with a note.
+// Returns one pose per image of `set`, in its order.
 std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& set,
                                     const std::string& images_dir, const Io& io) {
-  const bool by_id =
+  const bool have_ids =
       !robot.rows.empty() && std::all_of(robot.rows.begin(), robot.rows.end(),
                                          [](const io::PoseRow& row) { return row.id.has_value(); });
+  const bool by_id =
+      have_ids && std::any_of(robot.rows.begin(), robot.rows.end(), [&set](const io::PoseRow& row) {
+        return std::any_of(set.images.begin(), set.images.end(),
+                           [&row](const ImageRecord& image) { return image.id() == *row.id; });
+      });
+  if (have_ids && !by_id) {
+    io.err << "hecal: note: " << robot.source
+           << ": no id equals an image's file stem; pairing the rows with the images in sorted "
+              "file-name order\n";
+  }
   std::vector<Pose> poses;
   if (!by_id) {
     if (robot.rows.size() != set.images.size()) {

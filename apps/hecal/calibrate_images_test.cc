@@ -199,6 +199,21 @@ TEST_F(CalibrateImagesTest, PairsRobotRowsByIdInAnyOrder) {
   EXPECT_EQ(result["stations"]["used"][0], "view_00");
 }
 
+// Ids that name no image (the row numbers `hecal import` writes) pair by order, with a note.
+TEST_F(CalibrateImagesTest, IdsThatNameNoImagePairByOrder) {
+  const handeye::Setup setup = handeye::Setup::kEyeInHand;
+  RobotFile(setup, AllViews(), true);
+  std::string robot = Read("robot.csv");
+  for (int i = 0; i < kViews; ++i) {
+    robot.replace(robot.find(ViewName(i) + ","), ViewName(i).size(), std::to_string(i));
+  }
+  const cli_test::Outcome run = Hecal(Args(setup, Write("robot.csv", robot)));
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("no id equals an image's file stem"), std::string::npos) << run.err;
+  const json result = json::parse(Read("result.json"));
+  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+}
+
 TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
   const handeye::Setup setup = handeye::Setup::kEyeInHand;
   const auto refuses = [&](std::vector<std::string> args, const std::string& expected) {
