@@ -15,6 +15,7 @@
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -77,10 +78,9 @@ class CalibrateImagesTest : public CliTest {
            ("hecal_calibrate_images_test_renders_" + std::to_string(::getpid()));
   }
 
-  // robot.csv: one row per view in `order` (indices into the views), with an id column when
-  // `ids`; a row per index, so an index out of range gives an extra row.
-  std::string RobotFile(handeye::Setup setup, const std::vector<int>& order, bool ids) {
-    const std::vector<Pose> views = rendered_views::Views(kViews + 1);
+  // robot.csv: one row per view in `order` (indices into `views`), with an id column when `ids`.
+  std::string RobotFile(handeye::Setup setup, const std::vector<Pose>& views,
+                        const std::vector<int>& order, bool ids) {
     std::ostringstream csv;
     csv << std::setprecision(17) << (ids ? "id," : "") << "x,y,z,qw,qx,qy,qz\n";
     for (int i : order) {
@@ -91,6 +91,10 @@ class CalibrateImagesTest : public CliTest {
           << q.w() << "," << q.x() << "," << q.y() << "," << q.z() << "\n";
     }
     return Write("robot.csv", csv.str());
+  }
+  // The same for the rendered views; an index of kViews gives a row without an image.
+  std::string RobotFile(handeye::Setup setup, const std::vector<int>& order, bool ids) {
+    return RobotFile(setup, rendered_views::Views(kViews + 1), order, ids);
   }
   static std::vector<int> AllViews() {
     std::vector<int> order(kViews);
@@ -182,6 +186,54 @@ TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
   EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.1);
   EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 1.0);
   EXPECT_NE(run.out.find("intrinsics refined with X and Z"), std::string::npos) << run.out;
+}
+
+// Issue 4: on rendered image sets the joint reprojection refinement is at least as accurate as
+// the pose-level ml it starts from. Four sets of 8 views (those of rendered_views::Views turned by
+// 0, 15, 30 and 45° in azimuth), exact robot poses, both setups: summed squared X errors over the
+// sets. Measured: eye-in-hand pose-level 0.0040° / 0.018 mm RMS, reprojection 0.0020° / 0.016 mm;
+// eye-to-hand 0.0041° / 0.019 mm and 0.0020° / 0.016 mm. (With robot noise of 0.005° / 0.02 mm added, which then dominates, the two
+// are within 10% of each other on these images, the reprojection ahead in rotation and 8% behind
+// in eye-to-hand translation — README, "Calibrating from images".)
+TEST_F(CalibrateImagesTest, ReprojectionIsAtLeastAsAccurateAsPoseLevelOnRenderedSets) {
+  constexpr int kSets = 4;
+  std::vector<std::vector<Pose>> sets;
+  for (int set = 0; set < kSets; ++set) {
+    std::vector<Pose> views;
+    const std::filesystem::path dir = dir_ / ("set" + std::to_string(set));
+    std::filesystem::create_directories(dir);
+    for (int k = 0; k < kViews; ++k) {
+      views.push_back(rendered_views::ViewPose(
+          0.38 + 0.02 * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg, (k * 60.0 + set * 15.0) * kDeg,
+          (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12)));
+      rendered_views::RenderView(views.back(), 1000 + 10 * set + k, dir / (ViewName(k) + ".png"));
+    }
+    sets.push_back(views);
+  }
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    double pose_rotation = 0.0, pose_translation = 0.0, rotation = 0.0, translation = 0.0;
+    for (int set = 0; set < kSets; ++set) {
+      std::vector<std::string> args =
+          Args(setup, RobotFile(setup, sets[static_cast<size_t>(set)], AllViews(), false));
+      args[2] = (dir_ / ("set" + std::to_string(set))).string();
+      const cli_test::Outcome run = Hecal(args);
+      ASSERT_EQ(run.code, 0) << run.err;
+      const json result = json::parse(Read("result.json"));
+      const Pose pose_level = PoseOf(result["images"]["pose_level"]["X"]);
+      pose_rotation += std::pow(rendered_views::RotationErrorDeg(pose_level, TrueX()), 2);
+      pose_translation += std::pow(rendered_views::TranslationErrorMm(pose_level, TrueX()), 2);
+      rotation += std::pow(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 2);
+      translation += std::pow(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 2);
+    }
+    const std::string name(handeye::SetupName(setup));
+    EXPECT_LE(rotation, pose_rotation) << name;
+    EXPECT_LE(translation, pose_translation) << name;
+    std::printf(
+        "%s, RMS X error over %d rendered sets: pose-level %.4f deg %.4f mm, "
+        "reprojection %.4f deg %.4f mm\n",
+        name.c_str(), kSets, std::sqrt(pose_rotation / kSets), std::sqrt(pose_translation / kSets),
+        std::sqrt(rotation / kSets), std::sqrt(translation / kSets));
+  }
 }
 
 // With ids, robot rows pair with the image whose file stem is the id, in any order, and a row
