@@ -10,6 +10,7 @@
 #include <memory>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/rotation.h"
@@ -173,6 +174,19 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
                                           : "--camera and --images were both given",
                      "give the camera poses (--camera camera.csv) or the images they come from "
                      "(--images DIR --target target.yaml), not both");
+  }
+  if (flags.images.empty()) {
+    const std::pair<const char*, bool> image_flags[] = {
+        {"--target", !flags.target.empty()},
+        {"--intrinsics", !flags.intrinsics.empty()},
+        {"--pixel-sigma", !flags.pixel_sigma.empty()},
+        {"--refine-intrinsics", flags.refine_intrinsics}};
+    for (const auto& [name, given] : image_flags) {
+      if (given) {
+        throw InputError(name, 0, std::string(name) + " applies to --images only",
+                         "leave it out when calibrating from --camera poses, or give --images DIR");
+      }
+    }
   }
   return settings;
 }

@@ -50,8 +50,9 @@ struct CalibrateSettings {
   io::PoseReadOptions read;              // --units, --degrees, --euler (robot and camera files)
 };
 
-// Throws InputError naming the flag for every bad value, and when neither or both of --camera
-// and --images are given.
+// Throws InputError naming the flag for every bad value, when neither or both of --camera and
+// --images are given, and for a flag of the --images form (--target, --intrinsics,
+// --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 
 // The readable summary of one result: X, Z, their 1σ, the residuals of every station.

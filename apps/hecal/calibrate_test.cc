@@ -206,6 +206,9 @@ TEST_F(CalibrateCommand, BadFlagsAreRefused) {
   ExpectRefused(with({"--camera-sigma", "1,-2"}), "--camera-sigma");
   ExpectRefused(with({"--units", "inch"}), "unknown unit");
   ExpectRefused(with({"--robust", "tukey"}), "unknown loss");
+  // Flags of the --images form are not silently ignored with --camera.
+  ExpectRefused(with({"--target", "target.yaml"}), "--target applies to --images only");
+  ExpectRefused(with({"--refine-intrinsics"}), "--refine-intrinsics applies to --images only");
   ExpectRefused({"calibrate", "--robot", Path("robot.csv"), "--camera", Path("camera.csv"),
                  "--setup", "on-the-desk"},
                 "unknown setup");
