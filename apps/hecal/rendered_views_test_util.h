@@ -17,6 +17,7 @@
 #include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
 #include "hecal/vision/render.h"
+#include "vision/synthetic_views_test_util.h"
 
 namespace hecal::cli::rendered_views {
 
@@ -58,21 +59,14 @@ inline std::string CameraYaml(const pose::CameraModel& c) {
 
 // T_camera_target of the camera `distance` from the board centre, tilted by `tilt` towards
 // `azimuth` (x right, y down on the board), looking at the centre and then panned by (pan_x,
-// pan_y) radians about its own x and y axes so the board lands in different parts of the image.
+// pan_y) radians about its own x and y axes so the board lands in different parts of the image
+// (vision::testing::LookAt).
 inline Pose ViewPose(double distance, double tilt, double azimuth, double pan_x, double pan_y) {
   const Eigen::Vector3d centre(0.1, 0.0625, 0.0);  // of the 8 × 5 squares between the corners
   const Eigen::Vector3d eye =
       centre + distance * Eigen::Vector3d(std::sin(tilt) * std::cos(azimuth),
                                           std::sin(tilt) * std::sin(azimuth), -std::cos(tilt));
-  const Eigen::Vector3d z = (centre - eye).normalized();
-  const Eigen::Vector3d x = Eigen::Vector3d::UnitY().cross(z).normalized();
-  Eigen::Matrix3d R_target_camera;
-  R_target_camera << x, z.cross(x), z;
-  const Pose T_target_camera = MakePose(R_target_camera, eye);
-  const Eigen::Matrix3d pan = (Eigen::AngleAxisd(pan_x, Eigen::Vector3d::UnitX()) *
-                               Eigen::AngleAxisd(pan_y, Eigen::Vector3d::UnitY()))
-                                  .toRotationMatrix();
-  return MakePose(pan, Eigen::Vector3d::Zero()) * T_target_camera.inverse();
+  return vision::testing::LookAt(eye, centre, Eigen::Vector2d(pan_x, pan_y));
 }
 
 // `count` views, tilted 15–35° in directions 60° apart, spread over the image.
