@@ -75,16 +75,12 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
   out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegrees << " deg, "
       << result.translation_rms * scale << " " << unit << "\n";
   out << "  station        rotation_deg   translation_" << unit << "   whitened\n";
-  size_t k = 0;
-  for (size_t i = 0; i < document.station_ids.size() && k < result.residuals.size(); ++i) {
-    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) !=
-        document.rejected.end()) {
-      continue;
-    }
-    const estimation::StationResidual& r = result.residuals[k++];
-    out << "  " << std::left << std::setw(14) << document.station_ids[i] << std::right
-        << std::setw(12) << r.rotation * kDegrees << std::setw(17) << r.translation * scale
-        << std::setw(11) << r.whitened << (r.outlier ? "   > 3σ, check this station" : "") << "\n";
+  const std::vector<std::string> used = report::UsedStationIds(document);
+  for (size_t k = 0; k < used.size() && k < result.residuals.size(); ++k) {
+    const estimation::StationResidual& r = result.residuals[k];
+    out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(12)
+        << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)
+        << r.whitened << (r.outlier ? "   > 3σ, check this station" : "") << "\n";
   }
   for (const std::string& warning : result.warnings) out << "warning: " << warning << "\n";
   out.unsetf(std::ios::floatfield);

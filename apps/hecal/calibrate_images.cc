@@ -115,16 +115,11 @@ void PrintImageTable(std::ostream& out, const report::ResultDocument& document,
   out << std::fixed << std::setprecision(3) << "reprojection: RMS " << report.rms_px
       << " px over every point; pixel sigma " << report.pixel_sigma << " px ("
       << (report.pixel_sigma_estimated ? "estimated" : "given") << ")\n  image          rms_px\n";
-  size_t k = 0;
-  for (size_t i = 0; i < document.station_ids.size(); ++i) {
-    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) !=
-        document.rejected.end()) {
-      continue;
-    }
-    out << "  " << std::left << std::setw(14) << document.station_ids[i] << std::right
-        << std::setw(7) << report.image_rms_px[k]
-        << (report.image_outlier[k] ? "   > 3σ, check this image" : "") << "\n";
-    ++k;
+  const std::vector<std::string> used = report::UsedStationIds(document);
+  for (size_t k = 0; k < used.size(); ++k) {
+    out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(7)
+        << report.image_rms_px[k] << (report.image_outlier[k] ? "   > 3σ, check this image" : "")
+        << "\n";
   }
   out.unsetf(std::ios::floatfield);
 }

@@ -61,18 +61,6 @@ json CameraJson(const pose::CameraModel& camera) {
              std::vector<double>(camera.distortion.begin(), camera.distortion.end())}}}};
 }
 
-// The used stations' ids, in order.
-std::vector<std::string> UsedIds(const ResultDocument& document) {
-  std::vector<std::string> used;
-  for (size_t i = 0; i < document.station_ids.size(); ++i) {
-    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) ==
-        document.rejected.end()) {
-      used.push_back(document.station_ids[i]);
-    }
-  }
-  return used;
-}
-
 json ImagesJson(const ResultDocument& document, const ImageReport& report) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   json intrinsics = CameraJson(report.camera);
@@ -85,7 +73,7 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
                                                           report.intrinsics_sigma->end())}};
   }
   json per_image = json::array();
-  const std::vector<std::string> used = UsedIds(document);
+  const std::vector<std::string> used = UsedStationIds(document);
   for (size_t k = 0; k < used.size() && k < report.image_rms_px.size(); ++k) {
     per_image.push_back({{"id", used[k]},
                          {"rms_px", report.image_rms_px[k]},
@@ -123,23 +111,15 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
                             {"Z", CovarianceJson(*result.covariance_Z, scale)},
                             {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"}};
   }
+  const std::vector<std::string> used = UsedStationIds(document);
   json per_station = json::array();
-  json used = json::array();
-  size_t k = 0;  // residuals are for the stations that were used, in order
-  for (size_t i = 0; i < document.station_ids.size(); ++i) {
-    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) !=
-        document.rejected.end()) {
-      continue;
-    }
-    used.push_back(document.station_ids[i]);
-    if (k < result.residuals.size()) {
-      const estimation::StationResidual& r = result.residuals[k++];
-      per_station.push_back({{"id", document.station_ids[i]},
-                             {"rotation_deg", r.rotation * kDegrees},
-                             {"translation", r.translation * scale},
-                             {"whitened", r.whitened},
-                             {"outlier", r.outlier}});
-    }
+  for (size_t k = 0; k < used.size() && k < result.residuals.size(); ++k) {
+    const estimation::StationResidual& r = result.residuals[k];
+    per_station.push_back({{"id", used[k]},
+                           {"rotation_deg", r.rotation * kDegrees},
+                           {"translation", r.translation * scale},
+                           {"whitened", r.whitened},
+                           {"outlier", r.outlier}});
   }
   json rejected = json::array();
   for (int i : document.rejected) rejected.push_back(document.station_ids.at(i));
@@ -192,6 +172,17 @@ void EmitYaml(const json& value, YAML::Emitter& out) {
 }
 
 }  // namespace
+
+std::vector<std::string> UsedStationIds(const ResultDocument& document) {
+  std::vector<std::string> used;
+  for (size_t i = 0; i < document.station_ids.size(); ++i) {
+    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) ==
+        document.rejected.end()) {
+      used.push_back(document.station_ids[i]);
+    }
+  }
+  return used;
+}
 
 ResultFormat ResultFormatForPath(const std::string& path) {
   const auto ends_with = [&](std::string_view suffix) {

@@ -54,6 +54,10 @@ struct ResultDocument {
   std::optional<ImageReport> images;                   // `calibrate --images` only
 };
 
+// The ids of the stations that were used (station_ids without the rejected), in order: the
+// stations the residuals and per-image vectors of a result follow.
+std::vector<std::string> UsedStationIds(const ResultDocument& document);
+
 enum class ResultFormat { kJson, kYaml };
 // By extension: .yaml / .yml → YAML, anything else JSON.
 ResultFormat ResultFormatForPath(const std::string& path);
