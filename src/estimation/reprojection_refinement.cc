@@ -101,11 +101,9 @@ class Refinement {
     return PixelSquaredSum();
   }
 
-  // (X, Z) block of the inverse Gauss–Newton information at pixel sigma `sigma`.
-  Eigen::Matrix<double, 12, 12> Covariance(double sigma) {
-    const Linearization linear = Linearize(sigma);
-    return linear.inverse.topLeftCorner<12, 12>();
-  }
+  // The inverse Gauss–Newton information at pixel sigma `sigma`, over the unknowns in the order
+  // X, Z, the intrinsics when refined, the robot poses when free (Build).
+  Eigen::MatrixXd InverseInformation(double sigma) { return Linearize(sigma).inverse; }
 
   // Variance components at pixel sigma `sigma` and the current robot sigma (Förstner 1979;
   // Koch 1999 §3.6): for the pixel rows and the robot prior's rotation and translation rows,
@@ -135,13 +133,6 @@ class Refinement {
   Pose Z() const { return PoseFromParameters(z_.data()); }
   Pose G(size_t i) const { return PoseFromParameters(g_[i].data()); }
   pose::CameraModel Camera() const { return pose::WithIntrinsics(options_.camera, k_.data()); }
-
-  // Covariance of the intrinsics (refine_intrinsics only): their block of the inverse
-  // information, after X and Z.
-  Eigen::Matrix<double, pose::kNumIntrinsics, pose::kNumIntrinsics> IntrinsicsCovariance(
-      double sigma) {
-    return Linearize(sigma).inverse.block<pose::kNumIntrinsics, pose::kNumIntrinsics>(12, 12);
-  }
 
   // Squared pixel error of every point of station i, summed (px²), and the point count.
   double StationSquaredSum(size_t i) const {
@@ -292,10 +283,13 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
   result.pixel_sigma = sigma;
   result.X = refinement.X();
   result.Z = refinement.Z();
-  result.covariance = refinement.Covariance(sigma);
+  const Eigen::MatrixXd inverse = refinement.InverseInformation(sigma);
+  result.covariance = inverse.topLeftCorner<12, 12>();
   result.camera = refinement.Camera();
-  if (options.refine_intrinsics)
-    result.intrinsics_covariance = refinement.IntrinsicsCovariance(sigma);
+  if (options.refine_intrinsics) {
+    result.intrinsics_covariance =
+        inverse.block<pose::kNumIntrinsics, pose::kNumIntrinsics>(12, 12);
+  }
   double total = 0.0;
   for (size_t i = 0; i < images.size(); ++i) {
     result.T_base_gripper.push_back(refinement.G(i));
