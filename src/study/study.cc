@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "hecal/core/error.h"
+#include "hecal/core/split_mix.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/calibrate.h"
 #include "hecal/geometry/so3.h"
@@ -24,13 +25,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Errors below these are rounding noise, never outliers (sim/triangle_threshold.h).
 constexpr double kOutlierFloorRotation = 1e-9;     // radians
 constexpr double kOutlierFloorTranslation = 1e-9;  // metres
-
-uint64_t SplitMix64(uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 // RMS magnitude per component of the noise a model puts on a pose.
 estimation::PoseSigma ModelSigma(const Setting& setting) {

@@ -15,6 +15,7 @@
 
 #include "detection_internal.h"
 #include "hecal/core/error.h"
+#include "hecal/core/split_mix.h"
 
 namespace hecal::vision {
 namespace {
@@ -280,14 +281,6 @@ class PrintedBoard {
   std::unordered_multimap<long long, size_t> buckets_;
 };
 
-// SplitMix64: a well-mixed 64-bit hash, for the per-pixel sample jitter.
-std::uint64_t Mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
 double UnitInterval(std::uint64_t bits) {
   return static_cast<double>(bits >> 11) * 0x1.0p-53;
 }
@@ -403,13 +396,13 @@ cv::Mat RenderTarget(const pose::TargetSpec& target, const pose::CameraModel& ca
           continue;
         }
         const std::uint64_t pixel_key =
-            Mix(static_cast<std::uint64_t>(j) * 0x100000001b3ULL + static_cast<std::uint64_t>(i));
+            SplitMix64(static_cast<std::uint64_t>(j) * 0x100000001b3ULL + static_cast<std::uint64_t>(i));
         double sum = 0.0;
         for (int b = 0; b < s; ++b) {
           for (int a = 0; a < s; ++a) {
-            const std::uint64_t h = Mix(pixel_key + static_cast<std::uint64_t>(b * s + a));
+            const std::uint64_t h = SplitMix64(pixel_key + static_cast<std::uint64_t>(b * s + a));
             const double fx = (a + UnitInterval(h)) / s;
-            const double fy = (b + UnitInterval(Mix(h))) / s;
+            const double fy = (b + UnitInterval(SplitMix64(h))) / s;
             sum += grey(reflectance_at((1.0 - fy) * ((1.0 - fx) * p00 + fx * p10) +
                                        fy * ((1.0 - fx) * p01 + fx * p11)));
           }
