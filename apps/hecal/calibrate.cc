@@ -70,8 +70,18 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
       << handeye::SetupName(document.setup) << ", " << result.residuals.size() << " stations)\n";
   PrintPose(out, "X", handeye::XFrameName(document.setup), result.X, scale, unit);
   PrintPose(out, "Z", handeye::ZFrameName(document.setup), result.Z, scale, unit);
-  if (result.covariance_X) PrintSigma(out, "X", *result.covariance_X, scale, unit);
-  if (result.covariance_Z) PrintSigma(out, "Z", *result.covariance_Z, scale, unit);
+  if (result.covariance) {
+    const estimation::CalibrationCovariance& c = *result.covariance;
+    out << "covariance: " << estimation::CovarianceMethodName(c.method);
+    if (c.method == estimation::CovarianceMethod::kMonteCarlo) {
+      out << " (" << c.samples << " samples)";
+    } else if (c.solves > 0) {
+      out << " (" << c.solves << " solves)";
+    }
+    out << "\n";
+    PrintSigma(out, "X", c.X(), scale, unit);
+    PrintSigma(out, "Z", c.Z(), scale, unit);
+  }
   out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegrees << " deg, "
       << result.translation_rms * scale << " " << unit << "\n";
   out << "  station        rotation_deg   translation_" << unit << "   whitened\n";
@@ -159,6 +169,23 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   if (!flags.camera_sigma.empty()) {
     options.camera_sigma = ParseSigma("--camera-sigma", flags.camera_sigma);
   }
+  if (!flags.covariance.empty()) {
+    const auto covariance = estimation::ParseCovarianceMethod(flags.covariance);
+    if (!covariance || *covariance == estimation::CovarianceMethod::kNone) {
+      throw InputError("--covariance", 0, "unknown covariance method '" + flags.covariance + "'",
+                       "use linear, unscented or montecarlo (or leave it out for the method's "
+                       "default: linear for ml, unscented for the others)");
+    }
+    options.covariance.method = *covariance;
+  }
+  if (flags.covariance_samples < 2) {
+    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
+                     "use e.g. 5000");
+  }
+  if (flags.threads < 0) throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+  options.covariance.samples = flags.covariance_samples;
+  options.covariance.seed = flags.seed;
+  options.covariance.threads = flags.threads;
   options.robust_loss = flags.robust;
   if (flags.robust != "none" && flags.robust != "huber" && flags.robust != "cauchy") {
     throw InputError("--robust", 0, "unknown loss '" + flags.robust + "'",
@@ -263,7 +290,7 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command->add_option("--pixel-sigma", flags->pixel_sigma,
                       "With --images: pixel noise per axis, px (estimated when absent)");
   command->add_option("--threads", flags->threads,
-                      "With --images: detection threads (default 0 = every core)");
+                      "Threads for detection and covariance solves (default 0 = every core)");
   command->add_flag("--refine-intrinsics", flags->refine_intrinsics,
                     "With --images: refine the intrinsics with X and Z in the joint refinement");
   command->add_option("--setup", flags->setup, "eye-in-hand (camera on the robot) | eye-to-hand")
@@ -284,6 +311,14 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command->add_flag("--camera-inverse", flags->camera_inverse,
                     "The camera file holds T_target_camera: invert every pose");
   command->add_option("--robust", flags->robust, "Robust loss for ml/strobl: none|huber|cauchy");
+  command->add_option("--covariance", flags->covariance,
+                      "Covariance of X and Z: linear | unscented | montecarlo (default: linear "
+                      "for ml, unscented for the other methods)");
+  command->add_option("--covariance-samples", flags->covariance_samples,
+                      "Monte Carlo samples for --covariance montecarlo")
+      ->capture_default_str();
+  command->add_option("--seed", flags->seed, "Random seed for --covariance montecarlo")
+      ->capture_default_str();
   command->callback([flags, &io] { RunCalibrate(*flags, io); });
 }
 

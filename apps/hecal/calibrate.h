@@ -2,6 +2,8 @@
 //   hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand
 //                   [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
 //                   [--output result.json] [--units m|mm]
+//                   [--covariance linear|unscented|montecarlo] [--covariance-samples N]
+//                   [--seed S] [--threads N]
 //   hecal calibrate --images DIR --target target.yaml [--intrinsics camera.yaml]
 //                   --robot robot.csv --setup ... [--pixel-sigma PX] [--threads N] ...
 // From pose tables (calibrate.cc): pairs stations (by id, else by order), solves with the chosen
@@ -9,6 +11,7 @@
 // From images (calibrate_images.cc): see RunCalibrateImages below.
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 
@@ -27,7 +30,7 @@ struct CalibrateFlags {
   std::string target;       // --target target.yaml (with --images)
   std::string intrinsics;   // --intrinsics camera.yaml (with --images; estimated when absent)
   std::string pixel_sigma;  // --pixel-sigma PX (with --images; estimated when absent)
-  int threads = 0;          // --threads (with --images; 0 = every core)
+  int threads = 0;          // --threads (detection, covariance solves; 0 = every core)
   bool refine_intrinsics = false;  // --refine-intrinsics (with --images)
   std::string setup;
   std::string method = "ml";
@@ -40,13 +43,16 @@ struct CalibrateFlags {
   bool robot_inverse = false;
   bool camera_inverse = false;
   std::string robust = "none";
+  std::string covariance;          // --covariance (empty: the method's default)
+  int covariance_samples = 5000;   // --covariance-samples (montecarlo)
+  std::uint64_t seed = 1;          // --seed (montecarlo)
 };
 
 // The flags every form shares, checked.
 struct CalibrateSettings {
   handeye::Setup setup = handeye::Setup::kEyeInHand;
   bool all = false;                      // --method all
-  estimation::CalibrateOptions options;  // method (unless all), sigmas, robust loss
+  estimation::CalibrateOptions options;  // method (unless all), sigmas, robust loss, covariance
   io::PoseReadOptions read;              // --units, --degrees, --euler (robot and camera files)
 };
 
@@ -75,7 +81,9 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 //      RMS and flags, skipped images and why, the pose-level X and Z). Skipped images are the
 //      result's rejected stations.
 // Errors (InputError, exit 2, nothing written): those of image_set.h, of the robot file, the
-// pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera.
+// pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera,
+// --covariance unscented|montecarlo (the image result's covariance is the linear one of the
+// reprojection problem, which includes the pixel noise).
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
 

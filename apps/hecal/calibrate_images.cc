@@ -133,6 +133,15 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
                      "run hecal detect to write camera.csv, then hecal calibrate --camera "
                      "camera.csv --method all; or give one method");
   }
+  if (settings.options.covariance.method &&
+      *settings.options.covariance.method != estimation::CovarianceMethod::kLinear) {
+    throw InputError("--covariance", 0,
+                     "--covariance " + flags.covariance +
+                         " is not available with --images (the covariance from images is the "
+                         "linear one of the reprojection problem, with the pixel noise)",
+                     "leave --covariance out, or run hecal detect to write camera.csv and "
+                     "calibrate --camera camera.csv --covariance " + flags.covariance);
+  }
   if (flags.camera_inverse) {
     throw InputError("--camera-inverse", 0, "applies to --camera files only",
                      "leave it out: poses from --images are T_camera_target");

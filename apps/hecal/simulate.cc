@@ -29,6 +29,9 @@ List flags sweep: the study runs every combination (setup x noise-on x noise x s
 --stations counts poses (k motions = k + 1 stations), at least 3.
 Outliers: triangle threshold on a smoothed log-histogram of each setting's errors (per method).
 Bound: first-order (Cramer-Rao-type) RMSE of the ml estimate at the truth, RMS over trials.
+--covariance: every method is told the true noise model and predicts the covariance of X;
+  NEES = e' C^-1 e of e = Log(X_est^-1 X_true), its mean should lie in the chi-square band,
+  1-sigma / 2-sigma ellipsoid coverage should be 68.3% / 95.4%.
 Same --seed, same CSV files whatever --threads.)";
 
 std::vector<SigmaLevel> ParseSigmaLevels(const std::string& text) {
@@ -60,6 +63,30 @@ std::string Pad(const std::string& text, size_t width, bool left_align = false) 
   if (text.size() >= width) return text;
   const std::string padding(width - text.size(), ' ');
   return left_align ? text + padding : padding + text;
+}
+
+// Consistency of the predicted covariances of X (study.h), one line per method.
+void PrintConsistency(const study::StudyResult& result, size_t setting, std::ostream& out) {
+  bool header = false;
+  for (const study::MethodSummary& m : result.summaries) {
+    if (m.setting != static_cast<int>(setting) || !m.consistency) continue;
+    const uncertainty::Consistency& c = *m.consistency;
+    if (!header) {
+      out << "  consistency of the predicted covariance of X (NEES: 6 dof; coverage: 68.3% / "
+             "95.4% if consistent; sd: predicted/empirical)\n  "
+          << Pad("method", 18, true) << Pad("NEES", 8) << Pad("95% band", 16) << Pad("", 4)
+          << Pad("1σ cov", 9) << Pad("2σ cov", 9) << "  sd rx    ry    rz    tx    ty    tz\n";
+      header = true;
+    }
+    const bool in_band = c.band.Contains(c.mean_nees);
+    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+        << Pad(Fixed(c.mean_nees, 2), 8)
+        << Pad("[" + Fixed(c.band.low, 2) + ", " + Fixed(c.band.high, 2) + "]", 16)
+        << Pad(in_band ? "ok" : "out", 4) << Pad(Fixed(100.0 * c.coverage_1sigma, 1) + "%", 9)
+        << Pad(Fixed(100.0 * c.coverage_2sigma, 1) + "%", 9) << " ";
+    for (Eigen::Index j = 0; j < c.sd_ratio.size(); ++j) out << Pad(Fixed(c.sd_ratio(j), 2), 6);
+    out << "\n";
+  }
 }
 
 void PrintTable(const study::StudyResult& result, std::ostream& out) {
@@ -95,6 +122,7 @@ void PrintTable(const study::StudyResult& result, std::ostream& out) {
           << Pad(Readable(m.translation.p90 * 1000.0), 10)
           << Pad(Readable(m.translation.max * 1000.0), 11) << "\n";
     }
+    PrintConsistency(result, s, out);
     out << "\n";
   }
 }
@@ -139,6 +167,22 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
   if (flags.threads < 0) {
     throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
   }
+  if (flags.covariance != "default") {
+    const auto covariance = estimation::ParseCovarianceMethod(flags.covariance);
+    if (!covariance) {
+      throw InputError("--covariance", 0, "unknown covariance method '" + flags.covariance + "'",
+                       "use none, default, linear, unscented or montecarlo");
+    }
+    options.covariance.method = *covariance;
+  } else {
+    options.covariance.method = std::nullopt;
+  }
+  if (flags.covariance_samples < 2) {
+    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
+                     "e.g. --covariance-samples 1000");
+  }
+  options.covariance.samples = flags.covariance_samples;
+  options.covariance.seed = flags.seed;
   options.trials = flags.trials;
   options.threads = flags.threads;
   options.seed = flags.seed;
@@ -191,6 +235,15 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->capture_default_str();
   simulate->add_option("--seed", flags->seed, "Random seed")->capture_default_str();
   simulate->add_option("--threads", flags->threads, "Worker threads (0 = every core)")
+      ->capture_default_str();
+  simulate
+      ->add_option("--covariance", flags->covariance,
+                   "Predict X's covariance per trial and report its consistency: none | default "
+                   "(each method's own) | linear | unscented | montecarlo")
+      ->capture_default_str();
+  simulate
+      ->add_option("--covariance-samples", flags->covariance_samples,
+                   "Monte Carlo samples per trial with --covariance montecarlo")
       ->capture_default_str();
   simulate->add_option("--output", flags->output, "Per-trial CSV (written atomically)");
   simulate->add_option("--summary", flags->summary, "Summary CSV (written atomically)");

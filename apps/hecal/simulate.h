@@ -8,6 +8,8 @@
 //                  [--sigma LEVEL[,LEVEL...]]                   default 0,0.3,1
 //                  [--method NAME[,NAME...]|all]                default all
 //                  [--seed N] [--threads N]                     default 1, 0 (= every core)
+//                  [--covariance none|default|linear|unscented|montecarlo]  default none
+//                  [--covariance-samples N]                     default 1000 (montecarlo)
 //                  [--output trials.csv] [--summary summary.csv]
 // Every list flag is a sweep; the study runs the Cartesian product (setup × noise-on × noise ×
 // sigma × stations). A noise LEVEL is either one number n — n mm on each translation component
@@ -15,6 +17,10 @@
 // values (e.g. 0.2/0.05). For uniform noise the level is the half-width (±n); for systematic
 // noise it is the constant offset per component.
 // Stations count poses (the thesis' k motions are k + 1 stations); at least 3.
+// --covariance (issue 5): each trial also predicts the covariance of X that way (default: each
+// method's own default, estimation::DefaultCovarianceMethod) with the setting's noise model,
+// and the table and summary gain consistency columns: mean NEES with its 95% χ² band, 1σ/2σ
+// coverage, predicted/empirical standard deviation per axis (study.h).
 // Prints a table per setting (stdout); --output and --summary write the CSV files of
 // study/study_csv.h atomically. Bad flags are InputError (exit 2, one line on stderr).
 #pragma once
@@ -38,6 +44,8 @@ struct SimulateFlags {
   int threads = 0;
   std::string output;
   std::string summary;
+  std::string covariance = "none";
+  int covariance_samples = 1000;
 };
 
 // Runs the study; throws hecal::InputError for bad flags.

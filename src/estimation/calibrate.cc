@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/estimation/calibration_covariance.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/estimation/ml.h"
 #include "hecal/estimation/noise_estimation.h"
@@ -107,6 +108,13 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
     throw InputError("stations", 0, "the numbers of robot and camera poses differ",
                      "give one camera pose per robot pose");
   }
+  if (options.covariance.samples < 2) {
+    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
+                     "use e.g. 5000");
+  }
+  if (options.covariance.threads < 0) {
+    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+  }
   handeye::CheckObservability(problem);
 
   CalibrationResult result;
@@ -114,6 +122,7 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
   const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
   const double L = LengthScale(problem);
   NoiseEstimate noise;
+  std::optional<Eigen::Matrix<double, 12, 12>> ml_covariance;
   if (options.method == handeye::Method::kMl) {
     MlOptions ml_options;
     ml_options.robot_sigma = options.robot_sigma;
@@ -123,8 +132,7 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
     const MlResult ml = RefineMl(problem, Starts(problem), ml_options);
     result.X = ml.X;
     result.Z = ml.Z;
-    result.covariance_X = ml.covariance.topLeftCorner<6, 6>();
-    result.covariance_Z = ml.covariance.bottomRightCorner<6, 6>();
+    ml_covariance = ml.covariance;
     noise = ml.noise;
   } else {
     handeye::Solution solution;
@@ -144,6 +152,26 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
   result.sigmas_estimated = spec.AnyEstimated();
+  // The covariance of (X, Z) under that noise model: ml's analytic information when linear,
+  // else propagated through the solver (calibration_covariance.h).
+  const CovarianceMethod covariance_method =
+      options.covariance.method.value_or(DefaultCovarianceMethod(options.method));
+  if (ml_covariance && covariance_method == CovarianceMethod::kLinear) {
+    CalibrationCovariance covariance;
+    covariance.covariance = *ml_covariance;
+    result.covariance = covariance;
+  } else {
+    result.covariance = PropagateCovariance(
+        problem, result, options,
+        StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma), options.covariance);
+  }
+  if (result.covariance && result.covariance->failures > 0) {
+    result.warnings.push_back(
+        std::to_string(result.covariance->failures) + " of " +
+        std::to_string(result.covariance->failures + result.covariance->samples) +
+        " Monte Carlo samples failed to solve and are left out of the covariance (first: " +
+        result.covariance->first_failure + ")");
+  }
   // Now that the robot noise is known (given or estimated): is every direction of X's
   // translation observed by more than noise? (observability.h)
   if (std::string weak =

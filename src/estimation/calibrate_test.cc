@@ -34,7 +34,8 @@ TEST(Calibrate, EveryMethodDispatchesAndTheRefinementsAreExact) {
       const CalibrationResult result = Calibrate(problem, options);
       EXPECT_EQ(result.method, info.method);
       ASSERT_EQ(result.residuals.size(), problem.A.size());
-      EXPECT_EQ(result.covariance_X.has_value(), info.method == handeye::Method::kMl) << info.name;
+      ASSERT_TRUE(result.covariance.has_value()) << info.name;  // every method has one
+      EXPECT_EQ(result.covariance->method, DefaultCovarianceMethod(info.method)) << info.name;
       if (info.closed_form) {
         const handeye::Solution direct = handeye::SolveClosedForm(info.method, problem);
         EXPECT_TRUE(result.X.isApprox(direct.X, 1e-12)) << info.name;
@@ -60,9 +61,10 @@ TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
   EXPECT_EQ(estimated.method, handeye::Method::kMl);
   EXPECT_TRUE(estimated.sigmas_estimated);
   EXPECT_TRUE(AnyWarningContains(estimated, "estimated from the residuals"));
-  ASSERT_TRUE(estimated.covariance_X.has_value());
-  ASSERT_TRUE(estimated.covariance_Z.has_value());
-  EXPECT_GT((estimated.covariance_X->block<3, 3>(0, 0).trace()), 0.0);
+  ASSERT_TRUE(estimated.covariance.has_value());
+  EXPECT_EQ(estimated.covariance->method, CovarianceMethod::kLinear);
+  EXPECT_EQ(estimated.covariance->solves, 0);  // ml's analytic information
+  EXPECT_GT((estimated.covariance->X().block<3, 3>(0, 0).trace()), 0.0);
   // Residual summaries are consistent with the per-station values.
   double rotation2 = 0.0, whitened2 = 0.0;
   for (const StationResidual& r : estimated.residuals) {

@@ -54,6 +54,8 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
 
   ImageCalibrationResult out;
   CalibrateOptions calibrate = options.calibrate;
+  // Step 1 only starts step 2; its covariance is not reported.
+  calibrate.covariance.method = CovarianceMethod::kNone;
   if (!calibrate.camera_sigma && !stations.empty()) {
     calibrate.camera_sigma = CameraSigmaFromCovariances(stations);
   }
@@ -73,8 +75,9 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   result = out.pose_level;
   result.X = out.reprojection.X;
   result.Z = out.reprojection.Z;
-  result.covariance_X = out.reprojection.covariance.topLeftCorner<6, 6>();
-  result.covariance_Z = out.reprojection.covariance.bottomRightCorner<6, 6>();
+  CalibrationCovariance covariance;  // the reprojection problem's Gauss–Newton information
+  covariance.covariance = out.reprojection.covariance;
+  result.covariance = covariance;
   if (out.reprojection.robot_sigma_estimated) {
     result.robot_sigma = out.reprojection.robot_sigma;
     // The pose-level estimate of the robot noise is replaced by the joint one.

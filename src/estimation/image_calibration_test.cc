@@ -49,7 +49,7 @@ TEST(CalibrateFromImages, NoiseFreeImagesGiveTheTruth) {
     EXPECT_LT(result.reprojection.rms_px, 1e-6);
     ASSERT_EQ(result.result.residuals.size(), 8u);
     EXPECT_LT(result.result.translation_rms, 1e-9);
-    ASSERT_TRUE(result.result.covariance_X.has_value());
+    ASSERT_TRUE(result.result.covariance.has_value());
   }
 }
 
@@ -105,7 +105,7 @@ TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
       pose_translation += pose_error.tail<3>().squaredNorm();
       image_rotation += image_error.head<3>().squaredNorm();
       image_translation += image_error.tail<3>().squaredNorm();
-      mahalanobis += image_error.dot(result.result.covariance_X->ldlt().solve(image_error));
+      mahalanobis += image_error.dot(result.result.covariance->X().ldlt().solve(image_error));
     }
     const std::string name(handeye::SetupName(setup));
     EXPECT_LE(image_rotation, pose_rotation) << name;

@@ -102,7 +102,7 @@ TEST(Kuka2RealData, EveryMethodMatchesTheReferenceX) {
       // The target stays put in the base frame to sub-millimetre (SOURCE.md: < 0.5 mm std).
       EXPECT_LT(result.translation_rms, 1.5e-3);
       EXPECT_LT(result.rotation_rms, 0.2 * kDeg);
-      ASSERT_TRUE(result.covariance_X.has_value());
+      ASSERT_TRUE(result.covariance.has_value());
     }
   }
 }

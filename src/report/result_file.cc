@@ -48,6 +48,36 @@ json CovarianceJson(const Matrix6d& covariance, double scale) {
   return MatrixJson(0.5 * (scaled + scaled.transpose()));
 }
 
+// Per-axis values of a (ω, v) 6-vector of standard deviations: degrees and the output unit.
+json SigmaJson(const Vector6d& sd, double scale) {
+  const Eigen::Vector3d r = sd.head<3>() * kDegrees;
+  const Eigen::Vector3d t = sd.tail<3>() * scale;
+  return {{"rotation_deg", {r.x(), r.y(), r.z()}}, {"translation", {t.x(), t.y(), t.z()}}};
+}
+
+json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double scale) {
+  Eigen::Matrix<double, 12, 1> s;
+  s << 1.0, 1.0, 1.0, scale, scale, scale, 1.0, 1.0, 1.0, scale, scale, scale;
+  const Eigen::Matrix<double, 12, 12> scaled = s.asDiagonal() * c.covariance * s.asDiagonal();
+  json section = {
+      {"X", CovarianceJson(c.X(), scale)},
+      {"Z", CovarianceJson(c.Z(), scale)},
+      {"XZ", MatrixJson(Matrix6d(scaled.topRightCorner<6, 6>()))},
+      {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"},
+      {"method", estimation::CovarianceMethodName(c.method)},
+      {"solves", c.solves},
+      {"sigma",
+       {{"X", SigmaJson(c.X().diagonal().cwiseSqrt(), scale)},
+        {"Z", SigmaJson(c.Z().diagonal().cwiseSqrt(), scale)}}}};
+  if (c.method == estimation::CovarianceMethod::kMonteCarlo) {
+    section["samples"] = c.samples;
+    section["failed_samples"] = c.failures;
+    section["sigma_std_error"] = {{"X", SigmaJson(c.sd_std_error.head<6>(), scale)},
+                                  {"Z", SigmaJson(c.sd_std_error.tail<6>(), scale)}};
+  }
+  return section;
+}
+
 json CameraJson(const pose::CameraModel& camera) {
   return {{"fx", camera.fx},
           {"fy", camera.fy},
@@ -106,11 +136,7 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
       {"X", PoseJson(result.X, handeye::XFrameName(document.setup), scale)},
       {"Z", PoseJson(result.Z, handeye::ZFrameName(document.setup), scale)},
   };
-  if (result.covariance_X && result.covariance_Z) {
-    object["covariance"] = {{"X", CovarianceJson(*result.covariance_X, scale)},
-                            {"Z", CovarianceJson(*result.covariance_Z, scale)},
-                            {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"}};
-  }
+  if (result.covariance) object["covariance"] = CovarianceSectionJson(*result.covariance, scale);
   const std::vector<std::string> used = UsedStationIds(document);
   json per_station = json::array();
   for (size_t k = 0; k < used.size() && k < result.residuals.size(); ++k) {

@@ -1,6 +1,8 @@
 #include "hecal/report/result_file.h"
 
 #include <gtest/gtest.h>
+
+#include <numbers>
 #include <yaml-cpp/yaml.h>
 
 #include <cstdio>
@@ -27,8 +29,14 @@ ResultDocument MakeDocument() {
   result.Z = se3::Exp((Vector6d() << -0.5, 0.0, 0.25, 0.01, 0.02, 0.03).finished());
   Matrix6d covariance = Matrix6d::Identity() * 1e-6;
   covariance(3, 4) = covariance(4, 3) = 2e-6;  // m², must become 2 mm²
-  result.covariance_X = covariance;
-  result.covariance_Z = covariance;
+  estimation::CalibrationCovariance joint;
+  joint.method = estimation::CovarianceMethod::kUnscented;
+  joint.solves = 13;
+  joint.covariance.setZero();
+  joint.covariance.topLeftCorner<6, 6>() = covariance;
+  joint.covariance.bottomRightCorner<6, 6>() = covariance;
+  joint.covariance(0, 6) = joint.covariance(6, 0) = 3e-7;  // cross term, rad²
+  result.covariance = joint;
   result.residuals = {{0.01, 0.002, 0.9, false}, {0.02, 0.004, 4.0, true}};
   result.rotation_rms = 0.0158;
   result.translation_rms = 0.0032;
@@ -66,6 +74,14 @@ TEST(ResultFile, JsonFollowsTheContract) {
   EXPECT_NEAR(j["covariance"]["X"][3][3].get<double>(), 1.0, 1e-12);
   EXPECT_NEAR(j["covariance"]["X"][3][4].get<double>(), 2.0, 1e-12);
   EXPECT_EQ(j["covariance"]["parameterization"], "right, (rx,ry,rz,tx,ty,tz)");
+  EXPECT_EQ(j["covariance"]["method"], "unscented");
+  EXPECT_EQ(j["covariance"]["solves"], 13);
+  EXPECT_NEAR(j["covariance"]["XZ"][0][0].get<double>(), 3e-7, 1e-20);
+  // 1σ per axis: sqrt(1e-6) rad = 0.0573°, sqrt(1 mm²) = 1 mm.
+  EXPECT_NEAR(j["covariance"]["sigma"]["X"]["rotation_deg"][2].get<double>(),
+              1e-3 * 180.0 / std::numbers::pi, 1e-12);
+  EXPECT_NEAR(j["covariance"]["sigma"]["Z"]["translation"][0].get<double>(), 1.0, 1e-12);
+  EXPECT_FALSE(j["covariance"].contains("samples"));  // Monte Carlo only
   // Residuals skip the rejected station; rotation in degrees, translation in mm.
   EXPECT_EQ(j["stations"]["used"], json({"a", "c"}));
   EXPECT_EQ(j["stations"]["rejected"], json({"b"}));

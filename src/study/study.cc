@@ -1,22 +1,21 @@
 #include "hecal/study/study.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <exception>
 #include <limits>
-#include <mutex>
 #include <random>
 #include <stdexcept>
-#include <thread>
 
 #include "hecal/core/error.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/calibrate.h"
+#include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "hecal/sim/triangle_threshold.h"
+#include "hecal/uncertainty/parallel_for.h"
 
 namespace hecal::study {
 namespace {
@@ -66,14 +65,28 @@ void SetRefinementSigmas(const Setting& setting, estimation::CalibrateOptions* o
                                                 std::max(camera.translation, floor * translation)};
 }
 
-// One method on one data set. Closed-form methods go straight to their solver (what `hecal
-// bench` times); the refinements go through Calibrate with the noise model of the setting.
-Pose SolveX(handeye::Method method, const handeye::Problem& problem, const Setting& setting) {
-  if (handeye::Info(method).closed_form) return handeye::SolveClosedForm(method, problem).X;
+struct Estimate {
+  Pose X;
+  std::optional<Matrix6d> covariance_X;
+};
+
+// One method on one data set. Without a covariance, closed-form methods go straight to their
+// solver (what `hecal bench` times) and the refinements through Calibrate with the noise model
+// of the setting; with one, every method goes through Calibrate with that noise model.
+Estimate SolveX(handeye::Method method, const handeye::Problem& problem, const Setting& setting,
+                const estimation::CovarianceOptions& covariance) {
+  const bool wants_covariance = covariance.method != estimation::CovarianceMethod::kNone;
+  if (handeye::Info(method).closed_form && !wants_covariance) {
+    return {handeye::SolveClosedForm(method, problem).X, std::nullopt};
+  }
   estimation::CalibrateOptions options;
   options.method = method;
+  options.covariance = covariance;
+  options.covariance.threads = 1;  // the trials run in parallel already
   SetRefinementSigmas(setting, &options);
-  return estimation::Calibrate(problem, options).X;
+  const estimation::CalibrationResult result = estimation::Calibrate(problem, options);
+  if (result.covariance) return {result.X, result.covariance->X()};
+  return {result.X, std::nullopt};
 }
 
 // The first-order bound of the data set at the truth: 0 without noise, NaN when the noise model
@@ -212,14 +225,19 @@ StudyResult RunStudy(const StudyOptions& options) {
       trial.method = options.methods[m];
       trial.rotation_error = trial.translation_error = kNaN;
       try {
-        const Pose X = SolveX(trial.method, problem, setting);
-        if (!IsFinite(X)) {
+        const Estimate estimate = SolveX(trial.method, problem, setting, options.covariance);
+        if (!IsFinite(estimate.X)) {
           trial.status = TrialStatus::kNonFinite;
           continue;
         }
-        const RotationTranslation error = PoseError(X, data.X);
+        const RotationTranslation error = PoseError(estimate.X, data.X);
         trial.rotation_error = error.rotation;
         trial.translation_error = error.translation;
+        if (estimate.covariance_X) {
+          trial.error_X = se3::Log(estimate.X.inverse() * data.X);
+          trial.covariance_X = estimate.covariance_X;
+          trial.nees = uncertainty::Nees(trial.error_X, *estimate.covariance_X);
+        }
       } catch (const std::exception& e) {
         trial.status = TrialStatus::kThrew;
         trial.message = e.what();
@@ -228,29 +246,8 @@ StudyResult RunStudy(const StudyOptions& options) {
     result.bounds[job.setting][job.trial] = BoundAtTruth(data, setting);
   };
 
-  std::atomic<int> next{0};
-  std::mutex mutex;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (int j = next.fetch_add(1); j < jobs; j = next.fetch_add(1)) {
-      try {
-        run_job({j / trials, j % trials});
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-        next.store(jobs);
-        return;
-      }
-    }
-  };
-  int threads =
-      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::clamp(threads, 1, std::max(jobs, 1));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& thread : pool) thread.join();
-  if (failure) std::rethrow_exception(failure);
+  uncertainty::ParallelFor(jobs, options.threads,
+                           [&](int j) { run_job({j / trials, j % trials}); });
 
   // Outliers and summaries per (setting, method), in a fixed order.
   for (int s = 0; s < settings; ++s) {
@@ -286,6 +283,8 @@ StudyResult RunStudy(const StudyOptions& options) {
       double inlier_rotation_sq = 0.0, inlier_translation_sq = 0.0;
       int inliers = 0;
       double worst_rotation = 0.0, worst_translation = 0.0;
+      std::vector<Eigen::VectorXd> errors;
+      std::vector<Eigen::MatrixXd> covariances;
       for (int t = 0; t < trials; ++t) {
         TrialResult& trial = result.trials[(static_cast<size_t>(s) * trials + t) * methods + m];
         if (trial.status != TrialStatus::kOk) continue;
@@ -296,6 +295,10 @@ StudyResult RunStudy(const StudyOptions& options) {
           ++inliers;
           inlier_rotation_sq += rotation[t] * rotation[t];
           inlier_translation_sq += translation[t] * translation[t];
+        }
+        if (trial.covariance_X) {
+          errors.emplace_back(trial.error_X);
+          covariances.emplace_back(*trial.covariance_X);
         }
         const Bound& bound = result.bounds[s][t];
         worst_rotation = std::max(worst_rotation, rotation[t] / bound.rotation);
@@ -308,6 +311,7 @@ StudyResult RunStudy(const StudyOptions& options) {
                            result.setting_bounds[s].rotation > 0.0;
       summary.worst_rotation_over_bound = bounded ? worst_rotation : kNaN;
       summary.worst_translation_over_bound = bounded ? worst_translation : kNaN;
+      if (!errors.empty()) summary.consistency = uncertainty::AssessConsistency(errors, covariances);
       result.summaries.push_back(summary);
     }
   }

@@ -49,7 +49,7 @@ std::string TrialsCsv(const StudyResult& result) {
   std::ostringstream out;
   out << "setup,stations,noise_on,noise,sigma_mm,sigma_deg,trial,method,status,"
          "rotation_error_deg,translation_error_mm,outlier,bound_rotation_deg,"
-         "bound_translation_mm,message\n";
+         "bound_translation_mm,nees,message\n";
   for (const TrialResult& trial : result.trials) {
     const Setting& setting = result.options.settings[trial.setting];
     const Bound& bound = result.bounds[trial.setting][trial.trial];
@@ -57,7 +57,7 @@ std::string TrialsCsv(const StudyResult& result) {
         << ',' << TrialStatusName(trial.status) << ',' << FormatNumber(trial.rotation_error * kDeg)
         << ',' << FormatNumber(trial.translation_error * kMm) << ',' << (trial.outlier ? 1 : 0)
         << ',' << FormatNumber(bound.rotation * kDeg) << ','
-        << FormatNumber(bound.translation * kMm) << ','
+        << FormatNumber(bound.translation * kMm) << ',' << FormatNumber(trial.nees) << ','
         << (trial.message.empty() ? std::string() : Quoted(trial.message)) << '\n';
   }
   return out.str();
@@ -70,7 +70,9 @@ std::string SummaryCsv(const StudyResult& result) {
          "rotation_max_deg,rotation_rmse_inliers_deg,translation_median_mm,translation_rmse_mm,"
          "translation_p10_mm,translation_p90_mm,translation_max_mm,translation_rmse_inliers_mm,"
          "bound_rotation_rmse_deg,bound_translation_rmse_mm,worst_rotation_over_bound,"
-         "worst_translation_over_bound\n";
+         "worst_translation_over_bound,mean_nees,nees_band_low,nees_band_high,coverage_1sigma,"
+         "coverage_2sigma,sd_ratio_rx,sd_ratio_ry,sd_ratio_rz,sd_ratio_tx,sd_ratio_ty,"
+         "sd_ratio_tz\n";
   for (const MethodSummary& s : result.summaries) {
     const Bound& bound = result.setting_bounds[s.setting];
     out << SettingColumns(result.options.settings[s.setting]) << ',' << handeye::Info(s.method).name
@@ -80,7 +82,17 @@ std::string SummaryCsv(const StudyResult& result) {
     AppendStatistics(out, s.translation, s.translation_rmse_inliers, kMm);
     out << ',' << FormatNumber(bound.rotation * kDeg) << ','
         << FormatNumber(bound.translation * kMm) << ',' << FormatNumber(s.worst_rotation_over_bound)
-        << ',' << FormatNumber(s.worst_translation_over_bound) << '\n';
+        << ',' << FormatNumber(s.worst_translation_over_bound);
+    if (s.consistency) {
+      const uncertainty::Consistency& c = *s.consistency;
+      out << ',' << FormatNumber(c.mean_nees) << ',' << FormatNumber(c.band.low) << ','
+          << FormatNumber(c.band.high) << ',' << FormatNumber(c.coverage_1sigma) << ','
+          << FormatNumber(c.coverage_2sigma);
+      for (Eigen::Index j = 0; j < c.sd_ratio.size(); ++j) out << ',' << FormatNumber(c.sd_ratio(j));
+    } else {
+      out << ",nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan";
+    }
+    out << '\n';
   }
   return out.str();
 }

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "hecal/estimation/covariance_method.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/geometry/types.h"
@@ -39,6 +40,8 @@ struct CalibrateOptions {
   // per component (3: down-weight stations beyond the outlier level).
   std::string robust_loss = "none";
   double robust_scale = 3.0;
+  // How the covariance of (X, Z) is computed (calibration_covariance.h).
+  CovarianceOptions covariance;
 };
 
 struct StationResidual {
@@ -52,10 +55,10 @@ struct CalibrationResult {
   handeye::Method method = handeye::Method::kMl;
   Pose X = Pose::Identity();
   Pose Z = Pose::Identity();
-  // Right-perturbation covariances, (rx, ry, rz, tx, ty, tz), radians and metres. Present when
-  // the method provides one (ml: Gauss–Newton inverse information of the whitened problem).
-  std::optional<Matrix6d> covariance_X;
-  std::optional<Matrix6d> covariance_Z;
+  // Right-perturbation covariance of (X, Z), (rx, ry, rz, tx, ty, tz) each, radians and
+  // metres, under the noise model robot_sigma / camera_sigma (calibration_covariance.h).
+  // Absent only with CovarianceMethod::kNone.
+  std::optional<CalibrationCovariance> covariance;
   std::vector<StationResidual> residuals;  // one per station, in problem order
   double rotation_rms = 0.0;               // radians
   double translation_rms = 0.0;            // metres
@@ -66,8 +69,8 @@ struct CalibrationResult {
 };
 
 // Throws hecal::DegenerateError on degenerate data (handeye/observability.h), hecal::InputError
-// for invalid options (negative or all-zero sigmas, unknown robust loss; the source named is the
-// CLI flag).
+// for invalid options (negative or all-zero sigmas, unknown robust loss, fewer than 2 Monte
+// Carlo samples; the source named is the CLI flag).
 CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options);
 
 // Fills result->residuals, rotation_rms and translation_rms at result->X, result->Z, with the

@@ -15,22 +15,32 @@
 //    results go to fixed slots);
 //  - settings that differ only in the noise share the same ground truth and station poses per
 //    trial (common random numbers: noise sweeps compare like with like).
+// Covariance (issue 5, optional): with StudyOptions::covariance other than kNone every method
+// goes through estimation::Calibrate with the setting's noise model (the sigmas below, for
+// the closed-form methods too) and that covariance method, and each trial records the error of
+// X in the tangent space, e = Log(X̂⁻¹ X̃) (right perturbation, (ω, v)), with its predicted
+// covariance; the summary adds their consistency (uncertainty/consistency.h: mean NEES and its
+// 95% χ² band for 6 dof, 1σ/2σ ellipsoid coverage, predicted/empirical sd per axis). Inner
+// solves run on the trial's own thread (the trials are already parallel).
 // Failures: a method that throws (e.g. DegenerateError) or returns a non-finite pose is a failed
 // trial (status and message kept, errors NaN); failures are not outliers and are left out of
 // the statistics.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "hecal/estimation/covariance_method.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/handeye/methods.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/sim/noise.h"
 #include "hecal/sim/summary_statistics.h"
+#include "hecal/uncertainty/consistency.h"
 
 namespace hecal::study {
 
@@ -68,6 +78,18 @@ struct StudyOptions {
   int trials = 200;
   uint64_t seed = 1;
   int threads = 0;  // 0: std::thread::hardware_concurrency()
+  // The covariance each trial predicts for X: method nullopt = each method's default
+  // (estimation::DefaultCovarianceMethod); kNone (the default) = none, no consistency columns.
+  estimation::CovarianceOptions covariance = NoCovariance();
+
+  static estimation::CovarianceOptions NoCovariance() {
+    estimation::CovarianceOptions options;
+    options.method = estimation::CovarianceMethod::kNone;
+    return options;
+  }
+  bool WantsCovariance() const {
+    return covariance.method != estimation::CovarianceMethod::kNone;
+  }
 };
 
 // Throws InputError (source "--<flag>") when options are unusable: no setting, no method,
@@ -88,6 +110,11 @@ struct TrialResult {
   // Triangle threshold (sim/triangle_threshold.h) on this setting's and method's rotation OR
   // translation errors; errors below 1e-9 rad / 1e-9 m are rounding noise and never outliers.
   bool outlier = false;
+  // With a covariance (StudyOptions::covariance): e = Log(X̂⁻¹ X̃), its predicted covariance,
+  // and the NEES eᵀ Σ⁻¹ e (NaN otherwise, or when Σ is singular).
+  Vector6d error_X = Vector6d::Constant(std::numeric_limits<double>::quiet_NaN());
+  std::optional<Matrix6d> covariance_X;
+  double nees = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A rotation and a translation magnitude: an error against the truth, or a bound.
@@ -114,6 +141,9 @@ struct MethodSummary {
   // Worst trial relative to its own bound: max over trials of error / bound (NaN without bound).
   double worst_rotation_over_bound = 0.0;
   double worst_translation_over_bound = 0.0;
+  // With a covariance: the consistency of the predicted covariances of X with the errors, over
+  // the trials that succeeded (outliers included: a covariance should cover them too).
+  std::optional<uncertainty::Consistency> consistency;
 };
 
 struct StudyResult {

@@ -97,9 +97,11 @@ T WeightedMean(std::span<const T> points, std::span<const double> weights, const
                const MeanOptions& options = {}) {
   using M = Manifold<T>;
   T mean = initial;
+  const int n = M::Dim(mean);
+  if (n <= 0) return mean;
   double previous = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    Eigen::VectorXd step = Eigen::VectorXd::Zero(M::Dim(mean));
+    Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
     for (size_t i = 0; i < points.size(); ++i) step += weights[i] * M::Minus(points[i], mean);
     const double size = step.norm();
     if (iteration > 0 && size > 0.5 * previous) break;  // no longer converging: noise

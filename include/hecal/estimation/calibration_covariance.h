@@ -1,0 +1,71 @@
+// The covariance of a calibration's (X, Z) from the noise of its stations, for every method
+// (issue 5; the seed's approach, SPEC.md C.4–C.6, applied to the hand–eye estimators).
+//
+// The estimator is a function of the measurements: (X̂, Ẑ) = g(G_1…G_n, B_1…B_n) with
+// G_i = T_base_gripper_i and B_i = T_camera_target_i as the devices report them (eye-to-hand,
+// A_i = G_i⁻¹: problem.h). The input noise is G_i = Ĝ_i · Exp(δG_i), B_i = B̂_i · Exp(δB_i)
+// (right perturbations, DESIGN.md §2, pose_sigma.h) with δG_i ~ N(0, ΣG_i), δB_i ~ N(0, ΣB_i)
+// independent: a 12n-dimensional input with block-diagonal covariance (StationNoise). The output is (X, Z) ∈ SE(3)², its covariance 12 × 12 over
+// (δX, δZ), right perturbations, (ω, v) order each. Three ways:
+//  - kLinear: first order. For `ml` the inverse Gauss–Newton information at the optimum (ml.h;
+//    free, and the first-order covariance of the ML estimate). For every other method the
+//    first-order propagation through the solver itself, J Σ Jᵀ with J by central differences
+//    along the Cholesky columns of Σ (uncertainty/first_order.h): 24n solves.
+//  - kUnscented: the Unscented Transform through the solver (uncertainty/unscented.h, default
+//    symmetric set with w0 = 1 − n_in/3: points at ±√3σ of one measurement component each):
+//    24n + 1 solves (fewer when a device has no noise).
+//  - kMonteCarlo: `samples` perturbed data sets solved (uncertainty/monte_carlo.h), with the
+//    sampling error of each standard deviation; the reference the other two are checked
+//    against.
+// The solver at a perturbed data set (Resolve): the closed-form methods exactly as on the data;
+// `ml` and `strobl` refined from the calibration's own (X̂, Ẑ) with its noise model held fixed
+// (the sigmas used, given or estimated; the perturbations are small, so the start is in the
+// right basin and re-running every closed-form start would only cost time).
+// Default per method (DefaultCovarianceMethod): kLinear for ml (validated: NEES and coverage in
+// the README), kUnscented for the others (a numeric linearisation costs the same solves).
+// Limits: the noise model is Gaussian and is the one used by the calibration (given or
+// estimated sigmas); near degenerate geometry the estimators are biased and strongly nonlinear,
+// and no method here captures that fully (Monte Carlo comes closest).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hecal/estimation/calibrate.h"
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/handeye/problem.h"
+#include "hecal/estimation/covariance_method.h"
+
+namespace hecal::estimation {
+
+// Right-perturbation covariances of each station's robot pose T_base_gripper_i (as measured,
+// whatever the setup) and camera pose T_camera_target_i.
+struct StationNoise {
+  std::vector<Matrix6d> robot;
+  std::vector<Matrix6d> camera;
+  // The same sigmas at every station (PoseCovariance).
+  static StationNoise Uniform(size_t stations, const PoseSigma& robot, const PoseSigma& camera);
+};
+
+// The method of `result` solved on `problem`: closed-form methods directly; ml and strobl
+// refined from (result.X, result.Z) with result's sigmas fixed and `options`' robust loss.
+handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResult& result,
+                          const CalibrateOptions& options);
+
+// The covariance of `result` (computed by Calibrate(problem, calibrate_options)) under `noise`,
+// by options.method (nullopt: DefaultCovarianceMethod). Here kLinear is always the numeric
+// propagation through the solver, for ml too (Calibrate uses ml's analytic information instead;
+// the two agree to first order, which the tests check). kNone returns nullopt. Throws
+// std::invalid_argument when the noise does not have one matrix per station, and
+// hecal::DegenerateError when a solve fails at a sigma point (UT, linear).
+std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem& problem,
+                                          const CalibrationResult& result,
+                                          const CalibrateOptions& calibrate_options,
+                                          const StationNoise& noise,
+                                          const CovarianceOptions& options);
+
+}  // namespace hecal::estimation

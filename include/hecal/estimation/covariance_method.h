@@ -1,0 +1,48 @@
+// How a calibration's covariance is computed (calibration_covariance.h): the method, its
+// options and the result that CalibrationResult carries.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "hecal/geometry/types.h"
+#include "hecal/handeye/methods.h"
+#include "hecal/uncertainty/unscented.h"
+
+namespace hecal::estimation {
+
+// kNone: no covariance (studies that do not need one; the CLI's calibrate never uses it).
+enum class CovarianceMethod { kNone, kLinear, kUnscented, kMonteCarlo };
+// "none" | "linear" | "unscented" | "montecarlo"; nullopt otherwise.
+std::optional<CovarianceMethod> ParseCovarianceMethod(std::string_view text);
+std::string_view CovarianceMethodName(CovarianceMethod method);
+// kLinear for ml (its analytic Gauss–Newton information: free and validated), kUnscented for
+// every other method (the seed's approach; a numeric linearisation costs the same solves).
+CovarianceMethod DefaultCovarianceMethod(handeye::Method method);
+
+struct CovarianceOptions {
+  std::optional<CovarianceMethod> method;  // nullopt: DefaultCovarianceMethod
+  int samples = 5000;                      // kMonteCarlo
+  std::uint64_t seed = 1;                  // kMonteCarlo
+  int threads = 0;                         // 0: every core
+  uncertainty::UnscentedParameters unscented;
+};
+
+struct CalibrationCovariance {
+  CovarianceMethod method = CovarianceMethod::kLinear;
+  Eigen::Matrix<double, 12, 12> covariance;  // (δX, δZ), right perturbations, (ω, v) each
+  int solves = 0;                            // solver runs (0: an analytic information matrix)
+  // kMonteCarlo only.
+  int samples = 0;   // that succeeded
+  int failures = 0;  // samples whose solve threw or was not finite (left out)
+  std::string first_failure;
+  Eigen::Matrix<double, 12, 1> sd_std_error = Eigen::Matrix<double, 12, 1>::Zero();
+
+  Matrix6d X() const { return covariance.topLeftCorner<6, 6>(); }
+  Matrix6d Z() const { return covariance.bottomRightCorner<6, 6>(); }
+};
+
+}  // namespace hecal::estimation

@@ -1,0 +1,158 @@
+#include "hecal/estimation/calibration_covariance.h"
+
+#include <stdexcept>
+
+#include "hecal/core/error.h"
+#include "hecal/estimation/ml.h"
+#include "hecal/estimation/robust_loss.h"
+#include "hecal/estimation/strobl.h"
+#include "hecal/uncertainty/first_order.h"
+#include "hecal/uncertainty/monte_carlo.h"
+#include "hecal/uncertainty/unscented.h"
+
+namespace hecal::estimation {
+namespace {
+
+using Poses = std::vector<Pose>;
+using Matrix12d = Eigen::Matrix<double, 12, 12>;
+
+// The measurements as one point of SE(3)^{2n}: (G_1 … G_n, B_1 … B_n) with G_i = T_base_gripper_i
+// as the robot reported it (A_i, or A_i⁻¹ eye-to-hand: problem.h), so that the right
+// perturbations are the noise model's (pose_sigma.h). Perturbing A_i itself would put the robot
+// noise on the wrong side eye-to-hand, with a lever arm of the whole base–flange distance.
+Pose RobotMeasurement(handeye::Setup setup, const Pose& A) {
+  return setup == handeye::Setup::kEyeToHand ? A.inverse() : A;
+}
+
+Poses StackStations(const handeye::Problem& problem) {
+  Poses stations;
+  stations.reserve(2 * problem.A.size());
+  for (const Pose& A : problem.A) stations.push_back(RobotMeasurement(problem.setup, A));
+  stations.insert(stations.end(), problem.B.begin(), problem.B.end());
+  return stations;
+}
+
+handeye::Problem UnstackStations(const handeye::Problem& like, const Poses& stations) {
+  handeye::Problem problem = like;
+  const size_t n = like.A.size();
+  for (size_t i = 0; i < n; ++i) problem.A[i] = RobotMeasurement(like.setup, stations[i]);
+  problem.B.assign(stations.begin() + static_cast<std::ptrdiff_t>(n), stations.end());
+  return problem;
+}
+
+Eigen::MatrixXd InputCovariance(const StationNoise& noise) {
+  const Eigen::Index n = static_cast<Eigen::Index>(noise.robot.size());
+  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(12 * n, 12 * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    covariance.block<6, 6>(6 * i, 6 * i) = noise.robot[static_cast<size_t>(i)];
+    covariance.block<6, 6>(6 * (n + i), 6 * (n + i)) = noise.camera[static_cast<size_t>(i)];
+  }
+  return covariance;
+}
+
+}  // namespace
+
+std::optional<CovarianceMethod> ParseCovarianceMethod(std::string_view text) {
+  if (text == "none") return CovarianceMethod::kNone;
+  if (text == "linear") return CovarianceMethod::kLinear;
+  if (text == "unscented") return CovarianceMethod::kUnscented;
+  if (text == "montecarlo") return CovarianceMethod::kMonteCarlo;
+  return std::nullopt;
+}
+
+std::string_view CovarianceMethodName(CovarianceMethod method) {
+  switch (method) {
+    case CovarianceMethod::kNone:
+      return "none";
+    case CovarianceMethod::kLinear:
+      return "linear";
+    case CovarianceMethod::kUnscented:
+      return "unscented";
+    case CovarianceMethod::kMonteCarlo:
+      return "montecarlo";
+  }
+  return "none";
+}
+
+CovarianceMethod DefaultCovarianceMethod(handeye::Method method) {
+  return method == handeye::Method::kMl ? CovarianceMethod::kLinear : CovarianceMethod::kUnscented;
+}
+
+StationNoise StationNoise::Uniform(size_t stations, const PoseSigma& robot,
+                                   const PoseSigma& camera) {
+  return {std::vector<Matrix6d>(stations, PoseCovariance(robot)),
+          std::vector<Matrix6d>(stations, PoseCovariance(camera))};
+}
+
+handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResult& result,
+                          const CalibrateOptions& options) {
+  const std::vector<handeye::Solution> start = {{result.X, result.Z}};
+  switch (result.method) {
+    case handeye::Method::kMl: {
+      MlOptions ml;
+      ml.robot_sigma = result.robot_sigma;
+      ml.camera_sigma = result.camera_sigma;
+      ml.robust_loss = ParseRobustLoss(options.robust_loss).value_or(RobustLoss::kNone);
+      ml.robust_scale = options.robust_scale;
+      const MlResult refined = RefineMl(problem, start, ml);
+      return {refined.X, refined.Z};
+    }
+    case handeye::Method::kStrobl: {
+      const StroblResult refined = RefineStrobl(problem, start);
+      return {refined.X, refined.Z};
+    }
+    default:
+      return handeye::SolveClosedForm(result.method, problem);
+  }
+}
+
+std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem& problem,
+                                                         const CalibrationResult& result,
+                                                         const CalibrateOptions& calibrate_options,
+                                                         const StationNoise& noise,
+                                                         const CovarianceOptions& options) {
+  const CovarianceMethod method = options.method.value_or(DefaultCovarianceMethod(result.method));
+  if (method == CovarianceMethod::kNone) return std::nullopt;
+  if (noise.robot.size() != problem.A.size() || noise.camera.size() != problem.B.size()) {
+    throw std::invalid_argument("PropagateCovariance: one robot and one camera covariance per "
+                                "station");
+  }
+  const Poses stations = StackStations(problem);
+  const Eigen::MatrixXd input = InputCovariance(noise);
+  auto solve = [&](const Poses& perturbed) -> Poses {
+    const handeye::Solution solution =
+        Resolve(UnstackStations(problem, perturbed), result, calibrate_options);
+    return {solution.X, solution.Z};
+  };
+  CalibrationCovariance out;
+  out.method = method;
+  if (method == CovarianceMethod::kMonteCarlo) {
+    uncertainty::MonteCarloOptions mc;
+    mc.samples = options.samples;
+    mc.seed = options.seed;
+    mc.threads = options.threads;
+    const uncertainty::MonteCarloMoments<Poses> moments =
+        uncertainty::MonteCarloTransform<Poses, Poses>(solve, stations, input, mc);
+    out.covariance = moments.covariance;
+    out.solves = 1 + moments.samples + moments.failures;
+    out.samples = moments.samples;
+    out.failures = moments.failures;
+    out.first_failure = moments.first_failure;
+    out.sd_std_error = moments.sd_std_error;
+    return out;
+  }
+  uncertainty::Moments<Poses> moments;
+  if (method == CovarianceMethod::kUnscented) {
+    moments = uncertainty::UnscentedTransform<Poses, Poses>(solve, stations, input,
+                                                            options.unscented, options.threads);
+  } else {
+    uncertainty::FirstOrderOptions linear;
+    linear.threads = options.threads;
+    moments = uncertainty::FirstOrderTransform<Poses, Poses>(solve, stations, input, linear);
+  }
+  out.covariance = moments.covariance;
+  out.solves = moments.evaluations;
+  return out;
+}
+
+}  // namespace hecal::estimation
