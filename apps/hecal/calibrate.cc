@@ -52,11 +52,11 @@ void PrintPose(std::ostream& out, std::string_view name, std::string_view frame,
       << "), translation " << (T.translation() * scale).transpose() << " " << unit << "\n";
 }
 
-void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covariance, double scale,
-                std::string_view unit) {
+// 1σ per axis in degrees and millimetres, whatever the file unit (the result file has both).
+void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covariance) {
   const Vector6d sd = covariance.diagonal().cwiseSqrt();
   out << "  1σ " << name << ": rotation (" << sd.head<3>().transpose() * kDegrees
-      << ") deg, translation (" << sd.tail<3>().transpose() * scale << ") " << unit << "\n";
+      << ") deg, translation (" << sd.tail<3>().transpose() * 1000.0 << ") mm\n";
 }
 
 }  // namespace
@@ -79,8 +79,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
       out << " (" << c.solves << " solves)";
     }
     out << "\n";
-    PrintSigma(out, "X", c.X(), scale, unit);
-    PrintSigma(out, "Z", c.Z(), scale, unit);
+    PrintSigma(out, "X", c.X());
+    PrintSigma(out, "Z", c.Z());
   }
   out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegrees << " deg, "
       << result.translation_rms * scale << " " << unit << "\n";
@@ -182,7 +182,8 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
                      "use e.g. 5000");
   }
-  if (flags.threads < 0) throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+  if (flags.threads < 0)
+    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
   options.covariance.samples = flags.covariance_samples;
   options.covariance.seed = flags.seed;
   options.covariance.threads = flags.threads;
@@ -314,8 +315,9 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command->add_option("--covariance", flags->covariance,
                       "Covariance of X and Z: linear | unscented | montecarlo (default: linear "
                       "for ml, unscented for the other methods)");
-  command->add_option("--covariance-samples", flags->covariance_samples,
-                      "Monte Carlo samples for --covariance montecarlo")
+  command
+      ->add_option("--covariance-samples", flags->covariance_samples,
+                   "Monte Carlo samples for --covariance montecarlo")
       ->capture_default_str();
   command->add_option("--seed", flags->seed, "Random seed for --covariance montecarlo")
       ->capture_default_str();

@@ -143,7 +143,11 @@ TEST_F(CalibrateCommand, AllMethodsSideBySide) {
     EXPECT_TRUE(
         PoseOf(result["X"]).translation().isApprox(Eigen::Vector3d(0.659, -0.249, 0.830), 0.01))
         << info.name;
-    EXPECT_EQ(result.contains("covariance"), info.method == handeye::Method::kMl) << info.name;
+    // Every method carries a covariance: ml's linear one, the UT through the others.
+    ASSERT_TRUE(result.contains("covariance")) << info.name;
+    EXPECT_EQ(result["covariance"]["method"],
+              info.method == handeye::Method::kMl ? "linear" : "unscented")
+        << info.name;
   }
   const cli_test::Outcome yaml =
       Hecal({"calibrate", "--robot", Path("robot.csv"), "--camera", Path("camera.csv"), "--setup",
