@@ -82,8 +82,9 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 //      result's rejected stations.
 // Errors (InputError, exit 2, nothing written): those of image_set.h, of the robot file, the
 // pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera,
-// --covariance unscented|montecarlo (the image result's covariance is the linear one of the
-// reprojection problem, which includes the pixel noise).
+// --covariance unscented (its input would be every pixel's noise). The covariance is the linear
+// one of the reprojection problem (pixel and robot noise), or --covariance montecarlo's
+// (estimation/image_monte_carlo.h).
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
 

@@ -133,14 +133,12 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
                      "run hecal detect to write camera.csv, then hecal calibrate --camera "
                      "camera.csv --method all; or give one method");
   }
-  if (settings.options.covariance.method &&
-      *settings.options.covariance.method != estimation::CovarianceMethod::kLinear) {
+  if (settings.options.covariance.method == estimation::CovarianceMethod::kUnscented) {
     throw InputError("--covariance", 0,
-                     "--covariance " + flags.covariance +
-                         " is not available with --images (the covariance from images is the "
-                         "linear one of the reprojection problem, with the pixel noise)",
-                     "leave --covariance out, or run hecal detect to write camera.csv and "
-                     "calibrate --camera camera.csv --covariance " + flags.covariance);
+                     "--covariance unscented is not available with --images (its input is the "
+                     "noise of every detected pixel: thousands of sigma points)",
+                     "use linear (the default) or montecarlo; or run hecal detect and "
+                     "calibrate --camera camera.csv --covariance unscented on the poses");
   }
   if (flags.camera_inverse) {
     throw InputError("--camera-inverse", 0, "applies to --camera files only",

@@ -285,6 +285,9 @@ TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
   std::vector<std::string> all = args;
   all.insert(all.end(), {"--method", "all"});
   refuses(all, "--method all is not available with --images");
+  std::vector<std::string> unscented = args;
+  unscented.insert(unscented.end(), {"--covariance", "unscented"});
+  refuses(unscented, "--covariance unscented is not available with --images");
   std::vector<std::string> both = args;
   both.insert(both.end(), {"--camera", Write("camera.csv", "x,y,z,qw,qx,qy,qz\n")});
   refuses(both, "--camera and --images were both given");

@@ -195,6 +195,57 @@ TEST_F(CalibrateCommand, SyntheticDataInMillimetresWithGivenNoise) {
   EXPECT_LT((X.translation() - data.X.translation()).norm(), 4.0 * translation_sd);
 }
 
+// --covariance: the UT and a seeded Monte Carlo through park-martin on the same synthetic data;
+// the UT's σ per axis is within 10% (+ 3 standard errors) of the Monte Carlo's, the file says
+// how it was computed, and the same seed writes the same file.
+TEST_F(CalibrateCommand, CovarianceMethodsAgreeAndMonteCarloIsSeeded) {
+  std::mt19937_64 rng(6);
+  sim::ProtocolOptions options;
+  options.setup = handeye::Setup::kEyeToHand;
+  options.stations = 12;
+  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.5 * kDegree, 1e-3};
+  const sim::SimulatedData data = sim::SimulateThesisProtocol(options, noise, noise, rng);
+  Write("robot.csv", PoseCsv(data.T_base_gripper, 1e3, "_mm"));
+  Write("camera.csv", PoseCsv(data.T_camera_target, 1e3, "_mm"));
+  const std::vector<std::string> base = {
+      "calibrate",     "--robot",        Path("robot.csv"), "--camera",
+      Path("camera.csv"), "--setup",     "eye-to-hand",     "--method",
+      "park-martin",   "--robot-sigma",  "1,0.5",           "--camera-sigma",
+      "1,0.5"};
+  auto run = [&](std::vector<std::string> extra, const std::string& file) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.insert(args.end(), {"--output", Path(file)});
+    const cli_test::Outcome outcome = Hecal(args);
+    EXPECT_EQ(outcome.code, 0) << outcome.err;
+    return json::parse(Read(file));
+  };
+  const json ut = run({}, "ut.json");  // park-martin's default
+  EXPECT_EQ(ut["covariance"]["method"], "unscented");
+  EXPECT_EQ(ut["covariance"]["solves"], 1 + 24 * 12);
+  const json mc = run({"--covariance", "montecarlo", "--covariance-samples", "1000", "--seed", "4"},
+                      "mc.json");
+  EXPECT_EQ(mc["covariance"]["method"], "montecarlo");
+  EXPECT_EQ(mc["covariance"]["samples"], 1000);
+  EXPECT_EQ(mc["covariance"]["failed_samples"], 0);
+  for (const char* block : {"X", "Z"}) {
+    for (const char* part : {"rotation_deg", "translation"}) {
+      for (int k = 0; k < 3; ++k) {
+        const double a = ut["covariance"]["sigma"][block][part][k].get<double>();
+        const double b = mc["covariance"]["sigma"][block][part][k].get<double>();
+        const double se = mc["covariance"]["sigma_std_error"][block][part][k].get<double>();
+        EXPECT_NEAR(a, b, 0.1 * b + 3.0 * se) << block << " " << part << " " << k;
+      }
+    }
+  }
+  const json again = run({"--covariance", "montecarlo", "--covariance-samples", "1000", "--seed",
+                          "4", "--threads", "1"},
+                         "again.json");
+  EXPECT_EQ(again["covariance"], mc["covariance"]);  // same seed, any thread count
+  const json linear = run({"--covariance", "linear"}, "linear.json");
+  EXPECT_EQ(linear["covariance"]["method"], "linear");
+}
+
 TEST_F(CalibrateCommand, BadFlagsAreRefused) {
   ImportMoveIt();
   const std::vector<std::string> base = {"calibrate",  "--robot",          Path("robot.csv"),
@@ -210,6 +261,10 @@ TEST_F(CalibrateCommand, BadFlagsAreRefused) {
   ExpectRefused(with({"--camera-sigma", "1,-2"}), "--camera-sigma");
   ExpectRefused(with({"--units", "inch"}), "unknown unit");
   ExpectRefused(with({"--robust", "tukey"}), "unknown loss");
+  ExpectRefused(with({"--covariance", "bootstrap"}), "unknown covariance method 'bootstrap'");
+  ExpectRefused(with({"--covariance", "none"}), "unknown covariance method 'none'");
+  ExpectRefused(with({"--covariance", "montecarlo", "--covariance-samples", "1"}),
+                "--covariance-samples");
   // Flags of the --images form are not silently ignored with --camera.
   ExpectRefused(with({"--target", "target.yaml"}), "--target applies to --images only");
   ExpectRefused(with({"--refine-intrinsics"}), "--refine-intrinsics applies to --images only");

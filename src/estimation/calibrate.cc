@@ -165,12 +165,10 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
         problem, result, options,
         StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma), options.covariance);
   }
-  if (result.covariance && result.covariance->failures > 0) {
-    result.warnings.push_back(
-        std::to_string(result.covariance->failures) + " of " +
-        std::to_string(result.covariance->failures + result.covariance->samples) +
-        " Monte Carlo samples failed to solve and are left out of the covariance (first: " +
-        result.covariance->first_failure + ")");
+  if (result.covariance) {
+    if (std::string warning = FailedSamplesWarning(*result.covariance); !warning.empty()) {
+      result.warnings.push_back(std::move(warning));
+    }
   }
   // Now that the robot noise is known (given or estimated): is every direction of X's
   // translation observed by more than noise? (observability.h)

@@ -78,6 +78,26 @@ CovarianceMethod DefaultCovarianceMethod(handeye::Method method) {
   return method == handeye::Method::kMl ? CovarianceMethod::kLinear : CovarianceMethod::kUnscented;
 }
 
+CalibrationCovariance FromMonteCarlo(const uncertainty::MonteCarloMoments<Poses>& mc) {
+  CalibrationCovariance out;
+  out.method = CovarianceMethod::kMonteCarlo;
+  out.covariance = mc.covariance;
+  out.solves = mc.samples + mc.failures;
+  out.samples = mc.samples;
+  out.failures = mc.failures;
+  out.first_failure = mc.first_failure;
+  out.sd_std_error = mc.sd_std_error;
+  return out;
+}
+
+std::string FailedSamplesWarning(const CalibrationCovariance& covariance) {
+  if (covariance.failures == 0) return {};
+  return std::to_string(covariance.failures) + " of " +
+         std::to_string(covariance.failures + covariance.samples) +
+         " Monte Carlo samples failed to solve and are left out of the covariance (first: " +
+         covariance.first_failure + ")";
+}
+
 StationNoise StationNoise::Uniform(size_t stations, const PoseSigma& robot,
                                    const PoseSigma& camera) {
   return {std::vector<Matrix6d>(stations, PoseCovariance(robot)),
@@ -131,14 +151,8 @@ std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem&
     mc.samples = options.samples;
     mc.seed = options.seed;
     mc.threads = options.threads;
-    const uncertainty::MonteCarloMoments<Poses> moments =
-        uncertainty::MonteCarloTransform<Poses, Poses>(solve, stations, input, mc);
-    out.covariance = moments.covariance;
-    out.solves = 1 + moments.samples + moments.failures;
-    out.samples = moments.samples;
-    out.failures = moments.failures;
-    out.first_failure = moments.first_failure;
-    out.sd_std_error = moments.sd_std_error;
+    out = FromMonteCarlo(uncertainty::MonteCarloTransform<Poses, Poses>(solve, stations, input, mc));
+    ++out.solves;  // the reference solve at the data
     return out;
   }
   uncertainty::Moments<Poses> moments;

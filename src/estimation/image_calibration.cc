@@ -6,6 +6,8 @@
 #include <numbers>
 #include <string>
 
+#include "hecal/estimation/image_monte_carlo.h"
+
 namespace hecal::estimation {
 namespace {
 
@@ -75,9 +77,17 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   result = out.pose_level;
   result.X = out.reprojection.X;
   result.Z = out.reprojection.Z;
-  CalibrationCovariance covariance;  // the reprojection problem's Gauss–Newton information
-  covariance.covariance = out.reprojection.covariance;
-  result.covariance = covariance;
+  if (options.calibrate.covariance.method == CovarianceMethod::kMonteCarlo) {
+    result.covariance = ImageMonteCarloCovariance(robot, points, out.reprojection, reprojection,
+                                                  options.calibrate.covariance);
+    if (std::string warning = FailedSamplesWarning(*result.covariance); !warning.empty()) {
+      result.warnings.push_back(std::move(warning));
+    }
+  } else {
+    CalibrationCovariance covariance;  // the reprojection problem's Gauss–Newton information
+    covariance.covariance = out.reprojection.covariance;
+    result.covariance = covariance;
+  }
   if (out.reprojection.robot_sigma_estimated) {
     result.robot_sigma = out.reprojection.robot_sigma;
     // The pose-level estimate of the robot noise is replaced by the joint one.

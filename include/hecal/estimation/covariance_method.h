@@ -7,9 +7,11 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hecal/geometry/types.h"
 #include "hecal/handeye/methods.h"
+#include "hecal/uncertainty/monte_carlo.h"
 #include "hecal/uncertainty/unscented.h"
 
 namespace hecal::estimation {
@@ -44,5 +46,11 @@ struct CalibrationCovariance {
   Matrix6d X() const { return covariance.topLeftCorner<6, 6>(); }
   Matrix6d Z() const { return covariance.bottomRightCorner<6, 6>(); }
 };
+
+// A Monte Carlo run over (X, Z) as a CalibrationCovariance.
+CalibrationCovariance FromMonteCarlo(const uncertainty::MonteCarloMoments<std::vector<Pose>>& mc);
+
+// The warning for failed Monte Carlo samples ("" when none failed).
+std::string FailedSamplesWarning(const CalibrationCovariance& covariance);
 
 }  // namespace hecal::estimation

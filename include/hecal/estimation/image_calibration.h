@@ -19,7 +19,10 @@
 //      pixels.
 //   3. The result: step 1's result with X, Z, their covariance and the robot sigma replaced by
 //      step 2's, and the pose-level residuals, whitened residuals and outlier flags of every
-//      station recomputed at step 2's X, Z with step 1's sigmas. Step 2 flags the images whose
+//      station recomputed at step 2's X, Z with step 1's sigmas. The covariance is step 2's
+//      linear one (its Gauss–Newton information), or with options.calibrate.covariance.method
+//      = kMonteCarlo a Monte Carlo over the pixels and robot poses (image_monte_carlo.h); other
+//      covariance methods are treated as linear. Step 2 flags the images whose
 //      reprojection RMS exceeds 3 σ̂_px; a warning lists them.
 #pragma once
 

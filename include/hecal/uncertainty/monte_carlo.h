@@ -56,21 +56,17 @@ Eigen::VectorXd StandardNormalSample(std::uint64_t seed, int k, int n);
 void SampleStatistics(const Eigen::MatrixXd& deviations, Eigen::MatrixXd* covariance,
                       Eigen::VectorXd* mean_std_error, Eigen::VectorXd* sd_std_error);
 
-// Throws std::invalid_argument for samples < 2 or a covariance of the wrong size, and
-// std::runtime_error when fewer than 2 samples succeed or f(x̄) itself fails.
-template <class In, class Out, class F>
-MonteCarloMoments<Out> MonteCarloTransform(const F& f, const In& mean,
-                                           const Eigen::MatrixXd& covariance,
-                                           const MonteCarloOptions& options = {}) {
-  using MIn = Manifold<In>;
+// The statistics above over y_k = sample(k), k = 0 … samples − 1, for callers that draw their
+// own inputs (e.g. a diagonal noise model too large for a dense covariance): sample(k) should
+// use StandardNormalSample(options.seed, k, n) so that the result does not depend on the number
+// of threads. `reference` (the unperturbed output) starts the mean and screens non-finite
+// results. Throws std::invalid_argument for samples < 2, std::runtime_error when fewer than 2
+// samples succeed.
+template <class Out, class Sample>
+MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& reference,
+                                         const MonteCarloOptions& options) {
   using MOut = Manifold<Out>;
-  const int n = MIn::Dim(mean);
   if (options.samples < 2) throw std::invalid_argument("Monte Carlo: needs at least 2 samples");
-  if (covariance.rows() != n || covariance.cols() != n) {
-    throw std::invalid_argument("Monte Carlo: the covariance is not dim × dim");
-  }
-  const Eigen::MatrixXd S = CovarianceSquareRoot(covariance, options.square_root);
-  const Out reference = f(mean);
   const size_t count = static_cast<size_t>(options.samples);
   std::vector<Out> y(count, reference);
   std::vector<char> ok(count, 0);
@@ -78,7 +74,7 @@ MonteCarloMoments<Out> MonteCarloTransform(const F& f, const In& mean,
   ParallelFor(options.samples, options.threads, [&](int k) {
     const size_t i = static_cast<size_t>(k);
     try {
-      y[i] = f(MIn::Plus(mean, S * StandardNormalSample(options.seed, k, n)));
+      y[i] = sample(k);
       if (MOut::Minus(y[i], reference).allFinite()) {
         ok[i] = 1;
       } else {
@@ -112,6 +108,23 @@ MonteCarloMoments<Out> MonteCarloTransform(const F& f, const In& mean,
   SampleStatistics(deviations, &moments.covariance, &moments.mean_std_error,
                    &moments.sd_std_error);
   return moments;
+}
+
+// Throws std::invalid_argument for samples < 2 or a covariance of the wrong size, and
+// std::runtime_error when fewer than 2 samples succeed or f(x̄) itself fails.
+template <class In, class Out, class F>
+MonteCarloMoments<Out> MonteCarloTransform(const F& f, const In& mean,
+                                           const Eigen::MatrixXd& covariance,
+                                           const MonteCarloOptions& options = {}) {
+  using MIn = Manifold<In>;
+  const int n = MIn::Dim(mean);
+  if (covariance.rows() != n || covariance.cols() != n) {
+    throw std::invalid_argument("Monte Carlo: the covariance is not dim × dim");
+  }
+  const Eigen::MatrixXd S = CovarianceSquareRoot(covariance, options.square_root);
+  return MonteCarloSamples<Out>(
+      [&](int k) { return f(MIn::Plus(mean, S * StandardNormalSample(options.seed, k, n))); },
+      f(mean), options);
 }
 
 }  // namespace hecal::uncertainty
