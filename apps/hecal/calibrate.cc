@@ -98,7 +98,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 
 namespace {
 
-// `--method all`: one line per method, side by side, with the difference from ml.
+// `--method all`: one line per method, side by side, with the difference from ml and the
+// predicted RMS error of X (sqrt of the trace of its rotation and translation covariance).
 void PrintComparison(std::ostream& out, const report::ResultDocument& document) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   const std::string_view unit = io::UnitName(document.unit);
@@ -110,7 +111,8 @@ void PrintComparison(std::ostream& out, const report::ResultDocument& document) 
       << std::setw(12) << "tz" << std::setw(12) << "res_deg" << std::setw(9) << length;
   if (ml != document.results.end())
     out << std::setw(12) << "vs_ml_deg" << std::setw(10) << "vs_ml_" + std::string(unit);
-  out << "\n";
+  out << std::setw(11) << "1σ_deg" << std::setw(10) << "1σ_mm"
+      << "  covariance\n";
   out << std::fixed;
   for (const estimation::CalibrationResult& r : document.results) {
     const Eigen::Vector3d t = r.X.translation() * scale;
@@ -122,6 +124,12 @@ void PrintComparison(std::ostream& out, const report::ResultDocument& document) 
       const Pose d = ml->X.inverse() * r.X;
       out << std::setw(12) << AxisAngleFromMatrix(d.linear()).angle * kDegrees << std::setw(10)
           << (r.X.translation() - ml->X.translation()).norm() * scale;
+    }
+    if (r.covariance) {  // predicted RMS error of X: sqrt(trace) of each block
+      const Matrix6d C = r.covariance->X();
+      out << std::setw(10) << std::sqrt(C.topLeftCorner<3, 3>().trace()) * kDegrees << std::setw(9)
+          << std::sqrt(C.bottomRightCorner<3, 3>().trace()) * 1000.0 << "  "
+          << estimation::CovarianceMethodName(r.covariance->method);
     }
     out << "\n";
   }

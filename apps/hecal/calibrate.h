@@ -43,9 +43,9 @@ struct CalibrateFlags {
   bool robot_inverse = false;
   bool camera_inverse = false;
   std::string robust = "none";
-  std::string covariance;          // --covariance (empty: the method's default)
-  int covariance_samples = 5000;   // --covariance-samples (montecarlo)
-  std::uint64_t seed = 1;          // --seed (montecarlo)
+  std::string covariance;         // --covariance (empty: the method's default)
+  int covariance_samples = 5000;  // --covariance-samples (montecarlo)
+  std::uint64_t seed = 1;         // --seed (montecarlo)
 };
 
 // The flags every form shares, checked.

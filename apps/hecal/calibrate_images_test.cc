@@ -192,9 +192,10 @@ TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
 // the pose-level ml it starts from. Four sets of 8 views (those of rendered_views::Views turned by
 // 0, 15, 30 and 45° in azimuth), exact robot poses, both setups: summed squared X errors over the
 // sets. Measured: eye-in-hand pose-level 0.0040° / 0.018 mm RMS, reprojection 0.0020° / 0.016 mm;
-// eye-to-hand 0.0041° / 0.019 mm and 0.0020° / 0.016 mm. (With robot noise of 0.005° / 0.02 mm added, which then dominates, the two
-// are within 10% of each other on one set (40 draws), the reprojection ahead in rotation and 8% behind
-// in eye-to-hand translation — README, "Calibrating from images".)
+// eye-to-hand 0.0041° / 0.019 mm and 0.0020° / 0.016 mm. (With robot noise of 0.005° / 0.02 mm
+// added, which then dominates, the two are within 10% of each other on one set (40 draws), the
+// reprojection ahead in rotation and 8% behind in eye-to-hand translation — README, "Calibrating
+// from images".)
 TEST_F(CalibrateImagesTest, ReprojectionIsAtLeastAsAccurateAsPoseLevelOnRenderedSets) {
   constexpr int kSets = 4;
   std::vector<std::vector<Pose>> sets;

@@ -207,11 +207,19 @@ TEST_F(CalibrateCommand, CovarianceMethodsAgreeAndMonteCarloIsSeeded) {
   const sim::SimulatedData data = sim::SimulateThesisProtocol(options, noise, noise, rng);
   Write("robot.csv", PoseCsv(data.T_base_gripper, 1e3, "_mm"));
   Write("camera.csv", PoseCsv(data.T_camera_target, 1e3, "_mm"));
-  const std::vector<std::string> base = {
-      "calibrate",     "--robot",        Path("robot.csv"), "--camera",
-      Path("camera.csv"), "--setup",     "eye-to-hand",     "--method",
-      "park-martin",   "--robot-sigma",  "1,0.5",           "--camera-sigma",
-      "1,0.5"};
+  const std::vector<std::string> base = {"calibrate",
+                                         "--robot",
+                                         Path("robot.csv"),
+                                         "--camera",
+                                         Path("camera.csv"),
+                                         "--setup",
+                                         "eye-to-hand",
+                                         "--method",
+                                         "park-martin",
+                                         "--robot-sigma",
+                                         "1,0.5",
+                                         "--camera-sigma",
+                                         "1,0.5"};
   auto run = [&](std::vector<std::string> extra, const std::string& file) {
     std::vector<std::string> args = base;
     args.insert(args.end(), extra.begin(), extra.end());
@@ -223,8 +231,8 @@ TEST_F(CalibrateCommand, CovarianceMethodsAgreeAndMonteCarloIsSeeded) {
   const json ut = run({}, "ut.json");  // park-martin's default
   EXPECT_EQ(ut["covariance"]["method"], "unscented");
   EXPECT_EQ(ut["covariance"]["solves"], 1 + 24 * 12);
-  const json mc = run({"--covariance", "montecarlo", "--covariance-samples", "1000", "--seed", "4"},
-                      "mc.json");
+  const json mc =
+      run({"--covariance", "montecarlo", "--covariance-samples", "1000", "--seed", "4"}, "mc.json");
   EXPECT_EQ(mc["covariance"]["method"], "montecarlo");
   EXPECT_EQ(mc["covariance"]["samples"], 1000);
   EXPECT_EQ(mc["covariance"]["failed_samples"], 0);

@@ -162,8 +162,8 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
     result.covariance = covariance;
   } else {
     result.covariance = PropagateCovariance(
-        problem, result, options,
-        StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma), options.covariance);
+        problem, result, options, StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma),
+        options.covariance);
   }
   if (result.covariance) {
     if (std::string warning = FailedSamplesWarning(*result.covariance); !warning.empty()) {

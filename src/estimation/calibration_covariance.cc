@@ -134,8 +134,9 @@ std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem&
   const CovarianceMethod method = options.method.value_or(DefaultCovarianceMethod(result.method));
   if (method == CovarianceMethod::kNone) return std::nullopt;
   if (noise.robot.size() != problem.A.size() || noise.camera.size() != problem.B.size()) {
-    throw std::invalid_argument("PropagateCovariance: one robot and one camera covariance per "
-                                "station");
+    throw std::invalid_argument(
+        "PropagateCovariance: one robot and one camera covariance per "
+        "station");
   }
   const Poses stations = StackStations(problem);
   const Eigen::MatrixXd input = InputCovariance(noise);
@@ -151,7 +152,8 @@ std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem&
     mc.samples = options.samples;
     mc.seed = options.seed;
     mc.threads = options.threads;
-    out = FromMonteCarlo(uncertainty::MonteCarloTransform<Poses, Poses>(solve, stations, input, mc));
+    out =
+        FromMonteCarlo(uncertainty::MonteCarloTransform<Poses, Poses>(solve, stations, input, mc));
     ++out.solves;  // the reference solve at the data
     return out;
   }

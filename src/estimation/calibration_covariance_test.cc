@@ -61,8 +61,8 @@ TEST(PropagateCovariance, NumericLinearThroughMlEqualsTheInformationMatrix) {
     EXPECT_EQ(numeric.solves, 1 + 24 * 15);
     const Eigen::Matrix<double, 12, 1> expected = analytic.covariance.diagonal().cwiseSqrt();
     for (int j = 0; j < 12; ++j) {
-      EXPECT_NEAR(Sd(numeric)(j), expected(j), 0.05 * expected(j)) << handeye::SetupName(setup)
-                                                                     << " axis " << j;
+      EXPECT_NEAR(Sd(numeric)(j), expected(j), 0.05 * expected(j))
+          << handeye::SetupName(setup) << " axis " << j;
     }
   }
 }
@@ -109,8 +109,8 @@ TEST(PropagateCovariance, NoneAndBadNoise) {
 // Calibrate attaches the default covariance: ml's analytic information (no solves), the UT for
 // other methods; --covariance overrides it, and every method accepts every kind.
 TEST(Calibrate, AttachesTheDefaultOrRequestedCovariance) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 10, 9,
-                                                      kSigma.rotation, kSigma.translation);
+  const sim::SimulatedData data =
+      testing::ThesisCase(handeye::Setup::kEyeInHand, 10, 9, kSigma.rotation, kSigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
   CalibrateOptions options;
   const CalibrationResult ml = Calibrate(problem, options);

@@ -42,7 +42,8 @@ CalibrationCovariance ImageMonteCarloCovariance(const std::vector<Pose>& T_base_
         at += 2;
       }
     }
-    const ReprojectionResult refined = RefineReprojection(robot, noisy, estimate.X, estimate.Z, fixed);
+    const ReprojectionResult refined =
+        RefineReprojection(robot, noisy, estimate.X, estimate.Z, fixed);
     return {refined.X, refined.Z};
   };
   return FromMonteCarlo(uncertainty::MonteCarloSamples<std::vector<Pose>>(

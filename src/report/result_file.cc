@@ -59,16 +59,15 @@ json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double sc
   Eigen::Matrix<double, 12, 1> s;
   s << 1.0, 1.0, 1.0, scale, scale, scale, 1.0, 1.0, 1.0, scale, scale, scale;
   const Eigen::Matrix<double, 12, 12> scaled = s.asDiagonal() * c.covariance * s.asDiagonal();
-  json section = {
-      {"X", CovarianceJson(c.X(), scale)},
-      {"Z", CovarianceJson(c.Z(), scale)},
-      {"XZ", MatrixJson(Matrix6d(scaled.topRightCorner<6, 6>()))},
-      {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"},
-      {"method", estimation::CovarianceMethodName(c.method)},
-      {"solves", c.solves},
-      {"sigma",
-       {{"X", SigmaJson(c.X().diagonal().cwiseSqrt(), scale)},
-        {"Z", SigmaJson(c.Z().diagonal().cwiseSqrt(), scale)}}}};
+  json section = {{"X", CovarianceJson(c.X(), scale)},
+                  {"Z", CovarianceJson(c.Z(), scale)},
+                  {"XZ", MatrixJson(Matrix6d(scaled.topRightCorner<6, 6>()))},
+                  {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"},
+                  {"method", estimation::CovarianceMethodName(c.method)},
+                  {"solves", c.solves},
+                  {"sigma",
+                   {{"X", SigmaJson(c.X().diagonal().cwiseSqrt(), scale)},
+                    {"Z", SigmaJson(c.Z().diagonal().cwiseSqrt(), scale)}}}};
   if (c.method == estimation::CovarianceMethod::kMonteCarlo) {
     section["samples"] = c.samples;
     section["failed_samples"] = c.failures;

@@ -1,14 +1,13 @@
 #include "hecal/report/result_file.h"
 
 #include <gtest/gtest.h>
-
-#include <numbers>
 #include <yaml-cpp/yaml.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "hecal/geometry/se3.h"
 

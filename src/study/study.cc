@@ -246,8 +246,9 @@ StudyResult RunStudy(const StudyOptions& options) {
     result.bounds[job.setting][job.trial] = BoundAtTruth(data, setting);
   };
 
-  uncertainty::ParallelFor(jobs, options.threads,
-                           [&](int j) { run_job({j / trials, j % trials}); });
+  uncertainty::ParallelFor(jobs, options.threads, [&](int j) {
+    run_job({j / trials, j % trials});
+  });
 
   // Outliers and summaries per (setting, method), in a fixed order.
   for (int s = 0; s < settings; ++s) {
@@ -311,7 +312,8 @@ StudyResult RunStudy(const StudyOptions& options) {
                            result.setting_bounds[s].rotation > 0.0;
       summary.worst_rotation_over_bound = bounded ? worst_rotation : kNaN;
       summary.worst_translation_over_bound = bounded ? worst_translation : kNaN;
-      if (!errors.empty()) summary.consistency = uncertainty::AssessConsistency(errors, covariances);
+      if (!errors.empty())
+        summary.consistency = uncertainty::AssessConsistency(errors, covariances);
       result.summaries.push_back(summary);
     }
   }

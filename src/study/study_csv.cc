@@ -88,7 +88,8 @@ std::string SummaryCsv(const StudyResult& result) {
       out << ',' << FormatNumber(c.mean_nees) << ',' << FormatNumber(c.band.low) << ','
           << FormatNumber(c.band.high) << ',' << FormatNumber(c.coverage_1sigma) << ','
           << FormatNumber(c.coverage_2sigma);
-      for (Eigen::Index j = 0; j < c.sd_ratio.size(); ++j) out << ',' << FormatNumber(c.sd_ratio(j));
+      for (Eigen::Index j = 0; j < c.sd_ratio.size(); ++j)
+        out << ',' << FormatNumber(c.sd_ratio(j));
     } else {
       out << ",nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan";
     }

@@ -27,7 +27,9 @@ double ChiSquareQuantile(double p, double dof) {
   return 0.5 * (low + high);
 }
 
-double SigmaProbability(double k) { return std::erf(k / std::sqrt(2.0)); }
+double SigmaProbability(double k) {
+  return std::erf(k / std::sqrt(2.0));
+}
 
 double Nees(const Eigen::VectorXd& error, const Eigen::MatrixXd& covariance) {
   const Eigen::LLT<Eigen::MatrixXd> llt(covariance);

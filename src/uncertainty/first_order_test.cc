@@ -15,7 +15,8 @@ using Eigen::VectorXd;
 // y = (x0 x1, sin x2 + x0², exp(x1) x2): analytic Jacobian below.
 struct Map {
   template <class T>
-  Eigen::Matrix<T, Eigen::Dynamic, 1> operator()(const Eigen::Matrix<T, Eigen::Dynamic, 1>& x) const {
+  Eigen::Matrix<T, Eigen::Dynamic, 1> operator()(
+      const Eigen::Matrix<T, Eigen::Dynamic, 1>& x) const {
     using std::exp;
     using std::sin;
     Eigen::Matrix<T, Eigen::Dynamic, 1> y(3);
@@ -28,8 +29,7 @@ struct Map {
 
 MatrixXd AnalyticJacobian(const VectorXd& x) {
   MatrixXd J(3, 3);
-  J << x(1), x(0), 0.0, 2.0 * x(0), 0.0, std::cos(x(2)), 0.0, std::exp(x(1)) * x(2),
-      std::exp(x(1));
+  J << x(1), x(0), 0.0, 2.0 * x(0), 0.0, std::cos(x(2)), 0.0, std::exp(x(1)) * x(2), std::exp(x(1));
   return J;
 }
 
@@ -74,7 +74,8 @@ TEST(FirstOrderTransform, ExactForLinearMapsAndSkipsNoiseFreeDirections) {
   auto f = [&](const VectorXd& v) -> VectorXd { return A * v; };
   FirstOrderOptions options;
   options.threads = 2;
-  const Moments<VectorXd> y = FirstOrderTransform<VectorXd, VectorXd>(f, VectorXd::Ones(3), C, options);
+  const Moments<VectorXd> y =
+      FirstOrderTransform<VectorXd, VectorXd>(f, VectorXd::Ones(3), C, options);
   EXPECT_LT((y.covariance - A * C * A.transpose()).cwiseAbs().maxCoeff(), 1e-10);
   EXPECT_EQ(y.evaluations, 5);
 }

@@ -35,14 +35,12 @@ TEST(MonteCarloTransform, LinearMapWithinItsOwnSamplingError) {
   EXPECT_EQ(y.failures, 0);
   for (int j = 0; j < 2; ++j) {
     EXPECT_NEAR(y.mean(j), (A * mean)(j), 4.0 * y.mean_std_error(j)) << j;
-    EXPECT_NEAR(std::sqrt(y.covariance(j, j)), std::sqrt(expected(j, j)),
-                4.0 * y.sd_std_error(j))
+    EXPECT_NEAR(std::sqrt(y.covariance(j, j)), std::sqrt(expected(j, j)), 4.0 * y.sd_std_error(j))
         << j;
     // The reported errors are the textbook ones for Gaussian output: σ/√N and σ/√(2N).
     EXPECT_NEAR(y.mean_std_error(j), std::sqrt(expected(j, j) / 20000.0),
                 0.05 * y.mean_std_error(j));
-    EXPECT_NEAR(y.sd_std_error(j), std::sqrt(expected(j, j) / 40000.0),
-                0.1 * y.sd_std_error(j));
+    EXPECT_NEAR(y.sd_std_error(j), std::sqrt(expected(j, j) / 40000.0), 0.1 * y.sd_std_error(j));
   }
 }
 

@@ -10,8 +10,7 @@
 namespace hecal::uncertainty {
 
 int ThreadCount(int count, int threads) {
-  const int wanted =
-      threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
+  const int wanted = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   return std::clamp(wanted, 1, std::max(count, 1));
 }
 

@@ -29,8 +29,7 @@ Eigen::MatrixXd CovarianceSquareRoot(const Eigen::MatrixXd& covariance, SquareRo
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(symmetric);
   const Eigen::VectorXd& values = eigen.eigenvalues();
   if (values.minCoeff() < -1e-12 * values.maxCoeff()) {
-    throw std::invalid_argument(
-        "covariance square root: the matrix is not positive semidefinite");
+    throw std::invalid_argument("covariance square root: the matrix is not positive semidefinite");
   }
   const Eigen::VectorXd root = values.cwiseMax(0.0).cwiseSqrt();
   return eigen.eigenvectors() * root.asDiagonal() * eigen.eigenvectors().transpose();

@@ -210,7 +210,7 @@ TEST(UnscentedTransform, PoseCompositionOnTheManifoldMatchesMonteCarlo) {
                 Eigen::Vector3d(0.4, 0.3, -0.2))},
       {Pose::Identity(), testing::RandomPose(rng)}};
   MatrixXd C = MatrixXd::Zero(12, 12);
-  C.topLeftCorner<3, 3>() = 0.05 * 0.05 * Eigen::Matrix3d::Identity();   // rad²
+  C.topLeftCorner<3, 3>() = 0.05 * 0.05 * Eigen::Matrix3d::Identity();  // rad²
   C.block<3, 3>(3, 3) = 0.02 * 0.02 * Eigen::Matrix3d::Identity();      // m²
   C.block<3, 3>(6, 6) = 0.08 * 0.08 * Eigen::Matrix3d::Identity();
   C.block<3, 3>(9, 9) = 0.01 * 0.01 * Eigen::Matrix3d::Identity();

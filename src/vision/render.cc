@@ -395,8 +395,8 @@ cv::Mat RenderTarget(const pose::TargetSpec& target, const pose::CameraModel& ca
           row[i] = static_cast<float>(corner_grey[k00]);
           continue;
         }
-        const std::uint64_t pixel_key =
-            SplitMix64(static_cast<std::uint64_t>(j) * 0x100000001b3ULL + static_cast<std::uint64_t>(i));
+        const std::uint64_t pixel_key = SplitMix64(
+            static_cast<std::uint64_t>(j) * 0x100000001b3ULL + static_cast<std::uint64_t>(i));
         double sum = 0.0;
         for (int b = 0; b < s; ++b) {
           for (int a = 0; a < s; ++a) {

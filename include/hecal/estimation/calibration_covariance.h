@@ -5,8 +5,9 @@
 // G_i = T_base_gripper_i and B_i = T_camera_target_i as the devices report them (eye-to-hand,
 // A_i = G_i⁻¹: problem.h). The input noise is G_i = Ĝ_i · Exp(δG_i), B_i = B̂_i · Exp(δB_i)
 // (right perturbations, DESIGN.md §2, pose_sigma.h) with δG_i ~ N(0, ΣG_i), δB_i ~ N(0, ΣB_i)
-// independent: a 12n-dimensional input with block-diagonal covariance (StationNoise). The output is (X, Z) ∈ SE(3)², its covariance 12 × 12 over
-// (δX, δZ), right perturbations, (ω, v) order each. Three ways:
+// independent: a 12n-dimensional input with block-diagonal covariance (StationNoise). The output is
+// (X, Z) ∈ SE(3)², its covariance 12 × 12 over (δX, δZ), right perturbations, (ω, v) order each.
+// Three ways:
 //  - kLinear: first order. For `ml` the inverse Gauss–Newton information at the optimum (ml.h;
 //    free, and the first-order covariance of the ML estimate). For every other method the
 //    first-order propagation through the solver itself, J Σ Jᵀ with J by central differences
@@ -36,9 +37,9 @@
 #include <vector>
 
 #include "hecal/estimation/calibrate.h"
+#include "hecal/estimation/covariance_method.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/handeye/problem.h"
-#include "hecal/estimation/covariance_method.h"
 
 namespace hecal::estimation {
 
@@ -63,9 +64,9 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
 // std::invalid_argument when the noise does not have one matrix per station, and
 // hecal::DegenerateError when a solve fails at a sigma point (UT, linear).
 std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem& problem,
-                                          const CalibrationResult& result,
-                                          const CalibrateOptions& calibrate_options,
-                                          const StationNoise& noise,
-                                          const CovarianceOptions& options);
+                                                         const CalibrationResult& result,
+                                                         const CalibrateOptions& calibrate_options,
+                                                         const StationNoise& noise,
+                                                         const CovarianceOptions& options);
 
 }  // namespace hecal::estimation

@@ -87,9 +87,7 @@ struct StudyOptions {
     options.method = estimation::CovarianceMethod::kNone;
     return options;
   }
-  bool WantsCovariance() const {
-    return covariance.method != estimation::CovarianceMethod::kNone;
-  }
+  bool WantsCovariance() const { return covariance.method != estimation::CovarianceMethod::kNone; }
 };
 
 // Throws InputError (source "--<flag>") when options are unusable: no setting, no method,

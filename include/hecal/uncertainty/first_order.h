@@ -72,8 +72,8 @@ Eigen::MatrixXd NumericJacobian(const F& f, const In& x, double step = 1e-6) {
   Eigen::MatrixXd J(MOut::Dim(y0), n);
   for (int i = 0; i < n; ++i) {
     const Eigen::VectorXd h = step * Eigen::VectorXd::Unit(n, i);
-    J.col(i) = (MOut::Minus(f(MIn::Plus(x, h)), y0) - MOut::Minus(f(MIn::Plus(x, -h)), y0)) /
-               (2.0 * step);
+    J.col(i) =
+        (MOut::Minus(f(MIn::Plus(x, h)), y0) - MOut::Minus(f(MIn::Plus(x, -h)), y0)) / (2.0 * step);
   }
   return J;
 }

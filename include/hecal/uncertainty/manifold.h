@@ -38,9 +38,7 @@ struct Manifold<Eigen::VectorXd> {
   static Eigen::VectorXd Plus(const Eigen::VectorXd& x, const Eigen::VectorXd& delta) {
     return x + delta;
   }
-  static Eigen::VectorXd Minus(const Eigen::VectorXd& y, const Eigen::VectorXd& x) {
-    return y - x;
-  }
+  static Eigen::VectorXd Minus(const Eigen::VectorXd& y, const Eigen::VectorXd& x) { return y - x; }
 };
 
 template <>

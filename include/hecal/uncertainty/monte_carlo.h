@@ -105,8 +105,7 @@ MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& refere
   for (size_t i = 0; i < good.size(); ++i) {
     deviations.row(static_cast<Eigen::Index>(i)) = MOut::Minus(good[i], moments.mean).transpose();
   }
-  SampleStatistics(deviations, &moments.covariance, &moments.mean_std_error,
-                   &moments.sd_std_error);
+  SampleStatistics(deviations, &moments.covariance, &moments.mean_std_error, &moments.sd_std_error);
   return moments;
 }
 
