@@ -171,6 +171,17 @@ TEST(UnscentedTransform, MatchesAnalyticMomentsOfAQuadraticMap) {
   EXPECT_LT((scaled.covariance - expected_cov).cwiseAbs().maxCoeff(), 1e-12);
 }
 
+// y = |x|², x ~ N(0, I₆), default set (w0 = −1, points at ±√3): the standard form would give
+// w0 (0 − 6)² + 12 · (1/6) (3 − 6)² = −18, a negative variance; the modified form about y_0
+// gives 12 · (1/6) · 3² = 18 ≥ 0 (the true variance is 12: cross terms are beyond the set).
+TEST(UnscentedTransform, NegativeCentreWeightUsesTheModifiedFormAndStaysSemidefinite) {
+  auto f = [](const VectorXd& x) -> VectorXd { return VectorXd::Constant(1, x.squaredNorm()); };
+  const Moments<VectorXd> y =
+      UnscentedTransform<VectorXd, VectorXd>(f, VectorXd::Zero(6), MatrixXd::Identity(6, 6));
+  EXPECT_NEAR(y.mean(0), 6.0, 1e-12);  // the mean is exact
+  EXPECT_NEAR(y.covariance(0, 0), 18.0, 1e-12);
+}
+
 TEST(UnscentedTransform, ZeroColumnsAreNotEvaluated) {
   MatrixXd C = MatrixXd::Zero(4, 4);
   C(1, 1) = 1.0;

@@ -13,6 +13,10 @@
 // Noise model: --robot-sigma / --camera-sigma when given; otherwise estimated from the residuals
 // (noise_estimation.h; equal split between robot and camera — only their combined effect is
 // identifiable from poses) and a warning says so.
+// Covariance: of (X, Z) under that noise model, by options.covariance (default: ml's analytic
+// information, the UT through the solver for every other method; calibration_covariance.h).
+// A solver that throws at a UT sigma point or a linearisation step makes Calibrate throw that
+// error (Monte Carlo instead counts such samples and warns).
 // Outliers: a station is flagged when its studentised residual exceeds the 3σ level (the χ²
 // quantile of p = 0.0027 for its degrees of freedom; noise_estimation.h), with flagged
 // stations excluded from the sigma estimate so that they cannot hide themselves. Flagged
