@@ -124,6 +124,9 @@ Solver HecalSolver(handeye::Method method) {
   options.method = method;
   options.robot_sigma = hecal::estimation::PoseSigma{kSigmaRotation, kSigmaTranslation};
   options.camera_sigma = options.robot_sigma;
+  // The solve only, like the closed forms and OpenCV (strobl's default UT covariance would add
+  // 24n + 1 solves).
+  options.covariance.method = hecal::estimation::CovarianceMethod::kNone;
   return [options](const DataSet& set) {
     return hecal::estimation::Calibrate(set.problem, options).X;
   };

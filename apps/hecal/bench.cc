@@ -214,6 +214,9 @@ void RunBench(const BenchFlags& flags, const Io& io) {
       } else {
         estimation::CalibrateOptions options;
         options.method = method;
+        // The solve only, like the closed forms and OpenCV (strobl's default UT covariance
+        // would add 24n + 1 solves).
+        options.covariance.method = estimation::CovarianceMethod::kNone;
         if (!noise.IsZero()) {
           options.robot_sigma =
               estimation::PoseSigma{noise.rotation_sigma, noise.translation_sigma};

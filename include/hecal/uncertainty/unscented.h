@@ -38,6 +38,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -76,7 +77,8 @@ struct SigmaWeights {
 // Throws std::invalid_argument when !parameters.IsValid(n).
 SigmaWeights Weights(int n, const UnscentedParameters& parameters);
 
-// Mean and covariance (tangent space at the mean, manifold.h) of a transformed distribution.
+// Mean and covariance of a transformed distribution: the covariance in the tangent space at the
+// mean (manifold.h), or at f(x̄) for the UT's modified form (above).
 template <class Out>
 struct Moments {
   Out mean;
