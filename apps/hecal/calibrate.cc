@@ -186,15 +186,10 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     }
     options.covariance.method = *covariance;
   }
-  if (flags.covariance_samples < 2) {
-    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
-                     "use e.g. 5000");
-  }
-  if (flags.threads < 0)
-    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
   options.covariance.samples = flags.covariance_samples;
   options.covariance.seed = flags.seed;
   options.covariance.threads = flags.threads;
+  estimation::ValidateCovarianceOptions(options.covariance);
   options.robust_loss = flags.robust;
   if (flags.robust != "none" && flags.robust != "huber" && flags.robust != "cauchy") {
     throw InputError("--robust", 0, "unknown loss '" + flags.robust + "'",

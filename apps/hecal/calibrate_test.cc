@@ -62,6 +62,21 @@ class CalibrateCommand : public cli_test::CliTest {
     ASSERT_EQ(run.code, 0) << run.err;
   }
 
+  // Thesis-protocol data (seeded) written to robot.csv / camera.csv in millimetres.
+  sim::SimulatedData WriteSyntheticMm(handeye::Setup setup, int stations, uint64_t seed,
+                                      double rotation_sigma, double translation_sigma) {
+    std::mt19937_64 rng(seed);
+    sim::ProtocolOptions options;
+    options.setup = setup;
+    options.stations = stations;
+    const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, rotation_sigma,
+                                translation_sigma};
+    sim::SimulatedData data = sim::SimulateThesisProtocol(options, noise, noise, rng);
+    Write("robot.csv", PoseCsv(data.T_base_gripper, 1e3, "_mm"));
+    Write("camera.csv", PoseCsv(data.T_camera_target, 1e3, "_mm"));
+    return data;
+  }
+
   // Expects exit 2, one line on stderr containing `part`, and no result file.
   void ExpectRefused(std::vector<std::string> args, const std::string& part) {
     args.insert(args.end(), {"--output", Path("result.json")});
@@ -159,14 +174,8 @@ TEST_F(CalibrateCommand, AllMethodsSideBySide) {
 // Synthetic thesis-protocol data in millimetres with known truth and given noise: the result is
 // in mm (translations and the covariance's translation block) and X is within 4σ of the truth.
 TEST_F(CalibrateCommand, SyntheticDataInMillimetresWithGivenNoise) {
-  std::mt19937_64 rng(5);
-  sim::ProtocolOptions options;
-  options.setup = handeye::Setup::kEyeInHand;
-  options.stations = 20;
-  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.2 * kDegree, 0.5e-3};
-  const sim::SimulatedData data = sim::SimulateThesisProtocol(options, noise, noise, rng);
-  Write("robot.csv", PoseCsv(data.T_base_gripper, 1e3, "_mm"));
-  Write("camera.csv", PoseCsv(data.T_camera_target, 1e3, "_mm"));
+  const sim::SimulatedData data =
+      WriteSyntheticMm(handeye::Setup::kEyeInHand, 20, 5, 0.2 * kDegree, 0.5e-3);
   const cli_test::Outcome run =
       Hecal({"calibrate", "--robot", Path("robot.csv"), "--camera", Path("camera.csv"), "--setup",
              "eye-in-hand", "--robot-sigma", "0.5,0.2", "--camera-sigma", "0.5,0.2", "--output",
@@ -199,14 +208,7 @@ TEST_F(CalibrateCommand, SyntheticDataInMillimetresWithGivenNoise) {
 // the UT's σ per axis is within 10% (+ 3 standard errors) of the Monte Carlo's, the file says
 // how it was computed, and the same seed writes the same file.
 TEST_F(CalibrateCommand, CovarianceMethodsAgreeAndMonteCarloIsSeeded) {
-  std::mt19937_64 rng(6);
-  sim::ProtocolOptions options;
-  options.setup = handeye::Setup::kEyeToHand;
-  options.stations = 12;
-  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.5 * kDegree, 1e-3};
-  const sim::SimulatedData data = sim::SimulateThesisProtocol(options, noise, noise, rng);
-  Write("robot.csv", PoseCsv(data.T_base_gripper, 1e3, "_mm"));
-  Write("camera.csv", PoseCsv(data.T_camera_target, 1e3, "_mm"));
+  WriteSyntheticMm(handeye::Setup::kEyeToHand, 12, 6, 0.5 * kDegree, 1e-3);
   const std::vector<std::string> base = {"calibrate",
                                          "--robot",
                                          Path("robot.csv"),

@@ -177,10 +177,6 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
   } else {
     options.covariance.method = std::nullopt;
   }
-  if (flags.covariance_samples < 2) {
-    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
-                     "e.g. --covariance-samples 1000");
-  }
   options.covariance.samples = flags.covariance_samples;
   options.covariance.seed = flags.seed;
   options.trials = flags.trials;

@@ -108,13 +108,7 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
     throw InputError("stations", 0, "the numbers of robot and camera poses differ",
                      "give one camera pose per robot pose");
   }
-  if (options.covariance.samples < 2) {
-    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
-                     "use e.g. 5000");
-  }
-  if (options.covariance.threads < 0) {
-    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
-  }
+  ValidateCovarianceOptions(options.covariance);
   handeye::CheckObservability(problem);
 
   CalibrationResult result;

@@ -78,6 +78,16 @@ CovarianceMethod DefaultCovarianceMethod(handeye::Method method) {
   return method == handeye::Method::kMl ? CovarianceMethod::kLinear : CovarianceMethod::kUnscented;
 }
 
+void ValidateCovarianceOptions(const CovarianceOptions& options) {
+  if (options.samples < 2) {
+    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
+                     "use e.g. 5000");
+  }
+  if (options.threads < 0) {
+    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+  }
+}
+
 CalibrationCovariance FromMonteCarlo(const uncertainty::MonteCarloMoments<Poses>& mc) {
   CalibrationCovariance out;
   out.method = CovarianceMethod::kMonteCarlo;

@@ -170,6 +170,7 @@ void ValidateStudyOptions(const StudyOptions& options) {
   if (options.threads < 0) {
     throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
   }
+  estimation::ValidateCovarianceOptions(options.covariance);
   for (const Setting& s : options.settings) {
     if (s.stations < 3) {
       throw InputError("--stations", 0,

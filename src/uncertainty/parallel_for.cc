@@ -8,11 +8,15 @@
 #include <vector>
 
 namespace hecal::uncertainty {
+namespace {
 
+// `threads` (0: the hardware concurrency), at least 1 and at most `count`.
 int ThreadCount(int count, int threads) {
   const int wanted = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   return std::clamp(wanted, 1, std::max(count, 1));
 }
+
+}  // namespace
 
 void ParallelFor(int count, int threads, const std::function<void(int)>& body) {
   std::atomic<int> next{0};

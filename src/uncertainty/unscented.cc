@@ -35,6 +35,14 @@ Eigen::MatrixXd CovarianceSquareRoot(const Eigen::MatrixXd& covariance, SquareRo
   return eigen.eigenvectors() * root.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
+std::vector<int> NonZeroColumns(const Eigen::MatrixXd& square_root) {
+  std::vector<int> columns;
+  for (Eigen::Index i = 0; i < square_root.cols(); ++i) {
+    if (square_root.col(i).squaredNorm() > 0.0) columns.push_back(static_cast<int>(i));
+  }
+  return columns;
+}
+
 UnscentedParameters UnscentedParameters::Symmetric(std::optional<double> w0) {
   UnscentedParameters parameters;
   parameters.form = Form::kSymmetric;

@@ -33,6 +33,11 @@ struct CovarianceOptions {
   uncertainty::UnscentedParameters unscented;
 };
 
+// Throws InputError (sources "--covariance-samples", "--threads") for fewer than 2 Monte Carlo
+// samples or a negative thread count. Calibrate and RunStudy call it; the CLI too, before any
+// input is read.
+void ValidateCovarianceOptions(const CovarianceOptions& options);
+
 struct CalibrationCovariance {
   CovarianceMethod method = CovarianceMethod::kLinear;
   Eigen::Matrix<double, 12, 12> covariance;  // (δX, δZ), right perturbations, (ω, v) each

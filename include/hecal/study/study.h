@@ -87,11 +87,11 @@ struct StudyOptions {
     options.method = estimation::CovarianceMethod::kNone;
     return options;
   }
-  bool WantsCovariance() const { return covariance.method != estimation::CovarianceMethod::kNone; }
 };
 
 // Throws InputError (source "--<flag>") when options are unusable: no setting, no method,
-// trials < 1, stations < 3, negative sigma.
+// trials < 1, stations < 3, negative sigma, covariance options (estimation::
+// ValidateCovarianceOptions).
 void ValidateStudyOptions(const StudyOptions& options);
 
 enum class TrialStatus { kOk, kThrew, kNonFinite };

@@ -98,10 +98,7 @@ Moments<Out> FirstOrderTransform(const F& f, const In& mean, const Eigen::Matrix
   const Eigen::MatrixXd S = CovarianceSquareRoot(covariance, options.square_root);
   Moments<Out> moments;
   moments.mean = f(mean);
-  std::vector<int> columns;
-  for (int i = 0; i < n; ++i) {
-    if (S.col(i).squaredNorm() > 0.0) columns.push_back(i);
-  }
+  const std::vector<int> columns = NonZeroColumns(S);
   const int m = MOut::Dim(moments.mean);
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(m, n);
   ParallelFor(static_cast<int>(columns.size()), options.threads, [&](int job) {

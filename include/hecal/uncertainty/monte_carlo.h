@@ -18,8 +18,6 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
-#include <exception>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>

@@ -11,8 +11,4 @@ namespace hecal::uncertainty {
 
 void ParallelFor(int count, int threads, const std::function<void(int)>& body);
 
-// The number of threads ParallelFor uses for `count` jobs: `threads` (0: the hardware
-// concurrency), at least 1 and at most `count`.
-int ThreadCount(int count, int threads);
-
 }  // namespace hecal::uncertainty

@@ -53,6 +53,10 @@ enum class SquareRoot { kCholesky, kSymmetric };
 // not symmetric (relative 1e-9) or has an eigenvalue below −1e-12 of the largest.
 Eigen::MatrixXd CovarianceSquareRoot(const Eigen::MatrixXd& covariance, SquareRoot kind);
 
+// The indices of the non-zero columns of a square root: the directions with noise, the only ones
+// the transforms evaluate f along.
+std::vector<int> NonZeroColumns(const Eigen::MatrixXd& square_root);
+
 struct UnscentedParameters {
   enum class Form { kSymmetric, kScaled };
   Form form = Form::kSymmetric;
@@ -99,16 +103,9 @@ Moments<Out> UnscentedTransform(const F& f, const In& mean, const Eigen::MatrixX
   }
   const SigmaWeights w = Weights(n, parameters);
   const Eigen::MatrixXd S = CovarianceSquareRoot(covariance, parameters.square_root);
-  std::vector<Out> y(2 * static_cast<size_t>(n) + 1);
-  y[0] = f(mean);
-  std::vector<int> columns;  // the non-zero ones
-  for (int i = 0; i < n; ++i) {
-    if (S.col(i).squaredNorm() > 0.0) columns.push_back(i);
-  }
-  for (int i = 0; i < n; ++i) {  // zero columns: y_i = y_0 without evaluating f
-    y[1 + static_cast<size_t>(i)] = y[0];
-    y[1 + static_cast<size_t>(n + i)] = y[0];
-  }
+  const std::vector<int> columns = NonZeroColumns(S);
+  // Every point starts as y_0: for zero columns x_i = x̄, so f is not evaluated again.
+  std::vector<Out> y(2 * static_cast<size_t>(n) + 1, f(mean));
   ParallelFor(2 * static_cast<int>(columns.size()), threads, [&](int job) {
     const int i = columns[static_cast<size_t>(job / 2)];
     const double sign = job % 2 == 0 ? 1.0 : -1.0;
