@@ -1,0 +1,72 @@
+// One-dimensional edge search along a curve normal: see edge_search.h.
+#include "hecal/contour/edge_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace hecal::contour {
+
+std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d& point,
+                                  const Eigen::Vector2d& normal, const EdgeSearchOptions& options) {
+  if (!(options.range > 0.0) || !(options.step > 0.0) || !(options.step <= options.range) ||
+      !(options.derivative_half_width > 0.0) || !std::isfinite(options.range) ||
+      !std::isfinite(options.derivative_half_width) ||
+      (options.polarity < -1 || options.polarity > 1)) {
+    throw std::invalid_argument("SearchEdge: options out of range");
+  }
+  const double length = normal.norm();
+  if (!std::isfinite(length) || !(length > 0.0)) {
+    throw std::invalid_argument("SearchEdge: the normal must be a finite non-zero vector");
+  }
+  if (!point.allFinite()) return std::nullopt;
+  const Eigen::Vector2d n = normal / length;
+  const int half = static_cast<int>(std::floor(options.range / options.step + 1e-9));
+  const int d =
+      std::max(1, static_cast<int>(std::lround(options.derivative_half_width / options.step)));
+  const double h = d * options.step;
+
+  // Profile p at k = −half − d … half + d (index k + half + d).
+  const int total = 2 * (half + d) + 1;
+  const Eigen::Vector2d first = point - (half + d) * options.step * n;
+  const Eigen::Vector2d last = point + (half + d) * options.step * n;
+  if (!image.Contains(first.x(), first.y()) || !image.Contains(last.x(), last.y())) {
+    return std::nullopt;  // the segment is convex: both ends inside ⇒ all of it inside
+  }
+  std::vector<double> profile(static_cast<std::size_t>(total));
+  for (int i = 0; i < total; ++i) {
+    const Eigen::Vector2d p = first + i * options.step * n;
+    profile[static_cast<std::size_t>(i)] = image.Sample(p.x(), p.y());
+  }
+  // g at k = −half … half (index k + half), and the value the peak search maximises.
+  const int count = 2 * half + 1;
+  std::vector<double> g(static_cast<std::size_t>(count));
+  std::vector<double> score(static_cast<std::size_t>(count));
+  int best = 0;
+  for (int i = 0; i < count; ++i) {
+    const std::size_t centre = static_cast<std::size_t>(i + d);
+    g[static_cast<std::size_t>(i)] = (profile[centre + static_cast<std::size_t>(d)] -
+                                      profile[centre - static_cast<std::size_t>(d)]) /
+                                     (2.0 * h);
+    const double value = g[static_cast<std::size_t>(i)];
+    score[static_cast<std::size_t>(i)] =
+        options.polarity == 0 ? std::abs(value) : options.polarity * value;
+    if (score[static_cast<std::size_t>(i)] > score[static_cast<std::size_t>(best)]) best = i;
+  }
+  if (best == 0 || best == count - 1) return std::nullopt;
+  const double peak = score[static_cast<std::size_t>(best)];
+  if (!(peak >= options.min_gradient) || !(peak > 0.0)) return std::nullopt;
+  const double before = score[static_cast<std::size_t>(best - 1)];
+  const double after = score[static_cast<std::size_t>(best + 1)];
+  const double curvature = before - 2.0 * peak + after;
+  double shift = 0.0;
+  if (curvature < 0.0) shift = 0.5 * (before - after) / curvature;
+  shift = std::clamp(shift, -0.5, 0.5);
+  EdgeHit hit;
+  hit.offset = (best - half + shift) * options.step;
+  hit.gradient = g[static_cast<std::size_t>(best)];
+  return hit;
+}
+
+}  // namespace hecal::contour

@@ -1,0 +1,78 @@
+// The uncertainty of the contour camera motion: see pose_uncertainty.h.
+#include "hecal/contour/pose_uncertainty.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace hecal::contour {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+double WrapSigned(double a) {  // into (−π, π]
+  double w = std::remainder(a, kTwoPi);
+  if (w <= -std::numbers::pi) w += kTwoPi;
+  return w;
+}
+
+}  // namespace
+
+Vector6d PoseParametersNear(const Vector6d& shape, const ContourCamera& camera, RotationForm form,
+                            const Vector6d& reference) {
+  Vector6d p = PoseParameters(PoseFromShape(shape, camera, form));
+  const std::array<bool, 6> circular = CircularParameters(form);
+  for (int j = 0; j < 6; ++j) {
+    if (circular[static_cast<size_t>(j)]) p(j) = reference(j) + WrapSigned(p(j) - reference(j));
+  }
+  return p;
+}
+
+Vector6d PoseDifference(const Vector6d& a, const Vector6d& b, RotationForm form) {
+  Vector6d d = a - b;
+  const std::array<bool, 6> circular = CircularParameters(form);
+  for (int j = 0; j < 6; ++j) {
+    if (circular[static_cast<size_t>(j)]) d(j) = WrapSigned(d(j));
+  }
+  return d;
+}
+
+ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
+                                     const ContourCamera& camera, RotationForm form,
+                                     const UnscentedPoseOptions& options) {
+  ContourPoseUncertainty result;
+  result.pose = PoseFromShape(shape, camera, form);
+  result.parameters = PoseParameters(result.pose);
+  // One thread: f records its points in call order (the centre first, then ±c S_i).
+  const auto f = [&](const Eigen::VectorXd& s) -> Eigen::VectorXd {
+    const Vector6d p = PoseParametersNear(s, camera, form, result.parameters);
+    result.sigma_shapes.push_back(s);
+    result.sigma_poses.push_back(p);
+    return p;
+  };
+  const uncertainty::Moments<Eigen::VectorXd> moments =
+      uncertainty::UnscentedTransform<Eigen::VectorXd, Eigen::VectorXd>(
+          f, Eigen::VectorXd(shape), Eigen::MatrixXd(shape_covariance), options.unscented, 1);
+  result.mean = moments.mean;
+  result.covariance = moments.covariance;
+  for (int j = 0; j < 6; ++j) {
+    const double sd = std::sqrt(std::max(0.0, result.covariance(j, j)));
+    const double gap = std::abs(result.mean(j) - result.parameters(j));
+    const bool biased = gap > options.bias_threshold * sd && gap > 1e-12;
+    result.biased[static_cast<size_t>(j)] = biased;
+    result.any_biased = result.any_biased || biased;
+  }
+  return result;
+}
+
+uncertainty::MonteCarloMoments<Eigen::VectorXd> MonteCarloPose(
+    const Vector6d& shape, const Matrix6d& shape_covariance, const ContourCamera& camera,
+    RotationForm form, const uncertainty::MonteCarloOptions& options) {
+  const Vector6d reference = PoseParameters(PoseFromShape(shape, camera, form));
+  return uncertainty::MonteCarloTransform<Eigen::VectorXd, Eigen::VectorXd>(
+      [&](const Eigen::VectorXd& s) -> Eigen::VectorXd {
+        return PoseParametersNear(s, camera, form, reference);
+      },
+      Eigen::VectorXd(shape), Eigen::MatrixXd(shape_covariance), options);
+}
+
+}  // namespace hecal::contour
