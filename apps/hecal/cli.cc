@@ -12,7 +12,7 @@ namespace {
 constexpr Registrar kRegistrars[] = {
     &RegisterPosesCommand,     &RegisterImportCommand, &RegisterDetectCommand,
     &RegisterCalibrateCommand, &RegisterPoseCommand,   &RegisterSimulateCommand,
-    &RegisterBenchCommand,
+    &RegisterBenchCommand,     &RegisterContourCommand,
 };
 
 }  // namespace

@@ -1,0 +1,261 @@
+// `hecal contour` and `hecal contour pose`: see contour.h.
+#include "contour.h"
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <iomanip>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+
+#include "hecal/contour/affine_pose.h"
+#include "hecal/contour/pose_uncertainty.h"
+#include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
+#include "hecal/io/delimited_text.h"
+
+namespace hecal::cli {
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+double ParseOne(const std::string& flag, const std::string& text, const std::string& what) {
+  return ParseNumberList(flag, text, 1, what).front();
+}
+
+nlohmann::json Rows(const Eigen::MatrixXd& M) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index r = 0; r < M.rows(); ++r) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+nlohmann::json Vector(const Eigen::VectorXd& v) {
+  nlohmann::json out = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v(i));
+  return out;
+}
+
+Matrix6d ParseShapeCovariance(const std::string& text) {
+  const std::size_t count = static_cast<std::size_t>(std::count(text.begin(), text.end(), ',')) + 1;
+  if (count != 6 && count != 36) {
+    throw InputError(
+        "--covariance", 0,
+        "expected 6 variances or 36 numbers (the row-major 6×6 Σ_S), got " + std::to_string(count),
+        "give var(tx),…,var(m12), or all 36 entries");
+  }
+  const std::vector<double> v = ParseNumberList("--covariance", text, count, "Σ_S entries");
+  Matrix6d C = Matrix6d::Zero();
+  if (count == 6) {
+    for (int i = 0; i < 6; ++i) C(i, i) = v[static_cast<std::size_t>(i)];
+  } else {
+    for (int i = 0; i < 36; ++i) C(i / 6, i % 6) = v[static_cast<std::size_t>(i)];
+  }
+  const double scale = C.cwiseAbs().maxCoeff();
+  if (!((C - C.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * scale)) {
+    throw InputError("--covariance", 0, "Σ_S is not symmetric", "give a symmetric matrix");
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(0.5 * (C + C.transpose()));
+  if (eigen.eigenvalues().minCoeff() < -1e-12 * std::max(scale, 1e-300)) {
+    throw InputError("--covariance", 0, "Σ_S has a negative eigenvalue",
+                     "give a positive semidefinite covariance");
+  }
+  return 0.5 * (C + C.transpose());
+}
+
+}  // namespace
+
+std::vector<double> ParseNumberList(const std::string& flag, const std::string& text,
+                                    std::size_t count, const std::string& what) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    double value = 0.0;
+    if (!io::ParseDouble(io::Trim(part), &value) || !std::isfinite(value)) {
+      throw InputError(flag, 0, "'" + part + "' is not a finite number (in '" + text + "')",
+                       "give " + std::to_string(count) + " comma-separated numbers " + what);
+    }
+    values.push_back(value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (values.size() != count) {
+    throw InputError(flag, 0,
+                     "expected " + std::to_string(count) + " numbers, got " +
+                         std::to_string(values.size()) + " ('" + text + "')",
+                     "give " + std::to_string(count) + " comma-separated numbers " + what);
+  }
+  return values;
+}
+
+Eigen::Matrix2Xd ReadContourFile(const std::string& path) {
+  const std::string text = io::ReadFile(path);
+  io::LineCursor cursor(text);
+  std::string_view line;
+  std::optional<io::Separator> separator;
+  std::vector<io::Field> fields;
+  std::string error;
+  int x_column = -1, y_column = -1;
+  std::size_t columns = 0;
+  std::vector<Eigen::Vector2d> points;
+  while (cursor.Next(&line)) {
+    if (io::IsBlank(line) || io::IsComment(line)) continue;
+    const int number = cursor.line_number();
+    if (!separator) separator = io::DetectSeparator(line);
+    if (!io::SplitFields(line, *separator, &fields, &error)) {
+      throw InputError(path, number, error, "close the quote or remove the text after it");
+    }
+    if (columns == 0) {
+      for (std::size_t c = 0; c < fields.size(); ++c) {
+        std::string name(io::Trim(io::FieldValue(fields[c])));
+        std::transform(name.begin(), name.end(), name.begin(),
+                       [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+        if (name == "x") x_column = static_cast<int>(c);
+        if (name == "y") y_column = static_cast<int>(c);
+      }
+      if (x_column < 0 || y_column < 0) {
+        throw InputError(path, number, "the header must name the columns x and y",
+                         "start the file with the line x,y");
+      }
+      columns = fields.size();
+      continue;
+    }
+    if (fields.size() != columns) {
+      throw InputError(
+          path, number,
+          "expected " + std::to_string(columns) + " values, got " + std::to_string(fields.size()),
+          "give one value per header column");
+    }
+    Eigen::Vector2d p;
+    for (int k = 0; k < 2; ++k) {
+      const io::Field& field = fields[static_cast<std::size_t>(k == 0 ? x_column : y_column)];
+      if (!io::ParseDouble(field.text, &p(k)) || !std::isfinite(p(k))) {
+        throw InputError(path, number,
+                         std::string(k == 0 ? "x" : "y") + " is not a finite number: '" +
+                             std::string(field.text) + "'",
+                         "write a plain decimal number");
+      }
+    }
+    points.push_back(p);
+  }
+  if (points.size() < 4) {
+    throw InputError(
+        path, 0,
+        "a closed contour needs at least 4 points, the file has " + std::to_string(points.size()),
+        "give the header x,y and then 4 or more points around the contour");
+  }
+  Eigen::Matrix2Xd Q(2, static_cast<Eigen::Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) Q.col(static_cast<Eigen::Index>(i)) = points[i];
+  return Q;
+}
+
+void RunContourPose(const ContourPoseOptions& options, const Io& io) {
+  const std::vector<double> s =
+      ParseNumberList("--shape", options.shape, 6, "tx,ty,m11m1,m22m1,m21,m12");
+  const Vector6d shape = Eigen::Map<const Vector6d>(s.data());
+  contour::ContourCamera camera;
+  camera.z0 = ParseOne("--z0", options.z0, "Z0");
+  camera.focal = ParseOne("--focal", options.focal, "F");
+  contour::ValidateContourCamera(camera);
+  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
+  if (!form) {
+    throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
+                     "use zyx (roll–pitch–yaw, the seed's choice) or zxz");
+  }
+  const contour::ContourPose pose = contour::PoseFromShape(shape, camera, *form);
+  std::optional<contour::ContourPoseUncertainty> ut;
+  if (!options.covariance.empty()) {
+    contour::UnscentedPoseOptions ut_options;
+    const double w0 = ParseOne("--ut-w0", options.ut_w0, "w0 < 1");
+    ut_options.unscented = uncertainty::UnscentedParameters::Symmetric(w0);
+    std::string why;
+    if (!ut_options.unscented.IsValid(6, &why)) {
+      throw InputError("--ut-w0", 0, why, "give w0 < 1 (default 0)");
+    }
+    ut = contour::UnscentedPose(shape, ParseShapeCovariance(options.covariance), camera, *form,
+                                ut_options);
+  }
+  const std::string_view sequence = contour::RotationSequence(*form);
+  const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
+  if (options.json) {
+    nlohmann::json result = {
+        {"translation", Vector(pose.translation)},
+        {"rotation_matrix", Rows(pose.rotation)},
+        {"euler", Vector(pose.euler)},
+        {"euler_deg", Vector(pose.euler * kDegrees)},
+        {"sequence", sequence},
+        {"units", {{"translation", "unit of --z0"}, {"euler", "rad"}, {"euler_deg", "deg"}}},
+    };
+    if (ut) {
+      nlohmann::json bias = nlohmann::json::object();
+      nlohmann::json parameter_names = nlohmann::json::array();
+      for (std::size_t j = 0; j < 6; ++j) {
+        bias[std::string(names[j])] = ut->biased[j];
+        parameter_names.push_back(names[j]);
+      }
+      result["parameters"] = parameter_names;
+      result["ut_mean"] = Vector(ut->mean);
+      result["covariance"] = Rows(ut->covariance);
+      result["bias"] = bias;
+    }
+    io.out << result.dump(2) << "\n";
+    return;
+  }
+  io.out << std::setprecision(9);
+  io.out << "translation (Tx, Ty, Tz) = (" << pose.translation.transpose() << ")  [unit of --z0]\n";
+  io.out << "rotation matrix\n";
+  for (int r = 0; r < 3; ++r) io.out << "  " << pose.rotation.row(r) << "\n";
+  io.out << "euler " << sequence << " = (" << pose.euler.transpose() << ") rad = ("
+         << (pose.euler * kDegrees).transpose() << ") deg\n";
+  if (ut) {
+    io.out << "UT (13 sigma points), 1σ:";
+    for (std::size_t j = 0; j < 6; ++j) {
+      const double sd = std::sqrt(ut->covariance(static_cast<int>(j), static_cast<int>(j)));
+      io.out << " " << names[j] << " " << (j < 3 ? sd : sd * kDegrees) << (j < 3 ? "" : "°")
+             << (ut->biased[j] ? " (biased)" : "");
+    }
+    io.out << "\n";
+    if (ut->any_biased) {
+      io.out << "bias: the UT mean departs from the pose of the mean shape (SPEC C.5: tilt near "
+                "zero; the Necker sign fold)\n";
+    }
+  }
+}
+
+void RegisterContourCommand(CLI::App& app, const Io& io) {
+  CLI::App* contour = app.add_subcommand(
+      "contour", "Camera motion from the affine deformation of a planar contour (seed 000)");
+  contour->require_subcommand(1);
+
+  auto options = std::make_shared<ContourPoseOptions>();
+  CLI::App* pose = contour->add_subcommand("pose", "The camera motion of one shape vector");
+  pose->add_option("--shape", options->shape,
+                   "tx,ty,m11m1,m22m1,m21,m12: S = (tx, ty, M11−1, M22−1, M21, M12), tx, ty in "
+                   "the unit of --focal (use --shape=… when it starts with '-')")
+      ->required()
+      ->allow_extra_args(false);
+  pose->add_option("--z0", options->z0, "Initial distance Z0 (the unit of the translation)")
+      ->required();
+  pose->add_option("--focal", options->focal, "Focal length F (the unit of tx, ty)")->required();
+  pose->add_option("--rotation", options->rotation, "zyx (default; roll–pitch–yaw) or zxz");
+  pose->add_flag("--json", options->json, "Print JSON");
+  pose->add_option("--covariance", options->covariance,
+                   "Σ_S: 6 variances or 36 row-major entries → UT pose covariance");
+  pose->add_option("--ut-w0", options->ut_w0, "UT centre weight w0 (default 0)");
+  pose->callback([options, io] { RunContourPose(*options, io); });
+
+  AddContourStudyCommand(*contour, io);
+  // (track and render: added when contour_track.cc lands)
+}
+
+}  // namespace hecal::cli
