@@ -40,12 +40,14 @@ void DropNegativeZero(std::string& text) {
   if (all_zero) text.erase(0, 1);
 }
 
-// A pixel coordinate: at most 2 decimals, trailing zeros dropped.
+// out += a + b + …, without temporaries (and without GCC 12's -Wrestrict false positive on
+// "literal" + std::string).
 template <typename... Parts>
 void Append(std::string& out, const Parts&... parts) {
   (out.append(parts), ...);
 }
 
+// A pixel coordinate: at most 2 decimals, trailing zeros dropped.
 std::string Px(double value) {
   if (!std::isfinite(value)) return "0";
   std::string text = ToChars(value, std::chars_format::fixed, 2);

@@ -117,8 +117,8 @@ double NiceStep(double span, int target);
 // gives fewer than 2 ticks, the next smaller nice steps until it gives 2. No ticks when the range
 // is empty or not finite.
 Ticks NiceTicks(double lo, double hi, int target = 5);
-// A tick value written with as many decimals as `step` needs ("0.25", "-3", "1e+06" style for
-// very large or small magnitudes); never "-0".
+// A tick value written with as many decimals as `step` needs ("0.25", "-3"), in compact
+// scientific notation ("1.5e6", "2e-5") from |value| ≥ 1e6 or step < 1e-4; never "-0".
 std::string FormatTick(double value, double step);
 
 // The semi-axes (scale·sqrt(eigenvalue), major ≥ minor) of a covariance ellipse and the angle of

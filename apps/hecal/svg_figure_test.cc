@@ -563,6 +563,14 @@ TEST(SvgFigure, LegendListsEachNonEmptyLabelOnce) {
   EXPECT_NE(AttributeOf(samples[1], "stroke-dasharray"), "");
   EXPECT_NE(samples[4].find("#d62728"), std::string::npos);
 
+  // Data along the top edge pushes the legend to a bottom corner.
+  Panel high = LinePanel({0, 1, 2, 3, 4}, {1, 1, 1, 1, 1});
+  high.lines.push_back({.x = {0, 4}, .y = {0.5, 0}});  // ends in the bottom-right corner
+  const PanelLayout layout = LayoutPanel(high, 0, FigureOptions{});
+  const std::string box = Tags(Figure({high}, FigureOptions{}), "<rect class=\"legend-box\"").at(0);
+  EXPECT_GT(NumberOf(box, "y"), layout.top + 0.5 * layout.height);
+  EXPECT_LT(NumberOf(box, "x"), layout.left + 0.5 * layout.width);
+
   panel.legend = false;
   EXPECT_EQ(Texts(Figure({panel}, FigureOptions{}), "legend-label").size(), 0u);
   EXPECT_EQ(Texts(Figure({LinePanel({0, 1}, {0, 1})}, FigureOptions{}), "legend-label").size(), 1u);
