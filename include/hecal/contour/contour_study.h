@@ -18,7 +18,8 @@
 // The sensor is not given in the seed; the default pixel is 8.3 µm (a 768 × 576, 1/2-inch CCD of
 // the period: 6.4 × 4.8 mm, so a 250 mm lateral motion at 5 m moves the target's image 2.5 mm, from
 // the centre to near the edge, as the seed describes). The default target (DefaultTarget) is an
-// irregular closed contour about 210 × 150 mm (≈ 250 × 180 px at 5 m), 12 control points.
+// irregular closed contour of 12 control points; its curve spans 222 × 125 mm (268 × 151 px at
+// 5 m).
 #pragma once
 
 #include <Eigen/Core>
