@@ -17,6 +17,7 @@
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
+#include "json_matrix.h"
 
 namespace hecal::cli {
 namespace {
@@ -25,22 +26,6 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 double ParseOne(const std::string& flag, const std::string& text, const std::string& what) {
   return ParseNumberList(flag, text, 1, what).front();
-}
-
-nlohmann::json Rows(const Eigen::MatrixXd& M) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (Eigen::Index r = 0; r < M.rows(); ++r) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
-nlohmann::json Vector(const Eigen::VectorXd& v) {
-  nlohmann::json out = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v(i));
-  return out;
 }
 
 Matrix6d ParseShapeCovariance(const std::string& text) {
@@ -189,10 +174,10 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
   const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
   if (options.json) {
     nlohmann::json result = {
-        {"translation", Vector(pose.translation)},
-        {"rotation_matrix", Rows(pose.rotation)},
-        {"euler", Vector(pose.euler)},
-        {"euler_deg", Vector(pose.euler * kDegrees)},
+        {"translation", JsonVector(pose.translation)},
+        {"rotation_matrix", JsonRows(pose.rotation)},
+        {"euler", JsonVector(pose.euler)},
+        {"euler_deg", JsonVector(pose.euler * kDegrees)},
         {"sequence", sequence},
         {"units", {{"translation", "unit of --z0"}, {"euler", "rad"}, {"euler_deg", "deg"}}},
     };
@@ -204,8 +189,8 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
         parameter_names.push_back(names[j]);
       }
       result["parameters"] = parameter_names;
-      result["ut_mean"] = Vector(ut->mean);
-      result["covariance"] = Rows(ut->covariance);
+      result["ut_mean"] = JsonVector(ut->mean);
+      result["covariance"] = JsonRows(ut->covariance);
       result["bias"] = bias;
     }
     io.out << result.dump(2) << "\n";
@@ -255,7 +240,8 @@ void RegisterContourCommand(CLI::App& app, const Io& io) {
   pose->callback([options, io] { RunContourPose(*options, io); });
 
   AddContourStudyCommand(*contour, io);
-  // (track and render: added when contour_track.cc lands)
+  AddContourTrackCommand(*contour, io);
+  AddContourRenderCommand(*contour, io);
 }
 
 }  // namespace hecal::cli

@@ -26,6 +26,7 @@
 #include "hecal/io/units.h"
 #include "hecal/pose/pose_method.h"
 #include "hecal/version.h"
+#include "json_matrix.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "hecal/vision/opencv_pnp.h"
 #endif
@@ -357,16 +358,6 @@ void Print(std::ostream& out, const pose::PoseEstimate& estimate, const Correspo
   out.unsetf(std::ios::floatfield);
 }
 
-nlohmann::json MatrixJson(const Eigen::MatrixXd& M) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (Eigen::Index r = 0; r < M.rows(); ++r) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
 std::string ResultJson(const pose::PoseEstimate& estimate, const Correspondences& pairs,
                        io::LengthUnit unit) {
   const double scale = 1.0 / io::MetresPer(unit);
@@ -382,7 +373,7 @@ std::string ResultJson(const pose::PoseEstimate& estimate, const Correspondences
       {"units", {{"length", io::UnitName(unit)}, {"angle", "rad"}}},
       {"T_camera_target",
        {{"frame", "T_camera_target"},
-        {"matrix", MatrixJson(M)},
+        {"matrix", JsonRows(M)},
         {"translation", {t.x(), t.y(), t.z()}},
         {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}},
         {"rotation_vector", {rvec.x(), rvec.y(), rvec.z()}}}},
@@ -392,7 +383,7 @@ std::string ResultJson(const pose::PoseEstimate& estimate, const Correspondences
     Vector6d s;
     s << 1.0, 1.0, 1.0, scale, scale, scale;
     const Matrix6d C = s.asDiagonal() * *estimate.covariance * s.asDiagonal();
-    result["covariance"] = {{"matrix", MatrixJson(0.5 * (C + C.transpose()))},
+    result["covariance"] = {{"matrix", JsonRows(0.5 * (C + C.transpose()))},
                             {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"},
                             {"pixel_sigma", estimate.sigma_px},
                             {"pixel_sigma_source", pose::SigmaSourceName(estimate.sigma_source)}};

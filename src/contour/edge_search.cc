@@ -11,9 +11,8 @@ namespace hecal::contour {
 std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d& point,
                                   const Eigen::Vector2d& normal, const EdgeSearchOptions& options) {
   if (!(options.range > 0.0) || !(options.step > 0.0) || !(options.step <= options.range) ||
-      !(options.derivative_half_width > 0.0) || !std::isfinite(options.range) ||
-      !std::isfinite(options.derivative_half_width) ||
-      (options.polarity < -1 || options.polarity > 1)) {
+      !(options.derivative_sigma > 0.0) || !std::isfinite(options.range) ||
+      !std::isfinite(options.derivative_sigma) || (options.polarity < -1 || options.polarity > 1)) {
     throw std::invalid_argument("SearchEdge: options out of range");
   }
   const double length = normal.norm();
@@ -22,21 +21,32 @@ std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d&
   }
   if (!point.allFinite()) return std::nullopt;
   const Eigen::Vector2d n = normal / length;
-  const int half = static_cast<int>(std::floor(options.range / options.step + 1e-9));
-  const int d =
-      std::max(1, static_cast<int>(std::lround(options.derivative_half_width / options.step)));
-  const double h = d * options.step;
+  const double step = options.step;
+  const int half = static_cast<int>(std::floor(options.range / step + 1e-9));
+  // Derivative-of-Gaussian taps w_m at m·step, |m·step| ≤ 3σ, scaled so that Σ w_m (m·step) = 1
+  // (a unit ramp has derivative 1).
+  const double sigma = options.derivative_sigma;
+  const int d = std::max(1, static_cast<int>(std::ceil(3.0 * sigma / step)));
+  std::vector<double> taps(static_cast<std::size_t>(2 * d + 1));
+  double ramp = 0.0;
+  for (int m = -d; m <= d; ++m) {
+    const double t = m * step;
+    const double w = t * std::exp(-0.5 * t * t / (sigma * sigma));
+    taps[static_cast<std::size_t>(m + d)] = w;
+    ramp += w * t;
+  }
+  for (double& w : taps) w /= ramp;
 
   // Profile p at k = −half − d … half + d (index k + half + d).
   const int total = 2 * (half + d) + 1;
-  const Eigen::Vector2d first = point - (half + d) * options.step * n;
-  const Eigen::Vector2d last = point + (half + d) * options.step * n;
+  const Eigen::Vector2d first = point - (half + d) * step * n;
+  const Eigen::Vector2d last = point + (half + d) * step * n;
   if (!image.Contains(first.x(), first.y()) || !image.Contains(last.x(), last.y())) {
     return std::nullopt;  // the segment is convex: both ends inside ⇒ all of it inside
   }
   std::vector<double> profile(static_cast<std::size_t>(total));
   for (int i = 0; i < total; ++i) {
-    const Eigen::Vector2d p = first + i * options.step * n;
+    const Eigen::Vector2d p = first + i * step * n;
     profile[static_cast<std::size_t>(i)] = image.Sample(p.x(), p.y());
   }
   // g at k = −half … half (index k + half), and the value the peak search maximises.
@@ -45,11 +55,11 @@ std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d&
   std::vector<double> score(static_cast<std::size_t>(count));
   int best = 0;
   for (int i = 0; i < count; ++i) {
-    const std::size_t centre = static_cast<std::size_t>(i + d);
-    g[static_cast<std::size_t>(i)] = (profile[centre + static_cast<std::size_t>(d)] -
-                                      profile[centre - static_cast<std::size_t>(d)]) /
-                                     (2.0 * h);
-    const double value = g[static_cast<std::size_t>(i)];
+    double value = 0.0;
+    for (int m = 0; m <= 2 * d; ++m) {
+      value += taps[static_cast<std::size_t>(m)] * profile[static_cast<std::size_t>(i + m)];
+    }
+    g[static_cast<std::size_t>(i)] = value;
     score[static_cast<std::size_t>(i)] =
         options.polarity == 0 ? std::abs(value) : options.polarity * value;
     if (score[static_cast<std::size_t>(i)] > score[static_cast<std::size_t>(best)]) best = i;
@@ -64,7 +74,7 @@ std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d&
   if (curvature < 0.0) shift = 0.5 * (before - after) / curvature;
   shift = std::clamp(shift, -0.5, 0.5);
   EdgeHit hit;
-  hit.offset = (best - half + shift) * options.step;
+  hit.offset = (best - half + shift) * step;
   hit.gradient = g[static_cast<std::size_t>(best)];
   return hit;
 }

@@ -72,6 +72,44 @@ GrayImage PolygonCoverage(const Eigen::Matrix2Xd& polygon, int width, int height
   return coverage;
 }
 
+void GaussianBlur(GrayImage* image, double sigma) {
+  if (!(sigma >= 0.0) || !std::isfinite(sigma)) {
+    throw std::invalid_argument("render: the blur σ must be finite and ≥ 0");
+  }
+  if (sigma == 0.0 || image->empty()) return;
+  const int radius = std::max(1, static_cast<int>(std::ceil(3.0 * sigma)));
+  std::vector<double> taps(static_cast<std::size_t>(2 * radius + 1));
+  double sum = 0.0;
+  for (int i = -radius; i <= radius; ++i) {
+    const double w = std::exp(-0.5 * i * i / (sigma * sigma));
+    taps[static_cast<std::size_t>(i + radius)] = w;
+    sum += w;
+  }
+  for (double& w : taps) w /= sum;
+  const int width = image->width(), height = image->height();
+  GrayImage rows(width, height);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      double value = 0.0;
+      for (int i = -radius; i <= radius; ++i) {
+        value += taps[static_cast<std::size_t>(i + radius)] *
+                 image->at(std::clamp(x + i, 0, width - 1), y);
+      }
+      rows.at(x, y) = static_cast<float>(value);
+    }
+  }
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      double value = 0.0;
+      for (int i = -radius; i <= radius; ++i) {
+        value += taps[static_cast<std::size_t>(i + radius)] *
+                 rows.at(x, std::clamp(y + i, 0, height - 1));
+      }
+      image->at(x, y) = static_cast<float>(value);
+    }
+  }
+}
+
 void AddGaussianNoise(GrayImage* image, double sigma, std::uint64_t seed) {
   if (!(sigma >= 0.0) || !std::isfinite(sigma)) {
     throw std::invalid_argument("render: the noise σ must be finite and ≥ 0");
@@ -92,6 +130,7 @@ GrayImage RenderPolygon(const Eigen::Matrix2Xd& polygon, int width, int height,
     throw std::invalid_argument("render: the grey levels must be finite");
   }
   GrayImage image = PolygonCoverage(polygon, width, height, options.supersampling);
+  GaussianBlur(&image, options.blur_sigma);
   const double contrast = options.foreground - options.background;
   for (float& value : image.pixels()) {
     value = static_cast<float>(options.background + contrast * value);

@@ -143,6 +143,29 @@ TEST(PolygonCoverage, ClipsToTheImage) {
   EXPECT_THROW(PolygonCoverage(big, 5, 5, 0), std::invalid_argument);
 }
 
+TEST(RenderPolygon, BlurKeepsTheMassAndSpreadsAStepLikeAGaussian) {
+  // A vertical step at x = 20 (pixel-aligned: pixels x ≤ 19 are fully inside).
+  Eigen::Matrix2Xd half(2, 4);
+  half << -100, 19.5, 19.5, -100,  //
+      -100, -100, 100, 100;
+  GrayImage image = PolygonCoverage(half, 40, 8, 4);
+  const double mass = [&] {
+    double m = 0.0;
+    for (int x = 0; x < 40; ++x) m += image.at(x, 4);
+    return m;
+  }();
+  GaussianBlur(&image, 1.0);
+  double blurred_mass = 0.0;
+  for (int x = 0; x < 40; ++x) blurred_mass += image.at(x, 4);
+  EXPECT_NEAR(blurred_mass, mass, 1e-4);  // away from the image borders nothing is lost
+  // The blurred step at pixel centres: Σ_{i ≤ 19} G(x − i), G the sampled unit Gaussian; by
+  // symmetry pixels 19 and 20 sum to 1, and at x = 19 it exceeds ½ by about Φ(0.5) − ½ = 0.19.
+  EXPECT_NEAR(image.at(19, 4) + image.at(20, 4), 1.0, 1e-6);
+  EXPECT_NEAR(image.at(19, 4), 0.69, 0.01);
+  EXPECT_NEAR(image.at(15, 4), 1.0, 1e-3);
+  EXPECT_THROW(GaussianBlur(&image, -1.0), std::invalid_argument);
+}
+
 TEST(RenderPolygon, LevelsNoiseAndQuantisation) {
   Eigen::Matrix2Xd rect(2, 4);
   rect << -0.5, 99.5, 99.5, -0.5,  //
@@ -150,6 +173,7 @@ TEST(RenderPolygon, LevelsNoiseAndQuantisation) {
   RenderOptions options;
   options.foreground = 200.0;
   options.background = 40.0;
+  options.blur_sigma = 0.0;
   const GrayImage clean = RenderPolygon(rect, 100, 100, options);
   EXPECT_FLOAT_EQ(clean.at(10, 10), 200.0f);
   EXPECT_FLOAT_EQ(clean.at(10, 90), 40.0f);

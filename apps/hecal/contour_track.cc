@@ -1,0 +1,558 @@
+// `hecal contour track` and `hecal contour render`: see contour_track.h.
+#include "contour_track.h"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "contour.h"
+#include "hecal/contour/affine_pose.h"
+#include "hecal/contour/bspline.h"
+#include "hecal/contour/contour_study.h"
+#include "hecal/contour/gray_image.h"
+#include "hecal/contour/perspective_view.h"
+#include "hecal/contour/pose_uncertainty.h"
+#include "hecal/contour/render.h"
+#include "hecal/contour/shape_space.h"
+#include "hecal/contour/shape_tracker.h"
+#include "hecal/core/error.h"
+#include "hecal/core/split_mix.h"
+#include "hecal/io/atomic_file.h"
+#include "hecal/io/delimited_text.h"
+#include "hecal/version.h"
+#include "json_matrix.h"
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#endif
+
+namespace hecal::cli {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+constexpr std::array<std::string_view, 6> kShapeNames = {"tx",    "ty",  "m11m1",
+                                                         "m22m1", "m21", "m12"};
+
+double ParseOne(const std::string& flag, const std::string& text, const std::string& what) {
+  return ParseNumberList(flag, text, 1, what).front();
+}
+
+double ParsePositive(const std::string& flag, const std::string& text, const std::string& what) {
+  const double value = ParseOne(flag, text, what);
+  if (!(value > 0.0)) {
+    throw InputError(flag, 0, "must be positive, got '" + text + "'", "give " + what);
+  }
+  return value;
+}
+
+int ParseCount(const std::string& flag, const std::string& text, int min, int max,
+               const std::string& what) {
+  const double value = ParseOne(flag, text, what);
+  if (value != std::floor(value) || value < min || value > max) {
+    throw InputError(flag, 0,
+                     "must be a whole number from " + std::to_string(min) + " to " +
+                         std::to_string(max) + ", got '" + text + "'",
+                     "give " + what);
+  }
+  return static_cast<int>(value);
+}
+
+contour::ContourCamera ParseCamera(const std::string& focal, const std::string& z0) {
+  contour::ContourCamera camera;
+  camera.focal = ParseOne("--focal", focal, "the focal length in pixels");
+  camera.z0 = ParseOne("--z0", z0, "the initial distance Z0");
+  contour::ValidateContourCamera(camera);
+  return camera;
+}
+
+std::string Lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// ---- images ------------------------------------------------------------------------------------
+
+std::vector<fs::path> ListImageFiles(const std::string& dir) {
+  std::error_code error;
+  if (!fs::is_directory(dir, error)) {
+    throw InputError(dir, 0, "not a directory, or it does not exist",
+                     "give --images the folder that holds the image sequence");
+  }
+  constexpr std::array<std::string_view, 6> kExtensions = {".png", ".jpg", ".jpeg",
+                                                           ".bmp", ".tif", ".tiff"};
+  std::vector<fs::path> files;
+  for (fs::directory_iterator it(dir, error); !error && it != fs::directory_iterator();
+       it.increment(error)) {
+    std::error_code status_error;
+    const std::string extension = Lower(it->path().extension().string());
+    if (it->is_regular_file(status_error) &&
+        std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end()) {
+      files.push_back(it->path());
+    }
+  }
+  if (error) {
+    throw InputError(dir, 0, "cannot list the directory: " + error.message(),
+                     "check that it is readable");
+  }
+  if (files.empty()) {
+    throw InputError(dir, 0, "no images (png, jpg, jpeg, bmp, tif, tiff) in the directory",
+                     "put the image sequence there, or give --images the right folder");
+  }
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    return a.filename().string() < b.filename().string();
+  });
+  return files;
+}
+
+#if !defined(HECAL_HAVE_OPENCV_PEERS)
+[[noreturn]] void NeedsVision(const std::string& flag) {
+  throw InputError(flag, 0, "reading and writing images needs the vision layer (OpenCV)",
+                   "build hecal with HECAL_BUILD_VISION=ON");
+}
+#endif
+
+contour::GrayImage ReadGray(const fs::path& path) {
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+  const cv::Mat pixels = cv::imread(path.string(), cv::IMREAD_GRAYSCALE);
+  if (pixels.empty()) {
+    throw InputError(path.string(), 0, "cannot read the image",
+                     "check that it is a readable png/jpg/bmp/tif file");
+  }
+  contour::GrayImage image(pixels.cols, pixels.rows);
+  for (int y = 0; y < pixels.rows; ++y) {
+    const unsigned char* row = pixels.ptr<unsigned char>(y);
+    for (int x = 0; x < pixels.cols; ++x) image.at(x, y) = static_cast<float>(row[x]);
+  }
+  return image;
+#else
+  (void)path;
+  NeedsVision("--images");
+#endif
+}
+
+// ---- track -------------------------------------------------------------------------------------
+
+struct FrameResult {
+  std::string image;
+  contour::TrackedFrame tracked;
+  std::string status;  // tracked | lost | singular
+  std::optional<contour::ContourPoseUncertainty> pose;
+};
+
+enum class OutputKind { kNone, kCsv, kJson };
+
+OutputKind ParseOutputKind(const std::string& output) {
+  if (output.empty()) return OutputKind::kNone;
+  const std::string extension = Lower(fs::path(output).extension().string());
+  if (extension == ".csv") return OutputKind::kCsv;
+  if (extension == ".json") return OutputKind::kJson;
+  throw InputError("--output", 0, "unknown output format '" + output + "'",
+                   "name the file *.csv (one row per frame) or *.json (full covariances)");
+}
+
+std::string TrackCsv(const std::vector<FrameResult>& frames, contour::RotationForm form,
+                     const std::string& unit_note) {
+  const std::array<std::string_view, 6> names = contour::PoseParameterNames(form);
+  std::string csv = "# hecal " + std::string(kVersion) +
+                    " contour track: S = (tx, ty, M11-1, M22-1, M21, M12), tx/ty in px; " +
+                    unit_note + "; angles in degrees (" +
+                    std::string(contour::RotationSequence(form)) +
+                    "); sd = 1 sigma (UT for the pose)\n";
+  csv += "frame,image,status,edges_used,edges_searched,sigma_px,residual_rms_px";
+  for (std::string_view n : kShapeNames) csv += "," + std::string(n);
+  for (std::string_view n : kShapeNames) csv += ",sd_" + std::string(n);
+  for (std::size_t i = 0; i < 6; ++i) csv += "," + std::string(names[i]) + (i < 3 ? "" : "_deg");
+  for (std::size_t i = 0; i < 6; ++i) {
+    csv += ",sd_" + std::string(names[i]) + (i < 3 ? "" : "_deg");
+  }
+  csv += ",bias\n";
+  for (const FrameResult& f : frames) {
+    const contour::TrackedFrame& t = f.tracked;
+    csv += std::to_string(t.frame) + "," + io::QuoteField(f.image) + "," + f.status + "," +
+           std::to_string(t.edges_used) + "," + std::to_string(t.edges_searched) + ",";
+    io::AppendDouble(t.sigma, &csv);
+    csv += ",";
+    io::AppendDouble(t.residual_rms, &csv);
+    for (int i = 0; i < 6; ++i) {
+      csv += ",";
+      io::AppendDouble(t.shape(i), &csv);
+    }
+    for (int i = 0; i < 6; ++i) {
+      csv += ",";
+      io::AppendDouble(std::sqrt(std::max(0.0, t.shape_covariance(i, i))), &csv);
+    }
+    std::string biased;
+    for (int i = 0; i < 12; ++i) {
+      csv += ",";
+      if (!f.pose) continue;
+      const int j = i % 6;
+      const double value =
+          i < 6 ? f.pose->parameters(j) : std::sqrt(std::max(0.0, f.pose->covariance(j, j)));
+      io::AppendDouble(j < 3 ? value : value * kDegrees, &csv);
+    }
+    if (f.pose) {
+      for (std::size_t j = 0; j < 6; ++j) {
+        if (f.pose->biased[j]) biased += (biased.empty() ? "" : " ") + std::string(names[j]);
+      }
+    }
+    csv += "," + io::QuoteField(biased) + "\n";
+  }
+  return csv;
+}
+
+std::string TrackJson(const std::vector<FrameResult>& frames, const ContourTrackOptions& options,
+                      const contour::ContourCamera& camera, const Eigen::Vector2d& principal,
+                      contour::RotationForm form, const contour::ShapeTracker& tracker) {
+  const std::array<std::string_view, 6> names = contour::PoseParameterNames(form);
+  nlohmann::json parameter_names = nlohmann::json::array();
+  for (std::string_view n : names) parameter_names.push_back(n);
+  nlohmann::json shape_names = nlohmann::json::array();
+  for (std::string_view n : kShapeNames) shape_names.push_back(n);
+  nlohmann::json result = {
+      {"hecal_version", kVersion},
+      {"command", "contour track"},
+      {"units",
+       {{"shape", "tx, ty in px (from the principal point); M entries dimensionless"},
+        {"translation", "unit of --z0"},
+        {"euler_deg", "deg"},
+        {"pose_parameters", "translation in the unit of --z0, angles in rad"},
+        {"pose_covariance", "over pose_parameters: (unit of --z0)^2, rad^2 and products"}}},
+      {"camera",
+       {{"focal_px", camera.focal}, {"z0", camera.z0}, {"principal_point", JsonVector(principal)}}},
+      {"subspace", options.subspace},
+      {"rotation",
+       {{"form", contour::RotationFormName(form)}, {"sequence", contour::RotationSequence(form)}}},
+      {"shape_names", shape_names},
+      {"pose_parameter_names", parameter_names},
+      {"template_shape", JsonVector(tracker.template_shape())},
+      {"polarity", tracker.polarity()},
+  };
+  nlohmann::json list = nlohmann::json::array();
+  for (const FrameResult& f : frames) {
+    const contour::TrackedFrame& t = f.tracked;
+    nlohmann::json frame = {
+        {"frame", t.frame},
+        {"image", f.image},
+        {"status", f.status},
+        {"edges",
+         {{"searched", t.edges_searched}, {"found", t.edges_found}, {"used", t.edges_used}}},
+        {"measurement_sigma_px", t.sigma},
+        {"measurement_sigma_source", t.sigma_estimated ? "estimated" : "given"},
+        {"residual_rms_px", t.residual_rms},
+        {"shape", JsonVector(t.shape)},
+        {"shape_covariance", JsonRows(t.shape_covariance)},
+        {"x", JsonVector(t.x)},
+        {"x_covariance", JsonRows(t.x_covariance)},
+    };
+    if (f.pose) {
+      nlohmann::json bias = nlohmann::json::object();
+      for (std::size_t j = 0; j < 6; ++j) bias[std::string(names[j])] = f.pose->biased[j];
+      frame["pose"] = {
+          {"translation", JsonVector(f.pose->pose.translation)},
+          {"rotation_matrix", JsonRows(f.pose->pose.rotation)},
+          {"euler_deg", JsonVector(f.pose->pose.euler * kDegrees)},
+          {"parameters", JsonVector(f.pose->parameters)},
+          {"covariance", JsonRows(f.pose->covariance)},
+          {"ut_mean", JsonVector(f.pose->mean)},
+          {"bias", bias},
+      };
+    }
+    list.push_back(std::move(frame));
+  }
+  result["frames"] = std::move(list);
+  return result.dump(2) + "\n";
+}
+
+}  // namespace
+
+void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
+  const contour::ContourCamera camera = ParseCamera(options.focal, options.z0);
+  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
+  if (!form) {
+    throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
+                     "use zyx (roll–pitch–yaw, the seed's choice) or zxz");
+  }
+  contour::ShapeTrackerOptions tracker_options;
+  const std::optional<contour::ShapeSubspace> subspace =
+      contour::ParseShapeSubspace(options.subspace);
+  if (!subspace) {
+    throw InputError("--subspace", 0, "unknown shape subspace '" + options.subspace + "'",
+                     "use full, similarity, translation-scale, planar-robot or translation");
+  }
+  tracker_options.subspace = *subspace;
+  if (!options.measurement_sigma.empty()) {
+    tracker_options.measurement_sigma =
+        ParsePositive("--measurement-sigma", options.measurement_sigma, "σ in pixels");
+  }
+  tracker_options.search.range =
+      ParsePositive("--search-range", options.search_range, "the search range in pixels");
+  if (tracker_options.search.range < 2.0 || tracker_options.search.range > 200.0) {
+    throw InputError("--search-range", 0, "must be 2 … 200 px, got '" + options.search_range + "'",
+                     "give the largest expected motion of the contour per frame, in pixels");
+  }
+  if (options.init_points != "control" && options.init_points != "curve") {
+    throw InputError("--init-points", 0, "unknown kind '" + options.init_points + "'",
+                     "use control (B-spline control points) or curve (points on the contour)");
+  }
+  const OutputKind output_kind = ParseOutputKind(options.output);
+
+  Eigen::Matrix2Xd control = ReadContourFile(options.init);
+  if (options.init_points == "curve") {
+    control = contour::ClosedBSpline::Interpolating(control).control_points();
+  }
+  const Eigen::Vector2d principal =
+      options.principal_point.empty() ? Eigen::Vector2d(control.rowwise().mean()) : [&] {
+        const std::vector<double> p =
+            ParseNumberList("--principal-point", options.principal_point, 2, "CX,CY (px)");
+        return Eigen::Vector2d(p[0], p[1]);
+      }();
+  contour::ShapeTracker tracker(control, principal, tracker_options);
+  const std::vector<fs::path> files = ListImageFiles(options.images);
+
+  std::vector<FrameResult> frames;
+  int width = -1, height = -1;
+  const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
+  for (const fs::path& file : files) {
+    const contour::GrayImage image = ReadGray(file);
+    if (width < 0) {
+      width = image.width();
+      height = image.height();
+    } else if (image.width() != width || image.height() != height) {
+      throw InputError(file.string(), 0,
+                       "the image is " + std::to_string(image.width()) + "×" +
+                           std::to_string(image.height()) + ", the first was " +
+                           std::to_string(width) + "×" + std::to_string(height),
+                       "give a sequence of images of one size");
+    }
+    FrameResult frame;
+    frame.image = file.filename().string();
+    frame.tracked = tracker.Track(image);
+    frame.status = frame.tracked.updated ? "tracked" : "lost";
+    try {
+      frame.pose = contour::UnscentedPose(frame.tracked.shape, frame.tracked.shape_covariance,
+                                          camera, *form);
+    } catch (const DegenerateError&) {
+      frame.status = "singular";
+    }
+    // One line per frame on stdout.
+    char line[256];
+    std::snprintf(line, sizeof line, "%4d %-24s %-8s edges %3d/%3d  σ %.3f px", frame.tracked.frame,
+                  frame.image.c_str(), frame.status.c_str(), frame.tracked.edges_used,
+                  frame.tracked.edges_searched, frame.tracked.sigma);
+    io.out << line;
+    if (frame.pose) {
+      const Vector6d& p = frame.pose->parameters;
+      std::snprintf(line, sizeof line, "  T = (%.3f, %.3f, %.3f)  %s,%s,%s = (%.3f, %.3f, %.3f)°",
+                    p(0), p(1), p(2), std::string(names[3]).c_str(), std::string(names[4]).c_str(),
+                    std::string(names[5]).c_str(), p(3) * kDegrees, p(4) * kDegrees,
+                    p(5) * kDegrees);
+      io.out << line << (frame.pose->any_biased ? "  (bias)" : "");
+    }
+    io.out << "\n";
+    frames.push_back(std::move(frame));
+  }
+  const std::string unit_note =
+      "translation in the unit of --z0 (Z0 = " + io::FormatDouble(camera.z0) + ")";
+  if (output_kind == OutputKind::kCsv) {
+    io::WriteFileAtomically(options.output, TrackCsv(frames, *form, unit_note));
+  } else if (output_kind == OutputKind::kJson) {
+    io::WriteFileAtomically(options.output,
+                            TrackJson(frames, options, camera, principal, *form, tracker));
+  }
+}
+
+// ---- render ------------------------------------------------------------------------------------
+
+void RunContourRender(const ContourRenderOptions& options, const Io& io) {
+  const contour::ContourCamera camera = ParseCamera(options.focal, options.z0);
+  const int frames = ParseCount("--frames", options.frames, 1, 100000, "the number of frames");
+  const std::vector<double> from =
+      ParseNumberList("--from", options.from, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
+  const std::vector<double> to =
+      ParseNumberList("--to", options.to, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
+  const std::vector<double> size = ParseNumberList("--size", options.size, 2, "W,H (px)");
+  for (double v : size) {
+    if (v != std::floor(v) || v < 8 || v > 20000) {
+      throw InputError("--size", 0, "W and H must be whole numbers from 8 to 20000",
+                       "give the image size in pixels, e.g. 768,576");
+    }
+  }
+  const int width = static_cast<int>(size[0]), height = static_cast<int>(size[1]);
+  contour::RenderOptions render;
+  render.noise_sigma = ParseOne("--noise", options.noise, "the noise σ in grey levels");
+  if (render.noise_sigma < 0.0) {
+    throw InputError("--noise", 0, "must be ≥ 0", "give the noise σ in grey levels (e.g. 3)");
+  }
+  render.blur_sigma = ParseOne("--blur", options.blur, "the blur σ in pixels");
+  if (render.blur_sigma < 0.0 || render.blur_sigma > 20.0) {
+    throw InputError("--blur", 0, "must be 0 … 20 px", "give the optics blur σ (e.g. 0.7)");
+  }
+  const double seed = ParseOne("--seed", options.seed, "a whole number ≥ 0");
+  if (seed < 0.0 || seed != std::floor(seed) || seed > 9.0e15) {
+    throw InputError("--seed", 0, "must be a whole number ≥ 0", "give e.g. 1");
+  }
+  render.quantize = true;
+  const Eigen::Matrix2Xd target_points =
+      options.contour.empty() ? contour::DefaultTarget() : ReadContourFile(options.contour);
+  const contour::ClosedBSpline target(target_points);
+  // The ShapeSpace check: a collinear target has no affine deformation to track.
+  const contour::ShapeSpace check(target_points);
+  (void)check;
+#if !defined(HECAL_HAVE_OPENCV_PEERS)
+  (void)io;
+  (void)frames;
+  (void)width;
+  (void)height;
+  NeedsVision("--output");
+#else
+  std::error_code error;
+  fs::create_directories(options.output, error);
+  if (error || !fs::is_directory(options.output)) {
+    throw InputError(options.output, 0, "cannot create the output folder",
+                     "give --output a folder that can be created or written");
+  }
+  const Eigen::Vector2d principal((width - 1) / 2.0, (height - 1) / 2.0);
+  std::string truth =
+      "# hecal " + std::string(kVersion) +
+      " contour render: x_camera = R p + (Tx, Ty, Z0 + Tz), R = Rz(Rz) Ry(Ry) Rx(Rx); Z0 = " +
+      io::FormatDouble(camera.z0) + ", f = " + io::FormatDouble(camera.focal) +
+      " px, principal point " + io::FormatDouble(principal.x()) + "," +
+      io::FormatDouble(principal.y()) +
+      "; tx..m12: the weak-perspective shape vector of the motion (tx, ty in px)\n"
+      "frame,image,Tx,Ty,Tz,Rx_deg,Ry_deg,Rz_deg,tx,ty,m11m1,m22m1,m21,m12\n";
+  std::string init;
+  int outside = 0;
+  for (int t = 0; t < frames; ++t) {
+    const double u = frames > 1 ? static_cast<double>(t) / (frames - 1) : 0.0;
+    Vector6d motion;
+    for (int i = 0; i < 6; ++i) {
+      motion(i) = from[static_cast<std::size_t>(i)] +
+                  u * (to[static_cast<std::size_t>(i)] - from[static_cast<std::size_t>(i)]);
+    }
+    const Eigen::Vector3d translation = motion.head<3>();
+    const Eigen::Matrix3d rotation =
+        contour::RotationZyx(motion(3) / kDegrees, motion(4) / kDegrees, motion(5) / kDegrees);
+    const Eigen::Matrix2Xd outline =
+        contour::PerspectiveOutline(target, rotation, translation, camera, principal);
+    if (outline.row(0).minCoeff() < 0.0 || outline.row(1).minCoeff() < 0.0 ||
+        outline.row(0).maxCoeff() > width - 1.0 || outline.row(1).maxCoeff() > height - 1.0) {
+      ++outside;
+    }
+    render.seed = SplitMix64(static_cast<std::uint64_t>(seed)) + static_cast<std::uint64_t>(t);
+    const contour::GrayImage image = contour::RenderPolygon(outline, width, height, render);
+    cv::Mat pixels(height, width, CV_8UC1);
+    for (int y = 0; y < height; ++y) {
+      unsigned char* row = pixels.ptr<unsigned char>(y);
+      for (int x = 0; x < width; ++x) row[x] = static_cast<unsigned char>(image.at(x, y));
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", t);
+    const std::string path = (fs::path(options.output) / name).string();
+    const std::string temporary = path + ".tmp.png";
+    if (!cv::imwrite(temporary, pixels)) {
+      throw InputError(path, 0, "cannot write the image", "check that the folder is writable");
+    }
+    fs::rename(temporary, path, error);
+    if (error) {
+      throw InputError(path, 0, "cannot write the image: " + error.message(),
+                       "check that the folder is writable");
+    }
+    truth += std::to_string(t) + "," + name;
+    for (int i = 0; i < 6; ++i) {
+      truth += ",";
+      io::AppendDouble(motion(i), &truth);
+    }
+    const Vector6d shape = contour::ShapeFromPose(rotation, translation, camera);
+    for (int i = 0; i < 6; ++i) {
+      truth += ",";
+      io::AppendDouble(shape(i), &truth);
+    }
+    truth += "\n";
+    if (t == 0) {
+      const Eigen::Matrix2Xd first =
+          contour::ProjectPerspective(target_points, rotation, translation, camera).colwise() +
+          principal;
+      init = "# hecal contour render: control points of the first view (px)\nx,y\n";
+      for (Eigen::Index i = 0; i < first.cols(); ++i) {
+        io::AppendDouble(first(0, i), &init);
+        init += ",";
+        io::AppendDouble(first(1, i), &init);
+        init += "\n";
+      }
+    }
+  }
+  io::WriteFileAtomically((fs::path(options.output) / "init.csv").string(), init);
+  io::WriteFileAtomically((fs::path(options.output) / "truth.csv").string(), truth);
+  io.out << "rendered " << frames << " frames (" << width << "×" << height << ") to "
+         << options.output << "\n";
+  if (outside > 0) {
+    io.err << "hecal: warning: the target leaves the image in " << outside
+           << " frame(s); the tracker cannot follow it there (fix: a smaller motion or a larger "
+              "--size)\n";
+  }
+#endif
+}
+
+// ---- registration ------------------------------------------------------------------------------
+
+void AddContourTrackCommand(CLI::App& contour, const Io& io) {
+  auto options = std::make_shared<ContourTrackOptions>();
+  CLI::App* track = contour.add_subcommand(
+      "track", "Track a planar contour through images (shape-space Kalman filter) → motion");
+  track->add_option("--images", options->images, "Folder of the image sequence (sorted by name)")
+      ->required();
+  track->add_option("--init", options->init, "Initial contour in the first image: CSV x,y (px)")
+      ->required();
+  track->add_option("--focal", options->focal, "Focal length F (px)")->required();
+  track->add_option("--z0", options->z0, "Initial distance Z0 (the unit of the translation)")
+      ->required();
+  track->add_option("--principal-point", options->principal_point,
+                    "CX,CY (px; default: centroid of the init control points)");
+  track->add_option("--init-points", options->init_points,
+                    "control (default: B-spline control points) or curve (points on it)");
+  track->add_option("--subspace", options->subspace,
+                    "full (default), similarity, translation-scale, planar-robot, translation");
+  track->add_option("--rotation", options->rotation, "zyx (default; roll–pitch–yaw) or zxz");
+  track->add_option("--measurement-sigma", options->measurement_sigma,
+                    "Edge-location σ (px; default: estimated per frame)");
+  track->add_option("--search-range", options->search_range,
+                    "± px searched along each normal (default 10)");
+  track->add_option("--output", options->output,
+                    "track.csv (a row per frame) or track.json (full covariances), atomic");
+  track->callback([options, io] { RunContourTrack(*options, io); });
+}
+
+void AddContourRenderCommand(CLI::App& contour, const Io& io) {
+  auto options = std::make_shared<ContourRenderOptions>();
+  CLI::App* render = contour.add_subcommand(
+      "render", "Render a synthetic sequence of a moving planar contour target (known motion)");
+  render->add_option("--output", options->output, "Output folder (created when missing)")
+      ->required();
+  render->add_option("--contour", options->contour,
+                     "Target control points: CSV x,y in its plane (Z0's unit; default built-in)");
+  render->add_option("--frames", options->frames, "Number of frames (default 30)");
+  render->add_option("--from", options->from,
+                     "TX,TY,TZ,RX,RY,RZ of the first frame (Z0's unit, degrees; default 0)");
+  render->add_option("--to", options->to, "TX,TY,TZ,RX,RY,RZ of the last frame")->required();
+  render->add_option("--focal", options->focal, "Focal length F (px)")->required();
+  render->add_option("--z0", options->z0, "Initial distance Z0")->required();
+  render->add_option("--size", options->size, "W,H (px)")->required();
+  render->add_option("--noise", options->noise, "Pixel noise σ (grey levels; default 3)");
+  render->add_option("--blur", options->blur, "Optics blur σ (px; default 0.7)");
+  render->add_option("--seed", options->seed, "Noise seed (default 1)");
+  render->callback([options, io] { RunContourRender(*options, io); });
+}
+
+}  // namespace hecal::cli
