@@ -20,6 +20,7 @@
 #include "hecal/contour/bspline.h"
 #include "hecal/contour/contour_study.h"
 #include "hecal/contour/gray_image.h"
+#include "hecal/contour/perspective_pose.h"
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/contour/render.h"
@@ -319,6 +320,26 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
         return Eigen::Vector2d(p[0], p[1]);
       }();
   contour::ShapeTracker tracker(control, principal, tracker_options);
+  // The pose model: the seed's weak perspective, or the perspective correction
+  // (contour/perspective_pose.h), which needs the true principal point; auto picks it when
+  // --principal-point is given.
+  if (options.pose_model != "auto" && options.pose_model != "weak" &&
+      options.pose_model != "perspective") {
+    throw InputError("--pose-model", 0, "unknown pose model '" + options.pose_model + "'",
+                     "use auto, weak or perspective");
+  }
+  const bool perspective = options.pose_model == "perspective" ||
+                           (options.pose_model == "auto" && !options.principal_point.empty());
+  std::optional<contour::PerspectivePoseModel> perspective_model;
+  if (perspective) perspective_model.emplace(control.colwise() - principal, camera);
+  const contour::PoseOfShape pose_of_shape = [&](const Vector6d& s) {
+    return perspective_model ? perspective_model->Pose(s, *form)
+                             : contour::PoseFromShape(s, camera, *form);
+  };
+  io.out << "pose model: "
+         << (perspective ? "perspective (weak-perspective bias removed, principal point given)"
+                         : "weak perspective (the seed's; give --principal-point for perspective)")
+         << "\n";
   const std::vector<fs::path> files = ListImageFiles(options.images);
 
   std::vector<FrameResult> frames;
@@ -342,7 +363,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
     frame.status = frame.tracked.updated ? "tracked" : "lost";
     try {
       frame.pose = contour::UnscentedPose(frame.tracked.shape, frame.tracked.shape_covariance,
-                                          camera, *form);
+                                          pose_of_shape, *form);
     } catch (const DegenerateError&) {
       frame.status = "singular";
     }
@@ -518,6 +539,9 @@ void AddContourTrackCommand(CLI::App& contour, const Io& io) {
   track->add_option("--focal", options->focal, "Focal length F (px)")->required();
   track->add_option("--z0", options->z0, "Initial distance Z0 (the unit of the translation)")
       ->required();
+  track->add_option("--pose-model", options->pose_model,
+                    "auto (default: perspective with --principal-point, else weak), weak (the "
+                    "seed's weak perspective) or perspective (its bias removed)");
   track->add_option("--principal-point", options->principal_point,
                     "CX,CY (px; default: centroid of the init control points)");
   track->add_option("--init-points", options->init_points,

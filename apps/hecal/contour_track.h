@@ -62,6 +62,7 @@ struct ContourTrackOptions {
   std::string rotation = "zyx";
   std::string measurement_sigma;  // "" = estimate
   std::string search_range = "10";
+  std::string pose_model = "auto";  // auto | weak | perspective
   std::string output;
 };
 void RunContourTrack(const ContourTrackOptions& options, const Io& io);

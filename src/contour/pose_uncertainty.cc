@@ -19,7 +19,13 @@ double WrapSigned(double a) {  // into (−π, π]
 
 Vector6d PoseParametersNear(const Vector6d& shape, const ContourCamera& camera, RotationForm form,
                             const Vector6d& reference) {
-  Vector6d p = PoseParameters(PoseFromShape(shape, camera, form));
+  return PoseParametersNear(
+      shape, [&](const Vector6d& s) { return PoseFromShape(s, camera, form); }, form, reference);
+}
+
+Vector6d PoseParametersNear(const Vector6d& shape, const PoseOfShape& pose_of_shape,
+                            RotationForm form, const Vector6d& reference) {
+  Vector6d p = PoseParameters(pose_of_shape(shape));
   const std::array<bool, 6> circular = CircularParameters(form);
   for (int j = 0; j < 6; ++j) {
     if (circular[static_cast<size_t>(j)]) p(j) = reference(j) + WrapSigned(p(j) - reference(j));
@@ -39,12 +45,20 @@ Vector6d PoseDifference(const Vector6d& a, const Vector6d& b, RotationForm form)
 ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
                                      const ContourCamera& camera, RotationForm form,
                                      const UnscentedPoseOptions& options) {
+  return UnscentedPose(
+      shape, shape_covariance, [&](const Vector6d& s) { return PoseFromShape(s, camera, form); },
+      form, options);
+}
+
+ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
+                                     const PoseOfShape& pose_of_shape, RotationForm form,
+                                     const UnscentedPoseOptions& options) {
   ContourPoseUncertainty result;
-  result.pose = PoseFromShape(shape, camera, form);
+  result.pose = pose_of_shape(shape);
   result.parameters = PoseParameters(result.pose);
   // One thread: f records its points in call order (the centre first, then ±c S_i).
   const auto f = [&](const Eigen::VectorXd& s) -> Eigen::VectorXd {
-    const Vector6d p = PoseParametersNear(s, camera, form, result.parameters);
+    const Vector6d p = PoseParametersNear(s, pose_of_shape, form, result.parameters);
     result.sigma_shapes.push_back(s);
     result.sigma_poses.push_back(p);
     return p;

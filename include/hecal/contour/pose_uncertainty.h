@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "hecal/contour/affine_pose.h"
@@ -50,16 +51,25 @@ struct UnscentedPoseOptions {
   double bias_threshold = 0.25;
 };
 
+// The map from a shape vector to a pose: PoseFromShape (weak perspective, the seed's), or
+// PerspectivePose (perspective_pose.h).
+using PoseOfShape = std::function<ContourPose(const Vector6d&)>;
+
 // Throws hecal::DegenerateError when f(S̄) or a sigma point is singular (affine_pose.h), and
-// std::invalid_argument for an invalid covariance.
+// std::invalid_argument for an invalid covariance. The first form uses PoseFromShape.
 ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
                                      const ContourCamera& camera, RotationForm form,
+                                     const UnscentedPoseOptions& options = {});
+ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
+                                     const PoseOfShape& pose_of_shape, RotationForm form,
                                      const UnscentedPoseOptions& options = {});
 
 // Pose parameters of a shape vector with the circular angles unwrapped to within π of
 // `reference` (a PoseParameters vector of the same form).
 Vector6d PoseParametersNear(const Vector6d& shape, const ContourCamera& camera, RotationForm form,
                             const Vector6d& reference);
+Vector6d PoseParametersNear(const Vector6d& shape, const PoseOfShape& pose_of_shape,
+                            RotationForm form, const Vector6d& reference);
 // a − b with circular angles wrapped into (−π, π].
 Vector6d PoseDifference(const Vector6d& a, const Vector6d& b, RotationForm form);
 
