@@ -213,6 +213,12 @@ std::string TrackCsv(const std::vector<FrameResult>& frames, contour::RotationFo
   return csv;
 }
 
+// The pose model --pose-model selects (auto: perspective when the principal point is given).
+bool UsesPerspectivePose(const ContourTrackOptions& options) {
+  return options.pose_model == "perspective" ||
+         (options.pose_model == "auto" && !options.principal_point.empty());
+}
+
 std::string TrackJson(const std::vector<FrameResult>& frames, const ContourTrackOptions& options,
                       const contour::ContourCamera& camera, const Eigen::Vector2d& principal,
                       contour::RotationForm form, const contour::ShapeTracker& tracker) {
@@ -224,6 +230,7 @@ std::string TrackJson(const std::vector<FrameResult>& frames, const ContourTrack
   nlohmann::json result = {
       {"hecal_version", kVersion},
       {"command", "contour track"},
+      {"pose_model", UsesPerspectivePose(options) ? "perspective" : "weak"},
       {"units",
        {{"shape", "tx, ty in px (from the principal point); M entries dimensionless"},
         {"translation", "unit of --z0"},
@@ -328,8 +335,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
     throw InputError("--pose-model", 0, "unknown pose model '" + options.pose_model + "'",
                      "use auto, weak or perspective");
   }
-  const bool perspective = options.pose_model == "perspective" ||
-                           (options.pose_model == "auto" && !options.principal_point.empty());
+  const bool perspective = UsesPerspectivePose(options);
   std::optional<contour::PerspectivePoseModel> perspective_model;
   if (perspective) perspective_model.emplace(control.colwise() - principal, camera);
   const contour::PoseOfShape pose_of_shape = [&](const Vector6d& s) {
@@ -385,7 +391,8 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
     frames.push_back(std::move(frame));
   }
   const std::string unit_note =
-      "translation in the unit of --z0 (Z0 = " + io::FormatDouble(camera.z0) + ")";
+      "translation in the unit of --z0 (Z0 = " + io::FormatDouble(camera.z0) + "); pose model " +
+      (perspective ? "perspective" : "weak perspective");
   if (output_kind == OutputKind::kCsv) {
     io::WriteFileAtomically(options.output, TrackCsv(frames, *form, unit_note));
   } else if (output_kind == OutputKind::kJson) {
