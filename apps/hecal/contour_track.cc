@@ -31,6 +31,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/version.h"
+#include "image_files.h"
 #include "json_matrix.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <opencv2/core.hpp>
@@ -84,38 +85,6 @@ std::string Lower(std::string text) {
 }
 
 // ---- images ------------------------------------------------------------------------------------
-
-std::vector<fs::path> ListImageFiles(const std::string& dir) {
-  std::error_code error;
-  if (!fs::is_directory(dir, error)) {
-    throw InputError(dir, 0, "not a directory, or it does not exist",
-                     "give --images the folder that holds the image sequence");
-  }
-  constexpr std::array<std::string_view, 6> kExtensions = {".png", ".jpg", ".jpeg",
-                                                           ".bmp", ".tif", ".tiff"};
-  std::vector<fs::path> files;
-  for (fs::directory_iterator it(dir, error); !error && it != fs::directory_iterator();
-       it.increment(error)) {
-    std::error_code status_error;
-    const std::string extension = Lower(it->path().extension().string());
-    if (it->is_regular_file(status_error) &&
-        std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end()) {
-      files.push_back(it->path());
-    }
-  }
-  if (error) {
-    throw InputError(dir, 0, "cannot list the directory: " + error.message(),
-                     "check that it is readable");
-  }
-  if (files.empty()) {
-    throw InputError(dir, 0, "no images (png, jpg, jpeg, bmp, tif, tiff) in the directory",
-                     "put the image sequence there, or give --images the right folder");
-  }
-  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
-    return a.filename().string() < b.filename().string();
-  });
-  return files;
-}
 
 #if !defined(HECAL_HAVE_OPENCV_PEERS)
 [[noreturn]] void NeedsVision(const std::string& flag) {
@@ -346,7 +315,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
          << (perspective ? "perspective (weak-perspective bias removed, principal point given)"
                          : "weak perspective (the seed's; give --principal-point for perspective)")
          << "\n";
-  const std::vector<fs::path> files = ListImageFiles(options.images);
+  const std::vector<fs::path> files = ListImageFiles(options.images, "the image sequence");
 
   std::vector<FrameResult> frames;
   int width = -1, height = -1;

@@ -4,7 +4,6 @@
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <exception>
 #include <iomanip>
@@ -18,6 +17,7 @@
 #include "hecal/io/target_file.h"
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
+#include "image_files.h"
 #include "image_set.h"
 
 namespace hecal::cli {
@@ -28,40 +28,11 @@ namespace fs = std::filesystem;
 // Hand–eye calibration needs 3 stations (2 motions); Zhang's intrinsics need 3 views.
 constexpr int kMinViews = 3;
 
-bool IsImageFile(const fs::path& path) {
-  constexpr std::array<std::string_view, 6> kExtensions = {".png", ".jpg", ".jpeg",
-                                                           ".bmp", ".tif", ".tiff"};
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
-}
-
 std::vector<ImageRecord> ListImages(const std::string& dir) {
-  std::error_code error;
-  if (!fs::is_directory(dir, error)) {
-    throw InputError(dir, 0, "not a directory, or it does not exist",
-                     "give --images the folder that holds the target images");
-  }
   std::vector<ImageRecord> images;
-  for (fs::directory_iterator it(dir, error); !error && it != fs::directory_iterator();
-       it.increment(error)) {
-    std::error_code status_error;
-    if (it->is_regular_file(status_error) && IsImageFile(it->path())) {
-      images.push_back(ImageRecord{it->path(), {}, {}, {}, {}});
-    }
+  for (const fs::path& path : ListImageFiles(dir, "the target images")) {
+    images.push_back(ImageRecord{path, {}, {}, {}, {}});
   }
-  if (error) {
-    throw InputError(dir, 0, "cannot list the directory: " + error.message(),
-                     "check that it is readable");
-  }
-  if (images.empty()) {
-    throw InputError(dir, 0, "no images (png, jpg, jpeg, bmp, tif, tiff) in the directory",
-                     "put the target images there, or give --images the right folder");
-  }
-  std::sort(images.begin(), images.end(), [](const ImageRecord& a, const ImageRecord& b) {
-    return a.path.filename().string() < b.path.filename().string();
-  });
   return images;
 }
 
