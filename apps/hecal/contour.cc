@@ -4,20 +4,21 @@
 #include <CLI/CLI.hpp>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <cctype>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
+#include <string_view>
 
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/core/error.h"
-#include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
 #include "json_matrix.h"
+#include "point_file.h"
 
 namespace hecal::cli {
 namespace {
@@ -84,63 +85,19 @@ std::vector<double> ParseNumberList(const std::string& flag, const std::string& 
 }
 
 Eigen::Matrix2Xd ReadContourFile(const std::string& path) {
-  const std::string text = io::ReadFile(path);
-  io::LineCursor cursor(text);
-  std::string_view line;
-  std::optional<io::Separator> separator;
-  std::vector<io::Field> fields;
-  std::string error;
-  int x_column = -1, y_column = -1;
-  std::size_t columns = 0;
-  std::vector<Eigen::Vector2d> points;
-  while (cursor.Next(&line)) {
-    if (io::IsBlank(line) || io::IsComment(line)) continue;
-    const int number = cursor.line_number();
-    if (!separator) separator = io::DetectSeparator(line);
-    if (!io::SplitFields(line, *separator, &fields, &error)) {
-      throw InputError(path, number, error, "close the quote or remove the text after it");
-    }
-    if (columns == 0) {
-      for (std::size_t c = 0; c < fields.size(); ++c) {
-        std::string name(io::Trim(io::FieldValue(fields[c])));
-        std::transform(name.begin(), name.end(), name.begin(),
-                       [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-        if (name == "x") x_column = static_cast<int>(c);
-        if (name == "y") y_column = static_cast<int>(c);
-      }
-      if (x_column < 0 || y_column < 0) {
-        throw InputError(path, number, "the header must name the columns x and y",
-                         "start the file with the line x,y");
-      }
-      columns = fields.size();
-      continue;
-    }
-    if (fields.size() != columns) {
-      throw InputError(
-          path, number,
-          "expected " + std::to_string(columns) + " values, got " + std::to_string(fields.size()),
-          "give one value per header column");
-    }
-    Eigen::Vector2d p;
-    for (int k = 0; k < 2; ++k) {
-      const io::Field& field = fields[static_cast<std::size_t>(k == 0 ? x_column : y_column)];
-      if (!io::ParseDouble(field.text, &p(k)) || !std::isfinite(p(k))) {
-        throw InputError(path, number,
-                         std::string(k == 0 ? "x" : "y") + " is not a finite number: '" +
-                             std::string(field.text) + "'",
-                         "write a plain decimal number");
-      }
-    }
-    points.push_back(p);
+  constexpr std::array<std::string_view, 2> kColumns = {"x", "y"};
+  const PointFile file =
+      ReadPointFile(path, kColumns, /*lengths=*/false, io::LengthUnit::kMetre, "contour points");
+  if (file.rows.size() < 4) {
+    throw InputError(path, 0,
+                     "a closed contour needs at least 4 points, the file has " +
+                         std::to_string(file.rows.size()),
+                     "give the header x,y and then 4 or more points around the contour");
   }
-  if (points.size() < 4) {
-    throw InputError(
-        path, 0,
-        "a closed contour needs at least 4 points, the file has " + std::to_string(points.size()),
-        "give the header x,y and then 4 or more points around the contour");
+  Eigen::Matrix2Xd Q(2, static_cast<Eigen::Index>(file.rows.size()));
+  for (std::size_t i = 0; i < file.rows.size(); ++i) {
+    Q.col(static_cast<Eigen::Index>(i)) = file.rows[i].value.head<2>();
   }
-  Eigen::Matrix2Xd Q(2, static_cast<Eigen::Index>(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i) Q.col(static_cast<Eigen::Index>(i)) = points[i];
   return Q;
 }
 
