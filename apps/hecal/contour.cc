@@ -25,10 +25,6 @@ namespace {
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
-double ParseOne(const std::string& flag, const std::string& text, const std::string& what) {
-  return ParseNumberList(flag, text, 1, what).front();
-}
-
 Matrix6d ParseShapeCovariance(const std::string& text) {
   const std::size_t count = static_cast<std::size_t>(std::count(text.begin(), text.end(), ',')) + 1;
   if (count != 6 && count != 36) {
@@ -84,6 +80,30 @@ std::vector<double> ParseNumberList(const std::string& flag, const std::string& 
   return values;
 }
 
+double ParseNumber(const std::string& flag, const std::string& text, const std::string& what) {
+  return ParseNumberList(flag, text, 1, what).front();
+}
+
+int ParseCount(const std::string& flag, const std::string& text, int min, int max,
+               const std::string& what) {
+  const double value = ParseNumber(flag, text, what);
+  if (value != std::floor(value) || value < min || value > max) {
+    throw InputError(flag, 0,
+                     "must be a whole number from " + std::to_string(min) + " to " +
+                         std::to_string(max) + ", got '" + text + "'",
+                     "give " + what);
+  }
+  return static_cast<int>(value);
+}
+
+contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0) {
+  contour::ContourCamera camera;
+  camera.focal = ParseNumber("--focal", focal, "the focal length");
+  camera.z0 = ParseNumber("--z0", z0, "the initial distance Z0");
+  contour::ValidateContourCamera(camera);
+  return camera;
+}
+
 Eigen::Matrix2Xd ReadContourFile(const std::string& path) {
   constexpr std::array<std::string_view, 2> kColumns = {"x", "y"};
   const PointFile file =
@@ -105,10 +125,7 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
   const std::vector<double> s =
       ParseNumberList("--shape", options.shape, 6, "tx,ty,m11m1,m22m1,m21,m12");
   const Vector6d shape = Eigen::Map<const Vector6d>(s.data());
-  contour::ContourCamera camera;
-  camera.z0 = ParseOne("--z0", options.z0, "Z0");
-  camera.focal = ParseOne("--focal", options.focal, "F");
-  contour::ValidateContourCamera(camera);
+  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
   const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
   if (!form) {
     throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
@@ -118,7 +135,7 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
   std::optional<contour::ContourPoseUncertainty> ut;
   if (!options.covariance.empty()) {
     contour::UnscentedPoseOptions ut_options;
-    const double w0 = ParseOne("--ut-w0", options.ut_w0, "w0 < 1");
+    const double w0 = ParseNumber("--ut-w0", options.ut_w0, "w0 < 1");
     ut_options.unscented = uncertainty::UnscentedParameters::Symmetric(w0);
     std::string why;
     if (!ut_options.unscented.IsValid(6, &why)) {

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "hecal/contour/affine_pose.h"
 
 namespace hecal::cli {
 
@@ -28,6 +29,14 @@ namespace hecal::cli {
 // otherwise). `what` describes them for the fix, e.g. "TX,TY,TZ,RX,RY,RZ".
 std::vector<double> ParseNumberList(const std::string& flag, const std::string& text,
                                     std::size_t count, const std::string& what);
+
+// One finite number (ParseNumberList with count 1).
+double ParseNumber(const std::string& flag, const std::string& text, const std::string& what);
+// A whole number in [min, max] (InputError naming the flag otherwise).
+int ParseCount(const std::string& flag, const std::string& text, int min, int max,
+               const std::string& what);
+// The camera of the contour commands from --focal and --z0 (contour::ValidateContourCamera).
+contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0);
 
 // A contour file: CSV (or whitespace-separated) with the header `x,y` (case-insensitive; '#'
 // comment lines), one point per line, at least 4 points. InputError with file:line otherwise.

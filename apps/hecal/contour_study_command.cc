@@ -48,17 +48,7 @@ struct StudyCommandOptions {
   std::string output, plot, covariance_plot, covariance_at;
 };
 
-double Number(const std::string& flag, const std::string& text) {
-  return ParseNumberList(flag, text, 1, "(one number)").front();
-}
-
-int Integer(const std::string& flag, const std::string& text) {
-  const double value = Number(flag, text);
-  if (value != std::floor(value) || std::abs(value) > 1e9) {
-    throw InputError(flag, 0, "expected a whole number, got '" + text + "'", "e.g. 5000");
-  }
-  return static_cast<int>(value);
-}
+constexpr int kLargestCount = 1000000000;
 
 // Display units: mm for Tx..Tz, degrees for Rx..Rz.
 double Display(int component, double value) {
@@ -233,21 +223,22 @@ void RunStudy(const StudyCommandOptions& flags, const Io& io) {
                      "use one of tx, ty, tz, rx, ry, rz");
   }
   o.motion = *motion;
-  o.from = Number("--from", flags.from);
-  o.to = Number("--to", flags.to);
-  o.steps = Integer("--steps", flags.steps);
-  o.pixel_noise = Number("--pixel-noise", flags.pixel_noise);
-  o.z0_mm = Number("--z0", flags.z0);
-  o.focal_mm = Number("--focal", flags.focal);
-  o.pixel_size_mm = Number("--pixel-size", flags.pixel_size);
+  o.from = ParseNumber("--from", flags.from, "(one number)");
+  o.to = ParseNumber("--to", flags.to, "(one number)");
+  o.steps = ParseCount("--steps", flags.steps, -kLargestCount, kLargestCount, "a whole number");
+  o.pixel_noise = ParseNumber("--pixel-noise", flags.pixel_noise, "(one number)");
+  o.z0_mm = ParseNumber("--z0", flags.z0, "(one number)");
+  o.focal_mm = ParseNumber("--focal", flags.focal, "(one number)");
+  o.pixel_size_mm = ParseNumber("--pixel-size", flags.pixel_size, "(one number)");
   if (!flags.contour.empty()) o.target = ReadContourFile(flags.contour);
-  o.samples = Integer("--samples", flags.samples);
-  const int seed = Integer("--seed", flags.seed);
-  if (seed < 0) throw InputError("--seed", 0, "must be ≥ 0", "e.g. --seed 1");
-  o.seed = static_cast<std::uint64_t>(seed);
-  o.threads = Integer("--threads", flags.threads);
-  o.unscented.unscented =
-      uncertainty::UnscentedParameters::Symmetric(Number("--ut-w0", flags.ut_w0));
+  o.samples =
+      ParseCount("--samples", flags.samples, -kLargestCount, kLargestCount, "a whole number");
+  o.seed = static_cast<std::uint64_t>(
+      ParseCount("--seed", flags.seed, 0, kLargestCount, "a whole number ≥ 0, e.g. 1"));
+  o.threads =
+      ParseCount("--threads", flags.threads, -kLargestCount, kLargestCount, "a whole number");
+  o.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(
+      ParseNumber("--ut-w0", flags.ut_w0, "(one number)"));
   std::string why;
   if (!o.unscented.unscented.IsValid(6, &why)) {
     throw InputError("--ut-w0", 0, why, "give w0 < 1 (default 0)");
@@ -265,8 +256,9 @@ void RunStudy(const StudyCommandOptions& flags, const Io& io) {
   if (!flags.output.empty()) io::WriteFileAtomically(flags.output, Csv(o, steps));
   if (!plot.empty()) io::WriteFileAtomically(plot, Figure3(o, steps));
   if (!flags.covariance_plot.empty()) {
-    const double at =
-        flags.covariance_at.empty() ? o.from : Number("--covariance-at", flags.covariance_at);
+    const double at = flags.covariance_at.empty()
+                          ? o.from
+                          : ParseNumber("--covariance-at", flags.covariance_at, "(one number)");
     const contour::StudyStep* nearest = &steps.front();
     for (const contour::StudyStep& step : steps) {
       if (std::abs(step.value - at) < std::abs(nearest->value - at)) nearest = &step;

@@ -46,36 +46,12 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 constexpr std::array<std::string_view, 6> kShapeNames = {"tx",    "ty",  "m11m1",
                                                          "m22m1", "m21", "m12"};
 
-double ParseOne(const std::string& flag, const std::string& text, const std::string& what) {
-  return ParseNumberList(flag, text, 1, what).front();
-}
-
 double ParsePositive(const std::string& flag, const std::string& text, const std::string& what) {
-  const double value = ParseOne(flag, text, what);
+  const double value = ParseNumber(flag, text, what);
   if (!(value > 0.0)) {
     throw InputError(flag, 0, "must be positive, got '" + text + "'", "give " + what);
   }
   return value;
-}
-
-int ParseCount(const std::string& flag, const std::string& text, int min, int max,
-               const std::string& what) {
-  const double value = ParseOne(flag, text, what);
-  if (value != std::floor(value) || value < min || value > max) {
-    throw InputError(flag, 0,
-                     "must be a whole number from " + std::to_string(min) + " to " +
-                         std::to_string(max) + ", got '" + text + "'",
-                     "give " + what);
-  }
-  return static_cast<int>(value);
-}
-
-contour::ContourCamera ParseCamera(const std::string& focal, const std::string& z0) {
-  contour::ContourCamera camera;
-  camera.focal = ParseOne("--focal", focal, "the focal length in pixels");
-  camera.z0 = ParseOne("--z0", z0, "the initial distance Z0");
-  contour::ValidateContourCamera(camera);
-  return camera;
 }
 
 std::string Lower(std::string text) {
@@ -255,7 +231,7 @@ std::string TrackJson(const std::vector<FrameResult>& frames, const ContourTrack
 }  // namespace
 
 void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
-  const contour::ContourCamera camera = ParseCamera(options.focal, options.z0);
+  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
   const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
   if (!form) {
     throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
@@ -373,7 +349,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
 // ---- render ------------------------------------------------------------------------------------
 
 void RunContourRender(const ContourRenderOptions& options, const Io& io) {
-  const contour::ContourCamera camera = ParseCamera(options.focal, options.z0);
+  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
   const int frames = ParseCount("--frames", options.frames, 1, 100000, "the number of frames");
   const std::vector<double> from =
       ParseNumberList("--from", options.from, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
@@ -388,15 +364,15 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
   }
   const int width = static_cast<int>(size[0]), height = static_cast<int>(size[1]);
   contour::RenderOptions render;
-  render.noise_sigma = ParseOne("--noise", options.noise, "the noise σ in grey levels");
+  render.noise_sigma = ParseNumber("--noise", options.noise, "the noise σ in grey levels");
   if (render.noise_sigma < 0.0) {
     throw InputError("--noise", 0, "must be ≥ 0", "give the noise σ in grey levels (e.g. 3)");
   }
-  render.blur_sigma = ParseOne("--blur", options.blur, "the blur σ in pixels");
+  render.blur_sigma = ParseNumber("--blur", options.blur, "the blur σ in pixels");
   if (render.blur_sigma < 0.0 || render.blur_sigma > 20.0) {
     throw InputError("--blur", 0, "must be 0 … 20 px", "give the optics blur σ (e.g. 0.7)");
   }
-  const double seed = ParseOne("--seed", options.seed, "a whole number ≥ 0");
+  const double seed = ParseNumber("--seed", options.seed, "a whole number ≥ 0");
   if (seed < 0.0 || seed != std::floor(seed) || seed > 9.0e15) {
     throw InputError("--seed", 0, "must be a whole number ≥ 0", "give e.g. 1");
   }
