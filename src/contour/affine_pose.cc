@@ -15,36 +15,12 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Eigen::Matrix3d Rz(double a) {
-  Eigen::Matrix3d R;
-  R << std::cos(a), -std::sin(a), 0.0, std::sin(a), std::cos(a), 0.0, 0.0, 0.0, 1.0;
-  return R;
-}
-
-Eigen::Matrix3d Rx(double a) {
-  Eigen::Matrix3d R;
-  R << 1.0, 0.0, 0.0, 0.0, std::cos(a), -std::sin(a), 0.0, std::sin(a), std::cos(a);
-  return R;
-}
-
 // a wrapped into [0, period).
 double WrapTo(double a, double period) {
   double w = std::fmod(a, period);
   if (w < 0.0) w += period;
   if (w >= period) w = 0.0;  // −tiny + period rounding to period
   return w;
-}
-
-const EulerSequence& Zyx() {
-  static const EulerSequence sequence = *EulerSequence::Parse("ZYX");
-  return sequence;
-}
-
-// ZYX angles (Rz, Ry, Rx) of R in the zyx form's ranges, for R with R33 > 0 (|Rx|, |Ry| < π/2).
-Eigen::Vector3d ZyxAngles(const Eigen::Matrix3d& R) {
-  Eigen::Vector3d e = EulerFromMatrix(R, Zyx());  // (c, b, a): Rz, Ry, Rx
-  e(0) = WrapTo(e(0), 2.0 * kPi);
-  return e;
 }
 
 // Whether the zyx form keeps R itself (rather than its mirror): Rx + Ry ≥ 0, ties Rx ≥ 0.
@@ -64,10 +40,10 @@ ContourPose Finish(const Eigen::Matrix3d& R_zxz, const Eigen::Vector3d& zxz_angl
     return pose;
   }
   pose.rotation = R_zxz;
-  pose.euler = ZyxAngles(R_zxz);
+  pose.euler = EulerAngles(R_zxz, RotationForm::kZyx);
   if (!ZyxKeeps(pose.euler)) {
     pose.rotation = NeckerMirror(R_zxz);
-    pose.euler = ZyxAngles(pose.rotation);
+    pose.euler = EulerAngles(pose.rotation, RotationForm::kZyx);
   }
   return pose;
 }
@@ -92,6 +68,13 @@ std::string_view RotationFormName(RotationForm form) {
 
 std::string_view RotationSequence(RotationForm form) {
   return form == RotationForm::kZyx ? "ZYX" : "ZXZ";
+}
+
+Eigen::Vector3d EulerAngles(const Eigen::Matrix3d& rotation, RotationForm form) {
+  Eigen::Vector3d e = EulerFromMatrix(rotation, *EulerSequence::Parse(RotationSequence(form)));
+  e(0) = WrapTo(e(0), 2.0 * kPi);
+  if (form == RotationForm::kZxz) e(2) = WrapTo(e(2), 2.0 * kPi);
+  return e;
 }
 
 void ValidateContourCamera(const ContourCamera& camera) {
@@ -144,8 +127,9 @@ ContourPose PoseFromShape(const Vector6d& shape, const ContourCamera& camera, Ro
       (Eigen::Matrix2d() << std::cos(phi), std::sin(phi), -std::sin(phi), std::cos(phi)).finished();
   const Eigen::RowVector2d first = (Rphi_t * M).row(0) / scale;
   const double psi = WrapTo(std::atan2(-first(1), first(0)), 2.0 * kPi);
-  const Eigen::Matrix3d R = Rz(phi) * Rx(theta) * Rz(psi);
-  return Finish(R, Eigen::Vector3d(phi, theta, psi), translation, form);
+  const Eigen::Vector3d angles(phi, theta, psi);
+  const Eigen::Matrix3d R = MatrixFromEuler(angles, *EulerSequence::Parse("ZXZ"));
+  return Finish(R, angles, translation, form);
 }
 
 Vector6d ShapeFromPose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation,

@@ -4,7 +4,6 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 #include "hecal/contour/bspline.h"
@@ -12,6 +11,7 @@
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/euler.h"
+#include "hecal/geometry/so3.h"
 
 namespace hecal::contour {
 namespace {
@@ -23,13 +23,12 @@ double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 }  // namespace
 
 ContourPose PoseFromParameters(const Vector6d& parameters, RotationForm form) {
-  Eigen::Matrix3d R;
-  if (form == RotationForm::kZyx) {
-    R = RotationZyx(parameters(3), parameters(4), parameters(5));
-  } else {
-    R = MatrixFromEuler(parameters.tail<3>(), *EulerSequence::Parse("ZXZ"));
-  }
-  return CanonicalPose(R, parameters.head<3>(), form);
+  // PoseParameters holds (Rx, Ry, Rz) for zyx, the reverse of the sequence's (Rz, Ry, Rx).
+  const Eigen::Vector3d euler = form == RotationForm::kZyx
+                                    ? Eigen::Vector3d(parameters.tail<3>().reverse())
+                                    : Eigen::Vector3d(parameters.tail<3>());
+  return CanonicalPose(MatrixFromEuler(euler, *EulerSequence::Parse(RotationSequence(form))),
+                       parameters.head<3>(), form);
 }
 
 PerspectivePoseModel::PerspectivePoseModel(const Eigen::Matrix2Xd& template_points,
@@ -103,37 +102,23 @@ std::optional<ContourPose> PerspectivePoseModel::Newton(const Vector6d& shape, E
       ContourPose pose = CanonicalPose(R, T, form);
       if ((pose.rotation - R).norm() > 1e-9) {  // Newton's branch is the other member (header)
         pose.rotation = R;
-        pose.euler = EulerFromMatrix(R, *EulerSequence::Parse(RotationSequence(form)));
-        const double turn = 2.0 * std::numbers::pi;
-        for (int i : {0, 2}) {
-          if (i == 2 && form == RotationForm::kZyx) continue;
-          pose.euler(i) = std::fmod(std::fmod(pose.euler(i), turn) + turn, turn);
-        }
+        pose.euler = EulerAngles(R, form);
       }
       return pose;
     }
     Matrix6d J;
-    for (int j = 0; j < 6; ++j) {
-      Vector6d plus, minus;
-      if (j < 3) {
-        Eigen::Vector3d w = Eigen::Vector3d::Zero();
-        w(j) = kAngleStep;
-        plus =
-            PerspectiveShape(R * Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix(), T);
-        minus = PerspectiveShape(
-            R * Eigen::AngleAxisd(-w.norm(), w.normalized()).toRotationMatrix(), T);
-        J.col(j) = (plus - minus) / (2 * kAngleStep);
-      } else {
-        Eigen::Vector3d dt = Eigen::Vector3d::Zero();
-        dt(j - 3) = h_t;
-        J.col(j) = (PerspectiveShape(R, T + dt) - PerspectiveShape(R, T - dt)) / (2 * h_t);
-      }
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d w = kAngleStep * Eigen::Vector3d::Unit(j);
+      J.col(j) = (PerspectiveShape(R * so3::Exp(w), T) - PerspectiveShape(R * so3::Exp(-w), T)) /
+                 (2 * kAngleStep);
+      const Eigen::Vector3d dt = h_t * Eigen::Vector3d::Unit(j);
+      J.col(3 + j) = (PerspectiveShape(R, T + dt) - PerspectiveShape(R, T - dt)) / (2 * h_t);
     }
     const Eigen::FullPivLU<Matrix6d> lu(J);
     if (!lu.isInvertible()) return std::nullopt;
     const Vector6d step = -lu.solve(residual);
     const Eigen::Vector3d w = step.head<3>();
-    if (w.norm() > 0.0) R = R * Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix();
+    R = R * so3::Exp(w);
     T += step.tail<3>();
   }
   return std::nullopt;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/euler.h"
 
 namespace hecal::contour {
 
@@ -32,10 +33,7 @@ Eigen::Matrix2Xd TemplateImage(const Eigen::Matrix2Xd& plane_points, const Conto
 }
 
 Eigen::Matrix3d RotationZyx(double rx, double ry, double rz) {
-  return (Eigen::AngleAxisd(rz, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(ry, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(rx, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
+  return MatrixFromEuler(Eigen::Vector3d(rz, ry, rx), *EulerSequence::Parse("ZYX"));
 }
 
 }  // namespace hecal::contour

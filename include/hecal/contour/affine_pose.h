@@ -72,6 +72,10 @@ ContourPose PoseFromShape(const Vector6d& shape, const ContourCamera& camera, Ro
 Vector6d ShapeFromPose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation,
                        const ContourCamera& camera);
 
+// The Euler angles of R in the form's sequence (RotationSequence), the full-circle ones (Rz; φ, ψ)
+// in [0, 2π); no choice of Necker member (CanonicalPose makes it).
+Eigen::Vector3d EulerAngles(const Eigen::Matrix3d& rotation, RotationForm form);
+
 // N R N, N = diag(1, 1, −1): the Necker mirror of R.
 Eigen::Matrix3d NeckerMirror(const Eigen::Matrix3d& rotation);
 // The member of {R, NeckerMirror(R)} that PoseFromShape returns in `form` (R33 > 0), with its
