@@ -1,9 +1,11 @@
 // The seed's contour experiments: see contour_study.h.
 #include "hecal/contour/contour_study.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "hecal/contour/perspective_view.h"
@@ -179,15 +181,19 @@ std::vector<StudyStep> RunContourStudy(const ContourStudyOptions& options) {
     mc.samples = options.samples;
     mc.seed = SplitMix64(options.seed ^ SplitMix64(static_cast<std::uint64_t>(i)));
     mc.threads = options.threads;
+    // The first keep_samples poses are kept for plots as they are drawn (each index is written by
+    // one thread only); a failed sample throws before it is kept, as it is left out of the
+    // statistics.
+    std::vector<std::optional<Vector6d>> kept(
+        static_cast<std::size_t>(std::clamp(options.keep_samples, 0, options.samples)));
     const auto sample = [&](int k) -> Eigen::VectorXd {
       const Eigen::VectorXd z =
           uncertainty::StandardNormalSample(mc.seed, k, 2 * static_cast<int>(points));
-      Eigen::Matrix2Xd noisy = image;
-      for (Eigen::Index p = 0; p < points; ++p) {
-        noisy(0, p) += options.pixel_noise * z(2 * p);
-        noisy(1, p) += options.pixel_noise * z(2 * p + 1);
-      }
-      return PoseParametersNear(space.Fit(noisy), camera, kForm, reference);
+      const Eigen::Matrix2Xd noisy =
+          image + options.pixel_noise * Eigen::Map<const Eigen::Matrix2Xd>(z.data(), 2, points);
+      const Vector6d pose = PoseParametersNear(space.Fit(noisy), camera, kForm, reference);
+      if (static_cast<std::size_t>(k) < kept.size()) kept[static_cast<std::size_t>(k)] = pose;
+      return pose;
     };
     const uncertainty::MonteCarloMoments<Eigen::VectorXd> moments =
         uncertainty::MonteCarloSamples<Eigen::VectorXd>(sample, Eigen::VectorXd(reference), mc);
@@ -196,12 +202,8 @@ std::vector<StudyStep> RunContourStudy(const ContourStudyOptions& options) {
     step.mc_sd = moments.covariance.diagonal().cwiseSqrt();
     step.mc_sd_std_error = moments.sd_std_error;
     step.mc_failures = moments.failures;
-    for (int k = 0; k < std::min(options.keep_samples, options.samples); ++k) {
-      try {
-        step.mc_poses.push_back(sample(k));
-      } catch (const DegenerateError&) {
-        // a failed sample is left out of the plot, as it is of the statistics
-      }
+    for (const std::optional<Vector6d>& pose : kept) {
+      if (pose) step.mc_poses.push_back(*pose);
     }
     steps.push_back(std::move(step));
   }
