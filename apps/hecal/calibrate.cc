@@ -6,13 +6,16 @@
 #include <charconv>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <iomanip>
 #include <memory>
 #include <numbers>
 #include <sstream>
 #include <utility>
 
+#include "conventions.h"
 #include "hecal/core/error.h"
+#include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
 
 namespace hecal::cli {
@@ -92,6 +95,14 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
         << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)
         << r.whitened << (r.outlier ? "   > 3σ, check this station" : "") << "\n";
   }
+  for (size_t k = 0; k < result.rejected_residuals.size(); ++k) {
+    const estimation::StationResidual& r = result.rejected_residuals[k];
+    const std::string id = k < result.rejected_ids.size() ? result.rejected_ids[k]
+                                                          : std::to_string(result.rejected[k] + 1);
+    out << "  " << std::left << std::setw(14) << id << std::right << std::setw(12)
+        << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)
+        << r.whitened << "   rejected: outlier, not used\n";
+  }
   for (const std::string& warning : result.warnings) out << "warning: " << warning << "\n";
   out.unsetf(std::ios::floatfield);
 }
@@ -144,11 +155,12 @@ void PrintComparison(std::ostream& out, const report::ResultDocument& document) 
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   CalibrateSettings settings;
   const auto setup = handeye::ParseSetup(flags.setup);
-  if (!setup) {
+  if (!setup && flags.setup != "auto") {
     throw InputError("--setup", 0, "unknown setup '" + flags.setup + "'",
-                     "use eye-in-hand (camera on the robot) or eye-to-hand (camera fixed)");
+                     "use eye-in-hand (camera on the robot), eye-to-hand (camera fixed) or auto "
+                     "(the one the data fit)");
   }
-  settings.setup = *setup;
+  settings.setup = setup;
   settings.all = flags.method == "all";
   const auto method = handeye::ParseMethod(flags.method);
   if (!settings.all && !method) {
@@ -188,6 +200,8 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   }
   options.covariance.samples = flags.covariance_samples;
   options.covariance.seed = flags.seed;
+  options.consensus.seed = flags.seed;
+  options.reject_outliers = !flags.keep_outliers;
   options.covariance.threads = flags.threads;
   estimation::ValidateCovarianceOptions(options.covariance);
   options.robust_loss = flags.robust;
@@ -220,8 +234,26 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
 
 namespace {
 
+// The same poses as robot and camera (one file given twice, or a copy) cannot calibrate anything.
+void RefuseSameFile(const CalibrateFlags& flags, const io::Stations& stations) {
+  std::error_code error;
+  const bool same_path = std::filesystem::equivalent(flags.robot, flags.camera, error) && !error;
+  bool same_poses = !stations.robot.empty();
+  for (size_t i = 0; same_poses && i < stations.robot.size(); ++i) {
+    same_poses = stations.robot[i].isApprox(stations.camera[i], 1e-12) ||
+                 stations.robot[i].isApprox(stations.camera[i].inverse(), 1e-12);
+  }
+  if (same_path || same_poses) {
+    throw InputError(
+        flags.camera, 0,
+        same_path ? "is the same file as --robot " + flags.robot
+                  : "holds the same poses as --robot " + flags.robot + " (or their inverses)",
+        "give the robot poses (T_base_gripper, from the controller) with --robot and "
+        "the camera poses (T_camera_target, from PnP or hecal detect) with --camera");
+  }
+}
+
 void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, const Io& io) {
-  const handeye::Setup setup = settings.setup;
   const bool all = settings.all;
   estimation::CalibrateOptions& options = settings.options;
   const io::PoseReadOptions& read = settings.read;
@@ -232,6 +264,21 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
   const io::PoseTable robot = io::ReadPoseTable(flags.robot, robot_read);
   const io::PoseTable camera = io::ReadPoseTable(flags.camera, camera_read);
   const io::Stations stations = io::PairStations(robot, camera);
+  RefuseSameFile(flags, stations);
+
+  handeye::PoseData data;
+  data.T_base_gripper = stations.robot;
+  data.T_camera_target = stations.camera;
+  data.robot_unit_named = robot.unit_named;
+  data.camera_unit_named = camera.unit_named;
+  data.robot_quaternions = HasQuaternionColumns(robot);
+  data.camera_quaternions = HasQuaternionColumns(camera);
+  const ConventionCheck check =
+      CheckConventions(data, settings.setup,
+                       {flags.robot, flags.camera, flags.robot_inverse, flags.camera_inverse,
+                        !robot.rotation, !camera.rotation},
+                       options.consensus);
+  const handeye::Setup setup = check.setup;
   const handeye::Problem problem = handeye::MakeProblem(setup, stations.robot, stations.camera);
 
   report::ResultDocument document;
@@ -239,6 +286,10 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
   document.unit = robot.unit;
   document.station_ids = stations.ids;
   document.all_methods = all;
+  options.station_ids = stations.ids;
+  // One selection of stations for every method.
+  const estimation::StationSelection selection = estimation::SelectStationsFor(problem, options);
+  document.rejected = selection.Rejected();
   if (all) {
     // Degenerate data stop every method: then the first error is the answer. A method that
     // refuses data the others accept is reported and skipped.
@@ -246,7 +297,7 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
     for (const handeye::MethodInfo& info : handeye::AllMethods()) {
       options.method = info.method;
       try {
-        document.results.push_back(estimation::Calibrate(problem, options));
+        document.results.push_back(estimation::Calibrate(problem, options, selection));
       } catch (const DegenerateError& error) {
         if (!first_error) first_error = std::current_exception();
         document.failures.push_back({info.method, error.what()});
@@ -254,7 +305,17 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
     }
     if (document.results.empty()) std::rethrow_exception(first_error);
   } else {
-    document.results.push_back(estimation::Calibrate(problem, options));
+    document.results.push_back(estimation::Calibrate(problem, options, selection));
+  }
+  const estimation::PlausibilityInput plausibility{setup, stations.robot, stations.camera,
+                                                   robot.unit_named, camera.unit_named};
+  for (estimation::CalibrationResult& result : document.results) {
+    std::vector<std::string> notes = check.notes;
+    notes.insert(notes.end(), robot.warnings.begin(), robot.warnings.end());
+    notes.insert(notes.end(), camera.warnings.begin(), camera.warnings.end());
+    for (std::string& warning : estimation::PlausibilityWarnings(plausibility, result))
+      notes.push_back(std::move(warning));
+    result.warnings.insert(result.warnings.begin(), notes.begin(), notes.end());
   }
   for (size_t k = 0; k < document.results.size(); ++k) {
     if (k > 0) io.out << "\n";
@@ -297,7 +358,10 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "Threads for detection and covariance solves (default 0 = every core)");
   command->add_flag("--refine-intrinsics", flags->refine_intrinsics,
                     "With --images: refine the intrinsics with X and Z in the joint refinement");
-  command->add_option("--setup", flags->setup, "eye-in-hand (camera on the robot) | eye-to-hand")
+  command
+      ->add_option("--setup", flags->setup,
+                   "eye-in-hand (camera on the robot) | eye-to-hand (camera fixed) | auto (the "
+                   "setup the data fit, with the evidence)")
       ->required();
   command->add_option("--method", flags->method, "Method name, or all (default ml)");
   command->add_option("--robot-sigma", flags->robot_sigma,
@@ -314,7 +378,10 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                     "The robot file holds T_gripper_base: invert every pose");
   command->add_flag("--camera-inverse", flags->camera_inverse,
                     "The camera file holds T_target_camera: invert every pose");
-  command->add_option("--robust", flags->robust, "Robust loss for ml/strobl: none|huber|cauchy");
+  command->add_flag("--keep-outliers", flags->keep_outliers,
+                    "Use every station: no outlier rejection (by default gross outliers are "
+                    "rejected by consensus and a 3-sigma test, and listed)");
+  command->add_option("--robust", flags->robust, "Robust loss for ml: none|huber|cauchy");
   command->add_option("--covariance", flags->covariance,
                       "Covariance of X and Z: linear | unscented | montecarlo (default: linear "
                       "for ml, unscented for the other methods)");
@@ -322,7 +389,9 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
       ->add_option("--covariance-samples", flags->covariance_samples,
                    "Monte Carlo samples for --covariance montecarlo")
       ->capture_default_str();
-  command->add_option("--seed", flags->seed, "Random seed for --covariance montecarlo")
+  command
+      ->add_option("--seed", flags->seed,
+                   "Random seed for --covariance montecarlo and the outlier consensus")
       ->capture_default_str();
   command->callback([flags, &io] { RunCalibrate(*flags, io); });
 }

@@ -1,17 +1,22 @@
 // `hecal calibrate` (DESIGN.md §4):
-//   hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand
+//   hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand|auto
 //                   [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
-//                   [--output result.json] [--units m|mm]
+//                   [--output result.json] [--units m|mm] [--keep-outliers]
 //                   [--covariance linear|unscented|montecarlo] [--covariance-samples N]
 //                   [--seed S] [--threads N]
 //   hecal calibrate --images DIR --target target.yaml [--intrinsics camera.yaml]
 //                   --robot robot.csv --setup ... [--pixel-sigma PX] [--threads N] ...
-// From pose tables (calibrate.cc): pairs stations (by id, else by order), solves with the chosen
-// method(s), prints a readable summary and writes the result file (DESIGN.md §5).
+// From pose tables (calibrate.cc): pairs stations (by id, else by order); refuses the same poses
+// given as robot and camera; checks the conventions (conventions.h: a wrong setup, an inverted
+// file or a wrong unit is named, never solved; --setup auto picks the setup); rejects gross
+// outliers (estimation/station_selection.h, unless --keep-outliers); solves with the chosen
+// method(s) on the stations kept; adds the plausibility warnings (estimation/plausibility.h) and
+// the readers' notes; prints a readable summary and writes the result file (DESIGN.md §5).
 // From images (calibrate_images.cc): see RunCalibrateImages below.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -42,15 +47,16 @@ struct CalibrateFlags {
   std::string euler;
   bool robot_inverse = false;
   bool camera_inverse = false;
+  bool keep_outliers = false;  // --keep-outliers: no outlier rejection
   std::string robust = "none";
   std::string covariance;         // --covariance (empty: the method's default)
   int covariance_samples = 5000;  // --covariance-samples (montecarlo)
-  std::uint64_t seed = 1;         // --seed (montecarlo)
+  std::uint64_t seed = 1;         // --seed (montecarlo, and the outlier consensus)
 };
 
 // The flags every form shares, checked.
 struct CalibrateSettings {
-  handeye::Setup setup = handeye::Setup::kEyeInHand;
+  std::optional<handeye::Setup> setup;   // nullopt: --setup auto
   bool all = false;                      // --method all
   estimation::CalibrateOptions options;  // method (unless all), sigmas, robust loss, covariance
   io::PoseReadOptions read;              // --units, --degrees, --euler (robot and camera files)

@@ -11,9 +11,12 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <vector>
 
+#include "conventions.h"
 #include "hecal/estimation/image_calibration.h"
+#include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
 #include "image_set.h"
 #endif
@@ -158,34 +161,83 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   const std::vector<Pose> robot_poses = RobotPosePerImage(robot, set, flags.images, io);
 
   report::ResultDocument document;
-  document.setup = settings.setup;
   document.unit = robot.unit;
   report::ImageReport report;
   std::vector<estimation::ImageStation> stations;
+  std::vector<size_t> station_image;  // the image index of every station
+  std::vector<std::string> station_ids;
   for (size_t i = 0; i < set.images.size(); ++i) {
     const ImageRecord& image = set.images[i];
     document.station_ids.push_back(image.id());
-    if (!image.used()) {
-      document.rejected.push_back(static_cast<int>(i));
-      report.skipped_reasons.push_back(image.skipped);
-      continue;
-    }
+    if (!image.used()) continue;
     estimation::ImageStation station;
     station.T_base_gripper = robot_poses[i];
     station.T_camera_target = image.pose->T_camera_target;
     station.camera_covariance = image.pose->covariance;
     station.points = {ObjectPointsOf(image.detection, set.board), PixelsOf(image.detection)};
     stations.push_back(std::move(station));
+    station_image.push_back(i);
+    station_ids.push_back(image.id());
   }
 
+  handeye::PoseData data;
+  for (const estimation::ImageStation& station : stations) {
+    data.T_base_gripper.push_back(station.T_base_gripper);
+    data.T_camera_target.push_back(station.T_camera_target);
+  }
+  data.robot_unit_named = robot.unit_named;
+  data.robot_quaternions = HasQuaternionColumns(robot);
+  data.camera_from_images = true;
+  ConventionFlags convention_flags;
+  convention_flags.robot_file = flags.robot;
+  convention_flags.robot_inverse = flags.robot_inverse;
+  convention_flags.robot_matrix_lines = !robot.rotation;
+  const ConventionCheck check =
+      CheckConventions(data, settings.setup, convention_flags, settings.options.consensus);
+  document.setup = check.setup;
+
   estimation::ImageCalibrationOptions options;
-  options.setup = settings.setup;
+  options.setup = check.setup;
   options.calibrate = settings.options;
+  options.calibrate.station_ids = station_ids;
   options.camera = set.camera;
   options.pixel_sigma = pixel_sigma;
   options.refine_intrinsics = flags.refine_intrinsics;
-  const estimation::ImageCalibrationResult result =
-      estimation::CalibrateFromImages(stations, options);
+  estimation::ImageCalibrationResult result = estimation::CalibrateFromImages(stations, options);
+
+  // Rejected: the images where the target was not usable, and the outlier stations.
+  std::map<size_t, std::string> rejected;
+  for (size_t i = 0; i < set.images.size(); ++i)
+    if (!set.images[i].used()) rejected[i] = set.images[i].skipped;
+  for (size_t k = 0; k < result.result.rejected.size(); ++k) {
+    const int station = result.result.rejected[k];
+    const auto image =
+        std::find(result.image_rejected.begin(), result.image_rejected.end(), station);
+    std::ostringstream reason;
+    reason << std::setprecision(3);
+    if (image != result.image_rejected.end()) {
+      reason << "outlier: reprojection RMS "
+             << result.image_rejected_rms_px[static_cast<size_t>(image -
+                                                                 result.image_rejected.begin())]
+             << " px, beyond 3 sigma of the pixel noise";
+    } else {
+      const estimation::StationResidual& r = result.result.rejected_residuals[k];
+      reason << "outlier: pose residual " << r.rotation * 180.0 / std::numbers::pi << " deg / "
+             << r.translation * 1e3 << " mm, beyond 3 sigma of the other stations";
+    }
+    rejected[station_image[static_cast<size_t>(station)]] = reason.str();
+  }
+  for (const auto& [image, reason] : rejected) {
+    document.rejected.push_back(static_cast<int>(image));
+    report.skipped_reasons.push_back(reason);
+  }
+  std::vector<std::string> notes = check.notes;
+  notes.insert(notes.end(), robot.warnings.begin(), robot.warnings.end());
+  for (std::string& warning : estimation::PlausibilityWarnings(
+           {check.setup, data.T_base_gripper, data.T_camera_target, robot.unit_named, true},
+           result.result))
+    notes.push_back(std::move(warning));
+  result.result.warnings.insert(result.result.warnings.begin(), notes.begin(), notes.end());
 
   report.intrinsics_source =
       set.estimated ? std::string("estimated from the images") : flags.intrinsics;

@@ -1,5 +1,6 @@
 #include "hecal/estimation/calibrate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -14,6 +15,7 @@
 #include "hecal/estimation/strobl.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/handeye/observability.h"
+#include "hecal/handeye/station_consensus.h"
 
 namespace hecal::estimation {
 namespace {
@@ -39,50 +41,26 @@ std::string SigmaText(const PoseSigma& sigma) {
   return Format("%.3g deg, %.3g mm", sigma.rotation * kRadToDeg, sigma.translation * 1e3);
 }
 
-std::string StationList(const std::vector<int>& stations) {
+// Station names for messages: options.station_ids when given, else numbers from 1.
+std::string StationList(const std::vector<int>& stations, const CalibrateOptions& options) {
   std::string text;
   for (size_t k = 0; k < stations.size(); ++k) {
     if (k > 0) text += k + 1 == stations.size() ? " and " : ", ";
-    text += std::to_string(stations[k] + 1);
+    const size_t i = static_cast<size_t>(stations[k]);
+    text += i < options.station_ids.size() ? options.station_ids[i] : std::to_string(i + 1);
   }
   return text;
 }
 
-std::vector<handeye::Solution> Starts(const handeye::Problem& problem) {
-  std::vector<handeye::Solution> starts = Solutions(InitialSolutions(problem));
-  if (starts.empty()) {
-    throw DegenerateError("X and Z (no closed-form solver found a starting point)",
-                          "check the pose conventions (try inverting the robot or camera poses) "
-                          "and use stations with large, varied rotations");
-  }
-  return starts;
+std::vector<int> Indices(const std::vector<bool>& flags) {
+  std::vector<int> indices;
+  for (size_t i = 0; i < flags.size(); ++i)
+    if (flags[i]) indices.push_back(static_cast<int>(i));
+  return indices;
 }
 
-}  // namespace
-
-std::vector<int> SetStationResiduals(const handeye::Problem& problem, const NoiseEstimate& noise,
-                                     CalibrationResult* result) {
-  const size_t n = problem.A.size();
-  result->residuals.resize(n);
-  double rotation_sum = 0.0, translation_sum = 0.0;
-  std::vector<int> flagged;
-  for (size_t i = 0; i < n; ++i) {
-    const Pose E = result->Z.inverse() * problem.A[i] * result->X * problem.B[i];
-    StationResidual& residual = result->residuals[i];
-    residual.rotation = se3::Log(E).head<3>().norm();
-    residual.translation = E.translation().norm();
-    residual.whitened = std::sqrt(noise.stations[i].chi2 / 6.0);
-    residual.outlier = noise.stations[i].outlier;
-    rotation_sum += residual.rotation * residual.rotation;
-    translation_sum += residual.translation * residual.translation;
-    if (residual.outlier) flagged.push_back(static_cast<int>(i));
-  }
-  result->rotation_rms = std::sqrt(rotation_sum / static_cast<double>(n));
-  result->translation_rms = std::sqrt(translation_sum / static_cast<double>(n));
-  return flagged;
-}
-
-CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options) {
+// Checks the options; returns the robust loss they name.
+RobustLoss ValidateOptions(const handeye::Problem& problem, const CalibrateOptions& options) {
   ValidateSigma(options.robot_sigma, "--robot-sigma");
   ValidateSigma(options.camera_sigma, "--camera-sigma");
   if (options.robot_sigma && options.camera_sigma) {
@@ -109,21 +87,86 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
                      "give one camera pose per robot pose");
   }
   ValidateCovarianceOptions(options.covariance);
+  return *loss;
+}
+
+}  // namespace
+
+std::vector<int> SetStationResiduals(const handeye::Problem& problem, const NoiseEstimate& noise,
+                                     CalibrationResult* result) {
+  const size_t n = problem.A.size();
+  result->residuals.resize(n);
+  double rotation_sum = 0.0, translation_sum = 0.0;
+  std::vector<int> flagged;
+  for (size_t i = 0; i < n; ++i) {
+    const Pose E = result->Z.inverse() * problem.A[i] * result->X * problem.B[i];
+    StationResidual& residual = result->residuals[i];
+    residual.rotation = se3::Log(E).head<3>().norm();
+    residual.translation = E.translation().norm();
+    residual.whitened = std::sqrt(noise.stations[i].chi2 / 6.0);
+    residual.outlier = noise.stations[i].outlier;
+    rotation_sum += residual.rotation * residual.rotation;
+    translation_sum += residual.translation * residual.translation;
+    if (residual.outlier) flagged.push_back(static_cast<int>(i));
+  }
+  result->rotation_rms = std::sqrt(rotation_sum / static_cast<double>(n));
+  result->translation_rms = std::sqrt(translation_sum / static_cast<double>(n));
+  return flagged;
+}
+
+StationSelection SelectStationsFor(const handeye::Problem& problem,
+                                   const CalibrateOptions& options) {
+  if (!options.reject_outliers || problem.A.size() != problem.B.size())
+    return AllStations(problem.A.size());
+  StationSelectionOptions selection_options;
+  selection_options.robot_sigma = options.robot_sigma;
+  selection_options.camera_sigma = options.camera_sigma;
+  selection_options.consensus = options.consensus;
+  return SelectStations(problem, selection_options);
+}
+
+std::vector<StationResidual> RejectedResiduals(const handeye::Problem& problem,
+                                               const std::vector<bool>& used, const Pose& X,
+                                               const Pose& Z, const NoiseVariances& variances) {
+  std::vector<StationResidual> residuals;
+  if (std::find(used.begin(), used.end(), false) == used.end()) return residuals;
+  const std::vector<StationTest> tests =
+      TestStations(LinearizeStations(problem, X, Z), used, variances);
+  for (size_t i = 0; i < used.size(); ++i) {
+    if (used[i]) continue;
+    const handeye::StationError size = handeye::StationResidualSize(problem, i, {X, Z});
+    residuals.push_back({size.rotation, size.translation, std::sqrt(tests[i].chi2 / 6.0), true});
+  }
+  return residuals;
+}
+
+CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options) {
+  ValidateOptions(problem, options);
+  return Calibrate(problem, options, SelectStationsFor(problem, options));
+}
+
+CalibrationResult Calibrate(const handeye::Problem& all_stations, const CalibrateOptions& options,
+                            const StationSelection& selection) {
+  const RobustLoss loss = ValidateOptions(all_stations, options);
+  const handeye::Problem problem = handeye::SubProblem(all_stations, selection.used);
   handeye::CheckObservability(problem);
 
   CalibrationResult result;
   result.method = options.method;
+  result.rejected = selection.Rejected();
+  result.outlier_rejection = selection.rounds > 0 || selection.too_many;
+  if (result.outlier_rejection) result.seed = options.consensus.seed;
   const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
-  const double L = LengthScale(problem);
+  const double L = handeye::LengthScale(problem);
   NoiseEstimate noise;
   std::optional<Eigen::Matrix<double, 12, 12>> ml_covariance;
   if (options.method == handeye::Method::kMl) {
     MlOptions ml_options;
     ml_options.robot_sigma = options.robot_sigma;
     ml_options.camera_sigma = options.camera_sigma;
-    ml_options.robust_loss = *loss;
+    ml_options.robust_loss = loss;
     ml_options.robust_scale = options.robust_scale;
-    const MlResult ml = RefineMl(problem, Starts(problem), ml_options);
+    const MlResult ml = RefineMl(problem, StartingSolutions(problem), ml_options);
     result.X = ml.X;
     result.Z = ml.Z;
     ml_covariance = ml.covariance;
@@ -131,7 +174,7 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
   } else {
     handeye::Solution solution;
     if (options.method == handeye::Method::kStrobl) {
-      const StroblResult strobl = RefineStrobl(problem, Starts(problem));
+      const StroblResult strobl = RefineStrobl(problem, StartingSolutions(problem));
       solution = {strobl.X, strobl.Z};
     } else {
       solution = handeye::SolveClosedForm(options.method, problem);
@@ -141,8 +184,17 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
     noise = EstimateNoise(LinearizeStations(problem, result.X, result.Z), spec, L);
   }
 
-  const std::vector<int> flagged = SetStationResiduals(problem, noise, &result);
+  std::vector<int> flagged = SetStationResiduals(problem, noise, &result);
   const size_t n = problem.A.size();
+  result.rejected_residuals =
+      RejectedResiduals(all_stations, selection.used, result.X, result.Z, noise.variances);
+  for (int i : result.rejected) {
+    if (static_cast<size_t>(i) < options.station_ids.size())
+      result.rejected_ids.push_back(options.station_ids[static_cast<size_t>(i)]);
+  }
+  // Flagged stations by their index in the whole problem.
+  const std::vector<int> used_index = Indices(selection.used);
+  for (int& i : flagged) i = used_index[i];
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
   result.sigmas_estimated = spec.AnyEstimated();
@@ -159,6 +211,8 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
         problem, result, options, StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma),
         options.covariance);
   }
+  if (result.covariance && result.covariance->method == CovarianceMethod::kMonteCarlo)
+    result.seed = options.covariance.seed;
   if (result.covariance) {
     if (std::string warning = FailedSamplesWarning(*result.covariance); !warning.empty()) {
       result.warnings.push_back(std::move(warning));
@@ -190,7 +244,7 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
         "residuals as " +
         SigmaText(result.robot_sigma) + " per component");
   }
-  if (*loss != RobustLoss::kNone && options.method != handeye::Method::kMl) {
+  if (loss != RobustLoss::kNone && options.method != handeye::Method::kMl) {
     result.warnings.push_back("the robust loss applies to ml only; ignored for " +
                               std::string(handeye::Info(options.method).name));
   }
@@ -208,15 +262,34 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
     } else {
       const bool one = flagged.size() == 1;
       result.warnings.push_back(
-          std::string(one ? "station " : "stations ") + StationList(flagged) +
-          " (counted from 1 in input order) " + (one ? "has" : "have") +
-          " residuals beyond 3 sigma of the noise model (flagged as " +
-          (one ? "an outlier; it is" : "outliers; they are") + " still used" +
-          (options.method == handeye::Method::kMl && *loss == RobustLoss::kNone
-               ? std::string("; a robust loss such as huber down-weights outliers")
-               : std::string()) +
+          std::string(one ? "station " : "stations ") + StationList(flagged, options) + " " +
+          (one ? "has" : "have") + " residuals beyond 3 sigma of the noise model at the " +
+          std::string(handeye::Info(options.method).name) + " estimate (flagged, still used: " +
+          (result.outlier_rejection
+               ? "the outlier test at the ml fit passed " + std::string(one ? "it" : "them")
+               : std::string("outlier rejection is off")) +
           ")");
     }
+  }
+  if (!result.rejected.empty()) {
+    const bool one = result.rejected.size() == 1;
+    std::string text = std::string(one ? "station " : "stations ") +
+                       StationList(result.rejected, options) + " rejected as " +
+                       (one ? "an outlier" : "outliers") + " (residual ";
+    for (size_t k = 0; k < result.rejected_residuals.size(); ++k) {
+      const StationResidual& r = result.rejected_residuals[k];
+      if (k > 0) text += "; ";
+      text += Format("%.3g deg / %.3g mm", r.rotation * kRadToDeg, r.translation * 1e3);
+    }
+    result.warnings.push_back(text + ", beyond 3 sigma of the noise of the other stations): " +
+                              "check their robot pose, detection and pairing");
+  }
+  if (selection.too_many) {
+    result.warnings.push_back(
+        std::to_string(selection.flagged) + " of " + std::to_string(all_stations.A.size()) +
+        " stations fail the outlier test, more than can be rejected: the data as a whole do not "
+        "fit one rigid setup under the noise model (check the setup, the pose conventions, the "
+        "pairing of robot and camera rows, and the sigmas); every station was used");
   }
   return result;
 }

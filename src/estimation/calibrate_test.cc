@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
@@ -86,20 +87,41 @@ TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
   EXPECT_LT(testing::Error(known.X, estimated.X).rotation, 0.1 * kDeg);
 }
 
-TEST(Calibrate, FlagsACorruptedStationAndSaysSo) {
+// A station 5° / 20 mm off (10σ): rejected by default, listed with its residual, and the
+// estimate equals the one without it; with reject_outliers = false it is flagged and kept.
+TEST(Calibrate, RejectsACorruptedStationOrFlagsItWhenKept) {
   const PoseSigma sigma{0.5 * kDeg, 1e-3};
   sim::SimulatedData data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 83, sigma.rotation, sigma.translation);
   Vector6d gross;
   gross << 5.0 * kDeg, 0.0, 0.0, 0.0, 0.02, 0.0;
   data.T_base_gripper[9] = data.T_base_gripper[9] * se3::Exp(gross);
+  handeye::Problem without = data.MeasuredProblem();
+  without.A.erase(without.A.begin() + 9);
+  without.B.erase(without.B.begin() + 9);
   for (const bool given : {false, true}) {
     CalibrateOptions options;
     if (given) options.robot_sigma = options.camera_sigma = sigma;
     const CalibrationResult result = Calibrate(data.MeasuredProblem(), options);
-    for (int i = 0; i < 15; ++i) EXPECT_EQ(result.residuals[i].outlier, i == 9) << i;
-    EXPECT_GT(result.residuals[9].whitened, 3.0);
-    EXPECT_TRUE(AnyWarningContains(result, "station 10 "));
+    ASSERT_EQ(result.rejected, std::vector<int>{9});
+    ASSERT_EQ(result.rejected_residuals.size(), 1u);
+    EXPECT_GT(result.rejected_residuals[0].whitened, 3.0);
+    EXPECT_NEAR(result.rejected_residuals[0].rotation, 5.0 * kDeg, 2.0 * kDeg);
+    EXPECT_EQ(result.residuals.size(), 14u);
+    for (const StationResidual& r : result.residuals) EXPECT_FALSE(r.outlier);
+    EXPECT_TRUE(AnyWarningContains(result, "station 10 rejected"));
+    EXPECT_TRUE(result.outlier_rejection);
+    const CalibrationResult reference = Calibrate(without, options);
+    EXPECT_LT(testing::Error(result.X, reference.X).rotation, 1e-9);
+    EXPECT_LT(testing::Error(result.X, reference.X).translation, 1e-9);
+
+    options.reject_outliers = false;
+    const CalibrationResult kept = Calibrate(data.MeasuredProblem(), options);
+    EXPECT_TRUE(kept.rejected.empty());
+    for (int i = 0; i < 15; ++i) EXPECT_EQ(kept.residuals[i].outlier, i == 9) << i;
+    EXPECT_GT(kept.residuals[9].whitened, 3.0);
+    EXPECT_TRUE(AnyWarningContains(kept, "station 10 has"));
+    EXPECT_TRUE(AnyWarningContains(kept, "outlier rejection is off"));
   }
 }
 

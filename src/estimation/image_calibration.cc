@@ -1,6 +1,7 @@
 // Hand–eye calibration from images: see image_calibration.h.
 #include "hecal/estimation/image_calibration.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -22,23 +23,43 @@ PoseSigma CameraSigmaFromCovariances(const std::vector<ImageStation>& stations) 
   return {std::sqrt(rotation / n), std::sqrt(translation / n)};
 }
 
-std::string FlaggedImagesWarning(const ReprojectionResult& reprojection) {
+// Names for messages: the caller's station ids (of every station), else numbers from 1.
+std::string StationName(const CalibrateOptions& options, size_t i) {
+  return i < options.station_ids.size() ? options.station_ids[i] : std::to_string(i + 1);
+}
+
+std::string Px(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f px", value);
+  return text;
+}
+
+// `flags` and `rms` follow the used stations (`used_index` maps them to all stations).
+std::string FlaggedImagesWarning(const std::vector<bool>& flags, const std::vector<double>& rms,
+                                 const std::vector<int>& used_index, double pixel_sigma,
+                                 const CalibrateOptions& options, bool rejected) {
   std::string list;
   int count = 0;
-  for (size_t i = 0; i < reprojection.image_outlier.size(); ++i) {
-    if (!reprojection.image_outlier[i]) continue;
-    char rms[64];
-    std::snprintf(rms, sizeof rms, " (%.3f px)", reprojection.image_rms_px[i]);
-    list += (count++ == 0 ? "" : ", ") + std::to_string(i + 1) + rms;
+  for (size_t k = 0; k < flags.size(); ++k) {
+    if (!flags[k]) continue;
+    list += (count++ == 0 ? "" : ", ") + StationName(options, static_cast<size_t>(used_index[k])) +
+            " (" + Px(rms[k]) + ")";
   }
   if (count == 0) return {};
-  char level[64];
-  std::snprintf(level, sizeof level, "%.3f px", 3.0 * reprojection.pixel_sigma);
-  return std::string(count == 1 ? "image " : "images ") + list +
-         " (counted from 1 among the used images) " + (count == 1 ? "has" : "have") +
-         " a reprojection RMS beyond 3 sigma (" + level +
-         "): check the detection (blur, glare, a partly hidden target) and the robot pose of " +
+  return std::string(count == 1 ? "image " : "images ") + list + " " +
+         (count == 1 ? "has" : "have") + " a reprojection RMS beyond 3 sigma (" +
+         Px(3.0 * pixel_sigma) + ")" +
+         (rejected ? std::string(": rejected")
+                   : std::string(": still used (more could not be rejected)")) +
+         "; check the detection (blur, glare, a partly hidden target) and the robot pose of " +
          (count == 1 ? "that image" : "those images");
+}
+
+std::vector<int> Indices(const std::vector<bool>& flags) {
+  std::vector<int> indices;
+  for (size_t i = 0; i < flags.size(); ++i)
+    if (flags[i]) indices.push_back(static_cast<int>(i));
+  return indices;
 }
 
 }  // namespace
@@ -46,13 +67,12 @@ std::string FlaggedImagesWarning(const ReprojectionResult& reprojection) {
 ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stations,
                                            const ImageCalibrationOptions& options) {
   std::vector<Pose> robot, camera;
-  std::vector<ImagePoints> points;
   for (const ImageStation& station : stations) {
     robot.push_back(station.T_base_gripper);
     camera.push_back(station.T_camera_target);
-    points.push_back(station.points);
   }
   const handeye::Problem problem = handeye::MakeProblem(options.setup, robot, camera);
+  const size_t n = stations.size();
 
   ImageCalibrationResult out;
   CalibrateOptions calibrate = options.calibrate;
@@ -70,16 +90,56 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   reprojection.pixel_sigma = options.pixel_sigma;
   reprojection.estimate_robot_sigma = !options.calibrate.robot_sigma;
   reprojection.refine_intrinsics = options.refine_intrinsics;
-  out.reprojection =
-      RefineReprojection(robot, points, out.pose_level.X, out.pose_level.Z, reprojection);
+
+  // Step 2 on the stations step 1 kept; an image whose reprojection RMS is beyond 3σ_px is
+  // rejected and step 2 repeated (at most ⌊(n − 3)/2⌋ stations rejected in all).
+  std::vector<bool> used(n, true);
+  for (int i : out.pose_level.rejected) used[static_cast<size_t>(i)] = false;
+  const size_t max_rejected = n >= 3 ? (n - 3) / 2 : 0;
+  Pose X0 = out.pose_level.X, Z0 = out.pose_level.Z;
+  std::vector<std::string> image_warnings;
+  while (true) {
+    const std::vector<int> used_index = Indices(used);
+    std::vector<Pose> used_robot;
+    std::vector<ImagePoints> used_points;
+    for (int i : used_index) {
+      used_robot.push_back(robot[static_cast<size_t>(i)]);
+      used_points.push_back(stations[static_cast<size_t>(i)].points);
+    }
+    out.reprojection = RefineReprojection(used_robot, used_points, X0, Z0, reprojection);
+    const std::vector<int> flagged = Indices(out.reprojection.image_outlier);
+    if (flagged.empty()) break;
+    const size_t rejected = static_cast<size_t>(std::count(used.begin(), used.end(), false));
+    const bool reject = rejected + flagged.size() <= max_rejected;
+    image_warnings.push_back(
+        FlaggedImagesWarning(out.reprojection.image_outlier, out.reprojection.image_rms_px,
+                             used_index, out.reprojection.pixel_sigma, options.calibrate, reject));
+    if (!reject) break;
+    for (int k : flagged) {
+      const int i = used_index[static_cast<size_t>(k)];
+      used[static_cast<size_t>(i)] = false;
+      out.image_rejected.push_back(i);
+      out.image_rejected_rms_px.push_back(out.reprojection.image_rms_px[static_cast<size_t>(k)]);
+    }
+    X0 = out.reprojection.X;
+    Z0 = out.reprojection.Z;
+  }
+  std::vector<Pose> used_robot;
+  std::vector<ImagePoints> used_points;
+  for (int i : Indices(used)) {
+    used_robot.push_back(robot[static_cast<size_t>(i)]);
+    used_points.push_back(stations[static_cast<size_t>(i)].points);
+  }
+  const handeye::Problem used_problem = handeye::SubProblem(problem, used);
 
   CalibrationResult& result = out.result;
   result = out.pose_level;
   result.X = out.reprojection.X;
   result.Z = out.reprojection.Z;
   if (options.calibrate.covariance.method == CovarianceMethod::kMonteCarlo) {
-    result.covariance = ImageMonteCarloCovariance(robot, points, out.reprojection, reprojection,
-                                                  options.calibrate.covariance);
+    result.covariance = ImageMonteCarloCovariance(used_robot, used_points, out.reprojection,
+                                                  reprojection, options.calibrate.covariance);
+    result.seed = options.calibrate.covariance.seed;
     if (std::string warning = FailedSamplesWarning(*result.covariance); !warning.empty()) {
       result.warnings.push_back(std::move(warning));
     }
@@ -103,13 +163,19 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
     result.warnings.insert(result.warnings.begin(), text);
   }
   const NoiseSpec known = NoiseSpec::FromSigmas(result.robot_sigma, result.camera_sigma);
-  SetStationResiduals(
-      problem,
-      EstimateNoise(LinearizeStations(problem, result.X, result.Z), known, LengthScale(problem)),
-      &result);
-  if (std::string warning = FlaggedImagesWarning(out.reprojection); !warning.empty()) {
-    result.warnings.push_back(std::move(warning));
+  const NoiseEstimate noise = EstimateNoise(LinearizeStations(used_problem, result.X, result.Z),
+                                            known, handeye::LengthScale(used_problem));
+  SetStationResiduals(used_problem, noise, &result);
+  result.rejected.clear();
+  for (size_t i = 0; i < n; ++i)
+    if (!used[i]) result.rejected.push_back(static_cast<int>(i));
+  result.rejected_residuals = RejectedResiduals(problem, used, result.X, result.Z, noise.variances);
+  result.rejected_ids.clear();
+  for (int i : result.rejected) {
+    if (static_cast<size_t>(i) < options.calibrate.station_ids.size())
+      result.rejected_ids.push_back(options.calibrate.station_ids[static_cast<size_t>(i)]);
   }
+  for (std::string& warning : image_warnings) result.warnings.push_back(std::move(warning));
   return out;
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <exception>
 
+#include "hecal/core/error.h"
+
 namespace hecal::estimation {
 namespace {
 
@@ -33,6 +35,16 @@ std::vector<handeye::Solution> Solutions(const std::vector<InitialSolution>& ini
   solutions.reserve(initial.size());
   for (const InitialSolution& start : initial) solutions.push_back(start.solution);
   return solutions;
+}
+
+std::vector<handeye::Solution> StartingSolutions(const handeye::Problem& problem) {
+  std::vector<handeye::Solution> starts = Solutions(InitialSolutions(problem));
+  if (starts.empty()) {
+    throw DegenerateError("X and Z (no closed-form solver found a starting point)",
+                          "check the pose conventions (try inverting the robot or camera poses) "
+                          "and use stations with large, varied rotations");
+  }
+  return starts;
 }
 
 }  // namespace hecal::estimation

@@ -34,7 +34,7 @@ class MlSolver {
  public:
   MlSolver(const handeye::Problem& problem, const MlOptions& options)
       : problem_(problem),
-        length_scale_(LengthScale(problem)),
+        length_scale_(handeye::LengthScale(problem)),
         loss_(MakeLoss(options.robust_loss, options.robust_scale)) {}
 
   double length_scale() const { return length_scale_; }

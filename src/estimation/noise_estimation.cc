@@ -208,7 +208,8 @@ double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
   return change;
 }
 
-// The statistic T_i of every station for the given inclusion mask.
+}  // namespace
+
 std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
                                       const std::vector<bool>& included,
                                       const NoiseVariances& theta) {
@@ -246,8 +247,6 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
   return tests;
 }
 
-}  // namespace
-
 std::vector<StationLinearization> LinearizeStations(const handeye::Problem& problem, const Pose& X,
                                                     const Pose& Z) {
   std::vector<StationLinearization> stations(problem.A.size());
@@ -256,14 +255,6 @@ std::vector<StationLinearization> LinearizeStations(const handeye::Problem& prob
     stations[i].components = StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], X);
   }
   return stations;
-}
-
-double LengthScale(const handeye::Problem& problem) {
-  double sum = 0.0;
-  for (const Pose& B : problem.B) sum += B.translation().squaredNorm();
-  const double rms =
-      problem.B.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(problem.B.size()));
-  return std::max(rms, 1e-3);
 }
 
 NoiseSpec NoiseSpec::FromSigmas(const std::optional<PoseSigma>& robot,

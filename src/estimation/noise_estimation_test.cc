@@ -58,9 +58,9 @@ TEST(EstimateNoise, RecoversTheSigmaScaleBothSetups) {
     const PoseSigma sigma{1.0 * kDeg, 1e-3};
     const sim::SimulatedData data = Simulate(setup, 400, sigma, sigma, 21);
     const handeye::Problem problem = data.MeasuredProblem();
-    const NoiseEstimate estimate =
-        EstimateNoise(LinearizeStations(problem, data.X, data.Z),
-                      NoiseSpec::FromSigmas(std::nullopt, std::nullopt), LengthScale(problem));
+    const NoiseEstimate estimate = EstimateNoise(LinearizeStations(problem, data.X, data.Z),
+                                                 NoiseSpec::FromSigmas(std::nullopt, std::nullopt),
+                                                 handeye::LengthScale(problem));
     EXPECT_TRUE(estimate.converged);
     EXPECT_NEAR(estimate.robot().rotation / sigma.rotation, 1.0, 0.03);
     EXPECT_NEAR(estimate.robot().translation / sigma.translation, 1.0, 0.07);
@@ -79,7 +79,7 @@ TEST(EstimateNoise, EstimatesTheCameraGivenTheRobot) {
   const handeye::Problem problem = data.MeasuredProblem();
   const NoiseEstimate estimate =
       EstimateNoise(LinearizeStations(problem, data.X, data.Z),
-                    NoiseSpec::FromSigmas(robot, std::nullopt), LengthScale(problem));
+                    NoiseSpec::FromSigmas(robot, std::nullopt), handeye::LengthScale(problem));
   EXPECT_DOUBLE_EQ(estimate.robot().rotation, robot.rotation);
   EXPECT_NEAR(estimate.camera().rotation / camera.rotation, 1.0, 0.06);
   EXPECT_NEAR(estimate.camera().translation / camera.translation, 1.0, 0.08);
@@ -92,7 +92,7 @@ TEST(EstimateNoise, IndependentOfTheLinearisationPointNearTheOptimum) {
   const sim::SimulatedData data = Simulate(handeye::Setup::kEyeToHand, 60, sigma, sigma, 23);
   const handeye::Problem problem = data.MeasuredProblem();
   const NoiseSpec spec = NoiseSpec::FromSigmas(std::nullopt, std::nullopt);
-  const double L = LengthScale(problem);
+  const double L = handeye::LengthScale(problem);
   Vector6d offset;
   offset << 0.002, -0.001, 0.001, 0.003, 0.001, -0.002;
   const NoiseEstimate at_truth = EstimateNoise(LinearizeStations(problem, data.X, data.Z), spec, L);
@@ -112,12 +112,12 @@ TEST(EstimateNoise, FlagsACorruptedStationWithoutBeingMaskedByIt) {
   data.T_camera_target[6] = data.T_camera_target[6] * se3::Exp(gross);
   const NoiseSpec spec = NoiseSpec::FromSigmas(std::nullopt, std::nullopt);
   const handeye::Problem problem = data.MeasuredProblem();
-  const NoiseEstimate estimate =
-      EstimateNoise(LinearizeStations(problem, data.X, data.Z), spec, LengthScale(problem));
+  const NoiseEstimate estimate = EstimateNoise(LinearizeStations(problem, data.X, data.Z), spec,
+                                               handeye::LengthScale(problem));
   for (int i = 0; i < 15; ++i) EXPECT_EQ(estimate.stations[i].outlier, i == 6) << "station " << i;
   const handeye::Problem clean_problem = clean.MeasuredProblem();
   const NoiseEstimate reference = EstimateNoise(LinearizeStations(clean_problem, clean.X, clean.Z),
-                                                spec, LengthScale(clean_problem));
+                                                spec, handeye::LengthScale(clean_problem));
   // Excluding the flagged station, the sigma stays near the clean data's estimate (14 vs 15
   // stations), instead of being inflated by the 8° error.
   EXPECT_NEAR(estimate.robot().rotation / reference.robot().rotation, 1.0, 0.15);
@@ -130,7 +130,7 @@ TEST(EstimateNoise, GivenSigmasAreUsedAsIsAndTooSmallOnesFlagEverything) {
   const PoseSigma small{0.05 * kDeg, 0.05e-3};
   const NoiseEstimate estimate =
       EstimateNoise(LinearizeStations(problem, data.X, data.Z), NoiseSpec::FromSigmas(small, small),
-                    LengthScale(problem));
+                    handeye::LengthScale(problem));
   EXPECT_EQ(estimate.iterations, 0);
   EXPECT_DOUBLE_EQ(estimate.robot().rotation, small.rotation);
   int flagged = 0;
@@ -141,9 +141,9 @@ TEST(EstimateNoise, GivenSigmasAreUsedAsIsAndTooSmallOnesFlagEverything) {
 TEST(EstimateNoise, NoiseFreeDataGiveTinyPositiveSigmas) {
   const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeToHand, 8, 26);
   const handeye::Problem problem = data.MeasuredProblem();
-  const NoiseEstimate estimate =
-      EstimateNoise(LinearizeStations(problem, data.X, data.Z),
-                    NoiseSpec::FromSigmas(std::nullopt, std::nullopt), LengthScale(problem));
+  const NoiseEstimate estimate = EstimateNoise(LinearizeStations(problem, data.X, data.Z),
+                                               NoiseSpec::FromSigmas(std::nullopt, std::nullopt),
+                                               handeye::LengthScale(problem));
   EXPECT_GT(estimate.robot().rotation, 0.0);
   EXPECT_LT(estimate.robot().rotation, 1e-9);
   EXPECT_GT(estimate.robot().translation, 0.0);

@@ -85,7 +85,7 @@ StroblResult RefineStrobl(const handeye::Problem& problem,
     throw std::invalid_argument(
         "RefineStrobl: needs at least 3 stations with robot and camera poses");
   }
-  const double L = LengthScale(problem);
+  const double L = handeye::LengthScale(problem);
   Weights weights{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (const handeye::Solution& start : starts) {
     const Weights rms = ErrorRms(problem, start);

@@ -1,5 +1,8 @@
 #include "hecal/handeye/problem.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "hecal/geometry/nearest_rotation.h"
 
 namespace hecal::handeye {
@@ -32,6 +35,14 @@ Problem MakeProblem(Setup setup, const std::vector<Pose>& T_base_gripper,
     problem.A.push_back(setup == Setup::kEyeInHand ? T : T.inverse());
   }
   return problem;
+}
+
+double LengthScale(const Problem& problem) {
+  double sum = 0.0;
+  for (const Pose& B : problem.B) sum += B.translation().squaredNorm();
+  const double rms =
+      problem.B.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(problem.B.size()));
+  return std::max(rms, 1e-3);
 }
 
 Pose EstimateZ(const Problem& problem, const Pose& X) {

@@ -148,9 +148,20 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
   }
   json rejected = json::array();
   for (int i : document.rejected) rejected.push_back(document.station_ids.at(i));
+  json rejected_residuals = json::array();
+  for (size_t k = 0; k < result.rejected_residuals.size(); ++k) {
+    const estimation::StationResidual& r = result.rejected_residuals[k];
+    rejected_residuals.push_back(
+        {{"id", k < result.rejected_ids.size() ? result.rejected_ids[k]
+                                               : std::to_string(result.rejected[k])},
+         {"rotation_deg", r.rotation * kDegrees},
+         {"translation", r.translation * scale},
+         {"whitened", r.whitened}});
+  }
   object["residuals"] = {{"rotation_rms_deg", result.rotation_rms * kDegrees},
                          {"translation_rms", result.translation_rms * scale},
-                         {"per_station", per_station}};
+                         {"per_station", per_station},
+                         {"rejected", rejected_residuals}};
   object["noise"] = {{"robot_sigma",
                       {{"rotation_deg", result.robot_sigma.rotation * kDegrees},
                        {"translation", result.robot_sigma.translation * scale}}},
@@ -158,7 +169,9 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
                       {{"rotation_deg", result.camera_sigma.rotation * kDegrees},
                        {"translation", result.camera_sigma.translation * scale}}},
                      {"estimated", result.sigmas_estimated}};
-  object["stations"] = {{"used", used}, {"rejected", rejected}};
+  object["stations"] = {
+      {"used", used}, {"rejected", rejected}, {"outlier_rejection", result.outlier_rejection}};
+  if (result.seed) object["seed"] = *result.seed;
   object["warnings"] = result.warnings;
   if (document.images) {
     object["refinement"] = "reprojection";

@@ -17,12 +17,16 @@
 // information, the UT through the solver for every other method; calibration_covariance.h).
 // A solver that throws at a UT sigma point or a linearisation step makes Calibrate throw that
 // error (Monte Carlo instead counts such samples and warns).
-// Outliers: a station is flagged when its studentised residual exceeds the 3σ level (the χ²
-// quantile of p = 0.0027 for its degrees of freedom; noise_estimation.h), with flagged
-// stations excluded from the sigma estimate so that they cannot hide themselves. Flagged
-// stations stay in the estimate (use a robust loss to down-weight them); a warning lists them.
+// Outliers: by default gross outliers are rejected first (station_selection.h: consensus over
+// minimal station sets, then a χ² test of every station at the noise of the others) and the
+// method runs on the stations that remain; the rejected are listed with their residuals at the
+// result. The degeneracy check runs on the stations used. With reject_outliers = false every
+// station is used. Among the used stations one is still flagged when its studentised residual
+// exceeds the 3σ level (the χ² quantile of p = 0.0027 for its degrees of freedom;
+// noise_estimation.h) at the chosen method's estimate; a warning lists them.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +34,7 @@
 #include "hecal/estimation/covariance_method.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
+#include "hecal/estimation/station_selection.h"
 #include "hecal/geometry/types.h"
 #include "hecal/handeye/methods.h"
 #include "hecal/handeye/problem.h"
@@ -46,6 +51,11 @@ struct CalibrateOptions {
   double robust_scale = 3.0;
   // How the covariance of (X, Z) is computed (calibration_covariance.h).
   CovarianceOptions covariance;
+  // Reject gross outliers before solving (station_selection.h); false: --keep-outliers.
+  bool reject_outliers = true;
+  handeye::ConsensusOptions consensus;  // its hypotheses and seed
+  // Station names for warnings, one per station of the problem (default: numbers from 1).
+  std::vector<std::string> station_ids;
 };
 
 struct StationResidual {
@@ -63,12 +73,21 @@ struct CalibrationResult {
   // metres, under the noise model robot_sigma / camera_sigma (calibration_covariance.h).
   // Absent only with CovarianceMethod::kNone.
   std::optional<CalibrationCovariance> covariance;
-  std::vector<StationResidual> residuals;  // one per station, in problem order
+  std::vector<StationResidual> residuals;  // one per USED station, in problem order
   double rotation_rms = 0.0;               // radians
   double translation_rms = 0.0;            // metres
   PoseSigma robot_sigma;                   // used (given or estimated)
   PoseSigma camera_sigma;                  // used (given or estimated)
   bool sigmas_estimated = false;
+  // Stations left out by the outlier rejection (indices into the problem, ascending) and their
+  // residuals at (X, Z), whitened by the noise model of the result.
+  std::vector<int> rejected;
+  std::vector<StationResidual> rejected_residuals;
+  std::vector<std::string> rejected_ids;  // their options.station_ids (empty when none given)
+  bool outlier_rejection = false;         // the rejection ran (reject_outliers and n ≥ 5)
+  // The seed of the randomness the result used (the consensus's random triples, a Monte Carlo
+  // covariance), when it used any.
+  std::optional<std::uint64_t> seed;
   std::vector<std::string> warnings;
 };
 
@@ -77,10 +96,27 @@ struct CalibrationResult {
 // Carlo samples; the source named is the CLI flag).
 CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options);
 
+// The same with the stations already selected (SelectStations or AllStations): `--method all`
+// selects once and runs every method on the same stations. options.reject_outliers is ignored.
+CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options,
+                            const StationSelection& selection);
+
+// The selection Calibrate makes for `options`: SelectStations with the given sigmas and
+// options.consensus, or AllStations when options.reject_outliers is false.
+StationSelection SelectStationsFor(const handeye::Problem& problem,
+                                   const CalibrateOptions& options);
+
 // Fills result->residuals, rotation_rms and translation_rms at result->X, result->Z, with the
 // whitened residuals and outlier flags of `noise` (noise_estimation.h, linearised at the same
 // X, Z); returns the indices of the flagged stations.
 std::vector<int> SetStationResiduals(const handeye::Problem& problem, const NoiseEstimate& noise,
                                      CalibrationResult* result);
+
+// The residuals at (X, Z) of the stations not `used`, whitened by the noise model `variances`
+// (the prediction from the used stations' fit is the statistic; `whitened` is
+// sqrt(r_iᵀ Σ_i⁻¹ r_i / 6)), in station order; empty when every station is used.
+std::vector<StationResidual> RejectedResiduals(const handeye::Problem& problem,
+                                               const std::vector<bool>& used, const Pose& X,
+                                               const Pose& Z, const NoiseVariances& variances);
 
 }  // namespace hecal::estimation

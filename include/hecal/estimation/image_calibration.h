@@ -17,13 +17,18 @@
 //      errors are strongly correlated through the target distance), so step 1's robot sigma can be
 //      several times off; the joint estimate sees each image's true pose uncertainty through its
 //      pixels.
+//      Outliers: step 1 rejects pose-level outliers (calibrate.h, station_selection.h: a wrong
+//      robot pose, a board detected in the wrong order); step 2 runs on the stations that remain,
+//      and an image whose reprojection RMS exceeds 3 σ̂_px (a blurred view, a partly wrong
+//      detection) is rejected and step 2 repeated without it, at most ⌊(n − 3)/2⌋ stations
+//      rejected in all (beyond that they are flagged and kept, with a warning).
 //   3. The result: step 1's result with X, Z, their covariance and the robot sigma replaced by
 //      step 2's, and the pose-level residuals, whitened residuals and outlier flags of every
-//      station recomputed at step 2's X, Z with step 1's sigmas. The covariance is step 2's
+//      used station recomputed at step 2's X, Z with step 1's sigmas; the rejected stations
+//      (both steps) with their residuals at that X, Z. The covariance is step 2's
 //      linear one (its Gauss–Newton information), or with options.calibrate.covariance.method
 //      = kMonteCarlo a Monte Carlo over the pixels and robot poses (image_monte_carlo.h); other
-//      covariance methods are treated as linear. Step 2 flags the images whose
-//      reprojection RMS exceeds 3 σ̂_px; a warning lists them.
+//      covariance methods are treated as linear. Warnings list the rejected and flagged images.
 #pragma once
 
 #include <vector>
@@ -53,9 +58,11 @@ struct ImageCalibrationOptions {
 };
 
 struct ImageCalibrationResult {
-  CalibrationResult pose_level;     // step 1
-  ReprojectionResult reprojection;  // step 2
-  CalibrationResult result;         // step 3: the answer
+  CalibrationResult pose_level;     // step 1 (its `rejected`: the pose-level outliers)
+  ReprojectionResult reprojection;  // step 2, on the stations used (per-image vectors follow them)
+  CalibrationResult result;         // step 3: the answer; `rejected` = pose level ∪ image level
+  std::vector<int> image_rejected;            // stations rejected in step 2, in order
+  std::vector<double> image_rejected_rms_px;  // their reprojection RMS when rejected
 };
 
 // Throws what Calibrate and RefineReprojection throw (DegenerateError, InputError).

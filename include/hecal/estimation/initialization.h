@@ -24,4 +24,7 @@ std::vector<InitialSolution> InitialSolutions(const handeye::Problem& problem);
 // Just the solutions.
 std::vector<handeye::Solution> Solutions(const std::vector<InitialSolution>& initial);
 
+// The solutions of InitialSolutions; throws hecal::DegenerateError when no solver succeeds.
+std::vector<handeye::Solution> StartingSolutions(const handeye::Problem& problem);
+
 }  // namespace hecal::estimation

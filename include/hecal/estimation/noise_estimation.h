@@ -64,10 +64,6 @@ struct StationLinearization {
 std::vector<StationLinearization> LinearizeStations(const handeye::Problem& problem, const Pose& X,
                                                     const Pose& Z);
 
-// Characteristic length of the data set: RMS camera-to-target distance |t(B_i)| (≥ 1 mm). Used
-// to compare rotations (rad) with translations (m).
-double LengthScale(const handeye::Problem& problem);
-
 // Which variances are known and which are estimated.
 struct NoiseSpec {
   // Known variances; for estimated ones the starting value (≤ 0: derived from the residuals).
@@ -104,6 +100,13 @@ struct NoiseEstimate {
 // LengthScale. Requires at least 3 stations.
 NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
                             const NoiseSpec& spec, double length_scale);
+
+// The outlier test above for every station at fixed variances and a fixed set of included
+// stations (the linear re-fit uses those only): the included statistic for included stations,
+// the prediction from the others for excluded ones.
+std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
+                                      const std::vector<bool>& included,
+                                      const NoiseVariances& variances);
 
 // Starting values for the estimated variances of `spec` (known ones copied) from the raw
 // residual energies: a rotation group gets Σ|ω_i|² / Σ tr(ω block of Q_ik); a translation group

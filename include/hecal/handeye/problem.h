@@ -47,6 +47,10 @@ struct Solution {
   Pose Z = Pose::Identity();
 };
 
+// Characteristic length of the data set: RMS camera-to-target distance |t(B_i)| (≥ 1 mm). Used
+// to compare rotations (rad) with translations (m).
+double LengthScale(const Problem& problem);
+
 // For motion-based solvers that estimate X only: the Z that best fits Z ≈ A_i X B_i — the
 // chordal L2 mean (rotation: nearest rotation to the mean matrix; translation: mean).
 Pose EstimateZ(const Problem& problem, const Pose& X);

@@ -58,6 +58,7 @@ struct PoseTable {
   std::vector<PoseRow> rows;
   std::string source;                      // file name, for messages
   LengthUnit unit = LengthUnit::kMetre;    // the file's length unit
+  bool unit_named = false;                 // the file itself named the unit (header suffix)
   std::optional<RotationFormat> rotation;  // the rotation group found (nullopt: matrix lines)
   bool degrees = false;                    // the file's angles were in degrees (rotvec/Euler)
   std::vector<std::string> warnings;       // "file:line: ..." notes (e.g. quaternion normalised)

@@ -1,0 +1,212 @@
+// The convention check of `hecal calibrate`: see conventions.h.
+#include "conventions.h"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "hecal/core/error.h"
+
+namespace hecal::cli {
+namespace {
+
+using handeye::Convention;
+using handeye::ConventionFit;
+using handeye::Setup;
+
+// The diagnosis needs residual levels, not the best estimate: fewer hypotheses than the outlier
+// rejection, scored on fewer stations.
+handeye::ConsensusOptions DiagnosisOptions(const handeye::ConsensusOptions& options) {
+  handeye::ConsensusOptions diagnosis = options;
+  diagnosis.max_hypotheses = std::min(options.max_hypotheses, 300);
+  diagnosis.max_scored_stations = std::min(options.max_scored_stations, 300);
+  return diagnosis;
+}
+
+std::string FitText(const ConventionFit& fit) {
+  if (!fit.solved) return "no three stations fixing X";
+  return "median station residual " + ResidualText(fit.median_rotation, fit.median_translation);
+}
+
+std::string Where(Setup setup) {
+  return setup == Setup::kEyeInHand ? "on the robot" : "fixed";
+}
+
+std::string RobotInverseFix(const ConventionFlags& flags) {
+  return flags.robot_inverse ? "leave out --robot-inverse"
+                             : "add --robot-inverse (the robot file holds T_gripper_base)";
+}
+
+std::string CameraInverseFix(const ConventionFlags& flags) {
+  return flags.camera_inverse ? "leave out --camera-inverse"
+                              : "add --camera-inverse (the camera file holds T_target_camera)";
+}
+
+// The fix for a file whose lengths fit as `unit` ("mm" or "m").
+std::string UnitFix(const std::string& file, bool matrix_lines, const std::string& unit) {
+  const std::string suffix = unit == "mm" ? "x_mm,y_mm,z_mm" : "x_m,y_m,z_m";
+  if (matrix_lines) {
+    return "write " + file + " as a pose CSV in " + unit + " (hecal import --format matrix16 " +
+           file + " --units " + unit + " ...), or give --units " + unit +
+           " when both files are in " + unit;
+  }
+  return "name the unit in the header of " + file + " (" + suffix + "), or give --units " + unit +
+         " when both files are in " + unit;
+}
+
+// The error for an alternative that fits clearly better than the data as given.
+[[noreturn]] void Refuse(const ConventionFit& given, const ConventionFit& better,
+                         const ConventionFlags& flags) {
+  const std::string evidence = ": " + FitText(better) + " against " + FitText(given) +
+                               " as given (" + std::string(handeye::SetupName(given.setup)) + ")";
+  const std::string robot = flags.robot_file;
+  const std::string camera = flags.camera_file;
+  switch (better.convention) {
+    case Convention::kOtherSetup:
+    case Convention::kBothInverted: {
+      const std::string other(handeye::SetupName(better.setup));
+      const bool prefer_setup = handeye::PreferOtherSetup(better);
+      const std::string setup_fix = "run with --setup " + other;
+      const std::string camera_part = better.convention == Convention::kBothInverted
+                                          ? " and the camera poses inverted"
+                                          : std::string();
+      const std::string camera_fix = better.convention == Convention::kBothInverted
+                                         ? ", and " + CameraInverseFix(flags)
+                                         : std::string();
+      const std::string what =
+          prefer_setup ? other + camera_part : "the robot poses inverted" + camera_part;
+      const std::string fix =
+          prefer_setup ? setup_fix + camera_fix + "; or, if the camera really is " +
+                             Where(given.setup) + ", " + RobotInverseFix(flags) + camera_fix
+                       : RobotInverseFix(flags) + camera_fix + "; or, if the camera is " +
+                             Where(better.setup) + ", " + setup_fix + camera_fix;
+      throw InputError("--setup", 0, "these data fit " + what + evidence,
+                       fix +
+                           " (poses alone cannot tell the other setup from inverted robot "
+                           "poses)");
+    }
+    case Convention::kCameraInverted:
+      throw InputError(camera, 0, "these data fit the camera poses inverted" + evidence,
+                       CameraInverseFix(flags));
+    case Convention::kRobotMillimetres:
+    case Convention::kRobotMetres: {
+      const std::string unit = better.convention == Convention::kRobotMillimetres ? "mm" : "m";
+      throw InputError(
+          robot, 0,
+          "the robot lengths fit as " +
+              std::string(unit == "mm" ? "millimetres, not metres" : "metres, not millimetres") +
+              evidence,
+          UnitFix(robot, flags.robot_matrix_lines, unit));
+    }
+    case Convention::kCameraMillimetres:
+    case Convention::kCameraMetres: {
+      const std::string unit = better.convention == Convention::kCameraMillimetres ? "mm" : "m";
+      throw InputError(
+          camera, 0,
+          "the camera lengths fit as " +
+              std::string(unit == "mm" ? "millimetres, not metres" : "metres, not millimetres") +
+              evidence,
+          UnitFix(camera, flags.camera_matrix_lines, unit));
+    }
+    case Convention::kRobotQuaternionShiftedLeft:
+    case Convention::kRobotQuaternionShiftedRight:
+    case Convention::kCameraQuaternionShiftedLeft:
+    case Convention::kCameraQuaternionShiftedRight: {
+      const bool is_robot = better.convention == Convention::kRobotQuaternionShiftedLeft ||
+                            better.convention == Convention::kRobotQuaternionShiftedRight;
+      throw InputError(
+          is_robot ? robot : camera, 0,
+          "these data fit " + std::string(handeye::ConventionName(better.convention)) + evidence,
+          "name the quaternion columns in the order the values are written (e.g. "
+          "qx,qy,qz,qw for x, y, z, w)");
+    }
+    case Convention::kAsGiven:
+      break;
+  }
+  throw InputError(
+      "--setup", 0,
+      "these data fit " + std::string(handeye::ConventionName(better.convention)) + evidence, "");
+}
+
+std::string Metres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g m", value);
+  return text;
+}
+
+}  // namespace
+
+bool HasQuaternionColumns(const io::PoseTable& table) {
+  return table.rotation && table.rotation->kind == io::RotationFormat::Kind::kQuaternion;
+}
+
+std::string ResidualText(double rotation_rad, double translation_m) {
+  char text[96];
+  const double degrees = rotation_rad * 180.0 / std::numbers::pi;
+  if (std::abs(translation_m) >= 1.0) {
+    std::snprintf(text, sizeof text, "%.3g deg / %.3g m", degrees, translation_m);
+  } else {
+    std::snprintf(text, sizeof text, "%.3g deg / %.3g mm", degrees, translation_m * 1e3);
+  }
+  return text;
+}
+
+ConventionCheck CheckConventions(handeye::PoseData data, std::optional<Setup> setup,
+                                 const ConventionFlags& flags,
+                                 const handeye::ConsensusOptions& options) {
+  const handeye::ConsensusOptions diagnosis_options = DiagnosisOptions(options);
+  ConventionCheck check;
+  if (setup) {
+    data.setup = *setup;
+  } else {
+    data.setup = Setup::kEyeInHand;
+    const ConventionFit in_hand =
+        handeye::FitConvention(data, Convention::kAsGiven, diagnosis_options);
+    const ConventionFit to_hand =
+        handeye::FitConvention(data, Convention::kOtherSetup, diagnosis_options);
+    const double L = handeye::LengthScale(
+        handeye::MakeProblem(data.setup, data.T_base_gripper, data.T_camera_target));
+    const ConventionFit* chosen = nullptr;
+    const ConventionFit* other = nullptr;
+    if (handeye::FitsClearlyBetter(to_hand, in_hand, L)) {
+      chosen = &to_hand, other = &in_hand;
+    } else if (handeye::FitsClearlyBetter(in_hand, to_hand, L)) {
+      chosen = &in_hand, other = &to_hand;
+    } else {
+      // Neither setup fits clearly better: maybe another mistake explains the data.
+      const handeye::ConventionDiagnosis diagnosis =
+          handeye::DiagnoseConventions(data, diagnosis_options);
+      if (diagnosis.better && diagnosis.better->convention != Convention::kOtherSetup) {
+        Refuse(diagnosis.given, *diagnosis.better, flags);
+      }
+      throw InputError("--setup", 0,
+                       "--setup auto cannot tell the setup from these data: " + FitText(in_hand) +
+                           " as eye-in-hand, " + FitText(to_hand) + " as eye-to-hand",
+                       "give --setup eye-in-hand (camera on the robot) or --setup eye-to-hand "
+                       "(camera fixed)");
+    }
+    data.setup = chosen->setup;
+    const std::string name(handeye::SetupName(chosen->setup));
+    check.notes.push_back("--setup auto chose " + name + ": " + FitText(*chosen) + " against " +
+                          FitText(*other) + " as " + std::string(handeye::SetupName(other->setup)));
+    if (!handeye::PreferOtherSetup(*chosen)) {
+      const bool in = chosen->setup == Setup::kEyeInHand;
+      const Pose& hand = in ? chosen->solution.X : chosen->solution.Z;
+      const Pose& cell = in ? chosen->solution.Z : chosen->solution.X;
+      check.notes.push_back(
+          "but read as " + name + " the " + (in ? "camera" : "target") + " is " +
+          Metres(hand.translation().norm()) + " from the flange and the " +
+          (in ? "target" : "camera") + " " + Metres(cell.translation().norm()) +
+          " from the base; the same data fit " + std::string(handeye::SetupName(other->setup)) +
+          " with the robot poses inverted: if that is your setup, run with --setup " +
+          std::string(handeye::SetupName(other->setup)) + " and " + RobotInverseFix(flags));
+    }
+  }
+  check.setup = data.setup;
+  const handeye::ConventionDiagnosis diagnosis =
+      handeye::DiagnoseConventions(data, diagnosis_options);
+  if (diagnosis.better) Refuse(diagnosis.given, *diagnosis.better, flags);
+  return check;
+}
+
+}  // namespace hecal::cli

@@ -1,0 +1,71 @@
+// The stations that agree on one (X, Z), found without knowing the noise level: least median of
+// squares over minimal station sets with a local refit, the robust first stage of hecal's outlier
+// rejection (estimation/station_selection.h) and the fit measure of the convention diagnosis
+// (convention_diagnosis.h).
+//
+// Hypotheses (Fischler and Bolles, "Random sample consensus", CACM 24(6), 1981): minimal sets of
+// 3 stations — two motions with non-parallel rotation axes fix X and Z — each solved by Shah's
+// closed form on absolute poses (shah.h, microseconds). Every triple when there are at most
+// `max_hypotheses` of them (n ≤ 18 with the default 1000), else `max_hypotheses` random triples
+// drawn with SplitMix64 from `seed` (deterministic). A triple whose rotations do not fix X (Shah
+// reports it degenerate) is skipped. With a fraction ε of gross outliers a random triple is clean
+// with probability (1 − ε)³: 1000 triples miss a clean one with probability < 1e-50 at ε = 20%
+// and 2e-58 at ε = 50%.
+//
+// Score (Rousseeuw, "Least median of squares regression", JASA 79, 1984): station i's residual
+// under (X, Z) is E_i = Z⁻¹ · A_i · X · B_i (problem.h), of rotation angle a_i and translation
+// length d_i, combined as e_i² = a_i² + (d_i / L)² with L = LengthScale (the camera-to-target
+// distance, which is how far a rotation error of the camera moves the target). The hypothesis of
+// least median e² wins: no noise level is needed and up to half the stations may be arbitrary.
+// Scores are computed on at most `max_scored_stations` stations (a fixed random subset for
+// larger n), so the cost is O(hypotheses · min(n, max_scored_stations)).
+//
+// Local refit (Chum, Matas and Kittler, "Locally optimized RANSAC", DAGM 2003): the consensus set
+// is {i : e_i ≤ κ · median(e)}, κ = 3 — for Gaussian noise e² ~ σ²·χ² with 3 to 6 degrees of
+// freedom, and P(e > 3 · median) is 9e-5 (3) to 1e-8 (6) — and Shah is solved again on it,
+// until the set stops changing (at most 10 rounds). The set is a candidate: the statistical test
+// at the estimated noise (estimation/station_selection.h) has the last word.
+//
+// Residual angles use atan2(|vee(R − Rᵀ)|/2, (tr R − 1)/2), accurate near 0 and π.
+// Throws DegenerateError (observability.h) when fewer than 3 stations are given or no triple
+// fixes X.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "hecal/handeye/problem.h"
+
+namespace hecal::handeye {
+
+struct ConsensusOptions {
+  int max_hypotheses = 1000;
+  int max_scored_stations = 2000;
+  std::uint64_t seed = 1;
+};
+
+struct StationConsensus {
+  Solution solution;                // Shah on the consensus set
+  std::vector<bool> inlier;         // the consensus set, one flag per station
+  std::vector<double> rotation;     // a_i at `solution`, radians
+  std::vector<double> translation;  // d_i at `solution`, metres
+  // Medians of a_i and d_i over ALL stations at `solution`: the data's residual level, robust to
+  // fewer than half gross outliers (the convention diagnosis compares these).
+  double median_rotation = 0.0;
+  double median_translation = 0.0;
+  int hypotheses = 0;  // triples solved
+};
+
+StationConsensus FindStationConsensus(const Problem& problem, const ConsensusOptions& options);
+
+// a_i and d_i of one station under (X, Z), as above.
+struct StationError {
+  double rotation = 0.0;
+  double translation = 0.0;
+};
+StationError StationResidualSize(const Problem& problem, size_t station, const Solution& solution);
+
+// The stations of `problem` whose flag is set, in order.
+Problem SubProblem(const Problem& problem, const std::vector<bool>& keep);
+
+}  // namespace hecal::handeye

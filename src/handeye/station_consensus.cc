@@ -1,0 +1,175 @@
+#include "hecal/handeye/station_consensus.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hecal/core/error.h"
+#include "hecal/core/split_mix.h"
+#include "hecal/handeye/observability.h"
+#include "hecal/handeye/shah.h"
+
+namespace hecal::handeye {
+namespace {
+
+constexpr double kInlierFactor = 3.0;  // κ: consensus set e_i ≤ κ · median(e)
+constexpr int kMaxRefitRounds = 10;
+
+struct Triple {
+  int a, b, c;
+};
+
+// Every triple when there are few enough, else `count` random distinct-member triples.
+std::vector<Triple> Triples(int n, const ConsensusOptions& options) {
+  std::vector<Triple> triples;
+  const double all = static_cast<double>(n) * (n - 1) * (n - 2) / 6.0;
+  if (all <= options.max_hypotheses) {
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        for (int c = b + 1; c < n; ++c) triples.push_back({a, b, c});
+    return triples;
+  }
+  std::uint64_t state = options.seed;
+  const auto draw = [&](int range) {
+    state = SplitMix64(state);
+    return static_cast<int>(state % static_cast<std::uint64_t>(range));
+  };
+  triples.reserve(options.max_hypotheses);
+  while (static_cast<int>(triples.size()) < options.max_hypotheses) {
+    const int a = draw(n), b = draw(n), c = draw(n);
+    if (a != b && b != c && a != c) triples.push_back({a, b, c});
+  }
+  return triples;
+}
+
+// The stations the hypotheses are scored on: all, or a fixed random subset for large n.
+std::vector<int> ScoredStations(int n, const ConsensusOptions& options) {
+  std::vector<int> stations(n);
+  for (int i = 0; i < n; ++i) stations[i] = i;
+  if (n <= options.max_scored_stations) return stations;
+  std::uint64_t state = SplitMix64(options.seed ^ 0x5eedULL);
+  for (int i = 0; i < options.max_scored_stations; ++i) {  // partial Fisher–Yates
+    state = SplitMix64(state);
+    const int j = i + static_cast<int>(state % static_cast<std::uint64_t>(n - i));
+    std::swap(stations[i], stations[j]);
+  }
+  stations.resize(options.max_scored_stations);
+  return stations;
+}
+
+double SquaredError(const StationError& error, double length_scale) {
+  const double d = error.translation / length_scale;
+  return error.rotation * error.rotation + d * d;
+}
+
+// The median of `values` (which it reorders).
+double Median(std::vector<double>& values) {
+  const size_t middle = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle),
+                   values.end());
+  const double upper = values[middle];
+  if (values.size() % 2 == 1) return upper;
+  const double lower =
+      *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(middle));
+  return 0.5 * (lower + upper);
+}
+
+double MedianSquaredError(const Problem& problem, const std::vector<int>& stations,
+                          const Solution& solution, double length_scale,
+                          std::vector<double>* scratch) {
+  scratch->clear();
+  for (int i : stations)
+    scratch->push_back(SquaredError(StationResidualSize(problem, i, solution), length_scale));
+  return Median(*scratch);
+}
+
+}  // namespace
+
+StationError StationResidualSize(const Problem& problem, size_t station, const Solution& solution) {
+  const Pose E = solution.Z.inverse() * problem.A[station] * solution.X * problem.B[station];
+  const Eigen::Matrix3d& R = E.linear();
+  const Eigen::Vector3d vee(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));
+  return {std::atan2(0.5 * vee.norm(), 0.5 * (R.trace() - 1.0)), E.translation().norm()};
+}
+
+Problem SubProblem(const Problem& problem, const std::vector<bool>& keep) {
+  Problem sub;
+  sub.setup = problem.setup;
+  for (size_t i = 0; i < problem.A.size(); ++i) {
+    if (!keep[i]) continue;
+    sub.A.push_back(problem.A[i]);
+    sub.B.push_back(problem.B[i]);
+  }
+  return sub;
+}
+
+StationConsensus FindStationConsensus(const Problem& problem, const ConsensusOptions& options) {
+  const int n = static_cast<int>(problem.A.size());
+  if (n < 3 || problem.B.size() != problem.A.size()) CheckObservability(problem);  // throws
+  const double L = LengthScale(problem);
+  const std::vector<int> scored = ScoredStations(n, options);
+  std::vector<double> scratch;
+  scratch.reserve(scored.size());
+
+  StationConsensus consensus;
+  double best = std::numeric_limits<double>::infinity();
+  for (const Triple& t : Triples(n, options)) {
+    Problem minimal;
+    minimal.setup = problem.setup;
+    minimal.A = {problem.A[t.a], problem.A[t.b], problem.A[t.c]};
+    minimal.B = {problem.B[t.a], problem.B[t.b], problem.B[t.c]};
+    Solution solution;
+    try {
+      solution = SolveShah(minimal);
+    } catch (const DegenerateError&) {
+      continue;  // these three stations do not fix X
+    }
+    ++consensus.hypotheses;
+    const double score = MedianSquaredError(problem, scored, solution, L, &scratch);
+    if (score < best) {
+      best = score;
+      consensus.solution = solution;
+    }
+  }
+  if (consensus.hypotheses == 0) CheckObservability(problem);  // throws: nothing fixes X
+  if (consensus.hypotheses == 0) {
+    throw DegenerateError("X (no three stations fix it)",
+                          "rotate the robot about at least two clearly different axes");
+  }
+
+  // Local refit on the consensus set until it is stable.
+  std::vector<double> e2(n);
+  consensus.inlier.assign(n, true);
+  for (int round = 0; round <= kMaxRefitRounds; ++round) {
+    for (int i = 0; i < n; ++i)
+      e2[i] = SquaredError(StationResidualSize(problem, i, consensus.solution), L);
+    scratch.assign(e2.begin(), e2.end());
+    const double threshold = kInlierFactor * kInlierFactor * Median(scratch);
+    std::vector<bool> inlier(n);
+    int count = 0;
+    for (int i = 0; i < n; ++i) count += (inlier[i] = e2[i] <= threshold) ? 1 : 0;
+    if (inlier == consensus.inlier && round > 0) break;
+    consensus.inlier = inlier;
+    if (round == kMaxRefitRounds || count < 3) break;
+    try {
+      consensus.solution = SolveShah(SubProblem(problem, inlier));
+    } catch (const DegenerateError&) {
+      break;  // keep the last solution that was not degenerate
+    }
+  }
+
+  consensus.rotation.resize(n);
+  consensus.translation.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const StationError error = StationResidualSize(problem, i, consensus.solution);
+    consensus.rotation[i] = error.rotation;
+    consensus.translation[i] = error.translation;
+  }
+  scratch = consensus.rotation;
+  consensus.median_rotation = Median(scratch);
+  scratch = consensus.translation;
+  consensus.median_translation = Median(scratch);
+  return consensus;
+}
+
+}  // namespace hecal::handeye
