@@ -62,32 +62,35 @@ std::string UnitFix(const std::string& file, bool matrix_lines, const std::strin
   const std::string robot = flags.robot_file;
   const std::string camera = flags.camera_file;
   switch (better.convention) {
-    case Convention::kOtherSetup:
-    case Convention::kBothInverted: {
+    case Convention::kOtherSetup: {
+      // Poses alone cannot tell the other setup from an inverted file (convention_diagnosis.h);
+      // the reading with the hand-mounted part nearer the flange comes first.
+      const std::string given_setup(handeye::SetupName(given.setup));
       const std::string other(handeye::SetupName(better.setup));
-      const bool prefer_setup = handeye::PreferOtherSetup(better);
-      const std::string setup_fix = "run with --setup " + other;
-      const std::string camera_part = better.convention == Convention::kBothInverted
-                                          ? " and the camera poses inverted"
-                                          : std::string();
-      const std::string camera_fix = better.convention == Convention::kBothInverted
-                                         ? ", and " + CameraInverseFix(flags)
-                                         : std::string();
-      const std::string what =
-          prefer_setup ? other + camera_part : "the robot poses inverted" + camera_part;
-      const std::string fix =
-          prefer_setup ? setup_fix + camera_fix + "; or, if the camera really is " +
-                             Where(given.setup) + ", " + RobotInverseFix(flags) + camera_fix
-                       : RobotInverseFix(flags) + camera_fix + "; or, if the camera is " +
-                             Where(better.setup) + ", " + setup_fix + camera_fix;
-      throw InputError("--setup", 0, "these data fit " + what + evidence,
-                       fix +
-                           " (poses alone cannot tell the other setup from inverted robot "
-                           "poses)");
+      if (handeye::RobotInversionReading(better)) {
+        throw InputError(flags.robot_file, 0,
+                         "these data fit the robot poses inverted (T_gripper_base) with --setup " +
+                             given_setup + evidence,
+                         RobotInverseFix(flags) + "; or, if the camera is " + Where(better.setup) +
+                             ", " + "run with --setup " + other +
+                             " (poses alone cannot tell these apart)");
+      }
+      const std::string camera_reading =
+          flags.camera_file.empty()
+              ? std::string()
+              : ", or the camera " + Where(given.setup) + " (" + given_setup + ") with " +
+                    (flags.camera_inverse ? "the camera poses not inverted"
+                                          : "the camera poses inverted (T_target_camera)");
+      const std::string camera_fix =
+          flags.camera_file.empty()
+              ? std::string()
+              : "; if it is " + Where(given.setup) + ", " + CameraInverseFix(flags);
+      throw InputError("--setup", 0,
+                       "these data fit the camera " + Where(better.setup) + " (" + other + ")" +
+                           camera_reading + evidence,
+                       "if the camera is " + Where(better.setup) + ", run with --setup " + other +
+                           camera_fix + " (poses alone cannot tell these apart)");
     }
-    case Convention::kCameraInverted:
-      throw InputError(camera, 0, "these data fit the camera poses inverted" + evidence,
-                       CameraInverseFix(flags));
     case Convention::kRobotMillimetres:
     case Convention::kRobotMetres: {
       const std::string unit = better.convention == Convention::kRobotMillimetres ? "mm" : "m";
@@ -164,13 +167,11 @@ ConventionCheck CheckConventions(handeye::PoseData data, std::optional<Setup> se
         handeye::FitConvention(data, Convention::kAsGiven, diagnosis_options);
     const ConventionFit to_hand =
         handeye::FitConvention(data, Convention::kOtherSetup, diagnosis_options);
-    const double L = handeye::LengthScale(
-        handeye::MakeProblem(data.setup, data.T_base_gripper, data.T_camera_target));
     const ConventionFit* chosen = nullptr;
     const ConventionFit* other = nullptr;
-    if (handeye::FitsClearlyBetter(to_hand, in_hand, L)) {
+    if (handeye::FitsClearlyBetter(to_hand, in_hand)) {
       chosen = &to_hand, other = &in_hand;
-    } else if (handeye::FitsClearlyBetter(in_hand, to_hand, L)) {
+    } else if (handeye::FitsClearlyBetter(in_hand, to_hand)) {
       chosen = &in_hand, other = &to_hand;
     } else {
       // Neither setup fits clearly better: maybe another mistake explains the data.
@@ -189,16 +190,25 @@ ConventionCheck CheckConventions(handeye::PoseData data, std::optional<Setup> se
     const std::string name(handeye::SetupName(chosen->setup));
     check.notes.push_back("--setup auto chose " + name + ": " + FitText(*chosen) + " against " +
                           FitText(*other) + " as " + std::string(handeye::SetupName(other->setup)));
-    if (!handeye::PreferOtherSetup(*chosen)) {
-      const bool in = chosen->setup == Setup::kEyeInHand;
-      const Pose& hand = in ? chosen->solution.X : chosen->solution.Z;
-      const Pose& cell = in ? chosen->solution.Z : chosen->solution.X;
+    // The readings with the same fit (convention_diagnosis.h).
+    if (!flags.camera_file.empty()) {
+      check.notes.push_back("the same data fit the camera " + Where(other->setup) + " (" +
+                            std::string(handeye::SetupName(other->setup)) +
+                            ") with the camera poses inverted: poses alone cannot tell these "
+                            "apart, so check that the camera is " +
+                            Where(chosen->setup));
+    }
+    // Read as the other setup with the robot poses inverted, the chosen fit has the same
+    // (X, Z) with the hand-mounted and the fixed part exchanged.
+    const bool in = chosen->setup == Setup::kEyeInHand;
+    const Pose& hand = in ? chosen->solution.X : chosen->solution.Z;
+    const Pose& cell = in ? chosen->solution.Z : chosen->solution.X;
+    if (hand.translation().norm() > cell.translation().norm()) {
       check.notes.push_back(
-          "but read as " + name + " the " + (in ? "camera" : "target") + " is " +
-          Metres(hand.translation().norm()) + " from the flange and the " +
-          (in ? "target" : "camera") + " " + Metres(cell.translation().norm()) +
-          " from the base; the same data fit " + std::string(handeye::SetupName(other->setup)) +
-          " with the robot poses inverted: if that is your setup, run with --setup " +
+          "read as " + name + " the " + (in ? "camera" : "target") + " is " +
+          Metres(hand.translation().norm()) + " from the flange, further than the " +
+          (in ? "target" : "camera") + " is from the base: if the camera is " +
+          Where(other->setup) + " and the robot file holds T_gripper_base, run with --setup " +
           std::string(handeye::SetupName(other->setup)) + " and " + RobotInverseFix(flags));
     }
   }

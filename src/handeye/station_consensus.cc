@@ -137,20 +137,24 @@ StationConsensus FindStationConsensus(const Problem& problem, const ConsensusOpt
                           "rotate the robot about at least two clearly different axes");
   }
 
-  // Local refit on the consensus set until it is stable.
+  // Local refit on the consensus set until it is stable. The set keeps at least the
+  // n − ⌊(n − 3)/2⌋ best stations, so that with few stations it is a fit, not an interpolation
+  // of three of them.
   std::vector<double> e2(n);
+  const int min_count = n - (n - 3) / 2;
   consensus.inlier.assign(n, true);
   for (int round = 0; round <= kMaxRefitRounds; ++round) {
     for (int i = 0; i < n; ++i)
       e2[i] = SquaredError(StationResidualSize(problem, i, consensus.solution), L);
     scratch.assign(e2.begin(), e2.end());
-    const double threshold = kInlierFactor * kInlierFactor * Median(scratch);
+    double threshold = kInlierFactor * kInlierFactor * Median(scratch);
+    std::nth_element(scratch.begin(), scratch.begin() + (min_count - 1), scratch.end());
+    threshold = std::max(threshold, scratch[static_cast<size_t>(min_count - 1)]);
     std::vector<bool> inlier(n);
-    int count = 0;
-    for (int i = 0; i < n; ++i) count += (inlier[i] = e2[i] <= threshold) ? 1 : 0;
+    for (int i = 0; i < n; ++i) inlier[i] = e2[i] <= threshold;
     if (inlier == consensus.inlier && round > 0) break;
     consensus.inlier = inlier;
-    if (round == kMaxRefitRounds || count < 3) break;
+    if (round == kMaxRefitRounds) break;
     try {
       consensus.solution = SolveShah(SubProblem(problem, inlier));
     } catch (const DegenerateError&) {

@@ -4,27 +4,34 @@
 // noise" — so hecal compares the conventions before it solves, and says which one fits.
 //
 // Alternatives (each applied to the poses as read, metres and radians):
-//   kOtherSetup          eye-in-hand ↔ eye-to-hand. The same equations as the robot poses
-//                        inverted (T_gripper_base given for T_base_gripper): eye-to-hand uses
-//                        A_i = T_base_gripper_i⁻¹ (problem.h), so poses alone cannot tell the two
-//                        apart. PreferOtherSetup says which reading is the more plausible.
-//   kCameraInverted      the camera poses inverted (T_target_camera given for T_camera_target)
-//   kBothInverted        both of the above
+//   kOtherSetup          eye-in-hand ↔ eye-to-hand: A_i → A_i⁻¹ (problem.h). Three mistakes
+//                        give exactly these equations, and poses alone cannot tell them apart:
+//                          - the other setup;
+//                          - the robot poses inverted (T_gripper_base given for T_base_gripper),
+//                            same setup: the same (X, Z);
+//                          - the camera poses inverted (T_target_camera given), same setup: X and
+//                            Z swapped, since A_i⁻¹ X B_i = Z ⇔ A_i Z B_i⁻¹ = X. Physically it is
+//                            the other setup with the names camera and target exchanged.
+//                        Inverting both files changes nothing that poses can see (X and Z swap).
+//                        RobotInversionReading says which reading puts the hand-mounted part
+//                        (X for eye-in-hand, Z for eye-to-hand) nearer the flange.
 //   kRobotMillimetres    robot translations × 1e-3 (millimetres read as metres) — and
 //   kRobotMetres         × 1e3 (metres read as millimetres), only when the robot file does not
 //                        name its unit; likewise kCameraMillimetres / kCameraMetres
 //   kRobotQuaternionShifted{Left,Right}   the robot file's quaternion columns hold the
-//                        components one place off the names of its header (x,y,z,w values
-//                        under w,x,y,z names, or the reverse) — only for quaternion files;
+//                        components one place off the names of its header (w,x,y,z values
+//                        under x,y,z,w names, or the reverse) — only for quaternion files;
 //                        likewise for the camera file
 // Both files in the same wrong unit scale X, Z and the residuals alike and fit as well as the
 // truth: that mistake is caught by plausibility (estimation/plausibility.h), not here.
 //
 // Fit measure: the median station residual (rotation angle, translation length) at the
 // consensus estimate of each alternative (station_consensus.h: robust to fewer than half gross
-// outliers, no noise level needed). An alternative fits clearly better than the data as given
-// when one median is at least kClearlyBetter (4) times smaller and the other no more than
-// 1/kNotWorse (1.5) times larger, medians floored at 1e-9 rad / 1e-9·L. For correct data every
+// outliers, no noise level needed), the translation relative to the alternative's own length
+// scale (camera-to-target distance), so that a change of unit compares like with like. An
+// alternative fits clearly better than the data as given when one median is at least
+// kClearlyBetter (4) times smaller and the other no more than kNotWorse (1.5) times larger,
+// medians floored at 1e-9 rad and 1e-9 of the length scale. For correct data every
 // alternative is far worse (a wrong inversion leaves residuals of the order of the rotations
 // between stations), so this never fires on them: measured 0 false alarms in 2000 simulated
 // correct data sets (convention_diagnosis_test; README, "When your data will not calibrate").
@@ -43,8 +50,6 @@ namespace hecal::handeye {
 enum class Convention {
   kAsGiven,
   kOtherSetup,
-  kCameraInverted,
-  kBothInverted,
   kRobotMillimetres,
   kRobotMetres,
   kCameraMillimetres,
@@ -78,14 +83,18 @@ struct ConventionFit {
   bool solved = false;              // false: no three stations fixed X (degenerate)
   double median_rotation = 0.0;     // radians
   double median_translation = 0.0;  // metres, in the alternative's own lengths
+  double length_scale = 1.0;        // LengthScale of the alternative's problem, metres
   Solution solution;                // the consensus estimate (X, Z of `setup`)
 };
 
 struct ConventionDiagnosis {
   ConventionFit given;
   std::vector<ConventionFit> alternatives;  // every alternative that applies, in enum order
-  // The alternative that fits clearly better than the data as given (the best of them by the
-  // product of the two median ratios), if any.
+  // The alternative that fits clearly better than the data as given, if any: the best by the
+  // product of the two median ratios; among those within a factor 2 of it (a robot in metres
+  // read as millimetres fits exactly as well as the camera in millimetres: only the ratio of the
+  // units shows), the one whose median robot reach and camera-to-target distance are nearest
+  // 1 m (in decades).
   std::optional<ConventionFit> better;
 };
 
@@ -101,15 +110,14 @@ ConventionFit FitConvention(const PoseData& data, Convention convention,
 ConventionDiagnosis DiagnoseConventions(const PoseData& data, const ConsensusOptions& options);
 
 // The rule above; an unsolved `candidate` never fits better, an unsolved `reference` is beaten by
-// any solved candidate. `length_scale` (metres) floors the translation medians.
-bool FitsClearlyBetter(const ConventionFit& candidate, const ConventionFit& reference,
-                       double length_scale);
+// any solved candidate.
+bool FitsClearlyBetter(const ConventionFit& candidate, const ConventionFit& reference);
 
-// For a kOtherSetup fit: true when reading it as the other setup is more plausible than reading
-// it as the robot poses inverted. The part mounted on the hand (X for eye-in-hand, Z for
-// eye-to-hand) is the one with the shorter translation (a camera or target within reach of the
-// flange, against a target or camera placed in the cell).
-bool PreferOtherSetup(const ConventionFit& other_setup_fit);
+// For a kOtherSetup fit: true when reading it as the robot poses inverted (the setup as given)
+// puts the hand-mounted part nearer the flange than the other part is to the base — a camera or
+// target on the hand is the shorter transform. False: the other setup, or equally the camera
+// poses inverted, is the plausible reading.
+bool RobotInversionReading(const ConventionFit& other_setup_fit);
 
 std::string_view ConventionName(Convention convention);  // e.g. "camera poses inverted"
 

@@ -35,8 +35,8 @@ namespace hecal::handeye {
 inline constexpr double kMinRotation = 1e-3;   // rad: below this a motion is a translation
 inline constexpr double kParallelAxes = 1e-3;  // rad: spread of axes below this is parallel
 
-inline constexpr double kNoiseDegenerate = 3.0;   // ρ_min below this: not observable
-inline constexpr double kNoiseWeak = 20.0;        // ρ_min below this: weakly observable
+inline constexpr double kNoiseDegenerate = 3.0;  // ρ_min below this: not observable
+inline constexpr double kNoiseWeak = 20.0;       // ρ_min below this: weakly observable
 
 // Throws hecal::DegenerateError naming what cannot be observed and what data would fix it.
 void CheckObservability(const Problem& problem);

@@ -22,8 +22,10 @@
 //
 // Local refit (Chum, Matas and Kittler, "Locally optimized RANSAC", DAGM 2003): the consensus set
 // is {i : e_i ≤ κ · median(e)}, κ = 3 — for Gaussian noise e² ~ σ²·χ² with 3 to 6 degrees of
-// freedom, and P(e > 3 · median) is 9e-5 (3) to 1e-8 (6) — and Shah is solved again on it,
-// until the set stops changing (at most 10 rounds). The set is a candidate: the statistical test
+// freedom, and P(e > 3 · median) is 9e-5 (3) to 1e-8 (6) — widened to at least the
+// n − ⌊(n − 3)/2⌋ stations of smallest e (with few stations three of them would otherwise be
+// interpolated exactly and their median say nothing), and Shah is solved again on it, until the
+// set stops changing (at most 10 rounds). The set is a candidate: the statistical test
 // at the estimated noise (estimation/station_selection.h) has the last word.
 //
 // Residual angles use atan2(|vee(R − Rᵀ)|/2, (tr R − 1)/2), accurate near 0 and π.
