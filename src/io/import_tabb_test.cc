@@ -221,7 +221,7 @@ TEST(ImportTabb, SixDecimalRotationsAreProjectedWithANote) {
   EXPECT_THAT(poses.robot.warnings[0],
               HasSubstr("robot_cali.txt: " + std::to_string(robot_count) +
                         " of 88 rotation matrices were not orthonormal within 1e-6"));
-  EXPECT_THAT(poses.robot.warnings[0], HasSubstr("the rounding of its printed digits, +-5.0e-07"));
+  EXPECT_THAT(poses.robot.warnings[0], HasSubstr("within what entries printed to +-5.0e-07 allow"));
   const int camera_count = BeyondRounding(camera);
   ASSERT_EQ(poses.camera->warnings.size(), camera_count > 0 ? 1u : 0u);
   if (camera_count > 0) {

@@ -246,7 +246,7 @@ TEST(ReadPoseTableTest, SixDecimalTabbMatricesAreProjectedWithANote) {
       imported.robot.warnings[0].find(" rotation") - std::string("robot_cali.txt: ").size());
   EXPECT_THAT(of_88, ::testing::EndsWith("of 88"));
   EXPECT_THAT(table.warnings[0], HasSubstr("poses.csv: " + of_88 + " rotation matrices"));
-  EXPECT_THAT(table.warnings[0], HasSubstr("the rounding of its printed digits, +-5.0e-07"));
+  EXPECT_THAT(table.warnings[0], HasSubstr("within what entries printed to +-5.0e-07 allow"));
 }
 
 TEST(ReadPoseTableTest, UnitNamedSaysWhetherTheFileFixedTheUnit) {

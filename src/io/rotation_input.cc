@@ -236,7 +236,7 @@ std::vector<std::string> RotationInput::Notes() const {
                        "rotation matrices were not orthonormal within 1e-6 (largest error " +
                        Scientific(matrices_.error) + " at " + Where(matrices_.place);
     if (matrices_.error <= 6.0 * matrices_.rounding) {
-      note += ", the rounding of its printed digits, +-" + Scientific(matrices_.rounding);
+      note += ", within what entries printed to +-" + Scientific(matrices_.rounding) + " allow";
     }
     note += "); projected onto the nearest rotation (largest change of an entry " +
             Scientific(matrices_.change) + ")";
@@ -248,7 +248,7 @@ std::vector<std::string> RotationInput::Notes() const {
                        "quaternions were not unit within 1e-6 (largest |norm - 1| " +
                        Scientific(quaternions_.error) + " at " + Where(quaternions_.place);
     if (quaternions_.error <= 3.0 * quaternions_.rounding) {
-      note += ", the rounding of its printed digits, +-" + Scientific(quaternions_.rounding);
+      note += ", within what entries printed to +-" + Scientific(quaternions_.rounding) + " allow";
     }
     note += "); normalised";
     notes.push_back(std::move(note));

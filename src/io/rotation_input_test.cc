@@ -90,7 +90,7 @@ TEST(RotationInput, ControllerMatricesAreProjectedWithOneNote) {
   EXPECT_THAT(notes[0], AllOf(HasSubstr("robot.csv: 3 of 3 rotation matrices were not orthonormal "
                                         "within 1e-6 (largest error 2.0e-05 at line 12)"),
                               HasSubstr("projected onto the nearest rotation"),
-                              Not(HasSubstr("printed digits"))));
+                              Not(HasSubstr("entries printed"))));
   // The largest change of an entry is |kR·(1e-5·S)| at its largest.
   const Eigen::Matrix3d change = ControllerMatrix(kR, 1e-5).matrix - kR;
   char expected[64];
