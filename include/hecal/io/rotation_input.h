@@ -32,11 +32,12 @@
 //     (github.com/frankarobotics/libfranka/issues/16); OpenCV's calibrateHandEye and ViSP take
 //     such matrices (ViSP added vpRotationMatrix::orthogonalize() for pasted low-precision
 //     rotations, github.com/lagadic/visp/pull/1038).
-//   - 1e-3 accepts all of these while every real mistake is far beyond it: a reflection or a
-//     swapped pair of axes has e = 2, a scale of 1.5 has e = 2.4, a misplaced entry or a
-//     translation in the 3×3 block has e ≫ 0.01. The projection removes only the part of M that is
-//     not a rotation (entries move by the order of e; 1e-3 rad = 0.06°); it never turns one
-//     rotation into another. The cap 1e-2 keeps 1- and 2-decimal prints from passing as rotations.
+//   - 1e-3 (6u for coarser prints) accepts all of these while every real mistake is far beyond
+//     it: a reflection or a swapped pair of axes has e = 2, a scale of 1.5 has e = 2.4, a
+//     misplaced entry or a translation in the 3×3 block has e ≫ 0.01. The projection keeps R of
+//     the polar decomposition M = R·P and drops only P = (MᵀM)^½, the part that is not a rotation
+//     (entries move by the order of e; 1e-3 rad = 0.06°). The cap 1e-2 keeps 1- and 2-decimal
+//     prints from passing as rotations.
 //
 // Quaternions (w, x, y, z). n = ‖q‖, computed without overflow or underflow.
 //   n ≤ 1e-12              refused: a zero quaternion;
