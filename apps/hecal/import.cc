@@ -33,7 +33,8 @@ constexpr const char* kImportFooter =
                                                   --units m|mm, --robot-inverse, --camera-inverse
 Output: robot.csv = T_base_gripper, camera.csv = T_camera_target, quaternions qw,qx,qy,qz, an id
   column, a stamp column when the source has stamps, lengths in the source's unit (x_mm for mm),
-  '#' lines naming the source, the convention applied and the units.
+  '#' lines naming the source, the convention applied and the units, and '# note:' lines for
+  rotations that were projected onto SO(3) or normalised (also printed as warnings).
 Errors: one line on stderr, exit code 2, and no output file is written or changed.)";
 
 struct Output {
@@ -114,6 +115,7 @@ std::string CsvText(const io::PoseTable& table, const std::vector<std::string>& 
   write.comments.push_back("written by hecal " + std::string(kVersion) + " import --format " +
                            format);
   write.comments.insert(write.comments.end(), notes.begin(), notes.end());
+  for (const std::string& warning : table.warnings) write.comments.push_back("note: " + warning);
   return io::FormatPoseTable(table, write);
 }
 
@@ -185,6 +187,14 @@ void RunImport(const ImportCommandOptions& options, const Io& io) {
                        "--intrinsics"});
   }
   WriteAllOrNothing(outputs);
+  for (const std::string& warning : imported.robot.warnings) {
+    io.err << "hecal: warning: " << warning << "\n";
+  }
+  if (imported.camera) {
+    for (const std::string& warning : imported.camera->warnings) {
+      io.err << "hecal: warning: " << warning << "\n";
+    }
+  }
 
   const std::string unit(io::UnitName(imported.robot.unit));
   io.out << "hecal: wrote " << imported.robot.rows.size() << " robot poses (T_base_gripper, "

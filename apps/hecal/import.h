@@ -2,8 +2,10 @@
 //   robot.csv   T_base_gripper_i  (id, [stamp,] x, y, z, qw, qx, qy, qz)
 //   camera.csv  T_camera_target_i
 // with '#' header lines naming the source file, the format, the convention applied (which poses
-// were inverted) and the units. Lengths are written in the source's unit (Tabb: x_mm, y_mm, z_mm).
-// The readers and their conventions are in include/hecal/io/import*.h and docs/import-formats.md.
+// were inverted) and the units, and '# note:' lines for rotations the reader projected onto SO(3)
+// or normalised (io/rotation_input.h; also printed on stderr as "hecal: warning: ..."). Lengths are
+// written in the source's unit (Tabb: x_mm, y_mm, z_mm). The readers and their conventions are in
+// include/hecal/io/import*.h and docs/import-formats.md.
 //
 // All or nothing: every input is read and checked and every output formatted before the first
 // file is written; each file is written atomically, and if a later one fails the earlier ones are

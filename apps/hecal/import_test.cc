@@ -120,6 +120,15 @@ TEST_F(ImportTest, TabbStaysInMillimetresAndWritesIntrinsics) {
         inverted_note || comment.find("INVERTED to T_base_gripper") != std::string::npos;
   }
   EXPECT_TRUE(inverted_note);
+  // robot_cali.txt prints 6 decimals, so some rotations are projected onto SO(3): one warning on
+  // stderr and the same text as a '# note:' line in robot.csv.
+  const std::string note = kData + "tabb-rwhe-dataset1/robot_cali.txt: ";
+  EXPECT_THAT(err_, StartsWith("hecal: warning: " + note));
+  EXPECT_THAT(err_, HasSubstr(" of 88 rotation matrices were not orthonormal within 1e-6"));
+  const std::string warning = err_.substr(0, err_.find('\n'));
+  EXPECT_NE(std::find(robot_csv.comments.begin(), robot_csv.comments.end(),
+                      "# note: " + warning.substr(std::string("hecal: warning: ").size())),
+            robot_csv.comments.end());
   // cali.txt line 1: t = (-267.636, 270.545, 2122.28) mm, written as is.
   EXPECT_NEAR(csv_test::ReadCsv(Path("camera.csv")).Number(0, "z_mm"), 2122.28, 1e-9);
   const std::string yaml = io::ReadFile(Path("camera.yaml"));

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "csv_test_util.h"
 #include "hecal/io/atomic_file.h"
 #include "testing/elementary_rotations.h"
+#include "testing/nearly_orthonormal.h"
 
 namespace hecal::cli {
 namespace {
@@ -235,11 +237,16 @@ TEST_F(PosesConvertTest, InPlaceConversion) {
   EXPECT_EQ(ReadCsv(path).header[5], "q1");
 }
 
-TEST_F(PosesConvertTest, NonUnitQuaternionWarnsButSucceeds) {
-  const std::string input = Write("in.csv", "x,y,z,qw,qx,qy,qz\n0,0,0,2,0,0,0\n");
+TEST_F(PosesConvertTest, NearlyUnitQuaternionWarnsButSucceeds) {
+  const std::string input = Write("in.csv", "x,y,z,qw,qx,qy,qz\n0,0,0,1.0004,0,0,0\n");
   ASSERT_EQ(Run({"--input", input, "--output", Path("out.csv"), "--to", "rotvec"}), 0);
-  EXPECT_THAT(err_.str(), StartsWith("hecal: warning: "));
-  EXPECT_THAT(err_.str(), HasSubstr("in.csv:2"));
+  EXPECT_EQ(err_.str(), "hecal: warning: " + input +
+                            ": 1 of 1 quaternions were not unit within 1e-6 (largest |norm - 1| "
+                            "4.0e-04 at line 2); normalised\n");
+  // A norm far from 1 is not a quaternion: refused, no output.
+  ExpectBadInput(
+      {"--input", Write("two.csv", "x,y,z,qw,qx,qy,qz\n0,0,0,2,0,0,0\n"), "--to", "rotvec"},
+      "two.csv:2", "quaternion norm 2, not 1");
 }
 
 TEST_F(PosesConvertTest, BadFlags) {
@@ -254,6 +261,30 @@ TEST_F(PosesConvertTest, BadFlags) {
                  "unknown Euler sequence 'abc'");
   ExpectBadInput({"--input", input}, "--to", "required");
   ExpectBadInput({"--to", "rotvec"}, "--input", "required");
+}
+
+TEST_F(PosesConvertTest, ProjectedControllerMatricesAreAWarning) {
+  // A controller's own matrix, 2e-5 from orthonormal, written with 17 digits: converted to the
+  // nearest rotation, with one warning line for the file.
+  const testing::NearlyOrthonormal m = testing::ControllerMatrix(Rz(0.7) * Ry(0.2), 1e-5);
+  const std::string input =
+      Write("controller.txt",
+            testing::Digits17(testing::Homogeneous(m.matrix, Eigen::Vector3d(0.1, 0.2, 0.3)), " ") +
+                "\n");
+  const std::string output = Path("out.csv");
+  ASSERT_EQ(Run({"--input", input, "--output", output, "--to", "quaternion"}), 0) << err_.str();
+  char change[16];  // the projection removes m.matrix - m.rotation
+  std::snprintf(change, sizeof(change), "%.1e", (m.matrix - m.rotation).cwiseAbs().maxCoeff());
+  EXPECT_EQ(err_.str(), "hecal: warning: " + input +
+                            ": 1 of 1 rotation matrices were not orthonormal within 1e-6 (largest "
+                            "error 2.0e-05 at line 1); projected onto the nearest rotation "
+                            "(largest change of an entry " +
+                            change + ")\n");
+  const Csv csv = ReadCsv(output);
+  const Eigen::Quaterniond expected(m.rotation);
+  const double sign = expected.w() < 0 ? -1.0 : 1.0;
+  EXPECT_NEAR(csv.Number(0, "qw"), sign * expected.w(), 1e-15);
+  EXPECT_NEAR(csv.Number(0, "qz"), sign * expected.z(), 1e-15);
 }
 
 TEST_F(PosesConvertTest, BadInputFiles) {
@@ -273,7 +304,7 @@ TEST_F(PosesConvertTest, BadInputFiles) {
   ExpectBadInput({"--input",
                   Write("ortho.csv",
                         "x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33\n"
-                        "0,0,0,1,0.01,0,0,1,0,0,0,1\n"),
+                        "0,0,0,1,0.25,0,0,1,0,0,0,1\n"),
                   "--to", "rotvec"},
                  "ortho.csv:2", "not orthonormal");
   ExpectBadInput(

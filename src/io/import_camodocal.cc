@@ -28,7 +28,8 @@ std::optional<std::pair<int, long>> ParseKey(const std::string& key) {
   return std::make_pair(key[1] - '0', index);
 }
 
-Pose ReadPose(const YAML::Node& node, const std::string& source, const std::string& what) {
+Pose ReadPose(const YAML::Node& node, const std::string& source, const std::string& what,
+              RotationInput* rotations) {
   const import_internal::Matrix matrix = import_internal::ReadMatrix(node, source, what);
   const size_t count = matrix.values.size();
   if (!((matrix.rows == 4 && matrix.cols == 4) || (matrix.rows == 3 && matrix.cols == 4) ||
@@ -39,7 +40,8 @@ Pose ReadPose(const YAML::Node& node, const std::string& source, const std::stri
          "write T1_i and T2_i as 4x4 homogeneous transforms");
   }
   return import_internal::PoseFromRowMajor(matrix.values.data(), static_cast<int>(count),
-                                           matrix.rounding, 1.0, Origin{source, matrix.line, what});
+                                           RotationRounding(matrix), 1.0,
+                                           Origin{source, matrix.line, what}, rotations);
 }
 
 ImportedPoses Parse(std::string_view yaml_text, const std::string& source) {
@@ -96,21 +98,25 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source) {
   ImportedPoses result;
   result.robot = import_internal::MakeTable(source, LengthUnit::kMetre);
   result.camera = import_internal::MakeTable(source, LengthUnit::kMetre);
+  RotationInput robot_rotations(source, "robot");
+  RotationInput camera_rotations(source, "camera");
   for (long i = 0; i < frame_count; ++i) {
     const std::string index = std::to_string(i);
     const YAML::Node& t1 = poses[0].at(i);
     const YAML::Node& t2 = poses[1].at(i);
     PoseRow robot;
-    robot.pose = ReadPose(t1, source, "T1_" + index);
+    robot.pose = ReadPose(t1, source, "T1_" + index, &robot_rotations);
     robot.id = index;
     robot.line = import_internal::LineOf(t1);
     PoseRow camera;
-    camera.pose = ReadPose(t2, source, "T2_" + index);
+    camera.pose = ReadPose(t2, source, "T2_" + index, &camera_rotations);
     camera.id = index;
     camera.line = import_internal::LineOf(t2);
     result.robot.rows.push_back(std::move(robot));
     result.camera->rows.push_back(std::move(camera));
   }
+  result.robot.warnings = robot_rotations.Notes();
+  result.camera->warnings = camera_rotations.Notes();
   const std::string format = "format: camodocal (handeye_calib_camodocal transform pairs)";
   result.robot_notes = {
       format,

@@ -7,6 +7,8 @@
 
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
+#include "testing/elementary_rotations.h"
+#include "testing/nearly_orthonormal.h"
 #include "testing/pose_spread.h"
 
 namespace hecal::io {
@@ -105,6 +107,24 @@ void ExpectError(const std::string& text, const std::string& part) {
   }
 }
 
+TEST(ImportCamodocal, ControllerMatricesAreProjectedWithANote) {
+  // T1_0 as a controller writes its own pose: 2e-5 from orthonormal, 17 digits.
+  const testing::NearlyOrthonormal m =
+      testing::ControllerMatrix(testing::Rz(0.4) * testing::Rx(-1.1), 1e-5);
+  const std::string text =
+      "%YAML:1.0\nframeCount: 1\nT1_0: !!opencv-matrix\n   rows: 4\n   cols: 4\n   dt: d\n"
+      "   data: [ " +
+      testing::Digits17(testing::Homogeneous(m.matrix, Eigen::Vector3d(0.5, 0.25, 1.0)), ", ") +
+      " ]\nT2_0:" + kMatrixI;
+  const ImportedPoses poses = ParseCamodocalPairs(text, "pairs.yml");
+  EXPECT_LT((poses.robot.rows[0].pose.linear() - m.rotation).cwiseAbs().maxCoeff(), 1e-15);
+  ASSERT_EQ(poses.robot.warnings.size(), 1u);
+  EXPECT_THAT(poses.robot.warnings[0],
+              HasSubstr("pairs.yml: 1 of 1 robot rotation matrices were not orthonormal within "
+                        "1e-6 (largest error 2.0e-05 at line 3 (T1_0)); projected"));
+  EXPECT_TRUE(poses.camera->warnings.empty());
+}
+
 TEST(ImportCamodocal, ReadsOpenCvFileStorageYaml) {
   const ImportedPoses poses = ParseCamodocalPairs(Pairs(2, 2), "pairs.yml");
   ASSERT_EQ(poses.robot.rows.size(), 2u);
@@ -142,7 +162,7 @@ TEST(ImportCamodocal, RejectsBadInput) {
   ExpectError(word, "\"abc\", not a number");
   std::string skew = Pairs(1, 1);
   skew.replace(skew.find("1., 0., 0., 0.5"), 15, "1., 0.2, 0., 0.5");
-  ExpectError(skew, "T1_0 has a rotation that is not orthonormal");
+  ExpectError(skew, "T1_0: the rotation matrix is not orthonormal");
   std::string small = Pairs(1, 1);
   small.replace(small.find("rows: 4"), 7, "rows: 3");
   ExpectError(small, "16 data values but rows x cols = 3 x 4");

@@ -47,8 +47,8 @@ std::optional<double> ReadStamp(const YAML::Node& header, const std::string& sou
 
 // geometry_msgs/Transform {translation: {x, y, z}, rotation: {x, y, z, w}}, or a TransformStamped
 // {header: {stamp}, transform: {...}}.
-Transform ReadTransform(const YAML::Node& node, const std::string& source,
-                        const std::string& what) {
+Transform ReadTransform(const YAML::Node& node, const std::string& source, const std::string& what,
+                        RotationInput* rotations) {
   Transform result;
   result.line = LineOf(node);
   // (Never assign one YAML::Node to another: yaml-cpp's operator= rewrites the referenced node.)
@@ -90,8 +90,9 @@ Transform ReadTransform(const YAML::Node& node, const std::string& source,
     wxyz[k] = number.value;
     rounding = std::max(rounding, number.rounding);
   }
-  result.pose = import_internal::PoseFromQuaternion(t, wxyz, rounding, 1.0,
-                                                    Origin{source, result.line, what});
+  result.pose =
+      import_internal::PoseFromQuaternion(t, wxyz, rounding, 1.0, Origin{source, result.line, what},
+                                          "rotation {x, y, z, w}", rotations);
   return result;
 }
 
@@ -226,10 +227,14 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source,
   result.camera = import_internal::MakeTable(source, LengthUnit::kMetre);
   std::vector<std::optional<double>> robot_stamps;
   std::vector<std::optional<double>> camera_stamps;
+  RotationInput robot_rotations(source, "robot");
+  RotationInput camera_rotations(source, "tracking");
   for (size_t i = 0; i < samples.size(); ++i) {
     const std::string name = "sample " + std::to_string(i);
-    const Transform robot = ReadTransform(samples[i].first, source, name + " robot");
-    const Transform camera = ReadTransform(samples[i].second, source, name + " tracking");
+    const Transform robot =
+        ReadTransform(samples[i].first, source, name + " robot", &robot_rotations);
+    const Transform camera =
+        ReadTransform(samples[i].second, source, name + " tracking", &camera_rotations);
     PoseRow robot_row;
     robot_row.pose = *setup == ImportSetup::kEyeInHand ? robot.pose : robot.pose.inverse();
     robot_row.id = std::to_string(i);
@@ -252,6 +257,8 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source,
   };
   set_stamps(robot_stamps, &result.robot);
   set_stamps(camera_stamps, &*result.camera);
+  result.robot.warnings = robot_rotations.Notes();
+  result.camera->warnings = camera_rotations.Notes();
 
   const std::string setup_source = parameters.setup ? "from the file" : "from --setup";
   const std::string format = "format: easy_handeye (samples YAML), " +

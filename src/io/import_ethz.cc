@@ -33,6 +33,7 @@ bool IsLayoutHeader(const std::vector<std::string_view>& tokens) {
 PoseTable ReadStream(std::string_view text, const std::string& source, bool invert,
                      const std::string& id_prefix) {
   PoseTable table = import_internal::MakeTable(source, LengthUnit::kMetre);
+  RotationInput rotations(source);
   bool first = true;
   for (const import_internal::TextLine& line : import_internal::SplitLines(text)) {
     if (import_internal::IsBlankLine(line.text) || import_internal::IsCommentLine(line.text)) {
@@ -61,7 +62,8 @@ PoseTable ReadStream(std::string_view text, const std::string& source, bool inve
     PoseRow row;
     const Pose pose = import_internal::PoseFromQuaternion(
         t, wxyz, rounding, 1.0,
-        Origin{source, line.number, "the pose at t = " + std::string(tokens[0])});
+        Origin{source, line.number, "the pose at t = " + std::string(tokens[0])},
+        "q_x, q_y, q_z, q_w (fields 5-8)", &rotations);
     row.pose = invert ? pose.inverse() : pose;
     row.stamp = v[0].value;
     row.id = id_prefix + std::to_string(table.rows.size());
@@ -72,6 +74,7 @@ PoseTable ReadStream(std::string_view text, const std::string& source, bool inve
     Fail(source, 0, "the file has no poses",
          "give one pose per line: t, x, y, z, q_x, q_y, q_z, q_w");
   }
+  table.warnings = rotations.Notes();
   return table;
 }
 

@@ -1,7 +1,5 @@
 #include "import_internal.h"
 
-#include <Eigen/Geometry>
-#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -10,16 +8,11 @@
 #include <system_error>
 
 #include "hecal/core/error.h"
-#include "hecal/geometry/nearest_rotation.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::io::import_internal {
 namespace {
 
-constexpr double kRotationTolerance = 1e-6;
-// The most the printed precision may widen the rotation tolerance (numbers printed with about
-// 5 decimals); coarser prints are not rotations to within any useful accuracy.
-constexpr double kMaxRoundingTolerance = 1e-4;
 constexpr double kLastRowTolerance = 1e-9;
 
 bool IsDigit(char c) {
@@ -54,18 +47,6 @@ bool IsDecimal(std::string_view text) {
     if (exponent_digits == 0) return false;
   }
   return i == text.size();
-}
-
-double RotationTolerance(double rounding) {
-  return std::max(kRotationTolerance, std::min(6.0 * rounding, kMaxRoundingTolerance));
-}
-
-std::string ToleranceText(double tolerance, double rounding) {
-  std::string text = Scientific(tolerance) + " allowed";
-  if (6.0 * rounding > kRotationTolerance) {
-    text += " for numbers printed to +-" + Scientific(rounding);
-  }
-  return text;
 }
 
 void CheckFinite(const double* values, int count, int columns, const Origin& origin) {
@@ -114,31 +95,6 @@ std::optional<Number> ParseNumber(std::string_view token) {
   return Number{negative ? -value : value, PrintedRounding(token)};
 }
 
-double PrintedRounding(std::string_view token) {
-  const size_t e = token.find_first_of("eE");
-  const std::string_view mantissa = token.substr(0, e);
-  const size_t dot = mantissa.find('.');
-  if (dot == std::string_view::npos) return 0.0;
-  int fraction_digits = 0;
-  for (size_t i = dot + 1; i < mantissa.size() && IsDigit(mantissa[i]); ++i) ++fraction_digits;
-  if (fraction_digits == 0) return 0.0;
-  int exponent = 0;
-  if (e != std::string_view::npos) {
-    std::string_view text = token.substr(e + 1);
-    bool negative = false;
-    if (!text.empty() && (text.front() == '+' || text.front() == '-')) {
-      negative = text.front() == '-';
-      text.remove_prefix(1);
-    }
-    for (char c : text) {
-      if (!IsDigit(c)) break;
-      exponent = std::min(exponent * 10 + (c - '0'), 1000);
-    }
-    if (negative) exponent = -exponent;
-  }
-  return 0.5 * std::pow(10.0, exponent - fraction_digits);
-}
-
 std::string Scientific(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof(buffer), "%.1e", value);
@@ -158,7 +114,7 @@ std::string Quoted(std::string_view text) {
 }
 
 Pose PoseFromRowMajor(const double* values, int count, double rounding, double metres_per_unit,
-                      const Origin& origin) {
+                      const Origin& origin, RotationInput* rotations) {
   CheckFinite(values, count, 4, origin);
   if (count == 16) {
     const double* last = values + 12;
@@ -185,39 +141,29 @@ Pose PoseFromRowMajor(const double* values, int count, double rounding, double m
   const double rotation[9] = {values[0], values[1], values[2], values[4], values[5],
                               values[6], values[8], values[9], values[10]};
   const double translation[3] = {values[3], values[7], values[11]};
-  return PoseFromRotationAndTranslation(rotation, translation, rounding, metres_per_unit, origin);
+  return PoseFromRotationAndTranslation(rotation, translation, rounding, metres_per_unit, origin,
+                                        rotations);
 }
 
 Pose PoseFromRotationAndTranslation(const double* rotation, const double* translation,
-                                    double rounding, double metres_per_unit, const Origin& origin) {
+                                    double rounding, double metres_per_unit, const Origin& origin,
+                                    RotationInput* rotations) {
   CheckFinite(rotation, 9, 3, origin);
   CheckFinite(translation, 3, 3, origin);
   Eigen::Matrix3d R;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) R(i, j) = rotation[3 * i + j];
   }
-  const double error = so3::OrthonormalityError(R);
-  const double tolerance = RotationTolerance(rounding);
-  if (!(error <= tolerance)) {
-    const double det = R.determinant();
-    std::string problem = origin.what +
-                          " has a rotation that is not orthonormal: max(|R^T R - I|, " +
-                          "|det R - 1|) = " + Scientific(error) + ", more than the " +
-                          ToleranceText(tolerance, rounding);
-    if (det < 0.0) problem += " (det R = " + Scientific(det) + ": a reflection)";
-    Fail(origin.source, origin.line, problem,
-         "check that the 3x3 block is a rotation matrix written row-major, print it with more "
-         "digits, or re-orthonormalise it");
-  }
   Pose pose = Pose::Identity();
-  pose.linear() = NearestRotationSvd(R);
+  pose.linear() = rotations->Matrix(R, rounding, RotationPlace{origin.line, origin.what});
   pose.translation() =
       Eigen::Vector3d(translation[0], translation[1], translation[2]) * metres_per_unit;
   return pose;
 }
 
 Pose PoseFromQuaternion(const Eigen::Vector3d& translation, const Eigen::Vector4d& wxyz,
-                        double rounding, double metres_per_unit, const Origin& origin) {
+                        double rounding, double metres_per_unit, const Origin& origin,
+                        std::string_view columns, RotationInput* rotations) {
   const double values[7] = {translation[0], translation[1], translation[2], wxyz[0],
                             wxyz[1],        wxyz[2],        wxyz[3]};
   for (int k = 0; k < 7; ++k) {
@@ -228,23 +174,9 @@ Pose PoseFromQuaternion(const Eigen::Vector3d& translation, const Eigen::Vector4
            "replace it with a finite value or remove the sample");
     }
   }
-  const double norm = wxyz.norm();
-  if (norm < 1e-12) {
-    Fail(origin.source, origin.line, origin.what + " has a zero quaternion",
-         "write the rotation as a unit quaternion");
-  }
-  const double tolerance =
-      std::max(kRotationTolerance, std::min(3.0 * rounding, kMaxRoundingTolerance));
-  if (!(std::abs(norm - 1.0) <= tolerance)) {
-    Fail(origin.source, origin.line,
-         origin.what + " has a quaternion of norm " + std::to_string(norm) + ", not 1 (off by " +
-             Scientific(std::abs(norm - 1.0)) + ", more than the " + Scientific(tolerance) +
-             " allowed)",
-         "check the quaternion's component order and values, or normalise it");
-  }
-  const Eigen::Quaterniond q(wxyz[0] / norm, wxyz[1] / norm, wxyz[2] / norm, wxyz[3] / norm);
   Pose pose = Pose::Identity();
-  pose.linear() = q.toRotationMatrix();
+  pose.linear() =
+      rotations->Quaternion(wxyz, rounding, RotationPlace{origin.line, origin.what}, columns);
   pose.translation() = translation * metres_per_unit;
   return pose;
 }

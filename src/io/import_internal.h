@@ -2,14 +2,12 @@
 // that remembers how many digits were printed, pose construction with the checks every importer
 // applies, and error reporting.
 //
-// Rotation check: a rotation read from a file must be orthonormal within 1e-6, measured as
-// so3::OrthonormalityError (max(|RᵀR − I|, |det R − 1|)). Files that print fewer digits than that
-// (Tabb's robot_cali.txt prints 6 decimals) cannot meet 1e-6 by rounding alone, so the tolerance
-// is max(1e-6, min(6·u, 1e-4)), where u is the largest rounding error of the printed entries
-// (0.5·10^(exponent − fraction digits)). 6·u bounds the rounding effect: |ΔRᵀR| ≤ 2√3·u + 3u² and
-// |Δ det R| ≤ 3√3·u for a rotation R; the 1e-4 cap keeps coarse prints ("0.9") from passing.
-// Accepted rotations are then projected onto SO(3) (SVD). Quaternions must be unit within
-// max(1e-6, min(3·u, 1e-4)) (‖Δq‖ ≤ 2u for 4 entries) and are normalised.
+// Rotations go through io::RotationInput (hecal/io/rotation_input.h), the rule every pose reader
+// shares: matrices within 1e-6 of SO(3) are projected silently, within the tolerance (1e-3, or
+// the printed-digits bound 6·u up to 1e-2) projected with a note, beyond it refused with the
+// reason (reflection, scale, coarse digits, not orthonormal); quaternions likewise with 3·u.
+// Each importer keeps one RotationInput per output table and puts its Notes() in the table's
+// warnings.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,6 +18,7 @@
 
 #include "hecal/geometry/types.h"
 #include "hecal/io/pose_table.h"
+#include "hecal/io/rotation_input.h"
 
 namespace hecal::io::import_internal {
 
@@ -30,15 +29,12 @@ namespace hecal::io::import_internal {
 // A number read from text and the largest error its printed digits can hide.
 struct Number {
   double value = 0.0;
-  double rounding = 0.0;  // 0.5·10^(exponent − fraction digits); 0 without fraction digits
+  double rounding = 0.0;  // PrintedRounding of the text: 0.5·10^(exponent − fraction digits)
 };
 
 // Parses one whole token as a decimal number (optional sign, digits, '.', exponent; also "nan",
 // "inf"). nullopt when the token is anything else.
 std::optional<Number> ParseNumber(std::string_view token);
-
-// The rounding bound of a printed number (see Number::rounding); 0 for tokens without a fraction.
-double PrintedRounding(std::string_view token);
 
 // Short text of a number for messages ("3.2e-04").
 std::string Scientific(double value);
@@ -54,17 +50,21 @@ struct Origin {
 
 // A pose from a homogeneous matrix in row-major order: 16 values (4×4, last row must be
 // 0 0 0 1 within 1e-9) or 12 values (3×4). Translation is multiplied by `metres_per_unit`.
-// `rounding` is the largest rounding bound of the nine rotation entries.
+// `rounding` is the largest rounding bound of the nine rotation entries; the rotation goes
+// through `rotations` (its origin.source must be the one `rotations` names).
 Pose PoseFromRowMajor(const double* values, int count, double rounding, double metres_per_unit,
-                      const Origin& origin);
+                      const Origin& origin, RotationInput* rotations);
 
 // A pose from a rotation matrix (row-major, 9 values) and a translation.
 Pose PoseFromRotationAndTranslation(const double* rotation, const double* translation,
-                                    double rounding, double metres_per_unit, const Origin& origin);
+                                    double rounding, double metres_per_unit, const Origin& origin,
+                                    RotationInput* rotations);
 
-// A pose from a translation and a Hamilton quaternion given as (w, x, y, z).
+// A pose from a translation and a Hamilton quaternion given as (w, x, y, z); `columns` names the
+// four values as the source writes them (for the refusal's fix).
 Pose PoseFromQuaternion(const Eigen::Vector3d& translation, const Eigen::Vector4d& wxyz,
-                        double rounding, double metres_per_unit, const Origin& origin);
+                        double rounding, double metres_per_unit, const Origin& origin,
+                        std::string_view columns, RotationInput* rotations);
 
 // A pose from a rotation vector (radians; OpenCV's Rodrigues rvec) and a translation.
 Pose PoseFromRotationVector(const Eigen::Vector3d& rvec, const Eigen::Vector3d& translation,

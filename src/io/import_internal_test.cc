@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "hecal/core/error.h"
-#include "hecal/geometry/so3.h"
 #include "hecal/io/import_types.h"
 
 namespace hecal::io::import_internal {
@@ -30,22 +29,12 @@ TEST(ImportInternal, ParseNumberIsStrict) {
   }
 }
 
-TEST(ImportInternal, PrintedRoundingFollowsTheDigits) {
-  EXPECT_DOUBLE_EQ(PrintedRounding("0.985976"), 5e-7);
-  EXPECT_DOUBLE_EQ(PrintedRounding("-0.5"), 0.05);
-  EXPECT_DOUBLE_EQ(PrintedRounding("1.17359e-06"), 5e-12);
-  EXPECT_DOUBLE_EQ(PrintedRounding("1.5E+2"), 5.0);
-  // No fraction digits: exact (0, 1, OpenCV's "1.").
-  EXPECT_EQ(PrintedRounding("1"), 0.0);
-  EXPECT_EQ(PrintedRounding("1."), 0.0);
-  EXPECT_EQ(PrintedRounding("1e-5"), 0.0);
-}
-
 const Origin kOrigin{"f.txt", 7, "pose 3"};
 
 std::string ErrorOf(const double* values, int count, double rounding = 0.0) {
+  RotationInput rotations("f.txt");
   try {
-    PoseFromRowMajor(values, count, rounding, 1.0, kOrigin);
+    PoseFromRowMajor(values, count, rounding, 1.0, kOrigin, &rotations);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -53,12 +42,13 @@ std::string ErrorOf(const double* values, int count, double rounding = 0.0) {
 }
 
 TEST(ImportInternal, PoseChecks) {
+  RotationInput rotations("f.txt");
   const double ok[16] = {0, -1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1};
-  const Pose pose = PoseFromRowMajor(ok, 16, 0.0, 1e-3, kOrigin);
+  const Pose pose = PoseFromRowMajor(ok, 16, 0.0, 1e-3, kOrigin, &rotations);
   EXPECT_TRUE(pose.translation().isApprox(Eigen::Vector3d(0.001, 0.002, 0.003)));
   EXPECT_DOUBLE_EQ(pose.linear()(0, 1), -1.0);
-  EXPECT_TRUE(PoseFromRowMajor(ok, 12, 0.0, 1.0, kOrigin)
-                  .isApprox(PoseFromRowMajor(ok, 16, 0.0, 1.0, kOrigin)));
+  EXPECT_TRUE(PoseFromRowMajor(ok, 12, 0.0, 1.0, kOrigin, &rotations)
+                  .isApprox(PoseFromRowMajor(ok, 16, 0.0, 1.0, kOrigin, &rotations)));
 
   double nan[16] = {1, 0, 0, 0, 0, 1, 0, NAN, 0, 0, 1, 0, 0, 0, 0, 1};
   EXPECT_THAT(ErrorOf(nan, 16), HasSubstr("f.txt:7: pose 3 contains a non-finite number (nan at "
@@ -67,35 +57,43 @@ TEST(ImportInternal, PoseChecks) {
   EXPECT_THAT(ErrorOf(last, 16), HasSubstr("last row of the 4x4 matrix is (0 0 1 1)"));
   const double transposed[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 4, 5, 6, 1};
   EXPECT_THAT(ErrorOf(transposed, 16), HasSubstr("looks column-major"));
-  const double skew[16] = {1, 0.001, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  EXPECT_THAT(ErrorOf(skew, 16), HasSubstr("not orthonormal: max(|R^T R - I|, |det R - 1|) = "
-                                           "1.0e-03, more than the 1.0e-06 allowed"));
+  // The rotation rule (rotation_input.h) with the origin's line and name in its messages.
+  const double skew[16] = {1, 0.01, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  EXPECT_THAT(ErrorOf(skew, 16),
+              HasSubstr("f.txt:7: pose 3: the rotation matrix is not orthonormal: max(|R^T R - "
+                        "I|, |det R - 1|) = 1.0e-02, more than the 1.0e-03 allowed"));
   const double mirror[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1};
-  EXPECT_THAT(ErrorOf(mirror, 16), HasSubstr("a reflection"));
+  EXPECT_THAT(ErrorOf(mirror, 16),
+              HasSubstr("f.txt:7: pose 3: the rotation matrix is a reflection"));
   EXPECT_THAT(ErrorOf(ok, 9), HasSubstr("9 numbers"));
-  // 2e-6 off: rejected at full precision, accepted for numbers printed with 6 decimals.
-  const double near[16] = {1.000001, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  EXPECT_THAT(ErrorOf(near, 16), HasSubstr("not orthonormal"));
-  EXPECT_EQ(ErrorOf(near, 16, 5e-7), "");
-  // Accepted rotations are projected onto SO(3).
-  const Pose projected = PoseFromRowMajor(near, 16, 5e-7, 1.0, kOrigin);
-  EXPECT_LT(so3::OrthonormalityError(projected.linear()), 1e-14);
+  EXPECT_TRUE(rotations.Notes().empty());
+  // 2e-5 off: projected onto SO(3), with a note.
+  const double near[16] = {1.00001, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const Pose projected = PoseFromRowMajor(near, 16, 0.0, 1.0, kOrigin, &rotations);
+  EXPECT_LT((projected.linear() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-15);
+  ASSERT_EQ(rotations.Notes().size(), 1u);
+  EXPECT_THAT(rotations.Notes()[0], HasSubstr("at line 7 (pose 3)"));
 }
 
 TEST(ImportInternal, QuaternionChecks) {
+  RotationInput rotations("f.txt");
   const Pose pose = PoseFromQuaternion(Eigen::Vector3d(1, 2, 3), Eigen::Vector4d(0, 0, 0, 1), 0.0,
-                                       1.0, kOrigin);  // 180 deg about z
+                                       1.0, kOrigin, "w, x, y, z", &rotations);  // 180° about z
   EXPECT_TRUE(pose.linear().isApprox(Eigen::Vector3d(-1, -1, 1).asDiagonal().toDenseMatrix()));
   const auto error = [](const Eigen::Vector4d& q, double rounding) -> std::string {
+    RotationInput checked("f.txt");
     try {
-      PoseFromQuaternion(Eigen::Vector3d::Zero(), q, rounding, 1.0, kOrigin);
+      PoseFromQuaternion(Eigen::Vector3d::Zero(), q, rounding, 1.0, kOrigin, "w, x, y, z",
+                         &checked);
     } catch (const InputError& e) {
       return e.what();
     }
     return "";
   };
-  EXPECT_THAT(error(Eigen::Vector4d::Zero(), 0.0), HasSubstr("zero quaternion"));
-  EXPECT_THAT(error(Eigen::Vector4d(1.001, 0, 0, 0), 0.0), HasSubstr("norm 1.001"));
+  EXPECT_THAT(error(Eigen::Vector4d::Zero(), 0.0), HasSubstr("pose 3: zero quaternion"));
+  EXPECT_THAT(error(Eigen::Vector4d(1.5, 0, 0, 0), 0.0), HasSubstr("norm 1.5"));
+  EXPECT_THAT(error(Eigen::Vector4d(1.5, 0, 0, 0), 0.0), HasSubstr("are w, x, y, z a quaternion"));
+  EXPECT_EQ(error(Eigen::Vector4d(1.001, 0, 0, 0), 0.0), "");
   EXPECT_EQ(error(Eigen::Vector4d(0.7071, 0, 0, 0.7071), 5e-5), "");  // printed to 4 decimals
   EXPECT_THAT(error(Eigen::Vector4d(NAN, 0, 0, 1), 0.0), HasSubstr("non-finite"));
 }

@@ -14,6 +14,7 @@ using import_internal::Origin;
 PoseTable ReadMatrices(std::string_view text, const std::string& source, LengthUnit unit,
                        bool invert) {
   PoseTable table = import_internal::MakeTable(source, unit);
+  RotationInput rotations(source);
   const double metres_per_unit = MetresPer(unit);
   for (const import_internal::TextLine& line : import_internal::SplitLines(text)) {
     if (import_internal::IsBlankLine(line.text) || import_internal::IsCommentLine(line.text)) {
@@ -36,7 +37,7 @@ PoseTable ReadMatrices(std::string_view text, const std::string& source, LengthU
     PoseRow row;
     const Pose pose = import_internal::PoseFromRowMajor(
         values, static_cast<int>(numbers.size()), rounding, metres_per_unit,
-        Origin{source, line.number, "pose " + std::to_string(table.rows.size())});
+        Origin{source, line.number, "pose " + std::to_string(table.rows.size())}, &rotations);
     row.pose = invert ? pose.inverse() : pose;
     row.id = std::to_string(table.rows.size());
     row.line = line.number;
@@ -46,6 +47,7 @@ PoseTable ReadMatrices(std::string_view text, const std::string& source, LengthU
     Fail(source, 0, "the file has no poses",
          "give one pose per line as 16 numbers (row-major 4x4)");
   }
+  table.warnings = rotations.Notes();
   return table;
 }
 

@@ -9,6 +9,8 @@
 #include "hecal/geometry/so3.h"
 #include "hecal/io/atomic_file.h"
 #include "import_internal.h"
+#include "testing/elementary_rotations.h"
+#include "testing/nearly_orthonormal.h"
 
 namespace hecal::io {
 namespace {
@@ -107,6 +109,27 @@ void ExpectError(const std::string& robot, const std::optional<std::string>& cam
   }
 }
 
+TEST(ImportMatrix16, ControllerMatricesAreProjectedWithANote) {
+  // Two poses as a controller writes them (2e-5 and 1e-5 from orthonormal, 17 digits).
+  const testing::NearlyOrthonormal a =
+      testing::ControllerMatrix(testing::Ry(0.7) * testing::Rz(2.9), 1e-5);
+  const testing::NearlyOrthonormal b =
+      testing::ControllerMatrix(testing::Rx(-2.2) * testing::Ry(0.1), 0.5e-5);
+  const std::string text =
+      "# controller log\n" +
+      testing::Digits17(testing::Homogeneous(a.matrix, Eigen::Vector3d(0.4, 0.1, 0.6)), " ") +
+      "\n" + testing::Digits17(testing::Homogeneous(b.matrix, Eigen::Vector3d(0.3, 0, 0.5)), " ") +
+      "\n";
+  const ImportedPoses poses = ParseMatrix16(text, "robot.txt", std::nullopt, "", {});
+  ASSERT_EQ(poses.robot.rows.size(), 2u);
+  EXPECT_LT((poses.robot.rows[0].pose.linear() - a.rotation).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_LT((poses.robot.rows[1].pose.linear() - b.rotation).cwiseAbs().maxCoeff(), 1e-15);
+  ASSERT_EQ(poses.robot.warnings.size(), 1u);
+  EXPECT_THAT(poses.robot.warnings[0],
+              HasSubstr("robot.txt: 2 of 2 rotation matrices were not orthonormal within 1e-6 "
+                        "(largest error 2.0e-05 at line 2 (pose 0)); projected"));
+}
+
 TEST(ImportMatrix16, RejectsBadInput) {
   const std::string I = "1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n";
   ExpectError("", std::nullopt, "r.txt: the file has no poses");
@@ -116,6 +139,7 @@ TEST(ImportMatrix16, RejectsBadInput) {
   ExpectError("1 0 0 0 0 1 0 0 0 0 1 nan 0 0 0 1\n", std::nullopt, "non-finite");
   ExpectError("1 0 0 0 0 1 0 0 0 0 -1 0 0 0 0 1\n", std::nullopt, "a reflection");
   ExpectError("2 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n", std::nullopt, "not orthonormal");
+  ExpectError("2 0 0 0 0 2 0 0 0 0 2 0 0 0 0 1\n", std::nullopt, "a rotation scaled by 2");
   ExpectError(I + I, I, "r.txt: has 2 poses but c.txt has 1");
 }
 

@@ -33,7 +33,8 @@ std::string_view TypeName(const nlohmann::json& value) {
   }
 }
 
-Pose ReadMatrix(const nlohmann::json& matrix, const std::string& source, const std::string& what) {
+Pose ReadMatrix(const nlohmann::json& matrix, const std::string& source, const std::string& what,
+                RotationInput* rotations) {
   constexpr const char* kFix = "write each pose as 4 row arrays of 4 numbers (row-major 4x4)";
   if (!matrix.is_array() || matrix.size() != 4) {
     Fail(source, 0,
@@ -63,7 +64,8 @@ Pose ReadMatrix(const nlohmann::json& matrix, const std::string& source, const s
       values[4 * r + c] = value.get<double>();
     }
   }
-  return import_internal::PoseFromRowMajor(values, 16, 0.0, 1.0, Origin{source, 0, what});
+  return import_internal::PoseFromRowMajor(values, 16, 0.0, 1.0, Origin{source, 0, what},
+                                           rotations);
 }
 
 }  // namespace
@@ -93,6 +95,8 @@ ImportedPoses ParseMoveitSamples(std::string_view json_text, const std::string& 
   ImportedPoses result;
   result.robot = import_internal::MakeTable(source, LengthUnit::kMetre);
   result.camera = import_internal::MakeTable(source, LengthUnit::kMetre);
+  RotationInput robot_rotations(source, "robot");
+  RotationInput camera_rotations(source, "camera");
   for (size_t i = 0; i < root.size(); ++i) {
     const nlohmann::json& sample = root[i];
     const std::string name = "sample " + std::to_string(i);
@@ -104,14 +108,16 @@ ImportedPoses ParseMoveitSamples(std::string_view json_text, const std::string& 
            "give each sample as [M_eef, M_obj] (two 4x4 matrices)");
     }
     PoseRow robot;
-    robot.pose = ReadMatrix(sample[0], source, name + " M_eef");
+    robot.pose = ReadMatrix(sample[0], source, name + " M_eef", &robot_rotations);
     robot.id = std::to_string(i);
     PoseRow camera;
-    camera.pose = ReadMatrix(sample[1], source, name + " M_obj");
+    camera.pose = ReadMatrix(sample[1], source, name + " M_obj", &camera_rotations);
     camera.id = std::to_string(i);
     result.robot.rows.push_back(std::move(robot));
     result.camera->rows.push_back(std::move(camera));
   }
+  result.robot.warnings = robot_rotations.Notes();
+  result.camera->warnings = camera_rotations.Notes();
 
   const std::string format = "format: moveit (MoveIt Calibration pose samples, JSON)";
   result.robot_notes = {

@@ -55,26 +55,26 @@ const YAML::Node& RequireList(const YAML::Node& node, const std::string& source,
 }
 
 Eigen::Vector3d ReadVector3(const YAML::Node& node, const std::string& source,
-                            const std::string& what, double* rounding) {
+                            const std::string& what) {
   const import_internal::Matrix m = import_internal::ReadMatrix(node, source, what);
   if (m.values.size() != 3 || !(m.rows == 1 || m.cols == 1)) {
     Fail(source, m.line,
          what + " is " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + ", not a 3-vector",
          "write it as a 3x1 matrix");
   }
-  if (rounding) *rounding = m.rounding;
   return Eigen::Vector3d(m.values[0], m.values[1], m.values[2]);
 }
 
 Pose ReadRotationAndTranslation(const YAML::Node& rotation, const YAML::Node& translation,
                                 double metres_per_unit, const std::string& source,
-                                const std::string& what) {
+                                const std::string& what, RotationInput* rotations) {
   const import_internal::Matrix r = import_internal::ReadMatrix(rotation, source, what + " R");
-  const Eigen::Vector3d t = ReadVector3(translation, source, what + " t", nullptr);
+  const Eigen::Vector3d t = ReadVector3(translation, source, what + " t");
   const Origin origin{source, r.line, what};
   if (r.values.size() == 9 && ((r.rows == 3 && r.cols == 3) || r.rows == 1)) {
-    return import_internal::PoseFromRotationAndTranslation(r.values.data(), t.data(), r.rounding,
-                                                           metres_per_unit, origin);
+    return import_internal::PoseFromRotationAndTranslation(r.values.data(), t.data(),
+                                                           import_internal::RotationRounding(r),
+                                                           metres_per_unit, origin, rotations);
   }
   if (r.values.size() == 3 && (r.rows == 1 || r.cols == 1)) {
     return import_internal::PoseFromRotationVector(
@@ -87,7 +87,7 @@ Pose ReadRotationAndTranslation(const YAML::Node& rotation, const YAML::Node& tr
 }
 
 Pose ReadHomogeneous(const YAML::Node& node, double metres_per_unit, const std::string& source,
-                     const std::string& what) {
+                     const std::string& what, RotationInput* rotations) {
   const import_internal::Matrix m = import_internal::ReadMatrix(node, source, what);
   const size_t count = m.values.size();
   if (!((m.cols == 4 && (m.rows == 4 || m.rows == 3)) ||
@@ -97,13 +97,15 @@ Pose ReadHomogeneous(const YAML::Node& node, double metres_per_unit, const std::
              ", not a 4x4 or 3x4 transform",
          "write each T_ entry as a 4x4 homogeneous matrix");
   }
-  return import_internal::PoseFromRowMajor(m.values.data(), static_cast<int>(count), m.rounding,
-                                           metres_per_unit, Origin{source, m.line, what});
+  return import_internal::PoseFromRowMajor(m.values.data(), static_cast<int>(count),
+                                           import_internal::RotationRounding(m), metres_per_unit,
+                                           Origin{source, m.line, what}, rotations);
 }
 
 struct PoseList {
   std::vector<Pose> poses;
   std::vector<int> lines;
+  std::vector<std::string> notes;  // RotationInput::Notes() of the list
   const Spelling* spelling = nullptr;
   std::string keys;  // the keys used, for messages and notes
 };
@@ -112,6 +114,7 @@ template <size_t N>
 PoseList ReadPoseList(const YAML::Node& root, const Spelling (&spellings)[N],
                       double metres_per_unit, const std::string& source, const char* role) {
   PoseList list;
+  RotationInput rotation_input(source, role);
   for (const Spelling& spelling : spellings) {
     const std::optional<YAML::Node> rotation = Find(root, spelling.rotation);
     const std::optional<YAML::Node> translation = Find(root, spelling.translation);
@@ -135,7 +138,8 @@ PoseList ReadPoseList(const YAML::Node& root, const Spelling (&spellings)[N],
       const YAML::Node& items = RequireList(*matrix, source, spelling.matrix);
       for (size_t i = 0; i < items.size(); ++i) {
         const std::string what = std::string(spelling.matrix) + "[" + std::to_string(i) + "]";
-        list.poses.push_back(ReadHomogeneous(items[i], metres_per_unit, source, what));
+        list.poses.push_back(
+            ReadHomogeneous(items[i], metres_per_unit, source, what, &rotation_input));
         list.lines.push_back(LineOf(items[i]));
       }
       continue;
@@ -158,8 +162,8 @@ PoseList ReadPoseList(const YAML::Node& root, const Spelling (&spellings)[N],
     for (size_t i = 0; i < rotations.size(); ++i) {
       const std::string what = std::string(role) + " pose " + std::to_string(i) + " (" +
                                spelling.rotation + "[" + std::to_string(i) + "])";
-      list.poses.push_back(
-          ReadRotationAndTranslation(rotations[i], translations[i], metres_per_unit, source, what));
+      list.poses.push_back(ReadRotationAndTranslation(
+          rotations[i], translations[i], metres_per_unit, source, what, &rotation_input));
       list.lines.push_back(LineOf(rotations[i]));
     }
   }
@@ -172,6 +176,7 @@ PoseList ReadPoseList(const YAML::Node& root, const Spelling (&spellings)[N],
   if (list.spelling->inverse) {
     for (Pose& pose : list.poses) pose = pose.inverse();
   }
+  list.notes = rotation_input.Notes();
   return list;
 }
 
@@ -233,6 +238,8 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source, Lengt
     result.robot.rows.push_back(std::move(robot_row));
     result.camera->rows.push_back(std::move(camera_row));
   }
+  result.robot.warnings = robot.notes;
+  result.camera->warnings = camera.notes;
   const std::string format = "format: opencv-yaml (cv::calibrateHandEye arrays, FileStorage YAML)";
   const std::string units = import_internal::UnitNote(unit, "from --units; the file does not say");
   const std::string id_note = ids.empty() ? "id: 0-based pose index" : "id: the file's ids list";

@@ -7,6 +7,8 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_moveit.h"
 #include "hecal/io/import_tabb.h"
+#include "testing/elementary_rotations.h"
+#include "testing/nearly_orthonormal.h"
 
 namespace hecal::io {
 namespace {
@@ -72,6 +74,32 @@ const std::string kT = "[0.1, 0.2, 0.3]";
 std::string Arrays(int robot, int camera) {
   return List("R_gripper2base", kR, robot) + List("t_gripper2base", kT, robot) +
          List("R_target2cam", kR, camera) + List("t_target2cam", kT, camera);
+}
+
+TEST(ImportOpenCvYaml, ControllerMatricesAreProjectedWithANote) {
+  // R_gripper2base as 3x3 data and T_target2cam as a 4x4, both 2e-5 from orthonormal, 17 digits.
+  const testing::NearlyOrthonormal robot =
+      testing::ControllerMatrix(testing::Rz(-0.8) * testing::Ry(1.3), 1e-5);
+  const testing::NearlyOrthonormal camera =
+      testing::ControllerMatrix(testing::Rx(3.0) * testing::Rz(0.2), 1e-5);
+  // (Appended piece by piece: GCC 12's -Wrestrict false positive, bug 105329, trips on "[" + s.)
+  std::string R = "[";
+  R += testing::Digits17(robot.matrix, ", ");
+  R += "]";
+  std::string T = "[";
+  T += testing::Digits17(testing::Homogeneous(camera.matrix, Eigen::Vector3d(0, 0, 1)), ", ");
+  T += "]";
+  const std::string text =
+      List("R_gripper2base", R, 1) + List("t_gripper2base", kT, 1) + List("T_target2cam", T, 1);
+  const ImportedPoses poses = ParseOpenCvHandEyeYaml(text, "h.yml", LengthUnit::kMetre);
+  EXPECT_LT((poses.robot.rows[0].pose.linear() - robot.rotation).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_LT((poses.camera->rows[0].pose.linear() - camera.rotation).cwiseAbs().maxCoeff(), 1e-15);
+  ASSERT_EQ(poses.robot.warnings.size(), 1u);
+  EXPECT_THAT(poses.robot.warnings[0],
+              HasSubstr("h.yml: 1 of 1 robot rotation matrices were not orthonormal within 1e-6 "
+                        "(largest error 2.0e-05 at line 2 (robot pose 0 (R_gripper2base[0])))"));
+  ASSERT_EQ(poses.camera->warnings.size(), 1u);
+  EXPECT_THAT(poses.camera->warnings[0], HasSubstr("h.yml: 1 of 1 camera rotation matrices"));
 }
 
 TEST(ImportOpenCvYaml, PlainListsAndCameraInverse) {

@@ -50,7 +50,8 @@ long ReadCount(const std::vector<TextLine>& lines, const std::string& source,
   return static_cast<long>(count->value);
 }
 
-std::vector<PoseRow> ReadRobot(std::string_view text, const std::string& source) {
+std::vector<PoseRow> ReadRobot(std::string_view text, const std::string& source,
+                               RotationInput* rotations) {
   const std::string what = "Tabb's robot_cali.txt: N, then N 4x4 matrices (B_i = T_gripper_base)";
   const std::vector<TextLine> lines = DataLines(text);
   const long count = ReadCount(lines, source, what);
@@ -91,7 +92,8 @@ std::vector<PoseRow> ReadRobot(std::string_view text, const std::string& source)
     const Pose T_gripper_base = import_internal::PoseFromRowMajor(
         values, 16, rounding, kMetresPerMillimetre,
         Origin{source, first.number,
-               "pose " + std::to_string(block) + " (B_" + std::to_string(block) + ")"});
+               "pose " + std::to_string(block) + " (B_" + std::to_string(block) + ")"},
+        rotations);
     row.pose = T_gripper_base.inverse();
     row.line = first.number;
     poses.push_back(std::move(row));
@@ -110,7 +112,8 @@ struct CameraLine {
   ImportedIntrinsics intrinsics;
 };
 
-std::vector<CameraLine> ReadCamera(std::string_view text, const std::string& source) {
+std::vector<CameraLine> ReadCamera(std::string_view text, const std::string& source,
+                                   RotationInput* rotations) {
   const std::string what =
       "Tabb's cali.txt: N, then one line per image: name, K (9), R (9), t (3), distortion (5), "
       "0 0 0";
@@ -168,7 +171,7 @@ std::vector<CameraLine> ReadCamera(std::string_view text, const std::string& sou
     }
     camera.row.pose = import_internal::PoseFromRotationAndTranslation(
         rotation, translation, rounding, kMetresPerMillimetre,
-        Origin{source, line.number, "the pose of " + std::string(tokens[0])});
+        Origin{source, line.number, "the pose of " + std::string(tokens[0])}, rotations);
     camera.row.id = id;
     camera.row.line = line.number;
     camera.intrinsics.fx = value(0);
@@ -197,8 +200,10 @@ bool SameIntrinsics(const ImportedIntrinsics& a, const ImportedIntrinsics& b) {
 
 ImportedPoses ParseTabb(std::string_view robot_text, const std::string& robot_source,
                         std::string_view camera_text, const std::string& camera_source) {
-  std::vector<PoseRow> robot = ReadRobot(robot_text, robot_source);
-  std::vector<CameraLine> cameras = ReadCamera(camera_text, camera_source);
+  RotationInput robot_rotations(robot_source);
+  RotationInput camera_rotations(camera_source);
+  std::vector<PoseRow> robot = ReadRobot(robot_text, robot_source, &robot_rotations);
+  std::vector<CameraLine> cameras = ReadCamera(camera_text, camera_source, &camera_rotations);
   if (robot.size() != cameras.size()) {
     Fail(robot_source, 0,
          "has " + std::to_string(robot.size()) + " robot poses but " + camera_source + " has " +
@@ -219,6 +224,8 @@ ImportedPoses ParseTabb(std::string_view robot_text, const std::string& robot_so
         one_camera_model && SameIntrinsics(cameras[i].intrinsics, cameras[0].intrinsics);
   }
   if (one_camera_model) result.intrinsics = cameras[0].intrinsics;
+  result.robot.warnings = robot_rotations.Notes();
+  result.camera->warnings = camera_rotations.Notes();
 
   const std::string format = "format: tabb (Tabb & Ahmad Yousef robot_cali.txt + cali.txt)";
   const std::string units = import_internal::UnitNote(LengthUnit::kMillimetre, "as in the source");

@@ -3,12 +3,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
+#include "testing/nearly_orthonormal.h"
 #include "testing/pose_spread.h"
 
 namespace hecal::io {
@@ -154,11 +157,77 @@ TEST(ImportTabb, RejectsBadInput) {
   ExpectError(kRobotOne, "2\n" + kCameraLine + kCameraLine, "appears twice");
   // Files given the wrong way round say so.
   ExpectError(camera, kRobotOne, "looks like cali.txt");
-  // 6-decimal rotations pass (the printed precision is allowed for), 1e-4 errors do not.
-  ExpectError("1\n1 0 0 0\n0 1.0001 0 0\n0 0 1 0\n0 0 0 1\n", camera,
-              "more than the 1.0e-04 allowed for numbers printed to +-5.0e-05");
-  ExpectError("1\n1 0 0 0\n0 1.00004 0 0\n0 0 1 0\n0 0 0 1\n", camera,
-              "= 8.0e-05, more than the 3.0e-05 allowed" /* 6 x 5e-6 */);
+  // The rotation tolerance is 1e-3, widened to 6u for 3 decimals (u = 5e-4): 1.002 is 4.0e-3 off.
+  ExpectError("1\n1 0 0 0\n0 1.002 0 0\n0 0 1 0\n0 0 0 1\n", camera,
+              "r.txt:2: pose 0 (B_0): the rotation matrix is not orthonormal: max(|R^T R - I|, "
+              "|det R - 1|) = 4.0e-03, more than the 3.0e-03 allowed for entries printed to "
+              "+-5.0e-04");
+  ExpectError("1\n-1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "a reflection (det R = -1)");
+}
+
+// How many of the printed rotations are more than 1e-6 from orthonormal, by the definition
+// max(|MᵀM − I|, |det M − 1|) written out here.
+int BeyondRounding(const std::vector<Eigen::Matrix3d>& matrices) {
+  int count = 0;
+  for (const Eigen::Matrix3d& M : matrices) {
+    const double gram = (M.transpose() * M - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (std::max(gram, std::abs(M.determinant() - 1.0)) > 1e-6) ++count;
+  }
+  return count;
+}
+
+TEST(ImportTabb, SixDecimalRotationsAreProjectedWithANote) {
+  const ImportedPoses poses = LoadTabb();
+  // The printed matrices, read with a plain stream parser: B_i (robot) and R of each image line.
+  std::vector<Eigen::Matrix3d> robot;
+  std::istringstream robot_in(ReadFile(kDir + "robot_cali.txt"));
+  int count = 0;
+  robot_in >> count;
+  for (int i = 0; i < count; ++i) {
+    Eigen::Matrix4d B;
+    for (int k = 0; k < 16; ++k) robot_in >> B(k / 4, k % 4);
+    robot.push_back(B.topLeftCorner<3, 3>());
+  }
+  std::vector<Eigen::Matrix3d> camera;
+  std::istringstream camera_in(ReadFile(kDir + "cali.txt"));
+  camera_in >> count;
+  for (int i = 0; i < count; ++i) {
+    std::string name;
+    double K[9];
+    Eigen::Matrix3d R;
+    double rest[11];
+    camera_in >> name;
+    for (double& value : K) camera_in >> value;
+    for (int k = 0; k < 9; ++k) camera_in >> R(k / 3, k % 3);
+    for (double& value : rest) camera_in >> value;
+    camera.push_back(R);
+  }
+  ASSERT_TRUE(robot_in && camera_in);
+  ASSERT_EQ(robot.size(), 88u);
+  ASSERT_EQ(camera.size(), 88u);
+
+  // Each pose is the nearest rotation to what the file prints.
+  for (size_t i = 0; i < 88; ++i) {
+    EXPECT_TRUE(
+        testing::IsNearestRotation(poses.robot.rows[i].pose.inverse().linear(), robot[i], 1e-12))
+        << "B_" << i;
+    EXPECT_TRUE(testing::IsNearestRotation(poses.camera->rows[i].pose.linear(), camera[i], 1e-12))
+        << "image " << i;
+  }
+  // One note per file, counting the matrices beyond 1e-6, all within what 6 decimals explain.
+  const int robot_count = BeyondRounding(robot);
+  ASSERT_GT(robot_count, 0);
+  ASSERT_EQ(poses.robot.warnings.size(), 1u);
+  EXPECT_THAT(poses.robot.warnings[0],
+              HasSubstr("robot_cali.txt: " + std::to_string(robot_count) +
+                        " of 88 rotation matrices were not orthonormal within 1e-6"));
+  EXPECT_THAT(poses.robot.warnings[0], HasSubstr("within what entries printed to +-5.0e-07 allow"));
+  const int camera_count = BeyondRounding(camera);
+  ASSERT_EQ(poses.camera->warnings.size(), camera_count > 0 ? 1u : 0u);
+  if (camera_count > 0) {
+    EXPECT_THAT(poses.camera->warnings[0],
+                HasSubstr("cali.txt: " + std::to_string(camera_count) + " of 88 rotation"));
+  }
 }
 
 TEST(ImportTabb, AllowsForTheSixDecimalsOfTheRealFiles) {

@@ -104,7 +104,7 @@ Matrix ReadMatrix(const YAML::Node& node, const std::string& source, const std::
   const auto add = [&](const YAML::Node& value, const std::string& name) {
     const Number number = ScalarNumber(value, source, name);
     matrix.values.push_back(number.value);
-    matrix.rounding = std::max(matrix.rounding, number.rounding);
+    matrix.roundings.push_back(number.rounding);
   };
   if (node.IsDefined() && node.IsMap()) {
     const std::optional<YAML::Node> rows = Find(node, "rows");
@@ -179,6 +179,15 @@ Matrix ReadMatrix(const YAML::Node& node, const std::string& source, const std::
   }
   Fail(source, matrix.line, what + " is not a matrix",
        "write it as an !!opencv-matrix {rows, cols, dt, data} or a list of numbers");
+}
+
+double RotationRounding(const Matrix& matrix) {
+  const size_t count = matrix.roundings.size();
+  double rounding = 0.0;
+  for (size_t k = 0; k < count; ++k) {
+    if (count == 9 || (k < 12 && k % 4 != 3)) rounding = std::max(rounding, matrix.roundings[k]);
+  }
+  return rounding;
 }
 
 }  // namespace hecal::io::import_internal

@@ -38,16 +38,21 @@ long ScalarCount(const YAML::Node& node, const std::string& source, const std::s
 std::string ScalarText(const YAML::Node& node, const std::string& source, const std::string& what);
 
 // A matrix: an !!opencv-matrix map (rows, cols, dt, data), a flat list of numbers (rows = 1), or a
-// list of equally long row lists. Values are row-major; `rounding` is the largest rounding bound
-// of the printed values.
+// list of equally long row lists. Values are row-major, each with the rounding bound of its
+// printed digits (PrintedRounding).
 struct Matrix {
   int rows = 0;
   int cols = 0;
   std::vector<double> values;
-  double rounding = 0.0;
+  std::vector<double> roundings;
   int line = 0;
 };
 Matrix ReadMatrix(const YAML::Node& node, const std::string& source, const std::string& what);
+
+// The largest rounding of the rotation entries of a pose matrix: all values of a 3×3, the left
+// 3×3 block of a row-major 3×4 or 4×4 (also given flat, 12 or 16 values). The translation's
+// digits do not widen the rotation tolerance (rotation_input.h).
+double RotationRounding(const Matrix& matrix);
 
 // Runs `body`, turning any yaml-cpp exception into an InputError for `source`.
 template <typename Body>

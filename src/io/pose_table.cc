@@ -6,11 +6,11 @@
 #include <unordered_map>
 
 #include "hecal/core/error.h"
-#include "hecal/geometry/nearest_rotation.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/io/rotation_input.h"
 #include "pose_table_header.h"
 
 namespace hecal::io {
@@ -22,18 +22,14 @@ using pose_table_internal::Info;
 using pose_table_internal::Layout;
 using pose_table_internal::ParseHeader;
 using pose_table_internal::Quoted;
-using pose_table_internal::Scientific;
 using pose_table_internal::ToMetres;
 using pose_table_internal::ToRadians;
 
-constexpr double kOrthonormalityTolerance = 1e-6;
 constexpr double kHomogeneousRowTolerance = 1e-9;
-constexpr double kZeroQuaternionNorm = 1e-12;
-constexpr double kQuaternionNormWarning = 1e-3;
 
 class RowParser {
  public:
-  RowParser(const std::string& source, PoseTable* table) : source_(source), table_(table) {}
+  explicit RowParser(const std::string& source) : source_(source) {}
 
   double Number(const Field& field, int line, std::string_view column) const {
     double value = 0.0;
@@ -52,53 +48,22 @@ class RowParser {
     return value;
   }
 
-  Eigen::Matrix3d Quaternion(double w, double x, double y, double z, int line) {
-    // Scaled so that neither huge nor tiny components overflow or underflow the norm.
-    const double largest = std::max({std::abs(w), std::abs(x), std::abs(y), std::abs(z)});
-    const double norm =
-        largest > 0.0
-            ? largest * Eigen::Vector4d(w / largest, x / largest, y / largest, z / largest).norm()
-            : 0.0;
-    if (!(norm > kZeroQuaternionNorm)) {
-      throw InputError(source_, line,
-                       "zero quaternion (norm " + Scientific(norm) + ") cannot be a rotation",
-                       "write a unit quaternion (w=1,x=y=z=0 is no rotation)");
-    }
-    if (std::abs(norm - 1.0) > kQuaternionNormWarning) {
-      if (quaternion_warnings_++ == 0) first_quaternion_warning_ = line, first_norm_ = norm;
-    }
-    const Eigen::Quaterniond q(w / largest, x / largest, y / largest, z / largest);
-    return MatrixFromQuaternion(q);
-  }
-
-  Eigen::Matrix3d Matrix(const Eigen::Matrix3d& M, int line) const {
-    const double error = so3::OrthonormalityError(M);
-    if (!(error <= kOrthonormalityTolerance)) {
-      throw InputError(source_, line,
-                       "rotation matrix is not orthonormal: max(|RᵀR − I|, |det R − 1|) = " +
-                           Scientific(error) + ", more than the 1e-6 allowed",
-                       "write the rotation with more digits (at least 9 significant), or "
-                       "orthonormalise it");
-    }
-    return NearestRotationSvd(M);
-  }
-
-  void Finish() {
-    if (quaternion_warnings_ > 0) {
-      table_->warnings.push_back(source_ + ":" + std::to_string(first_quaternion_warning_) +
-                                 ": quaternion norm " + FormatDouble(first_norm_) +
-                                 " is not 1; normalised (" + std::to_string(quaternion_warnings_) +
-                                 " row(s) with |norm − 1| > 1e-3)");
-    }
-  }
-
  private:
   const std::string& source_;
-  PoseTable* table_;
-  int quaternion_warnings_ = 0;
-  int first_quaternion_warning_ = 0;
-  double first_norm_ = 0.0;
 };
+
+// The largest PrintedRounding of the given fields.
+double LargestRounding(const std::vector<Field>& fields, const int* indices, int count) {
+  double rounding = 0.0;
+  for (int k = 0; k < count; ++k) {
+    rounding = std::max(rounding, PrintedRounding(fields[static_cast<size_t>(indices[k])].text));
+  }
+  return rounding;
+}
+
+void AddNotes(const RotationInput& rotations, PoseTable* table) {
+  for (std::string& note : rotations.Notes()) table->warnings.push_back(std::move(note));
+}
 
 // Reduces a rotation vector to an angle in [0, 2π) so that so3::Exp never sees an overflowing
 // norm; the rotation is unchanged.
@@ -127,7 +92,14 @@ void AddRow(PoseRow row, PoseTable* table, std::unordered_map<std::string, int>*
 void ParseHeaderedRows(LineCursor& cursor, Separator separator, const Layout& layout,
                        int header_line, PoseTable* table) {
   const std::string& source = table->source;
-  RowParser parser(source, table);
+  RowParser parser(source);
+  RotationInput rotations(source);
+  std::string quaternion_columns;  // as the header names them, for messages
+  if (layout.group == Group::kQuaternion || layout.group == Group::kAbb) {
+    for (int k = 0; k < 4; ++k) {
+      quaternion_columns += (k > 0 ? "," : "") + layout.names[layout.rotation[k]];
+    }
+  }
   std::unordered_map<std::string, int> id_lines;
   if (layout.id >= 0) id_lines.reserve(table->rows.capacity());
   std::vector<Field> fields;
@@ -173,7 +145,9 @@ void ParseHeaderedRows(LineCursor& cursor, Separator separator, const Layout& la
     switch (layout.group) {
       case Group::kQuaternion:
       case Group::kAbb:
-        R = parser.Quaternion(r[0], r[1], r[2], r[3], number);
+        R = rotations.Quaternion(Eigen::Vector4d(r[0], r[1], r[2], r[3]),
+                                 LargestRounding(fields, layout.rotation.data(), 4),
+                                 RotationPlace{number, ""}, quaternion_columns);
         break;
       case Group::kRotationVector: {
         const Eigen::Vector3d omega(ToRadians(r[0], layout.degrees),
@@ -185,7 +159,8 @@ void ParseHeaderedRows(LineCursor& cursor, Separator separator, const Layout& la
       case Group::kMatrix: {
         Eigen::Matrix3d M;
         M << r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8];
-        R = parser.Matrix(M, number);
+        R = rotations.Matrix(M, LargestRounding(fields, layout.rotation.data(), 9),
+                             RotationPlace{number, ""});
         break;
       }
       case Group::kEuler:
@@ -202,7 +177,7 @@ void ParseHeaderedRows(LineCursor& cursor, Separator separator, const Layout& la
     row.pose = MakePose(R, t);
     AddRow(std::move(row), table, &id_lines, source);
   }
-  parser.Finish();
+  AddNotes(rotations, table);
   if (table->rows.empty()) {
     throw InputError(source, header_line, "the file has a header but no poses",
                      "add one row per pose below the header");
@@ -212,7 +187,8 @@ void ParseHeaderedRows(LineCursor& cursor, Separator separator, const Layout& la
 void ParseMatrixRows(LineCursor& cursor, std::string_view first_line,
                      const PoseReadOptions& options, PoseTable* table) {
   const std::string& source = table->source;
-  RowParser parser(source, table);
+  RowParser parser(source);
+  RotationInput rotations(source);
   std::unordered_map<std::string, int> no_ids;
   std::vector<Field> fields;
   std::string split_error;
@@ -267,12 +243,15 @@ void ParseMatrixRows(LineCursor& cursor, std::string_view first_line,
     M << m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10];
     const Eigen::Vector3d t(ToMetres(m[3], options.units), ToMetres(m[7], options.units),
                             ToMetres(m[11], options.units));
+    static constexpr int kRotationEntries[9] = {0, 1, 2, 4, 5, 6, 8, 9, 10};
     PoseRow row;
     row.line = number;
-    row.pose = MakePose(parser.Matrix(M, number), t);
+    row.pose = MakePose(rotations.Matrix(M, LargestRounding(fields, kRotationEntries, 9),
+                                         RotationPlace{number, ""}),
+                        t);
     AddRow(std::move(row), table, &no_ids, source);
   } while (cursor.Next(&line));
-  parser.Finish();
+  AddNotes(rotations, table);
 }
 
 }  // namespace
@@ -324,6 +303,7 @@ PoseTable ParsePoseTable(std::string_view text, const std::string& source,
     const int header_line = cursor.line_number();
     const Layout layout = ParseHeader(fields, source, header_line, options, declared_sequence);
     table.unit = layout.unit;
+    table.unit_named = layout.unit_named;
     table.rotation = layout.format;
     table.degrees = layout.degrees;
     ParseHeaderedRows(cursor, separator, layout, header_line, &table);

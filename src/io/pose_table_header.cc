@@ -348,9 +348,11 @@ Layout ParseHeader(const std::vector<Field>& fields, const std::string& source, 
   switch (position_suffix[0]) {
     case Suffix::kMetre:
       layout.unit = LengthUnit::kMetre;
+      layout.unit_named = true;
       break;
     case Suffix::kMillimetre:
       layout.unit = LengthUnit::kMillimetre;
+      layout.unit_named = true;
       break;
     default:
       layout.unit = options.units;

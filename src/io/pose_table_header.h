@@ -39,6 +39,7 @@ struct Layout {
   Group group = Group::kQuaternion;
   std::array<int, 9> rotation = {};
   LengthUnit unit = LengthUnit::kMetre;
+  bool unit_named = false;  // a suffix (x_mm, x_m) fixed `unit`, not the options
   bool degrees = false;
   std::optional<EulerSequence> sequence;
   RotationFormat format;

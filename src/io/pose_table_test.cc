@@ -8,11 +8,16 @@
 #include <filesystem>
 #include <numbers>
 #include <random>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/io/import_tabb.h"
 #include "testing/elementary_rotations.h"
+#include "testing/nearly_orthonormal.h"
 #include "testing/random_poses.h"
 
 namespace hecal::io {
@@ -165,6 +170,101 @@ TEST(ReadPoseTableTest, MatrixWithinToleranceIsOrthonormalised) {
             1e-14);
   EXPECT_NEAR(pose.linear().determinant(), 1.0, 1e-14);
   ExpectRotationNear(pose, R, 1e-6);
+}
+
+// A robot controller's own matrices, 2e-5 from orthonormal, written with 17 digits.
+std::vector<testing::NearlyOrthonormal> ControllerMatrices() {
+  return {testing::ControllerMatrix(Rz(0.3) * Ry(-1.2) * Rx(2.5), 0.4e-5),
+          testing::ControllerMatrix(Rx(1.9) * Rz(-0.6), 1e-5),
+          testing::ControllerMatrix(Ry(3.1), 0.7e-5)};
+}
+
+void ExpectProjectedWithANote(const PoseTable& table,
+                              const std::vector<testing::NearlyOrthonormal>& written) {
+  ASSERT_EQ(table.rows.size(), written.size());
+  for (size_t i = 0; i < written.size(); ++i) {
+    ExpectRotationNear(table.rows[i].pose, written[i].rotation, 1e-15);
+  }
+  ASSERT_EQ(table.warnings.size(), 1u);
+  EXPECT_THAT(table.warnings[0],
+              HasSubstr("poses.csv: 3 of 3 rotation matrices were not orthonormal within 1e-6 "
+                        "(largest error 2.0e-05 at line 3); projected onto the nearest rotation"));
+}
+
+TEST(ReadPoseTableTest, ControllerMatricesAreProjectedWithANote) {
+  const std::vector<testing::NearlyOrthonormal> written = ControllerMatrices();
+  std::string columns = "x_mm,y_mm,z_mm,r11,r12,r13,r21,r22,r23,r31,r32,r33\n";
+  std::string lines;
+  for (const testing::NearlyOrthonormal& m : written) {
+    columns += "512.3,-87,630.2," + testing::Digits17(m.matrix, ",") + "\n";
+    lines +=
+        testing::Digits17(testing::Homogeneous(m.matrix, Eigen::Vector3d(0.5, 0.1, 0.6)), " ") +
+        "\n";
+  }
+  ExpectProjectedWithANote(Parse(columns), written);
+  ExpectProjectedWithANote(Parse("# 16 numbers per line\n" + lines), written);
+}
+
+// Tabb & Ahmad Yousef's robot_cali.txt (6 decimals, RᵀR off by up to 1.3e-6) as r11..r33 columns
+// with the file's own digits: projected with a note, to the same rotations as the tabb importer.
+TEST(ReadPoseTableTest, SixDecimalTabbMatricesAreProjectedWithANote) {
+  const std::string dir = std::string(HECAL_SOURCE_DIR) + "/data/tabb-rwhe-dataset1/";
+  const std::string robot_cali = ReadFile(dir + "robot_cali.txt");
+  std::istringstream in(robot_cali);
+  int count = 0;
+  in >> count;
+  std::string text = "x_mm,y_mm,z_mm,r11,r12,r13,r21,r22,r23,r31,r32,r33\n";
+  std::vector<Eigen::Matrix3d> printed;
+  for (int i = 0; i < count; ++i) {
+    std::string token[16];
+    for (std::string& entry : token) in >> entry;
+    text += token[3] + "," + token[7] + "," + token[11];
+    Eigen::Matrix3d M;
+    for (int k = 0; k < 9; ++k) {
+      const std::string& entry = token[4 * (k / 3) + k % 3];
+      text += "," + entry;
+      M(k / 3, k % 3) = std::stod(entry);
+    }
+    text += "\n";
+    printed.push_back(M);
+  }
+  ASSERT_EQ(printed.size(), 88u);
+  const PoseTable table = Parse(text);
+  ASSERT_EQ(table.rows.size(), 88u);
+  const ImportedPoses imported =
+      ParseTabb(robot_cali, "robot_cali.txt", ReadFile(dir + "cali.txt"), "cali.txt");
+  for (size_t i = 0; i < 88; ++i) {
+    const Eigen::Matrix3d R = table.rows[i].pose.linear();
+    EXPECT_TRUE(testing::IsNearestRotation(R, printed[i], 1e-12)) << i;
+    ExpectRotationNear(imported.robot.rows[i].pose.inverse(), R, 0.0);
+  }
+  ASSERT_EQ(table.warnings.size(), 1u);
+  ASSERT_EQ(imported.robot.warnings.size(), 1u);
+  // The same count as the importer's note, and the error within what 6 decimals explain.
+  const std::string of_88 = imported.robot.warnings[0].substr(
+      std::string("robot_cali.txt: ").size(),
+      imported.robot.warnings[0].find(" rotation") - std::string("robot_cali.txt: ").size());
+  EXPECT_THAT(of_88, ::testing::EndsWith("of 88"));
+  EXPECT_THAT(table.warnings[0], HasSubstr("poses.csv: " + of_88 + " rotation matrices"));
+  EXPECT_THAT(table.warnings[0], HasSubstr("within what entries printed to +-5.0e-07 allow"));
+}
+
+TEST(ReadPoseTableTest, UnitNamedSaysWhetherTheFileFixedTheUnit) {
+  PoseReadOptions millimetres;
+  millimetres.units = LengthUnit::kMillimetre;
+  const PoseTable suffix_mm = Parse("x_mm,y_mm,z_mm,qw,qx,qy,qz\n1,2,3,1,0,0,0\n");
+  EXPECT_TRUE(suffix_mm.unit_named);
+  EXPECT_EQ(suffix_mm.unit, LengthUnit::kMillimetre);
+  const PoseTable suffix_m = Parse("X_M,Y_M,Z_M,qw,qx,qy,qz\n1,2,3,1,0,0,0\n", millimetres);
+  EXPECT_TRUE(suffix_m.unit_named);
+  EXPECT_EQ(suffix_m.unit, LengthUnit::kMetre);  // the suffix wins over --units
+  const PoseTable flag = Parse("x,y,z,qw,qx,qy,qz\n1,2,3,1,0,0,0\n", millimetres);
+  EXPECT_FALSE(flag.unit_named);
+  EXPECT_EQ(flag.unit, LengthUnit::kMillimetre);
+  EXPECT_FALSE(Parse("x,y,z,qw,qx,qy,qz\n1,2,3,1,0,0,0\n").unit_named);  // the default, m
+  const PoseTable lines = Parse("1 0 0 1 0 1 0 2 0 0 1 3\n", millimetres);
+  EXPECT_FALSE(lines.unit_named);
+  EXPECT_EQ(lines.unit, LengthUnit::kMillimetre);
 }
 
 TEST(ReadPoseTableTest, EulerPresetsAgainstElementaryRotations) {
@@ -330,19 +430,33 @@ TEST(ReadPoseTableTest, InvertOption) {
   EXPECT_LT(((direct * inverted).matrix() - Eigen::Matrix4d::Identity()).norm(), 1e-15);
 }
 
-TEST(ReadPoseTableTest, NonUnitQuaternionsAreNormalisedWithAWarning) {
-  const PoseTable table = Parse("x,y,z,qw,qx,qy,qz\n0,0,0,2,0,0,2\n0,0,0,1.0000001,0,0,0\n");
+TEST(ReadPoseTableTest, NearlyUnitQuaternionsAreNormalisedWithANote) {
+  // Norms 1.0002 and 1.0004 (within 1e-3): normalised, one note for the file; 1.0000001 is
+  // rounding noise.
+  const PoseTable table = Parse(
+      "x,y,z,qw,qx,qy,qz\n0,0,0,0.70725,0,0,0.70725\n0,0,0,1.0000001,0,0,0\n"
+      "0,0,0,1.0004,0,0,0\n");
   ExpectRotationNear(table.rows[0].pose, Rz(kPi / 2), 1e-15);
   ExpectRotationNear(table.rows[1].pose, Eigen::Matrix3d::Identity(), 1e-15);
+  ExpectRotationNear(table.rows[2].pose, Eigen::Matrix3d::Identity(), 1e-15);
   ASSERT_EQ(table.warnings.size(), 1u);
-  EXPECT_THAT(table.warnings[0], HasSubstr("poses.csv:2"));
+  EXPECT_THAT(table.warnings[0],
+              HasSubstr("poses.csv: 2 of 3 quaternions were not unit within 1e-6 (largest |norm "
+                        "- 1| 4.0e-04 at line 4"));
   EXPECT_THAT(table.warnings[0], HasSubstr("normalised"));
-  // Rounding noise (6-digit quaternions) is normalised silently.
-  EXPECT_TRUE(
-      Parse("x,y,z,qw,qx,qy,qz\n0,0,0,0.707107,0,0,0.707107\n")
-          .warnings.empty());  // Huge quaternions are still rotations (no overflow in the norm).
-  ExpectRotationNear(Parse("x,y,z,qw,qx,qy,qz\n0,0,0,1e300,0,0,1e300\n").rows[0].pose, Rz(kPi / 2),
-                     1e-15);
+  // 6-digit quaternions are normalised silently.
+  EXPECT_TRUE(Parse("x,y,z,qw,qx,qy,qz\n0,0,0,0.707107,0,0,0.707107\n").warnings.empty());
+}
+
+TEST(PoseTableErrorsTest, QuaternionsFarFromUnitAreRefused) {
+  const InputError far = ParseError("x,y,z,qw,qx,qy,qz\n0,0,0,1,0,0,0\n0,0,0,1.5,0,0,0\n");
+  EXPECT_EQ(far.line(), 3);
+  EXPECT_THAT(far.what(), HasSubstr("quaternion norm 1.5, not 1"));
+  EXPECT_THAT(far.fix(), HasSubstr("are qw,qx,qy,qz a quaternion"));
+  // The columns as the header names them (abb's q1..q4); huge values do not overflow the norm.
+  EXPECT_THAT(ParseError("x,y,z,Q1,Q2,Q3,Q4\n0,0,0,2,0,0,2\n").fix(), HasSubstr("are Q1,Q2,Q3,Q4"));
+  EXPECT_THAT(ParseError("x,y,z,qw,qx,qy,qz\n0,0,0,1e300,0,0,1e300\n").what(),
+              HasSubstr("norm 1.41421e+300"));
 }
 
 TEST(ReadPoseTableTest, ReadsFromDisk) {
@@ -431,26 +545,33 @@ TEST(PoseTableErrorsTest, MissingColumns) {
               HasSubstr("lacks column(s) r33"));
 }
 
-TEST(PoseTableErrorsTest, MatrixNotOrthonormalSaysHowFar) {
+TEST(PoseTableErrorsTest, MatrixNotARotationSaysWhy) {
   const InputError error = ParseError(
       "x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33\n0,0,0,1,0,0,0,1,0,0,0,1\n"
       "0,0,0,1.01,0,0,0,1,0,0,0,1\n");
   EXPECT_EQ(error.line(), 3);
   EXPECT_THAT(error.what(), HasSubstr("not orthonormal"));
   EXPECT_THAT(error.what(), HasSubstr("2.0e-02"));  // |RᵀR − I| = 1.01² − 1
-  EXPECT_THAT(error.what(), HasSubstr("1e-6"));
-  // 2e-6 off is just too far, 5e-7 is accepted.
-  EXPECT_EQ(
-      ParseError("x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33\n0,0,0,1.000001,0,0,0,1,0,0,0,1\n")
-          .line(),
-      2);
-  EXPECT_EQ(Parse("x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33\n0,0,0,1.00000025,0,0,0,1,0,0,0,1\n")
-                .rows.size(),
-            1u);
-  // A reflection is not a rotation either.
-  EXPECT_THAT(
-      ParseError("x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33\n0,0,0,-1,0,0,0,1,0,0,0,1\n").what(),
-      HasSubstr("2.0e+00"));
+  // "1.01" is printed to +-5e-3, so the tolerance is 6 x 5e-3 capped at 1e-2.
+  EXPECT_THAT(error.what(), HasSubstr("more than the 1.0e-02 allowed for entries printed to "
+                                      "+-5.0e-03 (singular values 1.01, 1, 1)"));
+  EXPECT_THAT(error.what(), Not(HasSubstr("digits")));
+  // 5e-7 off is rounding (silent), 2e-6 gets a note, 1.2e-3 is refused.
+  const std::string header = "x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33\n";
+  EXPECT_TRUE(Parse(header + "0,0,0,1.00000025,0,0,0,1,0,0,0,1\n").warnings.empty());
+  const PoseTable noted = Parse(header + "0,0,0,1.000001,0,0,0,1,0,0,0,1\n");
+  ExpectRotationNear(noted.rows[0].pose, Eigen::Matrix3d::Identity(), 1e-15);
+  ASSERT_EQ(noted.warnings.size(), 1u);
+  EXPECT_THAT(noted.warnings[0], HasSubstr("poses.csv: 1 of 1 rotation matrices"));
+  EXPECT_THAT(ParseError(header + "0,0,0,1.0006,0,0,0,1,0,0,0,1\n").what(),
+              HasSubstr("= 1.2e-03, more than the 1.0e-03 allowed"));
+  // 3 decimals widen the tolerance to 6 x 5e-4 = 3e-3: 1.001 (2.0e-3 off) is within it.
+  EXPECT_EQ(Parse(header + "0,0,0,1.001,0,0,0,1,0,0,0,1\n").warnings.size(), 1u);
+  // A reflection and a scaled rotation say so.
+  EXPECT_THAT(ParseError(header + "0,0,0,-1,0,0,0,1,0,0,0,1\n").what(),
+              HasSubstr("a reflection (det R = -1)"));
+  EXPECT_THAT(ParseError(header + "0,0,0,0,-1.5,0,1.5,0,0,0,0,1.5\n").what(),
+              HasSubstr("a rotation scaled by 1.5"));
   EXPECT_EQ(ParseError("1 0 0 0 0 1 0 0 0 0 2 0\n").line(), 1);
   EXPECT_EQ(ParseError("x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33\n"
                        "0,0,0,1e200,1e200,1e200,-1e200,1e200,1e200,1,1,1\n")

@@ -12,11 +12,14 @@
 //   matrix16      ROBOT.txt [CAMERA.txt]                none unless
 //   --robot-inverse/--camera-inverse
 //
-// ImportFiles reads the files and runs the reader. Every reader rejects bad input with
-// hecal::InputError (file, line where known, what, how to fix): unreadable files, syntax errors,
-// NaN/Inf, rotations that are not orthonormal (within 1e-6, or the printed precision of the file;
-// see docs/import-formats.md), zero or non-unit quaternions, counts that disagree with the file's
-// own N / frameCount, and robot and camera counts that differ (except ethz, whose streams are
+// ImportFiles reads the files and runs the reader. Rotations follow the rule every pose reader
+// shares (rotation_input.h): nearly orthonormal matrices are projected onto SO(3) and nearly unit
+// quaternions normalised, with a note in the table's warnings beyond 1e-6. Every reader rejects
+// bad input with hecal::InputError (file, line where known, what, how to fix): unreadable files,
+// syntax errors, NaN/Inf, matrices that are not rotations beyond the tolerance (1e-3, or the
+// printed precision up to 1e-2; the message says why: a reflection, a scale, too few digits, not
+// orthonormal), zero or non-unit quaternions, counts that disagree with the file's own
+// N / frameCount, and robot and camera counts that differ (except ethz, whose streams are
 // unsynchronised).
 #pragma once
 

@@ -33,7 +33,9 @@ struct ImportedIntrinsics {
 };
 
 struct ImportedPoses {
-  PoseTable robot;                  // T_base_gripper_i
+  // T_base_gripper_i. The tables' `warnings` hold the readers' notes (rotation_input.h): one line
+  // per source file and kind for rotations that were projected onto SO(3) or normalised.
+  PoseTable robot;
   std::optional<PoseTable> camera;  // T_camera_target_i; absent only for robot-only matrix16
   // Header comment lines for robot.csv / camera.csv (without the leading '#').
   std::vector<std::string> robot_notes;

@@ -16,14 +16,18 @@
 //   from options.euler; preset columns have their own sequence and reject a different one.
 //   Without a header: 12 (3×4) or 16 (4×4, last row 0 0 0 1 within 1e-9) numbers per line,
 //   separated by commas and/or spaces/tabs, lengths in options.units.
-//   Quaternions are normalised (norm ≤ 1e-12 is an error; |norm − 1| > 1e-3 adds one entry to
-//   PoseTable::warnings); matrices must be orthonormal within 1e-6 (so3::OrthonormalityError) and
-//   are projected onto the nearest rotation; rotation vectors are taken modulo 2π.
-//   Every pose in memory is in metres and radians; `unit` remembers the file's length unit.
+//   Rotation matrices (r11..r33, matrix lines) and quaternions (qw..qz, q1..q4) follow the rule
+//   of rotation_input.h: within 1e-6 of a rotation they are projected (normalised) silently,
+//   within the tolerance (1e-3, widened for coarsely printed entries, at most 1e-2) projected
+//   with one note per file in PoseTable::warnings, beyond it refused with the reason (a
+//   reflection, a scaled rotation, too few digits, not orthonormal; a zero or non-unit
+//   quaternion). Rotation vectors are taken modulo 2π.
+//   Every pose in memory is in metres and radians; `unit` remembers the file's length unit and
+//   `unit_named` whether the file itself said it (a header suffix).
 //   Errors throw hecal::InputError(file, line, what, fix), one line each: NaN/Inf, not a number,
 //   wrong value count, unknown (with a suggestion), duplicate or unnamed column, two rotation
 //   groups, missing position/rotation columns, mixed or misplaced units, missing Euler sequence,
-//   non-orthonormal matrix (with how far off), bad 4×4 last row, zero quaternion, empty file or
+//   a matrix or quaternion that is not a rotation (with why), bad 4×4 last row, empty file or
 //   header only, duplicate or empty id, unclosed quote, unreadable file.
 //
 // Writing
@@ -56,12 +60,17 @@ struct PoseRow {
 
 struct PoseTable {
   std::vector<PoseRow> rows;
-  std::string source;                      // file name, for messages
-  LengthUnit unit = LengthUnit::kMetre;    // the file's length unit
-  bool unit_named = false;                 // the file itself named the unit (header suffix)
+  std::string source;                    // file name, for messages
+  LengthUnit unit = LengthUnit::kMetre;  // the file's length unit
+  // Set by ReadPoseTable/ParsePoseTable: true when the file fixed `unit` itself (a header suffix:
+  // x_mm, x_m); false when it came from PoseReadOptions::units (the --units flag or its default),
+  // as for every matrix-line file. (The importers, import.h, leave it false.)
+  bool unit_named = false;
   std::optional<RotationFormat> rotation;  // the rotation group found (nullopt: matrix lines)
   bool degrees = false;                    // the file's angles were in degrees (rotvec/Euler)
-  std::vector<std::string> warnings;       // "file:line: ..." notes (e.g. quaternion normalised)
+  // One line per note, starting with the file name: rotations that were not exactly orthonormal
+  // or unit (rotation_input.h), e.g. "robot.csv: 3 of 88 rotation matrices were not ...".
+  std::vector<std::string> warnings;
 };
 
 struct PoseReadOptions {
