@@ -67,7 +67,8 @@ std::vector<fs::path> FilesIn(const fs::path& directory, const std::string& what
   std::error_code error;
   std::vector<fs::path> files;
   for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
-    if (it->is_regular_file(error)) files.push_back(it->path());
+    std::error_code ignored;  // a dangling link is not a file; skipped like any other
+    if (it->is_regular_file(ignored)) files.push_back(it->path());
   }
   if (error) {
     Fail(what, 0, "cannot list " + directory.string() + ": " + error.message(),

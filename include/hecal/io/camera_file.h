@@ -15,7 +15,7 @@
 //           distortion_coefficients as {rows, cols, data} maps, distortion_model: plumb_bob,
 //           image_width, image_height; rectification_matrix, projection_matrix, camera_name
 //           and other keys are ignored.
-//   ViSP    vpXmlParserCamera XML (visp_camera_xml.h: the layout, the choice of model and
+//   ViSP    vpXmlParserCamera XML (src/io/visp_camera_xml.h: the layout, the choice of model and
 //           kud → k1).
 // A YAML file with camera_matrix is read as OpenCV / ROS (the same reader: distortion_model,
 // when present, must be plumb_bob); otherwise as hecal's layout.

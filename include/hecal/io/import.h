@@ -9,10 +9,8 @@
 //   ethz          ROBOT.csv CAMERA.csv (two streams)    camera inverted (T_W_E → T_E_W), m, stamps
 //   tabb          robot_cali.txt cali.txt | DIR         robot inverted (B_i = T_gripper_base), mm
 //   opencv-yaml   FILE.yml (calibrateHandEye arrays)    by key name (…2gripper / cam2… inverted)
-//   matrix16      ROBOT.txt [CAMERA.txt]                none (read as T_base_gripper,
-//   T_camera_target) visp          DIR | pose_*_<i>.yaml files/globs     none (rPe/fPe =
-//   T_base_gripper, cPo =
-//                                                       T_camera_target), m, paired by <i>
+//   matrix16      ROBOT.txt [CAMERA.txt]                none (T_base_gripper, T_camera_target)
+//   visp          DIRs | pose_*_<i>.yaml files, globs   none (rPe/fPe = rMe, cPo = cMo), m
 //
 // --robot-inverse / --camera-inverse apply to every format: the file holds the inverse of what
 // the format documents, so after the format's own convention every pose of that side is
