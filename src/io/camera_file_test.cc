@@ -367,7 +367,7 @@ TEST(CameraFile, VispXmlValuesAreTheFilesValues) {
   ASSERT_EQ(franka.notes.size(), 1u);
   EXPECT_THAT(franka.notes[0],
               HasSubstr("franka_camera.xml: ViSP camera \"Camera\": model "
-                        "perspectiveProjWithDistortion, read as plumb_bob k1 = kud"));
+                        "perspectiveProjWithDistortion, read as plumb_bob k1 = kud = 0.0e+00 "));
 
   // Both models: the one with distortion is used, kud → k1, kdu unused.
   const CameraFile both = ParseCameraFile(kVispBoth, "camera.xml");

@@ -187,7 +187,7 @@ Camera ReadCamera(const XMLElement& camera_element, const std::string& source) {
       source + ": ViSP camera" + (camera.name.empty() ? "" : " \"" + camera.name + "\"");
   if (models[1]) {
     const XMLElement& kud = *chosen.values.at("kud");
-    model.distortion[0] = NumberOf(kud, source);
+    model.distortion[0] = NumberOf(kud, source) + 0.0;  // ViSP writes "-0"; + 0.0 makes it 0
     if (!std::isfinite(model.distortion[0])) {
       Fail(source, kud.GetLineNum(), "<kud> is not finite", "give a finite kud");
     }
