@@ -8,7 +8,7 @@ packages=(
   build-essential cmake git pkg-config
   libeigen3-dev libceres-dev
   libopencv-dev libopencv-contrib-dev libapriltag-dev
-  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  libyaml-cpp-dev libtinyxml2-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libglpk-dev
 )
 if [[ "${1:-}" == "--fuzz" ]]; then

@@ -351,7 +351,7 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "Instead of --camera: folder of target images, one per robot pose");
   command->add_option("--target", flags->target, "With --images: target.yaml");
   command->add_option("--intrinsics", flags->intrinsics,
-                      "With --images: camera.yaml (estimated from the images when absent)");
+                      "With --images: camera.yaml or ViSP camera XML (estimated when absent)");
   command->add_option("--pixel-sigma", flags->pixel_sigma,
                       "With --images: pixel noise per axis, px (estimated when absent)");
   command->add_option("--threads", flags->threads,

@@ -122,8 +122,8 @@ void RegisterDetectCommand(CLI::App& app, const Io& io) {
       ->required();
   command->add_option("--target", flags->target, "target.yaml describing the target")->required();
   command->add_option("--intrinsics", flags->intrinsics,
-                      "camera.yaml; estimated from the images when absent and written to "
-                      "<output stem>.camera.yaml");
+                      "camera.yaml or ViSP camera XML; estimated from the images when absent and "
+                      "written to <output stem>.camera.yaml");
   command
       ->add_option("--output", flags->output,
                    "Pose table of T_camera_target (CSV); also writes <output stem>.points.csv")

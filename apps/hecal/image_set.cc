@@ -296,7 +296,7 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
   ImageSet set;
   set.target = io::ReadTargetFile(flags.target);
   set.board = pose::ObjectPoints(set.target);
-  std::optional<pose::CameraModel> given;
+  std::optional<io::CameraFile> given;
   if (!flags.intrinsics.empty()) given = io::ReadCameraFile(flags.intrinsics);
   set.images = ListImages(flags.images);
   io.out << command << ": " << set.images.size() << " image(s) in " << flags.images << ", target "
@@ -307,15 +307,16 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
   }
   CheckSameSize(set.images);
   set.size = set.images.front().size;
-  if (given) CheckIntrinsicsSize(*given, flags.intrinsics, set.size);
+  if (given) CheckIntrinsicsSize(given->camera, flags.intrinsics, set.size);
   ResolveAndMarkUnusable(set.target, &set.images);
   if (CountUsed(set.images) < kMinViews) PrintReport(set.images, io.out);
   CheckEnoughViews(set.images, set.target, flags);
 
   if (given) {
-    set.camera = *given;
+    set.camera = given->camera;
     io.out << "intrinsics: " << flags.intrinsics << " (fx " << set.camera.fx << ", fy "
            << set.camera.fy << ", cx " << set.camera.cx << ", cy " << set.camera.cy << " px)\n";
+    for (const std::string& note : given->notes) io.out << "note: " << note << "\n";
   } else {
     set.estimated = EstimateIntrinsics(set.images, set.board, set.size, io);
     set.camera = set.estimated->camera;

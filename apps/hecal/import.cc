@@ -29,8 +29,13 @@ constexpr const char* kImportFooter =
                 (--intrinsics camera.yaml writes fx, fy, cx, cy and distortion from cali.txt)
   opencv-yaml   FILE.yml                          R_/t_gripper2base, R_/t_target2cam (or T_...)
                                                   lists; --units m|mm (default m)
-  matrix16      ROBOT.txt [CAMERA.txt]            16 numbers per line (row-major 4x4);
-                                                  --units m|mm, --robot-inverse, --camera-inverse
+  matrix16      ROBOT.txt [CAMERA.txt]            16 numbers per line (row-major 4x4), read as
+                                                  T_base_gripper / T_camera_target; --units m|mm
+  visp          DIR | FILE... | 'GLOB'...         ViSP vpPoseVector YAML per station, paired by <i>:
+                                                  [prefix]pose_rPe_<i>.yaml (or pose_fPe_) = rMe,
+                                                  [prefix]pose_cPo_<i>.yaml = cMo, used as is, m
+Any format: --robot-inverse / --camera-inverse when the file holds the inverse of what the format
+  documents (every pose of that side is inverted after the format's convention).
 Output: robot.csv = T_base_gripper, camera.csv = T_camera_target, quaternions qw,qx,qy,qz, an id
   column, a stamp column when the source has stamps, lengths in the source's unit (x_mm for mm),
   '#' lines naming the source, the convention applied and the units, and '# note:' lines for
@@ -225,9 +230,9 @@ void RegisterImportCommand(CLI::App& app, const Io& io) {
   command->add_option("--setup", options->setup,
                       "eye-in-hand|eye-to-hand: for easy_handeye files that do not say");
   command->add_flag("--robot-inverse", options->robot_inverse,
-                    "matrix16: the robot file holds T_gripper_base; invert it");
+                    "the robot file holds the inverse of the format's convention; invert it");
   command->add_flag("--camera-inverse", options->camera_inverse,
-                    "matrix16: the camera file holds T_target_camera; invert it");
+                    "the camera file holds the inverse of the format's convention; invert it");
   command->add_option("--intrinsics", options->intrinsics,
                       "tabb: also write the camera intrinsics of cali.txt (camera.yaml)");
   command->footer(kImportFooter);

@@ -26,8 +26,8 @@ struct ImportCommandOptions {
   std::string camera;               // --camera camera.csv ("" only for robot-only matrix16)
   std::string units;                // --units m|mm (matrix16, opencv-yaml)
   std::string setup;                // --setup eye-in-hand|eye-to-hand (easy_handeye)
-  bool robot_inverse = false;       // --robot-inverse (matrix16)
-  bool camera_inverse = false;      // --camera-inverse (matrix16)
+  bool robot_inverse = false;       // --robot-inverse (any format)
+  bool camera_inverse = false;      // --camera-inverse (any format)
   std::string intrinsics;           // --intrinsics camera.yaml (tabb)
 };
 

@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <filesystem>
+#include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 
 #include "cli.h"
@@ -15,6 +17,7 @@
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/pose_table.h"
+#include "hecal/sim/thesis_protocol.h"
 #include "testing/pose_spread.h"
 
 namespace hecal::cli {
@@ -336,6 +339,121 @@ TEST_F(ImportTest, FailedSecondWriteRestoresTheFirstOutput) {
   EXPECT_EQ(Run({"--format", "moveit", json, "--robot", robot, "--camera", camera}), 2);
   EXPECT_FALSE(fs::exists(robot));
   EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+// A pose as ViSP's vpPoseVector::saveYAML writes it: t, then θu from Eigen's angle-axis, with
+// the stream's default 6 significant digits.
+std::string VispPoseYaml(const Pose& pose) {
+  const Eigen::AngleAxisd angle_axis(pose.linear());
+  const Eigen::Vector3d theta_u = angle_axis.angle() * angle_axis.axis();
+  std::ostringstream text;
+  text << "rows: 6\ncols: 1\ndata: \n";
+  for (int k = 0; k < 3; ++k) text << "  - [" << pose.translation()(k) << "]\n";
+  for (int k = 0; k < 3; ++k) text << "  - [" << theta_u(k) << "]\n";
+  return text.str();
+}
+
+// A simulated eye-in-hand set written as ViSP's files (franka_pose_rPe_<i>.yaml,
+// franka_pose_cPo_<i>.yaml, i = 1..15) in a folder with other files: `hecal import --format visp
+// DIR`, then `hecal calibrate`, recovers the known X = T_gripper_camera and Z = T_base_target.
+TEST_F(ImportTest, VispFolderImportsAndCalibratesToTheKnownX) {
+  std::mt19937_64 rng(17);
+  sim::ProtocolOptions options;
+  options.setup = handeye::Setup::kEyeInHand;
+  options.stations = 15;
+  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.01 * M_PI / 180.0, 0.05e-3};
+  const sim::SimulatedData data = sim::SimulateThesisProtocol(options, noise, noise, rng);
+  fs::create_directories(dir_ / "visp");
+  for (int i = 0; i < options.stations; ++i) {
+    const std::string index = std::to_string(i + 1);
+    Write("visp/franka_pose_rPe_" + index + ".yaml", VispPoseYaml(data.T_base_gripper[i]));
+    Write("visp/franka_pose_cPo_" + index + ".yaml", VispPoseYaml(data.T_camera_target[i]));
+    Write("visp/franka_image-" + index + ".png", "not read");
+  }
+  Write("visp/franka_camera.xml", "<root/>");
+  ASSERT_EQ(
+      Run({"--format", "visp", Path("visp"), "--robot", Path("r.csv"), "--camera", Path("c.csv")}),
+      0)
+      << err_;
+  EXPECT_THAT(out_, HasSubstr("wrote 15 robot poses (T_base_gripper, m)"));
+  const csv_test::Csv csv = csv_test::ReadCsv(Path("r.csv"));
+  EXPECT_THAT(csv.comments[0], HasSubstr("import --format visp"));
+  EXPECT_EQ(csv.Text(9, "id"), "10");  // numeric order: 1, 2, ..., 10, not 1, 10, 11, ...
+
+  std::ostringstream out, err;
+  ASSERT_EQ(RunHecal({"hecal", "calibrate", "--robot", Path("r.csv"), "--camera", Path("c.csv"),
+                      "--setup", "eye-in-hand", "--output", Path("result.json")},
+                     out, err),
+            0)
+      << err.str();
+  const nlohmann::json result = nlohmann::json::parse(io::ReadFile(Path("result.json")));
+  const auto pose_of = [&result](const char* name) {
+    Eigen::Matrix4d M;
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) M(r, c) = result[name]["matrix"][r][c].get<double>();
+    }
+    return Pose(M);
+  };
+  EXPECT_EQ(result["X"]["frame"], "T_gripper_camera");
+  for (const auto& [name, truth] : {std::pair{"X", data.X}, std::pair{"Z", data.Z}}) {
+    SCOPED_TRACE(name);
+    const Pose estimate = pose_of(name);
+    EXPECT_LT(Eigen::AngleAxisd(estimate.linear().transpose() * truth.linear()).angle(),
+              0.02 * M_PI / 180.0);
+    EXPECT_LT((estimate.translation() - truth.translation()).norm(), 0.2e-3);
+  }
+
+  // Robot files that hold T_gripper_base, imported with --robot-inverse: the same robot.csv.
+  fs::create_directories(dir_ / "inverse");
+  for (int i = 0; i < options.stations; ++i) {
+    const std::string index = std::to_string(i);
+    Write("inverse/pose_fPe_" + index + ".yaml", VispPoseYaml(data.T_base_gripper[i].inverse()));
+    Write("inverse/pose_cPo_" + index + ".yaml", VispPoseYaml(data.T_camera_target[i]));
+  }
+  ASSERT_EQ(Run({"--format", "visp", Path("inverse/pose_*.yaml"), "--robot-inverse", "--robot",
+                 Path("r2.csv"), "--camera", Path("c2.csv")}),
+            0)
+      << err_;
+  const io::PoseTable direct = Read("r.csv");
+  const io::PoseTable inverted = Read("r2.csv");
+  ASSERT_EQ(inverted.rows.size(), direct.rows.size());
+  for (size_t i = 0; i < direct.rows.size(); ++i) {
+    EXPECT_LT((inverted.rows[i].pose.translation() - direct.rows[i].pose.translation()).norm(),
+              1e-5);
+  }
+  bool noted = false;
+  for (const std::string& comment : csv_test::ReadCsv(Path("r2.csv")).comments) {
+    noted = noted || comment.find("--robot-inverse") != std::string::npos;
+  }
+  EXPECT_TRUE(noted);
+}
+
+TEST_F(ImportTest, VispErrorsWriteNothing) {
+  fs::create_directories(dir_ / "visp");
+  Write("visp/pose_rPe_1.yaml", VispPoseYaml(Pose::Identity()));
+  Write("visp/pose_cPo_1.yaml", VispPoseYaml(Pose::Identity()));
+  Write("visp/pose_rPe_2.yaml", VispPoseYaml(Pose::Identity()));
+  const std::string robot = Path("robot.csv");
+  const std::string camera = Path("camera.csv");
+  const auto expect_failure = [&](std::vector<std::string> args, const std::string& part) {
+    EXPECT_EQ(Run(std::move(args)), 2) << out_;
+    EXPECT_THAT(err_, StartsWith("hecal: "));
+    EXPECT_THAT(err_, HasSubstr(part));
+    EXPECT_EQ(std::count(err_.begin(), err_.end(), '\n'), 1) << err_;
+    EXPECT_FALSE(fs::exists(robot));
+    EXPECT_FALSE(fs::exists(camera));
+  };
+  expect_failure({"--format", "visp", Path("visp"), "--robot", robot, "--camera", camera},
+                 "pose_rPe_2.yaml: station 2 has no camera pose file (pose_cPo_2.yaml) (fix: add "
+                 "pose_cPo_2.yaml beside it, or remove pose_rPe_2.yaml)");
+  Write("visp/pose_cPo_2.yaml", "rows: 6\ncols: 1\ndata: \n  - [1]\n  - [2]\n");
+  expect_failure({"--format", "visp", Path("visp"), "--robot", robot, "--camera", camera},
+                 "pose_cPo_2.yaml:4: data has 2 rows of 1 value");
+  expect_failure(
+      {"--format", "visp", Path("visp"), "--robot", robot, "--camera", camera, "--units", "mm"},
+      "--units: visp files fix their own length unit (m)");
+  expect_failure({"--format", "visp", Path("visp/*.csv"), "--robot", robot, "--camera", camera},
+                 "matches no file");
 }
 
 }  // namespace

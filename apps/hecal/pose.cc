@@ -91,7 +91,8 @@ double ParsePositive(const std::string& flag, const std::string& text, std::stri
   return value;
 }
 
-pose::CameraModel Camera(const PoseCommandOptions& options) {
+// The camera of --intrinsics (its notes printed to io.out) or of --focal / --principal-point.
+pose::CameraModel Camera(const PoseCommandOptions& options, const Io& io) {
   if (options.intrinsics.empty() == options.focal.empty()) {
     throw InputError("--focal", 0, "give exactly one of --focal and --intrinsics",
                      "--intrinsics camera.yaml for a calibrated camera, or --focal F (px) for "
@@ -102,7 +103,9 @@ pose::CameraModel Camera(const PoseCommandOptions& options) {
       throw InputError("--principal-point", 0, "the principal point comes from --intrinsics",
                        "drop --principal-point");
     }
-    return io::ReadCameraFile(options.intrinsics);
+    const io::CameraFile file = io::ReadCameraFile(options.intrinsics);
+    for (const std::string& note : file.notes) io.out << "note: " << note << "\n";
+    return file.camera;
   }
   pose::CameraModel camera =
       pose::CameraModel::Pinhole(ParsePositive("--focal", options.focal, "the focal length in px"));
@@ -265,7 +268,7 @@ void RunPose(const PoseCommandOptions& options, const Io& io) {
     pose_options.refinement.pixel_sigma =
         ParsePositive("--pixel-sigma", options.pixel_sigma, "the pixel noise σ in px");
   }
-  const pose::CameraModel camera = Camera(options);
+  const pose::CameraModel camera = Camera(options, io);
 
   constexpr std::array<std::string_view, 3> kObjectColumns = {"x", "y", "z"};
   constexpr std::array<std::string_view, 2> kImageColumns = {"u", "v"};
@@ -298,8 +301,10 @@ void RegisterPoseCommand(CLI::App& app, const Io& io) {
                       "Focal length F (px) of a distortion-free pinhole (seed 004's model)");
   command->add_option("--principal-point", options->principal_point,
                       "CX,CY (px) with --focal (default 0,0)");
-  command->add_option("--intrinsics", options->intrinsics,
-                      "camera.yaml (hecal, OpenCV or ROS layout; plumb_bob distortion)");
+  command->add_option(
+      "--intrinsics", options->intrinsics,
+      "camera.yaml (hecal, OpenCV or ROS layout; plumb_bob distortion) or ViSP camera "
+      "XML");
   command->add_option("--method", options->method, "Method (default linear): " + MethodList());
   command->add_option("--pixel-sigma", options->pixel_sigma,
                       "Pixel noise σ (px) for the covariance (default: from the residuals)");

@@ -13,6 +13,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cli_test_util.h"
@@ -311,6 +312,44 @@ TEST_F(PoseCommand, UnitsFlagAppliesToColumnsWithoutSuffix) {
       (PoseOf(result["T_camera_target"], 1e-3).translation() - scene.T_camera_target.translation())
           .norm(),
       1e-9);
+}
+
+// --intrinsics takes ViSP's camera XML (kud is plumb_bob's k1) and camera files without
+// distortion (read as none, with a note): exact pixels of such cameras give back the true pose.
+TEST_F(PoseCommand, VispXmlAndFilesWithoutDistortion) {
+  pose::CameraModel visp = testing::SceneCamera();
+  visp.distortion = {-0.08, 0.0, 0.0, 0.0, 0.0};
+  pose::CameraModel plain = testing::SceneCamera();
+  plain.distortion = {0.0, 0.0, 0.0, 0.0, 0.0};
+  std::ostringstream xml;
+  xml << std::setprecision(17) << "<?xml version=\"1.0\"?>\n<root>\n  <camera>\n"
+      << "    <name>Camera</name>\n    <image_width>" << visp.width << "</image_width>\n"
+      << "    <image_height>" << visp.height << "</image_height>\n    <model>\n"
+      << "      <type>perspectiveProjWithDistortion</type>\n      <px>" << visp.fx << "</px>\n"
+      << "      <py>" << visp.fy << "</py>\n      <u0>" << visp.cx << "</u0>\n      <v0>" << visp.cy
+      << "</v0>\n      <kud>-0.08</kud>\n      <kdu>0.081</kdu>\n    </model>\n"
+      << "  </camera>\n</root>\n";
+  Write("camera.xml", xml.str());
+  Write("plain.yaml", "fx: 1000\nfy: 995\ncx: 641.5\ncy: 478\n");
+  for (const auto& [file, camera, note] :
+       {std::tuple{"camera.xml", visp, "perspectiveProjWithDistortion, read as plumb_bob k1 = kud"},
+        std::tuple{"plain.yaml", plain, "plain.yaml has no distortion: read as no distortion"}}) {
+    SCOPED_TRACE(file);
+    std::mt19937_64 rng(4);
+    const testing::PoseScene scene =
+        testing::RandomScene(rng, 12, testing::SceneShape::kVolume, camera);
+    Write("object.csv", ObjectCsvMm(scene));
+    Write("image.csv", ImageCsv(scene, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, true));
+    const cli_test::Outcome run =
+        Hecal({"pose", "--points", Path("object.csv"), "--image-points", Path("image.csv"),
+               "--intrinsics", Path(file), "--output", Path("pose.json")});
+    ASSERT_EQ(run.code, 0) << run.err;
+    EXPECT_NE(run.out.find("note: "), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(note), std::string::npos) << run.out;
+    const Pose T = PoseOf(json::parse(Read("pose.json"))["T_camera_target"], 1e-3);
+    EXPECT_LT(RotationError(T, scene.T_camera_target), 1e-9);
+    EXPECT_LT((T.translation() - scene.T_camera_target.translation()).norm(), 1e-9);
+  }
 }
 
 }  // namespace

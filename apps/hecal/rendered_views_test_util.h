@@ -79,16 +79,17 @@ inline std::vector<Pose> Views(int count = 6) {
   return views;
 }
 
-// Renders the board seen from T_camera_target into `path` (slight blur and noise, as a real
-// camera; `seed` for the noise).
+// Renders the board seen by `camera` from T_camera_target into `path` (slight blur and noise, as
+// a real camera; `seed` for the noise).
 inline void RenderView(const Pose& T_camera_target, std::uint64_t seed,
-                       const std::filesystem::path& path) {
+                       const std::filesystem::path& path,
+                       const pose::CameraModel& camera = TrueCamera()) {
   vision::RenderOptions options;
   options.blur_sigma = 0.6;
   options.noise_sigma = 1.0;
   options.supersampling = 4;
   options.seed = seed;
-  cv::imwrite(path.string(), vision::RenderTarget(Board(), TrueCamera(), T_camera_target, options));
+  cv::imwrite(path.string(), vision::RenderTarget(Board(), camera, T_camera_target, options));
 }
 
 // Rotation angle between two poses (deg) and translation distance (mm).

@@ -7,6 +7,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_types.h"
 #include "import_yaml.h"
+#include "visp_camera_xml.h"
 #include "yaml_map.h"
 
 namespace hecal::io {
@@ -17,7 +18,7 @@ using import_internal::LineOf;
 
 constexpr const char* kLayouts =
     "write fx, fy, cx, cy and distortion (hecal), or camera_matrix and distortion_coefficients "
-    "(OpenCV FileStorage / ROS camera_info); see docs/targets.md";
+    "(OpenCV FileStorage / ROS camera_info), or give a ViSP camera XML; see docs/targets.md";
 constexpr long kLargestImageSide = 1 << 20;  // pixels; bounds the numbers, not real cameras
 
 YAML::Node Require(const internal::YamlMap& entries, const std::string& key,
@@ -120,7 +121,12 @@ void CheckIntrinsics(const pose::CameraModel& camera, const IntrinsicLines& line
   }
 }
 
-pose::CameraModel ParseHecal(const internal::YamlMap& entries, const std::string& source) {
+std::string NoDistortionNote(const std::string& source, const std::string& key) {
+  return source + " has no " + key + ": read as no distortion";
+}
+
+pose::CameraModel ParseHecal(const internal::YamlMap& entries, const std::string& source,
+                             std::vector<std::string>* notes) {
   static constexpr std::string_view kKeys[] = {"fx",    "fy",     "cx",        "cy",
                                                "width", "height", "distortion"};
   internal::RejectUnknownKeys(entries, kKeys, source, "");
@@ -140,10 +146,12 @@ pose::CameraModel ParseHecal(const internal::YamlMap& entries, const std::string
   CheckIntrinsics(camera, lines, source);
   ReadImageSize(entries, "width", "height", source, &camera);
 
-  const YAML::Node distortion =
-      Require(entries, "distortion", source, 0,
-              "add distortion: {model: plumb_bob, coefficients: [k1, k2, p1, p2, k3]} (all 0 "
-              "for undistorted images)");
+  const std::optional<YAML::Node> found = entries.Find("distortion");
+  if (!found) {
+    notes->push_back(NoDistortionNote(source, "distortion"));
+    return camera;
+  }
+  const YAML::Node& distortion = *found;
   if (!distortion.IsMap()) {
     Fail(source, entries.Line("distortion"), "distortion is not a map",
          "write distortion: {model: plumb_bob, coefficients: [k1, k2, p1, p2, k3]}");
@@ -160,7 +168,8 @@ pose::CameraModel ParseHecal(const internal::YamlMap& entries, const std::string
   return camera;
 }
 
-pose::CameraModel ParseMatrixLayout(const internal::YamlMap& entries, const std::string& source) {
+pose::CameraModel ParseMatrixLayout(const internal::YamlMap& entries, const std::string& source,
+                                    std::vector<std::string>* notes) {
   const import_internal::Matrix k =
       import_internal::ReadMatrix(*entries.Find("camera_matrix"), source, "camera_matrix");
   if (k.values.size() != 9 || !((k.rows == 3 && k.cols == 3) || k.rows == 1)) {
@@ -187,14 +196,16 @@ pose::CameraModel ParseMatrixLayout(const internal::YamlMap& entries, const std:
   if (const std::optional<YAML::Node> model = entries.Find("distortion_model")) {
     RequirePlumbBob(*model, source, "distortion_model");
   }
-  camera.distortion = PlumbBob(
-      Require(entries, "distortion_coefficients", source, k.line,
-              "add distortion_coefficients (k1, k2, p1, p2, k3; zeros for undistorted images)"),
-      source, "distortion_coefficients");
+  if (const std::optional<YAML::Node> coefficients = entries.Find("distortion_coefficients")) {
+    camera.distortion = PlumbBob(*coefficients, source, "distortion_coefficients");
+  } else {
+    notes->push_back(NoDistortionNote(source, "distortion_coefficients"));
+  }
   return camera;
 }
 
-pose::CameraModel Parse(const YAML::Node& root, const std::string& source) {
+pose::CameraModel ParseYaml(const YAML::Node& root, const std::string& source,
+                            std::vector<std::string>* notes) {
   if (!root.IsDefined() || root.IsNull()) Fail(source, 0, "the camera file is empty", kLayouts);
   if (!root.IsMap()) {
     Fail(source, LineOf(root), "the camera file is not a map of 'key: value' lines", kLayouts);
@@ -209,24 +220,40 @@ pose::CameraModel Parse(const YAML::Node& root, const std::string& source) {
              "keep either camera_matrix + distortion_coefficients or fx, fy, cx, cy + distortion");
       }
     }
-    return ParseMatrixLayout(entries, source);
+    return ParseMatrixLayout(entries, source, notes);
   }
   if (!entries.Has("fx") && !entries.Has("fy")) {
     Fail(source, 0, "the camera file has neither fx, fy (hecal) nor camera_matrix (OpenCV, ROS)",
          kLayouts);
   }
-  return ParseHecal(entries, source);
+  return ParseHecal(entries, source, notes);
+}
+
+// ViSP's XML starts with "<?xml" or "<root>"; YAML cannot start with '<' as a camera file.
+bool LooksLikeXml(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  const size_t first = text.find_first_not_of(" \t\r\n");
+  return first != std::string_view::npos && text[first] == '<';
 }
 
 }  // namespace
 
-pose::CameraModel ParseCameraYaml(std::string_view text, const std::string& source) {
-  return import_internal::GuardYaml(
-      source, [&] { return Parse(import_internal::LoadYaml(text, source), source); });
+CameraFile ParseCameraFile(std::string_view text, const std::string& source) {
+  if (LooksLikeXml(text)) {
+    const internal::VispCameraXml xml = internal::ParseVispCameraXml(text, source);
+    CheckIntrinsics(xml.file.camera,
+                    IntrinsicLines{xml.lines[0], xml.lines[1], xml.lines[2], xml.lines[3]}, source);
+    return xml.file;
+  }
+  CameraFile file;
+  file.camera = import_internal::GuardYaml(source, [&] {
+    return ParseYaml(import_internal::LoadYaml(text, source), source, &file.notes);
+  });
+  return file;
 }
 
-pose::CameraModel ReadCameraFile(const std::string& path) {
-  return ParseCameraYaml(ReadFile(path), path);
+CameraFile ReadCameraFile(const std::string& path) {
+  return ParseCameraFile(ReadFile(path), path);
 }
 
 std::string FormatCameraYaml(const pose::CameraModel& camera,

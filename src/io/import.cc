@@ -11,6 +11,7 @@
 #include "hecal/io/import_moveit.h"
 #include "hecal/io/import_opencv_yaml.h"
 #include "hecal/io/import_tabb.h"
+#include "hecal/io/import_visp.h"
 #include "import_internal.h"
 
 namespace hecal::io {
@@ -27,7 +28,7 @@ constexpr FormatName kFormats[] = {
     {ImportFormat::kMoveit, "moveit"},       {ImportFormat::kEasyHandeye, "easy_handeye"},
     {ImportFormat::kCamodocal, "camodocal"}, {ImportFormat::kEthz, "ethz"},
     {ImportFormat::kTabb, "tabb"},           {ImportFormat::kOpenCvYaml, "opencv-yaml"},
-    {ImportFormat::kMatrix16, "matrix16"},
+    {ImportFormat::kMatrix16, "matrix16"},   {ImportFormat::kVisp, "visp"},
 };
 
 std::string_view InputsUsage(ImportFormat format) {
@@ -46,6 +47,8 @@ std::string_view InputsUsage(ImportFormat format) {
       return "one FileStorage YAML file";
     case ImportFormat::kMatrix16:
       return "the robot matrix file, optionally followed by the camera matrix file";
+    case ImportFormat::kVisp:
+      return "directories, pose_rPe_<i>.yaml / pose_cPo_<i>.yaml files or glob patterns";
   }
   return "";
 }
@@ -78,41 +81,21 @@ void CheckOptions(ImportFormat format, const ImportOptions& options) {
     Fail("--setup", 0, "does not apply to " + name + " (only easy_handeye needs it)",
          "drop --setup");
   }
-  if ((options.robot_inverse || options.camera_inverse) && format != ImportFormat::kMatrix16) {
-    Fail(options.robot_inverse ? "--robot-inverse" : "--camera-inverse", 0,
-         "does not apply to " + name + ", whose convention is fixed (see docs/import-formats.md)",
-         "drop the flag (it is for matrix16 files)");
-  }
 }
 
-}  // namespace
-
-std::optional<ImportFormat> ParseImportFormat(std::string_view text) {
-  for (const FormatName& entry : kFormats) {
-    if (entry.name == text) return entry.format;
-  }
-  return std::nullopt;
+// --robot-inverse / --camera-inverse: every pose of that side inverted, after the format's own
+// convention, with a header line saying so.
+void InvertSide(const std::string& flag, const std::string& frame, PoseTable* table,
+                std::vector<std::string>* notes) {
+  for (PoseRow& row : table->rows) row.pose = row.pose.inverse();
+  notes->push_back("convention: " + flag +
+                   ": the file holds the inverse of the convention above, so every pose was "
+                   "then INVERTED to " +
+                   frame);
 }
 
-std::string_view ImportFormatName(ImportFormat format) {
-  for (const FormatName& entry : kFormats) {
-    if (entry.format == format) return entry.name;
-  }
-  return "";
-}
-
-std::string ImportFormatList() {
-  std::string list;
-  for (const FormatName& entry : kFormats) {
-    if (!list.empty()) list += '|';
-    list += entry.name;
-  }
-  return list;
-}
-
-ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& inputs,
-                          const ImportOptions& options) {
-  CheckOptions(format, options);
+ImportedPoses Read(ImportFormat format, const std::vector<std::string>& inputs,
+                   const ImportOptions& options) {
   const size_t count = inputs.size();
   switch (format) {
     case ImportFormat::kMoveit:
@@ -158,15 +141,59 @@ ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& i
       }
       Matrix16Options matrix_options;
       matrix_options.unit = options.units.value_or(LengthUnit::kMetre);
-      matrix_options.robot_inverse = options.robot_inverse;
-      matrix_options.camera_inverse = options.camera_inverse;
       const std::string robot = ReadFile(inputs[0]);
       if (count == 1) return ParseMatrix16(robot, inputs[0], std::nullopt, "", matrix_options);
       const std::string camera = ReadFile(inputs[1]);
       return ParseMatrix16(robot, inputs[0], std::string_view(camera), inputs[1], matrix_options);
     }
+    case ImportFormat::kVisp: {
+      if (count == 0) WrongInputCount(format, count);
+      std::vector<VispPoseFile> files;
+      for (const std::string& path : ListVispPoseFiles(inputs)) {
+        files.push_back({path, ReadFile(path)});
+      }
+      return ParseVispPoseFiles(files);
+    }
   }
   Fail("--format", 0, "unknown import format", "use one of " + ImportFormatList());
+}
+
+}  // namespace
+
+std::optional<ImportFormat> ParseImportFormat(std::string_view text) {
+  for (const FormatName& entry : kFormats) {
+    if (entry.name == text) return entry.format;
+  }
+  return std::nullopt;
+}
+
+std::string_view ImportFormatName(ImportFormat format) {
+  for (const FormatName& entry : kFormats) {
+    if (entry.format == format) return entry.name;
+  }
+  return "";
+}
+
+std::string ImportFormatList() {
+  std::string list;
+  for (const FormatName& entry : kFormats) {
+    if (!list.empty()) list += '|';
+    list += entry.name;
+  }
+  return list;
+}
+
+ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& inputs,
+                          const ImportOptions& options) {
+  CheckOptions(format, options);
+  ImportedPoses poses = Read(format, inputs, options);
+  if (options.robot_inverse) {
+    InvertSide("--robot-inverse", "T_base_gripper", &poses.robot, &poses.robot_notes);
+  }
+  if (options.camera_inverse && poses.camera) {
+    InvertSide("--camera-inverse", "T_camera_target", &*poses.camera, &poses.camera_notes);
+  }
+  return poses;
 }
 
 }  // namespace hecal::io

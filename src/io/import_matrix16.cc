@@ -11,8 +11,7 @@ using import_internal::Fail;
 using import_internal::Number;
 using import_internal::Origin;
 
-PoseTable ReadMatrices(std::string_view text, const std::string& source, LengthUnit unit,
-                       bool invert) {
+PoseTable ReadMatrices(std::string_view text, const std::string& source, LengthUnit unit) {
   PoseTable table = import_internal::MakeTable(source, unit);
   RotationInput rotations(source);
   const double metres_per_unit = MetresPer(unit);
@@ -35,10 +34,9 @@ PoseTable ReadMatrices(std::string_view text, const std::string& source, LengthU
       if (k < 12 && k % 4 != 3) rounding = std::max(rounding, numbers[k].rounding);
     }
     PoseRow row;
-    const Pose pose = import_internal::PoseFromRowMajor(
+    row.pose = import_internal::PoseFromRowMajor(
         values, static_cast<int>(numbers.size()), rounding, metres_per_unit,
         Origin{source, line.number, "pose " + std::to_string(table.rows.size())}, &rotations);
-    row.pose = invert ? pose.inverse() : pose;
     row.id = std::to_string(table.rows.size());
     row.line = line.number;
     table.rows.push_back(std::move(row));
@@ -51,12 +49,9 @@ PoseTable ReadMatrices(std::string_view text, const std::string& source, LengthU
   return table;
 }
 
-std::string Convention(bool inverse, const std::string& flag, const std::string& holds,
-                       const std::string& inverse_holds) {
-  return inverse ? "convention: " + flag + ": the file holds " + inverse_holds +
-                       "; each pose was INVERTED to " + holds
-                 : "convention: the file holds " + holds +
-                       " (hecal's default for matrix16), used as is (no inverse)";
+std::string Convention(const std::string& holds) {
+  return "convention: the file is read as " + holds +
+         " (hecal's default for matrix16; the file does not say), used as is (no inverse)";
 }
 
 }  // namespace
@@ -65,9 +60,9 @@ ImportedPoses ParseMatrix16(std::string_view robot_text, const std::string& robo
                             std::optional<std::string_view> camera_text,
                             const std::string& camera_source, const Matrix16Options& options) {
   ImportedPoses result;
-  result.robot = ReadMatrices(robot_text, robot_source, options.unit, options.robot_inverse);
+  result.robot = ReadMatrices(robot_text, robot_source, options.unit);
   if (camera_text) {
-    result.camera = ReadMatrices(*camera_text, camera_source, options.unit, options.camera_inverse);
+    result.camera = ReadMatrices(*camera_text, camera_source, options.unit);
     if (result.camera->rows.size() != result.robot.rows.size()) {
       Fail(robot_source, 0,
            "has " + std::to_string(result.robot.rows.size()) + " poses but " + camera_source +
@@ -80,19 +75,17 @@ ImportedPoses ParseMatrix16(std::string_view robot_text, const std::string& robo
       options.unit, options.unit == LengthUnit::kMetre ? "the default; --units mm for millimetres"
                                                        : "from --units");
   const std::string ids = "id: 0-based pose index (line k of the robot and camera files)";
-  result.robot_notes = {
-      format,
-      "source: " + robot_source,
-      import_internal::RobotFrameNote(),
-      Convention(options.robot_inverse, "--robot-inverse", "T_base_gripper", "T_gripper_base"),
-      units,
-      ids};
+  result.robot_notes = {format,
+                        "source: " + robot_source,
+                        import_internal::RobotFrameNote(),
+                        Convention("T_base_gripper"),
+                        units,
+                        ids};
   if (camera_text) {
     result.camera_notes = {format,
                            "source: " + camera_source,
                            import_internal::CameraFrameNote(),
-                           Convention(options.camera_inverse, "--camera-inverse", "T_camera_target",
-                                      "T_target_camera"),
+                           Convention("T_camera_target"),
                            units,
                            ids};
   }

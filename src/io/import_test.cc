@@ -11,12 +11,15 @@ namespace {
 using ::testing::HasSubstr;
 
 const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
+const std::string kFixtures = std::string(HECAL_SOURCE_DIR) + "/src/io/testdata/";
 
 TEST(Import, FormatNames) {
-  EXPECT_EQ(ImportFormatList(), "moveit|easy_handeye|camodocal|ethz|tabb|opencv-yaml|matrix16");
-  for (ImportFormat format : {ImportFormat::kMoveit, ImportFormat::kEasyHandeye,
-                              ImportFormat::kCamodocal, ImportFormat::kEthz, ImportFormat::kTabb,
-                              ImportFormat::kOpenCvYaml, ImportFormat::kMatrix16}) {
+  EXPECT_EQ(ImportFormatList(),
+            "moveit|easy_handeye|camodocal|ethz|tabb|opencv-yaml|matrix16|visp");
+  for (ImportFormat format :
+       {ImportFormat::kMoveit, ImportFormat::kEasyHandeye, ImportFormat::kCamodocal,
+        ImportFormat::kEthz, ImportFormat::kTabb, ImportFormat::kOpenCvYaml,
+        ImportFormat::kMatrix16, ImportFormat::kVisp}) {
     EXPECT_EQ(ParseImportFormat(ImportFormatName(format)), format);
   }
   EXPECT_FALSE(ParseImportFormat("opencv").has_value());
@@ -64,14 +67,67 @@ TEST(Import, FlagsThatDoNotApplyAreRejected) {
   ImportOptions setup;
   setup.setup = ImportSetup::kEyeInHand;
   EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {json}, setup), HasSubstr("--setup"));
-  ImportOptions inverse;
-  inverse.robot_inverse = true;
-  EXPECT_THAT(ErrorOf(ImportFormat::kCamodocal, {json}, inverse), HasSubstr("--robot-inverse"));
   ImportOptions camera_inverse;
   camera_inverse.camera_inverse = true;
   EXPECT_THAT(
       ErrorOf(ImportFormat::kMatrix16, {kData + "rwhe-kuka2/RobotPosesVec.txt"}, camera_inverse),
       HasSubstr("--camera-inverse: given without a camera matrix file"));
+}
+
+// --robot-inverse / --camera-inverse apply to every format, after its own convention: each side
+// comes out as the exact inverse of the plain import, with a header line saying so.
+TEST(Import, InverseFlagsApplyToEveryFormat) {
+  const std::string ethz = kData + "ethz-robot-arm/robot_arm_complete_bag_color_and_ir_";
+  const std::string tabb = kData + "tabb-rwhe-dataset1";
+  const std::string kuka = kData + "rwhe-kuka2/RobotPosesVec.txt";
+  const std::pair<ImportFormat, std::vector<std::string>> sources[] = {
+      {ImportFormat::kMoveit, {kData + "moveit-calibration/pose_samples.json"}},
+      {ImportFormat::kEasyHandeye, {kFixtures + "easy_handeye_eye_on_base.samples"}},
+      {ImportFormat::kCamodocal, {kData + "camodocal-artag/TransformPairsInput.yml"}},
+      {ImportFormat::kEthz, {ethz + "base_link_sr300_hinge.csv", ethz + "target_ir.csv"}},
+      {ImportFormat::kTabb, {tabb}},
+      {ImportFormat::kOpenCvYaml, {kFixtures + "opencv_handeye_moveit.yml"}},
+      {ImportFormat::kMatrix16, {kuka, kuka}},  // the robot file as a camera file too
+      {ImportFormat::kVisp, {kFixtures + "visp"}},
+  };
+  for (const auto& [format, inputs] : sources) {
+    SCOPED_TRACE(std::string(ImportFormatName(format)));
+    const ImportedPoses plain = ImportFiles(format, inputs, {});
+    ImportOptions both;
+    both.robot_inverse = true;
+    both.camera_inverse = true;
+    const ImportedPoses inverted = ImportFiles(format, inputs, both);
+    ASSERT_EQ(inverted.robot.rows.size(), plain.robot.rows.size());
+    ASSERT_EQ(inverted.camera->rows.size(), plain.camera->rows.size());
+    for (size_t i = 0; i < plain.robot.rows.size(); ++i) {
+      EXPECT_TRUE((inverted.robot.rows[i].pose * plain.robot.rows[i].pose)
+                      .isApprox(Pose::Identity(), 1e-12));
+    }
+    for (size_t i = 0; i < plain.camera->rows.size(); ++i) {
+      EXPECT_TRUE((inverted.camera->rows[i].pose * plain.camera->rows[i].pose)
+                      .isApprox(Pose::Identity(), 1e-12));
+    }
+    EXPECT_EQ(inverted.robot_notes.size(), plain.robot_notes.size() + 1);
+    EXPECT_THAT(inverted.robot_notes.back(), HasSubstr("--robot-inverse"));
+    EXPECT_THAT(inverted.robot_notes.back(), HasSubstr("INVERTED to T_base_gripper"));
+    EXPECT_THAT(inverted.camera_notes.back(), HasSubstr("INVERTED to T_camera_target"));
+  }
+  // Only one side: the other is untouched.
+  ImportOptions robot_only;
+  robot_only.robot_inverse = true;
+  const std::vector<std::string> moveit = {kData + "moveit-calibration/pose_samples.json"};
+  const ImportedPoses plain = ImportFiles(ImportFormat::kMoveit, moveit, {});
+  const ImportedPoses inverted = ImportFiles(ImportFormat::kMoveit, moveit, robot_only);
+  EXPECT_TRUE(inverted.camera->rows[7].pose.isApprox(plain.camera->rows[7].pose, 0.0));
+  EXPECT_EQ(inverted.camera_notes, plain.camera_notes);
+  // The kuka2 flange read as T_gripper_base lands more than 1 m from where it is.
+  const std::vector<std::string> kuka_only = {kData + "rwhe-kuka2/RobotPosesVec.txt"};
+  EXPECT_GT((ImportFiles(ImportFormat::kMatrix16, kuka_only, robot_only)
+                 .robot.rows[0]
+                 .pose.translation() -
+             ImportFiles(ImportFormat::kMatrix16, kuka_only, {}).robot.rows[0].pose.translation())
+                .norm(),
+            1.0);
 }
 
 TEST(Import, EveryRealDataSetImports) {

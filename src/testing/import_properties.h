@@ -93,10 +93,7 @@ inline void RunImportProperty(ImportReader reader, unsigned char options, std::s
       case ImportReader::kMatrix16: {
         io::Matrix16Options matrix;
         matrix.unit = options % 2 ? io::LengthUnit::kMillimetre : io::LengthUnit::kMetre;
-        matrix.robot_inverse = (options / 2) % 2;
-        matrix.camera_inverse = (options / 4) % 2;
         if (split == std::string_view::npos) {
-          matrix.camera_inverse = false;
           CheckImported(io::ParseMatrix16(first, "robot.txt", std::nullopt, "", matrix));
         } else {
           CheckImported(io::ParseMatrix16(first, "robot.txt", second, "camera.txt", matrix));

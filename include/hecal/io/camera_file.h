@@ -1,6 +1,9 @@
-// camera.yaml ↔ pose::CameraModel (DESIGN.md §4.1; examples in docs/targets.md).
+// camera.yaml (or ViSP camera XML) ↔ pose::CameraModel (DESIGN.md §4.1; examples in
+// docs/targets.md).
 //
-// Three layouts are read, told apart by their keys:
+// Four layouts are read. A file whose first non-blank character is '<' (<?xml ...?> or <root>)
+// is ViSP's camera XML, whatever its extension; otherwise it is YAML, and the YAML layouts are
+// told apart by their keys:
 //   hecal   fx, fy, cx, cy, optional width, height, and
 //           distortion: {model: plumb_bob, coefficients: [k1, k2, p1, p2, k3]}.
 //           Other keys are rejected (with a "did you mean" suggestion).
@@ -12,8 +15,14 @@
 //           distortion_coefficients as {rows, cols, data} maps, distortion_model: plumb_bob,
 //           image_width, image_height; rectification_matrix, projection_matrix, camera_name
 //           and other keys are ignored.
-// A file with camera_matrix is read as OpenCV / ROS (the same reader: distortion_model, when
-// present, must be plumb_bob); otherwise as hecal's layout.
+//   ViSP    vpXmlParserCamera XML (src/io/visp_camera_xml.h: the layout, the choice of model and
+//           kud → k1).
+// A YAML file with camera_matrix is read as OpenCV / ROS (the same reader: distortion_model,
+// when present, must be plumb_bob); otherwise as hecal's layout.
+//
+// Missing distortion: a hecal file without `distortion`, or an OpenCV / ROS file without
+// distortion_coefficients, is read as no distortion (all coefficients 0), and CameraFile::notes
+// says so ("camera.yaml has no distortion: read as no distortion"); the commands print the notes.
 //
 // Checks: fx, fy > 0 and finite; cx, cy and the coefficients finite; the camera matrix exactly
 // [fx 0 cx; 0 fy cy; 0 0 1] (hecal's model has no skew); width and height whole numbers ≥ 1,
@@ -31,10 +40,17 @@
 
 namespace hecal::io {
 
-pose::CameraModel ReadCameraFile(const std::string& path);
+// A camera file as read: the model, and notes on how it was read (missing distortion, the ViSP
+// model chosen), one line each, for the command's printout.
+struct CameraFile {
+  pose::CameraModel camera;
+  std::vector<std::string> notes;
+};
 
-// The same from text; `source` names it in errors.
-pose::CameraModel ParseCameraYaml(std::string_view text, const std::string& source);
+CameraFile ReadCameraFile(const std::string& path);
+
+// The same from text (any of the four layouts); `source` names it in errors and notes.
+CameraFile ParseCameraFile(std::string_view text, const std::string& source);
 
 // hecal's layout, preceded by `comments` as '#' lines; numbers are printed to round-trip exactly.
 // width and height are written when both are known (> 0). The one camera.yaml writer: it is

@@ -9,8 +9,12 @@
 //   ethz          ROBOT.csv CAMERA.csv (two streams)    camera inverted (T_W_E → T_E_W), m, stamps
 //   tabb          robot_cali.txt cali.txt | DIR         robot inverted (B_i = T_gripper_base), mm
 //   opencv-yaml   FILE.yml (calibrateHandEye arrays)    by key name (…2gripper / cam2… inverted)
-//   matrix16      ROBOT.txt [CAMERA.txt]                none unless
-//   --robot-inverse/--camera-inverse
+//   matrix16      ROBOT.txt [CAMERA.txt]                none (T_base_gripper, T_camera_target)
+//   visp          DIRs | pose_*_<i>.yaml files, globs   none (rPe/fPe = rMe, cPo = cMo), m
+//
+// --robot-inverse / --camera-inverse apply to every format: the file holds the inverse of what
+// the format documents, so after the format's own convention every pose of that side is
+// inverted once more (and a header line says so).
 //
 // ImportFiles reads the files and runs the reader. Rotations follow the rule every pose reader
 // shares (rotation_input.h): nearly orthonormal matrices are projected onto SO(3) and nearly unit
@@ -33,12 +37,21 @@
 
 namespace hecal::io {
 
-enum class ImportFormat { kMoveit, kEasyHandeye, kCamodocal, kEthz, kTabb, kOpenCvYaml, kMatrix16 };
+enum class ImportFormat {
+  kMoveit,
+  kEasyHandeye,
+  kCamodocal,
+  kEthz,
+  kTabb,
+  kOpenCvYaml,
+  kMatrix16,
+  kVisp
+};
 
-// "moveit" | "easy_handeye" | "camodocal" | "ethz" | "tabb" | "opencv-yaml" | "matrix16".
+// "moveit" | "easy_handeye" | "camodocal" | "ethz" | "tabb" | "opencv-yaml" | "matrix16" | "visp".
 std::optional<ImportFormat> ParseImportFormat(std::string_view text);
 std::string_view ImportFormatName(ImportFormat format);
-// "moveit|easy_handeye|camodocal|ethz|tabb|opencv-yaml|matrix16", for help and messages.
+// "moveit|easy_handeye|camodocal|ethz|tabb|opencv-yaml|matrix16|visp", for help and messages.
 std::string ImportFormatList();
 
 struct ImportOptions {
@@ -46,7 +59,9 @@ struct ImportOptions {
   std::optional<LengthUnit> units;
   // --setup: easy_handeye files that do not say eye_in_hand / eye_on_base.
   std::optional<ImportSetup> setup;
-  // --robot-inverse / --camera-inverse: matrix16 files that hold the inverse poses.
+  // --robot-inverse / --camera-inverse, any format: the robot (camera) file holds the inverse of
+  // what the format documents; every robot (camera) pose is inverted after the format's own
+  // convention. --camera-inverse needs a camera side (not a robot-only matrix16 import).
   bool robot_inverse = false;
   bool camera_inverse = false;
 };
@@ -54,7 +69,8 @@ struct ImportOptions {
 // Reads `inputs` (paths; see the table above for how many) in `format`. Options that do not apply
 // to the format are rejected (InputError naming the flag), so a flag is never silently ignored.
 // For tabb, `inputs` is either the two files (robot_cali.txt first) or one directory holding
-// robot_cali.txt and cali.txt.
+// robot_cali.txt and cali.txt. For visp, any number of directories, files and glob patterns
+// (ListVispPoseFiles in import_visp.h).
 ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& inputs,
                           const ImportOptions& options);
 

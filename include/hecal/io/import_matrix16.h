@@ -5,10 +5,10 @@
 //
 // The file does not say what it holds, so the defaults are hecal's inputs: the robot file holds
 // T_base_gripper and the camera file T_camera_target, in `unit` (the --units flag, default
-// metres). robot_inverse / camera_inverse (--robot-inverse / --camera-inverse) say the file holds
-// the inverse (T_gripper_base / T_target_camera); hecal then inverts every pose. The camera file
-// is optional; when given, both files must have the same number of poses. Ids are the 0-based
-// pose index (line k of both files is station k).
+// metres). Files that hold the inverse (T_gripper_base / T_target_camera) are imported with
+// --robot-inverse / --camera-inverse, which ImportFiles (import.h) applies to every format. The
+// camera file is optional; when given, both files must have the same number of poses. Ids are
+// the 0-based pose index (line k of both files is station k).
 #pragma once
 
 #include <optional>
@@ -22,8 +22,6 @@ namespace hecal::io {
 
 struct Matrix16Options {
   LengthUnit unit = LengthUnit::kMetre;
-  bool robot_inverse = false;
-  bool camera_inverse = false;
 };
 
 // `camera_text` nullopt: robot poses only (ImportedPoses::camera stays empty).
