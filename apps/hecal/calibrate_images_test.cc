@@ -388,6 +388,13 @@ TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
   std::vector<std::string> no_intrinsics = args;
   no_intrinsics[6] = Path("missing.yaml");
   refuses(no_intrinsics, "missing.yaml");
+  // Intrinsics that do not fit the images (vision/intrinsics_fit.h): fx, fy 10× too large.
+  pose::CameraModel focal = rendered_views::TrueCamera();
+  focal.fx *= 10.0;
+  focal.fy *= 10.0;
+  std::vector<std::string> wrong_focal = args;
+  wrong_focal[6] = Write("focal.yaml", rendered_views::CameraYaml(focal));
+  refuses(wrong_focal, "focal.yaml: the intrinsics do not fit the images");
   std::vector<std::string> bad_sigma = args;
   bad_sigma.insert(bad_sigma.end(), {"--pixel-sigma", "-1"});
   refuses(bad_sigma, "--pixel-sigma");
