@@ -82,11 +82,10 @@ std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& 
   for (const ImageRecord& image : set.images) {
     const auto match = rows.find(image.id());
     if (match == rows.end()) {
-      throw InputError(
-          robot.source, 0,
-          "no row with id '" + image.id() + "' for the image " + image.path.filename().string(),
-          "add the robot pose of that image with id = its file stem, remove the "
-          "image, or drop the id column to pair by sorted file name");
+      throw InputError(robot.source, 0,
+                       "no row with id '" + image.id() + "' for the image " + image.name,
+                       "add the robot pose of that image with id '" + image.id() +
+                           "', remove the image, or drop the id column to pair by sorted name");
     }
     poses.push_back(match->second->pose);
     rows.erase(match);

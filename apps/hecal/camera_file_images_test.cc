@@ -74,7 +74,7 @@ class CameraFileImagesTest : public cli_test::CliTest {
     for (int i = 0; i < kViews; ++i) {
       rendered_views::RenderView(views[static_cast<size_t>(i)], 200 + i,
                                  RenderDir() / ("view_0" + std::to_string(i) + ".png"),
-                                 KudCamera());
+                                 rendered_views::Board(), KudCamera());
     }
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }

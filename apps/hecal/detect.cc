@@ -64,8 +64,9 @@ void CheckOutputDirectory(const std::string& output) {
 
 void RunDetect(const DetectFlags& flags, const Io& io) {
   CheckOutputDirectory(flags.output);
-  const ImageSet set = DetectImageSet({flags.images, flags.target, flags.intrinsics, flags.threads},
-                                      "hecal detect", io);
+  const ImageSet set = DetectImageSet(
+      {flags.images, flags.target, flags.intrinsics, flags.threads, ImageUse::kPoses},
+      "hecal detect", io);
 
   // Every file's text first, then the writes, the pose table last.
   const std::string stem = OutputStem(flags.output);
@@ -80,7 +81,7 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
   }
   io::PoseWriteOptions write;
   write.comments = {
-      "hecal detect: T_camera_target of each image (id = image file stem), metres",
+      "hecal detect: T_camera_target of each image (id = image file stem or sub-folder), metres",
       "images: " + flags.images + "; target: " + flags.target + " (" + Describe(set.target) + ")",
       "intrinsics: " + (set.estimated ? "estimated from the images, " + stem + ".camera.yaml"
                                       : flags.intrinsics)};
@@ -118,12 +119,13 @@ void RegisterDetectCommand(CLI::App& app, const Io& io) {
       "detect", "Camera poses T_camera_target from images of a target (and the intrinsics)");
   command
       ->add_option("--images", flags->images,
-                   "Folder of images (png, jpg, jpeg, bmp, tif, tiff), taken in file-name order")
+                   "Folder of images (png, jpg, jpeg, bmp, tif, tiff), taken in file-name "
+                   "order; or of sub-folders with one image each (station id = sub-folder)")
       ->required();
   command->add_option("--target", flags->target, "target.yaml describing the target")->required();
   command->add_option("--intrinsics", flags->intrinsics,
-                      "camera.yaml or ViSP camera XML; estimated from the images when absent and "
-                      "written to <output stem>.camera.yaml");
+                      "camera.yaml or ViSP camera XML (then one image is enough); estimated from "
+                      "at least 3 images when absent and written to <output stem>.camera.yaml");
   command
       ->add_option("--output", flags->output,
                    "Pose table of T_camera_target (CSV); also writes <output stem>.points.csv")

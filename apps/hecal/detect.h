@@ -3,9 +3,11 @@
 // Camera poses T_camera_target from images of a calibration target, for `hecal calibrate`.
 //
 // Steps 1–5 (images, detection, intrinsics, poses, per-image report) are the image front end of
-// image_set.h, shared with `hecal calibrate --images`; then
+// image_set.h, shared with `hecal calibrate --images`. With --intrinsics one usable image is
+// enough (a pose needs no more); without, 3 (estimating the intrinsics needs them). Then
 //   6. Files (metres, written only when everything succeeded, each atomically):
-//      <output>                  pose table (io/pose_table.h): id (= image file stem),
+//      <output>                  pose table (io/pose_table.h): id (= the station: the image's
+//                                file stem, or its sub-folder's name),
 //                                x,y,z,qw,qx,qy,qz of T_camera_target, '#' lines saying how
 //      <output stem>.points.csv  id,point_id,u,v: the detected pixels of every used image
 //                                (point_id = the pose::ObjectPoints id)

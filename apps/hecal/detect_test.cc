@@ -1,7 +1,9 @@
 // `hecal detect` end to end on synthetic images rendered (vision/render.h) with a known camera at
-// known poses: the poses in camera.csv against the truth with given intrinsics, the estimated
-// intrinsics (camera.yaml) against the true camera without them, the points file against the
-// projected corners, the report; and bad input (exit 2, the file named, nothing written).
+// known poses: the poses in camera.csv against the truth with given intrinsics (also from one
+// image, from one sub-folder per station, and of a single AprilTag), the estimated intrinsics
+// (camera.yaml) against the true camera without them, the points file against the projected
+// corners, the report; intrinsics that do not fit the images (wrong fx, cx/cy swapped, another
+// resolution); and bad input (exit 2, the file named, nothing written).
 // Output files are read with the tests' own small CSV reader, quaternions turned into rotations
 // with Eigen, independently of hecal's pose-table reader.
 #include "detect.h"
@@ -17,7 +19,9 @@
 #include <unistd.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <numbers>
@@ -42,6 +46,7 @@ using cli_test::Hecal;
 using rendered_views::Board;
 using rendered_views::CameraYaml;
 using rendered_views::kDeg;
+using rendered_views::kTagYaml;
 using rendered_views::kTargetYaml;
 using rendered_views::RotationErrorDeg;
 using rendered_views::TranslationErrorMm;
@@ -74,6 +79,10 @@ class DetectTest : public CliTest {
       rendered_views::RenderView(parallel[i], ++seed,
                                  RenderDir() / ("parallel_" + std::to_string(i) + ".png"));
     }
+    const std::vector<Pose> tags = rendered_views::TagViews(3);
+    for (std::size_t i = 0; i < tags.size(); ++i) {
+      rendered_views::RenderView(tags[i], ++seed, RenderDir() / TagName(i), rendered_views::Tag());
+    }
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
 
@@ -82,6 +91,7 @@ class DetectTest : public CliTest {
            ("hecal_detect_test_renders_" + std::to_string(::getpid()));
   }
   static std::string ViewName(std::size_t i) { return "view_0" + std::to_string(i) + ".png"; }
+  static std::string TagName(std::size_t i) { return "tag_0" + std::to_string(i) + ".png"; }
 
   // A folder `images` holding the named rendered images.
   std::string Images(const std::vector<std::string>& names) {
@@ -101,6 +111,21 @@ class DetectTest : public CliTest {
   }
 
   std::string TargetFile() { return Write("target.yaml", kTargetYaml); }
+  std::string CameraFile(const pose::CameraModel& camera = TrueCamera()) {
+    return Write("camera.yaml", CameraYaml(camera));
+  }
+  // `hecal detect` on `images` with the board and the given intrinsics (a camera file without
+  // width and height when the camera has none).
+  cli_test::Outcome DetectWith(const std::string& images, const pose::CameraModel& camera) {
+    std::string yaml = CameraYaml(camera);
+    if (camera.width == 0) {
+      for (const std::string key : {"\nwidth: 0", "\nheight: 0"}) {
+        yaml.erase(yaml.find(key), key.size());
+      }
+    }
+    return Hecal({"detect", "--images", images, "--target", TargetFile(), "--intrinsics",
+                  Write("camera.yaml", yaml), "--output", Path("camera.csv")});
+  }
 };
 
 Pose RowPose(const csv_test::Csv& csv, std::size_t row) {
@@ -314,6 +339,175 @@ TEST_F(DetectTest, IntrinsicsFromParallelBoardsAreRefused) {
   for (std::size_t i = 0; i < truth.size(); ++i) {
     EXPECT_LT(TranslationErrorMm(RowPose(poses, i), truth[i]), 1.0) << i;
   }
+}
+
+// With the intrinsics given, one image is enough for its pose; without them, 3 are needed for the
+// intrinsics, and the message says so and how to do with fewer.
+TEST_F(DetectTest, OneImageIsEnoughWithIntrinsics) {
+  const std::string images = FirstViews(1);
+  cli_test::Outcome run = DetectWith(images, TrueCamera());
+  ASSERT_EQ(run.code, 0) << run.err;
+  const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
+  ASSERT_EQ(poses.rows.size(), 1u);
+  EXPECT_LT(RotationErrorDeg(RowPose(poses, 0), Views()[0]), 0.05);
+  EXPECT_LT(TranslationErrorMm(RowPose(poses, 0), Views()[0]), 0.1);
+  std::filesystem::remove(Path("camera.csv"));
+
+  run = Hecal(
+      {"detect", "--images", images, "--target", TargetFile(), "--output", Path("camera.csv")});
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("only 1 of the 1 image(s)"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("estimating the intrinsics needs at least 3 views (with --intrinsics "
+                         "camera.yaml one view is enough)"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
+}
+
+// One sub-folder per station (pose_NN/image.png beside a pose file): the station id is the
+// sub-folder's name, in camera.csv, the points file and the report. With images at the top level
+// too, those win, with a note.
+TEST_F(DetectTest, StationsInSubFolders) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::filesystem::path station = dir_ / "captures" / ("pose_0" + std::to_string(i));
+    std::filesystem::create_directories(station);
+    std::filesystem::copy_file(RenderDir() / ViewName(i), station / "image.png");
+    Write("captures/pose_0" + std::to_string(i) + "/pose.yaml", "robot pose: not read\n");
+  }
+  cli_test::Outcome run = DetectWith(Path("captures"), TrueCamera());
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("3 station sub-folder(s) in"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("pose_01/image.png"), std::string::npos) << run.out;
+  const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
+  ASSERT_EQ(poses.rows.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(poses.Text(i, "id"), "pose_0" + std::to_string(i));
+    EXPECT_LT(RotationErrorDeg(RowPose(poses, i), Views()[i]), 0.05) << i;
+  }
+  EXPECT_EQ(csv_test::ReadCsv(Path("camera.points.csv")).Text(54, "id"), "pose_01");
+
+  std::filesystem::copy_file(RenderDir() / ViewName(3), dir_ / "captures" / "loose.png");
+  run = DetectWith(Path("captures"), TrueCamera());
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("hecal: note: " + Path("captures") +
+                         " holds 1 image(s) and 3 "
+                         "sub-folder(s): using the images"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(csv_test::ReadCsv(Path("camera.csv")).Text(0, "id"), "loose");
+
+  // A station sub-folder with two images is an error naming it.
+  std::filesystem::remove(dir_ / "captures" / "loose.png");
+  std::filesystem::copy_file(RenderDir() / ViewName(4), dir_ / "captures" / "pose_02" / "b.png");
+  std::filesystem::remove(Path("camera.csv"));
+  run = DetectWith(Path("captures"), TrueCamera());
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find(Path("captures/pose_02") + ": this station's sub-folder holds 2 images"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
+}
+
+// A single AprilTag (tag36h11 id 3, 100 mm): its centre is the target origin, so the poses are
+// the rendered ones; 4 points per image. Its intrinsics cannot come from the images.
+TEST_F(DetectTest, SingleTagPoses) {
+  const std::string images = Images({TagName(0), TagName(1), TagName(2)});
+  const std::string target = Write("tag.yaml", kTagYaml);
+  cli_test::Outcome run = Hecal({"detect", "--images", images, "--target", target, "--intrinsics",
+                                 CameraFile(), "--output", Path("camera.csv")});
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("target apriltag tag36h11 id 3 (4 points)"), std::string::npos) << run.out;
+  const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
+  const std::vector<Pose> truth = rendered_views::TagViews(3);
+  ASSERT_EQ(poses.rows.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    // Measured 0.02–0.07° and 0.56–0.76 mm: the corners sit ~0.27 px outward, where the lens
+    // bends the straight edges they are fitted to (calibrate_images_test, SingleTagStations).
+    const Pose T = RowPose(poses, i);
+    std::printf("tag view %zu: %.4f deg, %.3f mm\n", i, RotationErrorDeg(T, truth[i]),
+                TranslationErrorMm(T, truth[i]));
+    EXPECT_LT(RotationErrorDeg(T, truth[i]), 0.2) << i;
+    EXPECT_LT(TranslationErrorMm(T, truth[i]), 1.0) << i;
+  }
+  EXPECT_EQ(csv_test::ReadCsv(Path("camera.points.csv")).rows.size(), 12u);
+  std::filesystem::remove(Path("camera.csv"));
+
+  run = Hecal({"detect", "--images", images, "--target", target, "--output", Path("camera.csv")});
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("--intrinsics"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("4 points per image"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
+}
+
+// Given intrinsics that do not fit the images (vision/intrinsics_fit.h): fx 10× too large, or
+// those of twice the resolution, are refused with the likely mistake named and nothing written;
+// cx and cy swapped (1.8 px RMS on these 640 × 480 views, under the 2 px limit) is a warning that
+// names it, and the poses are written.
+TEST_F(DetectTest, IntrinsicsThatDoNotFitTheImagesAreCaught) {
+  const std::string images = FirstViews(4);
+  pose::CameraModel focal = TrueCamera();
+  focal.fx *= 10.0;
+  focal.fy *= 10.0;
+  focal.width = focal.height = 0;
+  cli_test::Outcome run = DetectWith(images, focal);
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find(Path("camera.yaml") + ": the intrinsics do not fit the images"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("fx, fy look 10.0"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("times too large"), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
+  EXPECT_FALSE(std::filesystem::exists(Path("camera.points.csv")));
+
+  pose::CameraModel doubled = TrueCamera();  // the intrinsics of 1280 × 960 images, no size
+  doubled.fx *= 2.0;
+  doubled.fy *= 2.0;
+  doubled.cx = 2.0 * doubled.cx + 0.5;
+  doubled.cy = 2.0 * doubled.cy + 0.5;
+  doubled.width = doubled.height = 0;
+  run = DetectWith(images, doubled);
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("intrinsics of images 2.0"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("(about 1280x960)"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
+
+  pose::CameraModel swapped = TrueCamera();
+  std::swap(swapped.cx, swapped.cy);
+  run = DetectWith(images, swapped);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("hecal: warning: " + Path("camera.yaml") +
+                         ": the intrinsics fit the images poorly"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("cx and cy look swapped"), std::string::npos) << run.err;
+  EXPECT_TRUE(std::filesystem::exists(Path("camera.csv")));
+}
+
+// The camera file's width × height against the images': a resize is recognised and the scaled
+// intrinsics given; a quarter turn is named.
+TEST_F(DetectTest, CameraSizeAgainstImageSize) {
+  const std::string images = FirstViews(1);
+  pose::CameraModel large = TrueCamera();
+  large.fx *= 2.0;
+  large.fy *= 2.0;
+  large.width = 1280;
+  large.height = 960;
+  cli_test::Outcome run = DetectWith(images, large);
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("the intrinsics are for 1280x960 images but the images are 640x480"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("resized by 0.5000"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("fx 620.000, fy 622.000"), std::string::npos) << run.err;
+
+  pose::CameraModel turned = TrueCamera();
+  turned.width = 480;
+  turned.height = 640;
+  run = DetectWith(images, turned);
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("turned a quarter turn"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
 }
 
 #else

@@ -15,6 +15,7 @@
 
 #include "hecal/io/camera_file.h"
 #include "hecal/io/target_file.h"
+#include "hecal/vision/intrinsics_fit.h"
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
 #include "image_files.h"
@@ -23,15 +24,41 @@
 namespace hecal::cli {
 namespace {
 
-namespace fs = std::filesystem;
+// Hand–eye calibration needs 3 stations (2 motions); Zhang's intrinsics need 3 views; a pose
+// with known intrinsics needs 1.
+constexpr int kHandEyeStations = 3;
+constexpr int kIntrinsicsViews = 3;
 
-// Hand–eye calibration needs 3 stations (2 motions); Zhang's intrinsics need 3 views.
-constexpr int kMinViews = 3;
+// The least number of usable images, and the rule that sets it, for messages.
+struct ViewsNeeded {
+  int count = 1;
+  std::string rule;
+};
 
-std::vector<ImageRecord> ListImages(const std::string& dir) {
+ViewsNeeded Needed(const ImageSetFlags& flags) {
+  const bool estimate = flags.intrinsics.empty();
+  if (flags.use == ImageUse::kHandEye) {
+    return {kHandEyeStations, estimate ? "hand-eye calibration needs at least 3 stations (2 robot "
+                                         "motions), and estimating the intrinsics 3 views"
+                                       : "hand-eye calibration needs at least 3 stations (2 "
+                                         "robot motions)"};
+  }
+  if (estimate) {
+    return {kIntrinsicsViews,
+            "estimating the intrinsics needs at least 3 views (with --intrinsics camera.yaml one "
+            "view is enough)"};
+  }
+  return {1, "a pose needs the target in at least 1 view"};
+}
+
+std::vector<ImageRecord> Records(const StationImages& listed) {
   std::vector<ImageRecord> images;
-  for (const fs::path& path : ListImageFiles(dir, "the target images")) {
-    images.push_back(ImageRecord{path, {}, {}, {}, {}});
+  for (const StationImage& station : listed.stations) {
+    ImageRecord record;
+    record.path = station.path;
+    record.station = station.id;
+    record.name = station.name;
+    images.push_back(std::move(record));
   }
   return images;
 }
@@ -91,12 +118,12 @@ void CheckSameSize(const std::vector<ImageRecord>& images) {
   const ImageRecord& first = images.front();
   for (const ImageRecord& image : images) {
     if (image.size != first.size) {
-      throw InputError(
-          image.path.string(), 0,
-          "the image is " + std::to_string(image.size.width) + "x" +
-              std::to_string(image.size.height) + " but " + first.path.filename().string() +
-              " is " + std::to_string(first.size.width) + "x" + std::to_string(first.size.height),
-          "use images of one camera at one resolution");
+      throw InputError(image.path.string(), 0,
+                       "the image is " + std::to_string(image.size.width) + "x" +
+                           std::to_string(image.size.height) + " but " + first.name + " is " +
+                           std::to_string(first.size.width) + "x" +
+                           std::to_string(first.size.height),
+                       "use images of one camera at one resolution");
     }
   }
 }
@@ -124,11 +151,12 @@ int CountUsed(const std::vector<ImageRecord>& images) {
       std::count_if(images.begin(), images.end(), [](const ImageRecord& i) { return i.used(); }));
 }
 
-// At least kMinViews usable images, with a message that says what to check.
+// Enough usable images for the use (Needed), with a message that says what to check.
 void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::TargetSpec& target,
                       const ImageSetFlags& flags) {
   const int used = CountUsed(images);
-  if (used >= kMinViews) return;
+  const ViewsNeeded needed = Needed(flags);
+  if (used >= needed.count) return;
   const bool none_seen = std::all_of(images.begin(), images.end(), [](const ImageRecord& i) {
     return i.detection.status == vision::DetectionStatus::kNotFound;
   });
@@ -144,9 +172,11 @@ void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::Target
   }
   throw InputError(
       flags.images, 0, "the target is usable in only " + std::to_string(used) + " of the " + count,
-      "hand-eye calibration and intrinsics estimation need at least " + std::to_string(kMinViews) +
-          " views: add images with the whole target visible and sharp, and check cols/rows in " +
-          flags.target + " (a board of the wrong size may be found in part of some images)");
+      needed.rule + ": add images with the whole target visible and sharp, and check " +
+          (pose::IsSingleTag(target.type)
+               ? "the tag's id and family/dictionary in " + flags.target
+               : "cols/rows in " + flags.target +
+                     " (a board of the wrong size may be found in part of some images)"));
 }
 
 std::string Fixed(double value, int decimals) {
@@ -156,26 +186,56 @@ std::string Fixed(double value, int decimals) {
   return text.str();
 }
 
-void CheckIntrinsicsSize(const pose::CameraModel& camera, const std::string& path, cv::Size size) {
-  if ((camera.width > 0 || camera.height > 0) &&
-      (camera.width != size.width || camera.height != size.height)) {
-    throw InputError(path, 0,
-                     "the intrinsics are for " + std::to_string(camera.width) + "x" +
-                         std::to_string(camera.height) + " images but the images are " +
-                         std::to_string(size.width) + "x" + std::to_string(size.height),
-                     "use the intrinsics of this camera at this resolution, or leave out "
-                     "--intrinsics to estimate them from the images");
-  }
+std::string SizeText(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
 }
 
-vision::IntrinsicsResult EstimateIntrinsics(const std::vector<ImageRecord>& images,
-                                            const std::vector<pose::ObjectPoint>& board,
-                                            cv::Size size, const Io& io) {
+// The camera file's width × height against the images': equal, or an error naming both. Two
+// mismatches are named as what they most likely are: the images turned a quarter turn, or the
+// images resized by one factor (then the scaled intrinsics are given; pixel centres at integers,
+// so c' = (c + ½)·s − ½).
+void CheckIntrinsicsSize(const pose::CameraModel& camera, const std::string& path, cv::Size size) {
+  if (camera.width <= 0 || (camera.width == size.width && camera.height == size.height)) return;
+  const std::string sizes = "the intrinsics are for " + SizeText(camera.width, camera.height) +
+                            " images but the images are " + SizeText(size.width, size.height);
+  if (camera.width == size.height && camera.height == size.width) {
+    throw InputError(path, 0, sizes + ": the images are turned a quarter turn",
+                     "use the images as the camera delivers them (undo the rotation, e.g. an "
+                     "EXIF orientation applied on export), or calibrate the turned camera");
+  }
+  const double s = static_cast<double>(size.width) / camera.width;
+  if (std::abs(camera.height * s - size.height) <= 1.0) {
+    const auto scaled = [s](double c) { return (c + 0.5) * s - 0.5; };
+    throw InputError(
+        path, 0, sizes + ": the same aspect ratio, so the images look resized by " + Fixed(s, 4),
+        "give the intrinsics of this resolution: if the images are the camera's, scaled, they are "
+        "fx " +
+            Fixed(camera.fx * s, 3) + ", fy " + Fixed(camera.fy * s, 3) + ", cx " +
+            Fixed(scaled(camera.cx), 3) + ", cy " + Fixed(scaled(camera.cy), 3) + ", width " +
+            std::to_string(size.width) + ", height " + std::to_string(size.height) +
+            " (distortion unchanged); a lower-resolution camera mode may crop as well, so "
+            "calibrating at this resolution is safer");
+  }
+  throw InputError(path, 0, sizes,
+                   "use the intrinsics of this camera at this resolution, or leave out "
+                   "--intrinsics to estimate them from the images");
+}
+
+// The points of every used image, one view each.
+std::vector<vision::CalibrationView> UsedViews(const std::vector<ImageRecord>& images,
+                                               const std::vector<pose::ObjectPoint>& board) {
   std::vector<vision::CalibrationView> views;
   for (const ImageRecord& image : images) {
     if (!image.used()) continue;
     views.push_back({ObjectPointsOf(image.detection, board), PixelsOf(image.detection)});
   }
+  return views;
+}
+
+vision::IntrinsicsResult EstimateIntrinsics(const std::vector<ImageRecord>& images,
+                                            const std::vector<pose::ObjectPoint>& board,
+                                            cv::Size size, const Io& io) {
+  const std::vector<vision::CalibrationView> views = UsedViews(images, board);
   vision::IntrinsicsResult result;
   try {
     result = vision::CalibrateIntrinsics(views, size.width, size.height);
@@ -235,18 +295,86 @@ void EstimatePoses(const std::vector<pose::ObjectPoint>& board, const pose::Came
   }
 }
 
+// What vision::CheckIntrinsicsFit's correction says, as a sentence: the likely mistake and how
+// well the images fit without it.
+std::string CorrectionText(const vision::IntrinsicsCorrection& correction,
+                           const pose::CameraModel& given, cv::Size size) {
+  using Kind = vision::IntrinsicsCorrection::Kind;
+  const pose::CameraModel& c = correction.camera;
+  const std::string fits = " the images fit to " + Fixed(correction.median_rms_px, 3) + " px";
+  switch (correction.kind) {
+    case Kind::kSwapPrincipalPoint:
+      return "cx and cy look swapped: with cx " + Fixed(c.cx, 2) + ", cy " + Fixed(c.cy, 2) + fits;
+    case Kind::kScaleFocal:
+      return "fx, fy look " + Fixed(1.0 / correction.scale, 3) +
+             " times too large (a focal length of another lens, or in other units): with fx " +
+             Fixed(c.fx, 1) + ", fy " + Fixed(c.fy, 1) + fits;
+    case Kind::kScaleResolution:
+      return "they look like the intrinsics of images " + Fixed(1.0 / correction.scale, 3) +
+             " times this size (about " +
+             SizeText(static_cast<int>(std::lround(size.width / correction.scale)),
+                      static_cast<int>(std::lround(size.height / correction.scale))) +
+             "): scaled to these " + SizeText(size.width, size.height) + " images (fx " +
+             Fixed(c.fx, 1) + ", fy " + Fixed(c.fy, 1) + ", cx " + Fixed(c.cx, 1) + ", cy " +
+             Fixed(c.cy, 1) + ")" + fits;
+    case Kind::kNoDistortion:
+      return "the images look undistorted already (rectified), while the camera file has "
+             "distortion k1 " +
+             Fixed(given.distortion[0], 4) + ": without it" + fits;
+  }
+  return "";
+}
+
+// With given intrinsics: does the pose model fit the images (vision::CheckIntrinsicsFit)? A
+// median reprojection RMS of 2 px or more is refused, a clear excess over the free homography's
+// fit is a warning; both name the likely mistake.
+void CheckIntrinsicsFitImages(const ImageSet& set, const ImageSetFlags& flags, const Io& io) {
+  const vision::IntrinsicsFit fit =
+      vision::CheckIntrinsicsFit(UsedViews(set.images, set.board), set.camera);
+  if (fit.verdict == vision::IntrinsicsVerdict::kFits) return;
+  std::string found = "median reprojection RMS " + Fixed(fit.median_rms_px, 2) + " px over " +
+                      std::to_string(CountUsed(set.images)) + " image(s) with these intrinsics";
+  if (fit.median_free_rms_px) {
+    found += ", where a free homography fits the same points to " +
+             Fixed(*fit.median_free_rms_px, 2) + " px";
+  }
+  std::string source = flags.intrinsics;
+  std::string fix;
+  if (fit.correction) {
+    fix = CorrectionText(*fit.correction, set.camera, set.size) + "; correct " + flags.intrinsics;
+  } else if (fit.points_do_not_fit) {
+    source = flags.target;
+    found = "the detected points do not fit the target: " + found;
+    fix = "check " + flags.target +
+          " against the print (cols/rows, lengths, first_id), that the target is flat, and the "
+          "distortion coefficients in " +
+          flags.intrinsics;
+  } else {
+    fix = "check " + flags.intrinsics +
+          ": the intrinsics of another camera or resolution, fx/fy scaled, cx/cy swapped, or "
+          "images resized or cropped; or leave out --intrinsics to estimate them from the images "
+          "(3 or more)";
+  }
+  if (fit.verdict == vision::IntrinsicsVerdict::kDoesNotFit) {
+    const std::string what = fit.points_do_not_fit && !fit.correction
+                                 ? found
+                                 : "the intrinsics do not fit the images: " + found;
+    throw InputError(source, 0, what, fix);
+  }
+  io.err << "hecal: warning: " << source << ": the intrinsics fit the images poorly: " << found
+         << " (" << fix << ")\n";
+}
+
 void PrintReport(const std::vector<ImageRecord>& images, std::ostream& out) {
   std::size_t width = 5;
-  for (const ImageRecord& image : images) {
-    width = std::max(width, image.path.filename().string().size());
-  }
+  for (const ImageRecord& image : images) width = std::max(width, image.name.size());
   out << std::left << std::setw(static_cast<int>(width) + 2) << "image" << std::setw(11) << "status"
       << std::setw(11) << "points" << std::setw(10) << "sharp_px" << std::setw(9) << "rms_px"
       << std::setw(10) << "sigma_mm"
       << "sigma_deg\n";
   for (const ImageRecord& image : images) {
     const vision::Detection& d = image.detection;
-    out << std::setw(static_cast<int>(width) + 2) << image.path.filename().string() << std::setw(11)
+    out << std::setw(static_cast<int>(width) + 2) << image.name << std::setw(11)
         << vision::DetectionStatusName(d.status) << std::setw(11)
         << (std::to_string(d.num_points()) + "/" + std::to_string(d.total_points)) << std::setw(10)
         << Fixed(d.sharpness, 2);
@@ -269,8 +397,13 @@ void PrintReport(const std::vector<ImageRecord>& images, std::ostream& out) {
 }  // namespace
 
 std::string Describe(const pose::TargetSpec& target) {
-  return std::string(pose::TargetTypeName(target.type)) + " " + std::to_string(target.cols) + "x" +
-         std::to_string(target.rows);
+  const std::string type(pose::TargetTypeName(target.type));
+  if (pose::IsSingleTag(target.type)) {
+    return type + " " +
+           (target.type == pose::TargetType::kAruco ? target.dictionary : target.family) + " id " +
+           std::to_string(target.id);
+  }
+  return type + " " + std::to_string(target.cols) + "x" + std::to_string(target.rows);
 }
 
 std::vector<Eigen::Vector3d> ObjectPointsOf(const vision::Detection& detection,
@@ -298,9 +431,21 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
   set.board = pose::ObjectPoints(set.target);
   std::optional<io::CameraFile> given;
   if (!flags.intrinsics.empty()) given = io::ReadCameraFile(flags.intrinsics);
-  set.images = ListImages(flags.images);
-  io.out << command << ": " << set.images.size() << " image(s) in " << flags.images << ", target "
-         << Describe(set.target) << " (" << set.board.size() << " points)" << std::endl;
+  if (!given && pose::IsSingleTag(set.target.type)) {
+    throw InputError("--intrinsics", 0,
+                     "a single tag (" + Describe(set.target) +
+                         ") gives 4 points per image: too few to estimate the intrinsics and the "
+                         "lens distortion",
+                     "give --intrinsics camera.yaml (calibrate the camera first, e.g. with "
+                     "hecal detect on images of a chessboard or ChArUco board)");
+  }
+  const StationImages listed = ListStationImages(flags.images, "the target images");
+  if (!listed.note.empty()) io.err << "hecal: note: " << listed.note << "\n";
+  set.images = Records(listed);
+  io.out << command << ": " << set.images.size()
+         << (listed.sub_folders ? " station sub-folder(s)" : " image(s)") << " in " << flags.images
+         << ", target " << Describe(set.target) << " (" << set.board.size() << " points)"
+         << std::endl;
   {
     const OpenCvThreads threads(flags.threads);
     DetectAll(set.target, flags.target, &set.images);
@@ -309,7 +454,7 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
   set.size = set.images.front().size;
   if (given) CheckIntrinsicsSize(given->camera, flags.intrinsics, set.size);
   ResolveAndMarkUnusable(set.target, &set.images);
-  if (CountUsed(set.images) < kMinViews) PrintReport(set.images, io.out);
+  if (CountUsed(set.images) < Needed(flags).count) PrintReport(set.images, io.out);
   CheckEnoughViews(set.images, set.target, flags);
 
   if (given) {
@@ -324,6 +469,7 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
   EstimatePoses(set.board, set.camera, &set.images);
   PrintReport(set.images, io.out);
   CheckEnoughViews(set.images, set.target, flags);
+  if (given) CheckIntrinsicsFitImages(set, flags, io);
   return set;
 }
 

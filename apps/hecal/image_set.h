@@ -2,18 +2,20 @@
 // §4.1): from a folder of target images to camera poses T_camera_target with covariances.
 //
 // Steps (DetectImageSet)
-//   1. Images: every *.png, *.jpg, *.jpeg, *.bmp, *.tif, *.tiff in the folder (extension case-
-//      insensitive, not recursive), sorted by file name; all must have the same size.
+//   1. Images: the stations of the folder (image_files.h): every *.png, *.jpg, *.jpeg, *.bmp,
+//      *.tif, *.tiff in it (station id = file stem), or when it holds none, one image in each
+//      sub-folder (station id = sub-folder name); sorted by name. All must have the same size.
 //   2. Detection: vision::DetectTarget on each image (grey), in parallel over images on N
 //      threads (0 = every core; cv::parallel_for_). Chessboards and symmetric circle grids whose
 //      order is fixed only up to a half turn are made consistent across the images by
 //      vision::ResolveOrder (image rule); those still ambiguous are skipped.
-//   3. Intrinsics: the given camera.yaml (io/camera_file.h), or, without it, estimated from the
-//      usable images by vision::CalibrateIntrinsics (cv::calibrateCamera, plumb_bob with k3),
-//      printed with their 1σ and RMS. Its warnings (few views, poor coverage, large σ) go to
-//      stderr; nearly parallel boards (normals within IntrinsicsOptions::min_normal_spread_deg
-//      = 10° of each other) are refused, since focal length and distance are then confounded
-//      while calibrateCamera's σ look fine.
+//   3. Intrinsics: the given camera.yaml (io/camera_file.h), whose width × height, when it has
+//      them, must be the images' size; or, without it, estimated from the usable images by
+//      vision::CalibrateIntrinsics (cv::calibrateCamera, plumb_bob with k3), printed with their
+//      1σ and RMS. Its warnings (few views, poor coverage, large σ) go to stderr; nearly parallel
+//      boards (normals within IntrinsicsOptions::min_normal_spread_deg = 10° of each other) are
+//      refused, since focal length and distance are then confounded while calibrateCamera's σ
+//      look fine; so are single tags (4 points per image cannot determine K and distortion).
 //   4. Poses: OpenCV IPPE (planar targets; SQPnP otherwise) refined by SOLVEPNP_ITERATIVE
 //      (vision::SolvePnPOpenCvRefined), then hecal's Levenberg–Marquardt refinement with its
 //      covariance (pose::RefinePose, σ estimated from each image's residuals).
@@ -22,13 +24,25 @@
 //      sharper), reprojection RMS at the refined pose (px), the pose's 1σ per axis (translation
 //      mm, rotation deg: sqrt(trace/3) of each 3×3 block of the covariance) — and for skipped
 //      images the reason.
+//   6. Given intrinsics checked against the images (vision/intrinsics_fit.h): a median
+//      reprojection RMS of 2 px or more is an error, a fit clearly worse than a free homography's
+//      a warning on stderr; both name the likely mistake (cx/cy swapped, fx/fy scaled, the
+//      intrinsics of another resolution, images already undistorted) when one of those
+//      corrections makes the images fit, else what to check.
 //
-// Errors (hecal::InputError, exit 2): a missing folder or one without images; an unreadable
-// image (names it); images of different sizes; intrinsics for another image size; a target found
-// in no image (for a chessboard: "cols/rows are INNER corners"); a target found in fewer than 3
-// images (hand–eye calibration and intrinsics estimation both need 3); intrinsics that cannot be
-// estimated from the images (then --intrinsics is needed); a negative thread count. The target
-// and camera files are read before any image, so their errors come at once.
+// Usable images needed (ImageUse): hand–eye calibration 3 stations (2 motions); poses with given
+// intrinsics 1 (`hecal detect --intrinsics`); estimating the intrinsics 3 views (Zhang). The
+// message says which rule applies.
+//
+// Errors (hecal::InputError, exit 2): a missing folder or one without images; a station
+// sub-folder without an image or with several (names it); an unreadable image (names it); images
+// of different sizes; intrinsics for another image size (both sizes named; when the images are
+// the camera's size scaled by one factor, the message says so and gives the scaled fx, fy, cx,
+// cy); given intrinsics that do not fit the images (step 6); a target found in no image (for a
+// chessboard: "cols/rows are INNER corners"); fewer usable
+// images than the use needs; intrinsics that cannot be estimated from the images (then
+// --intrinsics is needed); a single-tag target without --intrinsics; a negative thread count.
+// The target and camera files are read before any image, so their errors come at once.
 #pragma once
 
 #include <Eigen/Core>
@@ -46,38 +60,44 @@
 
 namespace hecal::cli {
 
+// What the images are for (the least number of usable images, above).
+enum class ImageUse { kHandEye, kPoses };
+
 struct ImageSetFlags {
   std::string images;      // --images DIR
   std::string target;      // --target target.yaml
   std::string intrinsics;  // --intrinsics camera.yaml; "" = estimate from the images
   int threads = 0;         // --threads; 0 = every core
+  ImageUse use = ImageUse::kHandEye;
 };
 
 // One image: where it is, what was found, and what became of it.
 struct ImageRecord {
   std::filesystem::path path;
+  std::string station;  // the station id: the file stem, or the sub-folder's name
+  std::string name;     // for reports: "im_00.png", or "pose_00/image.png"
   cv::Size size;
   vision::Detection detection;
   std::string skipped;  // why the image is not used; empty when used
   std::optional<pose::RefinementResult> pose;
 
   bool used() const { return skipped.empty(); }
-  std::string id() const { return path.stem().string(); }  // the station id: the file stem
+  std::string id() const { return station; }
 };
 
 struct ImageSet {
   pose::TargetSpec target;
-  std::vector<pose::ObjectPoint> board;  // pose::ObjectPoints(target)
-  std::vector<ImageRecord> images;       // every image of the folder, sorted by file name
-  cv::Size size;                         // of every image
-  pose::CameraModel camera;              // given or estimated
+  std::vector<pose::ObjectPoint> board;               // pose::ObjectPoints(target)
+  std::vector<ImageRecord> images;                    // every station of the folder, sorted by name
+  cv::Size size;                                      // of every image
+  pose::CameraModel camera;                           // given or estimated
   std::optional<vision::IntrinsicsResult> estimated;  // when estimated from the images
 };
 
 // Steps 1–5 above; `command` names the caller in the first line printed ("hecal detect").
 ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, const Io& io);
 
-// "chessboard 24x17".
+// "chessboard 24x17", "apriltag tag36h11 id 5".
 std::string Describe(const pose::TargetSpec& target);
 
 // The target points of a detection (metres, target frame) and their pixels, in the same order.

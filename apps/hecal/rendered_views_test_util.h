@@ -1,6 +1,6 @@
 // Test support for the CLI tests on rendered images (detect_test, calibrate_images_test): a 9 × 6
-// chessboard, a known camera, views of the board from chosen directions, and their rendering
-// (vision/render.h) into a folder of PNG files.
+// chessboard and a single AprilTag, a known camera, views of either from chosen directions, and
+// their rendering (vision/render.h) into PNG files.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -35,6 +35,18 @@ inline pose::TargetSpec Board() {
   return target;
 }
 
+// One AprilTag (tag36h11 id 3, 100 mm), its centre the target origin (pose/target.h).
+constexpr const char* kTagYaml = "type: apriltag\nfamily: tag36h11\nid: 3\nsize: 100\nunits: mm\n";
+
+inline pose::TargetSpec Tag() {
+  pose::TargetSpec target;
+  target.type = pose::TargetType::kAprilTag;
+  target.family = "tag36h11";
+  target.id = 3;
+  target.size = 0.1;
+  return target;
+}
+
 inline pose::CameraModel TrueCamera() {
   pose::CameraModel camera;
   camera.fx = 620.0;
@@ -57,19 +69,19 @@ inline std::string CameraYaml(const pose::CameraModel& c) {
   return yaml.str();
 }
 
-// T_camera_target of the camera `distance` from the board centre, tilted by `tilt` towards
-// `azimuth` (x right, y down on the board), looking at the centre and then panned by (pan_x,
-// pan_y) radians about its own x and y axes so the board lands in different parts of the image
-// (vision::testing::LookAt).
-inline Pose ViewPose(double distance, double tilt, double azimuth, double pan_x, double pan_y) {
-  const Eigen::Vector3d centre(0.1, 0.0625, 0.0);  // of the 8 × 5 squares between the corners
+// T_camera_target of the camera `distance` from the target's centre (the board's by default),
+// tilted by `tilt` towards `azimuth` (x right, y down on the board), looking at the centre and
+// then panned by (pan_x, pan_y) radians about its own x and y axes so the target lands in
+// different parts of the image (vision::testing::LookAt).
+inline Pose ViewPose(double distance, double tilt, double azimuth, double pan_x, double pan_y,
+                     const Eigen::Vector3d& centre = Eigen::Vector3d(0.1, 0.0625, 0.0)) {
   const Eigen::Vector3d eye =
       centre + distance * Eigen::Vector3d(std::sin(tilt) * std::cos(azimuth),
                                           std::sin(tilt) * std::sin(azimuth), -std::cos(tilt));
   return vision::testing::LookAt(eye, centre, Eigen::Vector2d(pan_x, pan_y));
 }
 
-// `count` views, tilted 15–35° in directions 60° apart, spread over the image.
+// `count` views of the board, tilted 15–35° in directions 60° apart, spread over the image.
 inline std::vector<Pose> Views(int count = 6) {
   std::vector<Pose> views;
   for (int k = 0; k < count; ++k) {
@@ -79,17 +91,29 @@ inline std::vector<Pose> Views(int count = 6) {
   return views;
 }
 
-// Renders the board seen by `camera` from T_camera_target into `path` (slight blur and noise, as
-// a real camera; `seed` for the noise).
+// The same for the tag (Tag()), from 0.3–0.4 m: the tag is 150–200 px across.
+inline std::vector<Pose> TagViews(int count) {
+  std::vector<Pose> views;
+  for (int k = 0; k < count; ++k) {
+    views.push_back(ViewPose(0.3 + 0.05 * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg, k * 60.0 * kDeg,
+                             (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12),
+                             Eigen::Vector3d::Zero()));
+  }
+  return views;
+}
+
+// Renders `target` (the board by default) seen from T_camera_target into `path` (slight blur and
+// noise, as a real camera; `seed` for the noise), through `camera`.
 inline void RenderView(const Pose& T_camera_target, std::uint64_t seed,
                        const std::filesystem::path& path,
+                       const pose::TargetSpec& target = Board(),
                        const pose::CameraModel& camera = TrueCamera()) {
   vision::RenderOptions options;
   options.blur_sigma = 0.6;
   options.noise_sigma = 1.0;
   options.supersampling = 4;
   options.seed = seed;
-  cv::imwrite(path.string(), vision::RenderTarget(Board(), camera, T_camera_target, options));
+  cv::imwrite(path.string(), vision::RenderTarget(target, camera, T_camera_target, options));
 }
 
 // Rotation angle between two poses (deg) and translation distance (mm).

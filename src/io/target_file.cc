@@ -1,7 +1,9 @@
 #include "hecal/io/target_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 #include "closest_name.h"
@@ -36,8 +38,45 @@ std::string_view Meaning(TargetField field) {
       return "the AprilTag family, e.g. tag36h11";
     case TargetField::kFirstId:
       return "the id of the top-left marker";
+    case TargetField::kId:
+      return "the id of the tag";
+    case TargetField::kSize:
+      return "the side of the tag's black square";
   }
   return "";
+}
+
+// Lengths a printed target plausibly has, in metres: at least 1 mm, less than 1 m. Outside, the
+// unit is the likely mistake (docs/targets.md, "Units").
+constexpr double kShortestLength = 1e-3;
+constexpr double kLongestLength = 1.0;
+
+// "15 m", "0.015 mm": a value as written in the file, with its unit.
+std::string Written(double value, LengthUnit unit) {
+  std::ostringstream text;
+  text << value << " " << UnitName(unit);
+  return text.str();
+}
+
+// Refuses a length whose unit is most likely wrong: ≥ 1 m when no unit was given (millimetres
+// written without `units: mm`), < 1 mm with `units: mm` (metres marked as millimetres). An
+// explicit `units: m` is taken at its word.
+void CheckPlausibleLength(double written, std::optional<LengthUnit> unit, const std::string& key,
+                          const std::string& source, int line) {
+  if (!(written > 0.0) || !std::isfinite(written)) return;  // CheckTarget says what is wrong
+  const std::string what = key == "size" ? "tag size" : "target " + key;
+  if (!unit && written >= kLongestLength) {
+    Fail(source, line,
+         key + " " + Written(written, LengthUnit::kMetre) + " is not a plausible " + what,
+         "if the lengths are in millimetres add `units: mm`; if the target really is that large, "
+         "add `units: m`");
+  }
+  if (unit == LengthUnit::kMillimetre && written * MetresPer(*unit) < kShortestLength) {
+    Fail(source, line,
+         key + " " + Written(written, *unit) + " is not a plausible " + what +
+             ": it looks like metres",
+         "remove `units: mm` (the lengths are then in metres)");
+  }
 }
 
 std::vector<std::string_view> KnownKeys() {
@@ -59,6 +98,17 @@ std::vector<std::string_view> Names(std::span<const pose::MarkerDictionary> list
   std::vector<std::string_view> names;
   for (const pose::MarkerDictionary& entry : list) names.push_back(entry.name);
   return names;
+}
+
+// The field a type uses for what `field` means on other types: a single tag's side is `size` and
+// its id `id`, a grid's `marker` and `first_id`.
+std::optional<TargetField> SameMeaning(pose::TargetType type, TargetField field) {
+  const bool tag = pose::IsSingleTag(type);
+  if (field == TargetField::kMarker && tag) return TargetField::kSize;
+  if (field == TargetField::kFirstId && tag) return TargetField::kId;
+  if (field == TargetField::kSize && !tag) return TargetField::kMarker;
+  if (field == TargetField::kId && !tag) return TargetField::kFirstId;
+  return std::nullopt;
 }
 
 // The types that use a field, for "does not apply" messages.
@@ -109,36 +159,54 @@ pose::TargetSpec Parse(const YAML::Node& root, const std::string& source) {
          "use one of " + Join(type_names));
   }
 
-  double metres_per_unit = 1.0;
+  std::optional<LengthUnit> unit;  // nullopt: not given, metres
   if (const std::optional<YAML::Node> units = entries.Find("units")) {
     const std::string text = import_internal::ScalarText(*units, source, "units");
-    const std::optional<LengthUnit> unit = ParseLengthUnit(text);
+    unit = ParseLengthUnit(text);
     if (!unit) {
       Fail(source, entries.Line("units"), "units is " + import_internal::Quoted(text),
            "write units: m or units: mm");
     }
-    metres_per_unit = MetresPer(*unit);
   }
+  const double metres_per_unit = MetresPer(unit.value_or(LengthUnit::kMetre));
+  // A length in metres, its unit checked for plausibility.
+  const auto length = [&](const YAML::Node& node, const std::string& key) {
+    const double written = import_internal::ScalarNumber(node, source, key).value;
+    CheckPlausibleLength(written, unit, key, source, entries.Line(key));
+    return written * metres_per_unit;
+  };
 
+  // Keys the type does not use first (a grid's name for a single tag's key is the likelier
+  // mistake than the key's absence), then the keys it lacks, then the values.
+  for (const TargetField field : pose::TargetFields()) {
+    const std::string key(pose::TargetFieldName(field));
+    if (!entries.Has(key) || pose::TargetFieldUse(*type, field) != pose::FieldUse::kUnused) {
+      continue;
+    }
+    const std::optional<TargetField> same = SameMeaning(*type, field);
+    const std::string fix =
+        same && pose::TargetFieldUse(*type, *same) != pose::FieldUse::kUnused
+            ? type_text + " targets call it '" + std::string(pose::TargetFieldName(*same)) +
+                  "': rename the key"
+            : "remove it, or use a type that has it (" + TypesUsing(field) + ")";
+    Fail(source, entries.Line(key), "'" + key + "' does not apply to " + type_text + " targets",
+         fix);
+  }
+  for (const TargetField field : pose::TargetFields()) {
+    const std::string key(pose::TargetFieldName(field));
+    if (!entries.Has(key) && pose::TargetFieldUse(*type, field) == pose::FieldUse::kRequired) {
+      Fail(source, type_line,
+           type_text + " targets need '" + key + "' (" + std::string(Meaning(field)) +
+               "), which the file lacks",
+           "add " + key + ": ... (see docs/targets.md)");
+    }
+  }
   pose::TargetSpec spec;
   spec.type = *type;
   for (const TargetField field : pose::TargetFields()) {
     const std::string key(pose::TargetFieldName(field));
     const std::optional<YAML::Node> node = entries.Find(key);
-    const pose::FieldUse use = pose::TargetFieldUse(*type, field);
-    if (!node) {
-      if (use == pose::FieldUse::kRequired) {
-        Fail(source, type_line,
-             type_text + " targets need '" + key + "' (" + std::string(Meaning(field)) +
-                 "), which the file lacks",
-             "add " + key + ": ... (see docs/targets.md)");
-      }
-      continue;
-    }
-    if (use == pose::FieldUse::kUnused) {
-      Fail(source, entries.Line(key), "'" + key + "' does not apply to " + type_text + " targets",
-           "remove it, or use a type that has it (" + TypesUsing(field) + ")");
-    }
+    if (!node) continue;
     switch (field) {
       case TargetField::kCols:
         spec.cols = ReadWholeNumber(*node, source, key);
@@ -149,14 +217,20 @@ pose::TargetSpec Parse(const YAML::Node& root, const std::string& source) {
       case TargetField::kFirstId:
         spec.first_id = ReadWholeNumber(*node, source, key);
         break;
+      case TargetField::kId:
+        spec.id = ReadWholeNumber(*node, source, key);
+        break;
       case TargetField::kSquare:
-        spec.square = import_internal::ScalarNumber(*node, source, key).value * metres_per_unit;
+        spec.square = length(*node, key);
         break;
       case TargetField::kMarker:
-        spec.marker = import_internal::ScalarNumber(*node, source, key).value * metres_per_unit;
+        spec.marker = length(*node, key);
         break;
       case TargetField::kSpacing:
-        spec.spacing = import_internal::ScalarNumber(*node, source, key).value * metres_per_unit;
+        spec.spacing = length(*node, key);
+        break;
+      case TargetField::kSize:
+        spec.size = length(*node, key);
         break;
       case TargetField::kDictionary:
         spec.dictionary = import_internal::ScalarText(*node, source, key);

@@ -72,6 +72,77 @@ TEST(TargetFile, AprilTagGridWithFirstId) {
   EXPECT_EQ(spec.spacing, 0.0264);
 }
 
+TEST(TargetFile, SingleTags) {
+  const pose::TargetSpec april =
+      Parse("type: apriltag\nfamily: tag36h11\nid: 12\nsize: 80\nunits: mm\n");
+  EXPECT_EQ(april.type, TargetType::kAprilTag);
+  EXPECT_EQ(april.family, "tag36h11");
+  EXPECT_EQ(april.id, 12);
+  EXPECT_NEAR(april.size, 0.08, 1e-15);
+  EXPECT_EQ(pose::ObjectPoints(april).size(), 4u);
+  const pose::TargetSpec aruco = Parse("{type: aruco, dictionary: DICT_6X6_250, id: 0, size: 0.1}");
+  EXPECT_EQ(aruco.type, TargetType::kAruco);
+  EXPECT_EQ(aruco.dictionary, "DICT_6X6_250");
+  EXPECT_EQ(aruco.id, 0);
+  EXPECT_EQ(aruco.size, 0.1);
+}
+
+TEST(TargetFile, SingleTagErrors) {
+  const std::string april = "type: apriltag\nfamily: tag36h11\n";
+  ExpectError(april + "size: 0.08\n", 1, "apriltag targets need 'id' (the id of the tag)");
+  ExpectError(april + "id: 3\n", 1, "apriltag targets need 'size'");
+  ExpectError(april + "id: 600\nsize: 0.08\n", 3,
+              "id 600 is not in tag36h11, whose ids are 0 to 586");
+  ExpectError(april + "id: -1\nsize: 0.08\n", 3, "not a whole number");
+  ExpectError("type: aruco\ndictionary: DICT_4X4_50\nid: 2\nsize: 0.05\ncols: 2\n", 5,
+              "'cols' does not apply to aruco targets");
+  // The grid's names for the side and the id: the fix says what a single tag calls them.
+  const InputError marker = ErrorOf(april + "id: 3\nmarker: 0.08\n");
+  testing::ExpectInputError(marker, "target.yaml", 4,
+                            "'marker' does not apply to apriltag targets");
+  EXPECT_THAT(marker.fix(), HasSubstr("apriltag targets call it 'size'"));
+  const InputError first_id = ErrorOf(april + "first_id: 3\nsize: 0.08\n");
+  EXPECT_THAT(first_id.fix(), HasSubstr("call it 'id'"));
+  const InputError size = ErrorOf(
+      "type: apriltag_grid\ncols: 2\nrows: 2\nsize: 0.04\nspacing: 0.01\nfamily: tag36h11\n");
+  EXPECT_THAT(size.problem(), HasSubstr("'size' does not apply to apriltag_grid targets"));
+  EXPECT_THAT(size.fix(), HasSubstr("call it 'marker'"));
+}
+
+// Lengths outside 1 mm ≤ length < 1 m are refused when the unit is the likely mistake: no unit
+// and ≥ 1 (millimetres without `units: mm`), or `units: mm` and < 1 mm (metres marked as mm).
+// An explicit `units: m` is taken at its word.
+TEST(TargetFile, ImplausibleLengthsNameTheUnit) {
+  const InputError mm = ErrorOf("type: chessboard\ncols: 9\nrows: 6\nsquare: 15\n");
+  testing::ExpectInputError(mm, "target.yaml", 4, "square 15 m is not a plausible target square");
+  EXPECT_THAT(mm.fix(), HasSubstr("if the lengths are in millimetres add `units: mm`"));
+  ExpectError("type: chessboard\ncols: 9\nrows: 6\nsquare: 1\n", 4, "square 1 m is not");
+  ExpectError("type: apriltag\nfamily: tag36h11\nid: 1\nsize: 80\n", 4,
+              "size 80 m is not a plausible tag size");
+  ExpectError(
+      "type: aruco_grid\ncols: 4\nrows: 3\nmarker: 0.0256\nspacing: 6.6\n"
+      "dictionary: DICT_4X4_250\n",
+      5, "spacing 6.6 m is not a plausible target spacing");
+  const InputError metres =
+      ErrorOf("type: chessboard\ncols: 9\nrows: 6\nsquare: 0.015\nunits: mm\n");
+  testing::ExpectInputError(metres, "target.yaml", 4,
+                            "square 0.015 mm is not a plausible target square: it looks like "
+                            "metres");
+  EXPECT_THAT(metres.fix(), HasSubstr("remove `units: mm`"));
+  // The edges of the range, and explicit units.
+  EXPECT_NEAR(Parse("type: chessboard\ncols: 9\nrows: 6\nsquare: 0.999\n").square, 0.999, 1e-15);
+  EXPECT_NEAR(Parse("type: chessboard\ncols: 9\nrows: 6\nsquare: 1\nunits: mm\n").square, 0.001,
+              1e-15);
+  EXPECT_NEAR(Parse("type: apriltag\nfamily: tag36h11\nid: 1\nsize: 1.2\nunits: m\n").size, 1.2,
+              1e-15);
+  EXPECT_NEAR(Parse("type: apriltag\nfamily: tag36h11\nid: 1\nsize: 1200\nunits: mm\n").size, 1.2,
+              1e-15);
+  EXPECT_NEAR(Parse("type: chessboard\ncols: 9\nrows: 6\nsquare: 0.0005\nunits: m\n").square,
+              0.0005, 1e-15);
+  // A negative length is a sign error, not a unit error, whatever the unit.
+  ExpectError("type: chessboard\ncols: 9\nrows: 6\nsquare: -15\nunits: mm\n", 4, "positive length");
+}
+
 TEST(TargetFile, CircleGrids) {
   const pose::TargetSpec circles = Parse("type: circles\ncols: 4\nrows: 5\nsquare: 0.02\n");
   EXPECT_EQ(circles.type, TargetType::kCircles);
@@ -118,7 +189,7 @@ TEST(TargetFile, KeysPerType) {
               "apriltag_grid targets need 'spacing'");
   ExpectError(kChessboard + "marker: 0.01\n", 5, "'marker' does not apply to chessboard targets");
   const InputError unused = ErrorOf(kChessboard + "dictionary: DICT_5X5_250\n");
-  EXPECT_THAT(unused.fix(), HasSubstr("(charuco, aruco_grid)"));
+  EXPECT_THAT(unused.fix(), HasSubstr("(charuco, aruco_grid, aruco)"));
   ExpectError(
       "type: charuco\ncols: 5\nrows: 7\nsquare: 0.03\nmarker: 0.02\ndictionary: DICT_5X5_250\n"
       "first_id: 4\n",

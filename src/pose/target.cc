@@ -8,13 +8,15 @@
 namespace hecal::pose {
 namespace {
 
-constexpr std::array<TargetType, 6> kTypes = {
+constexpr std::array<TargetType, 8> kTypes = {
     TargetType::kChessboard,   TargetType::kCharuco, TargetType::kArucoGrid,
-    TargetType::kAprilTagGrid, TargetType::kCircles, TargetType::kAsymmetricCircles};
+    TargetType::kAprilTagGrid, TargetType::kCircles, TargetType::kAsymmetricCircles,
+    TargetType::kAruco,        TargetType::kAprilTag};
 
-constexpr std::array<TargetField, 8> kFields = {
+constexpr std::array<TargetField, 10> kFields = {
     TargetField::kCols,    TargetField::kRows,       TargetField::kSquare, TargetField::kMarker,
-    TargetField::kSpacing, TargetField::kDictionary, TargetField::kFamily, TargetField::kFirstId};
+    TargetField::kSpacing, TargetField::kDictionary, TargetField::kFamily, TargetField::kFirstId,
+    TargetField::kId,      TargetField::kSize};
 
 // cv::aruco::PREDEFINED_DICTIONARY_NAME of OpenCV 4.6 (opencv2/aruco/dictionary.hpp), in enum
 // order; sizes are the dictionaries' code counts (the number in the name; ARUCO_ORIGINAL 1024,
@@ -79,6 +81,10 @@ bool IsSet(const TargetSpec& target, TargetField field) {
       return !target.family.empty();
     case TargetField::kFirstId:
       return target.first_id != 0;
+    case TargetField::kId:
+      return target.id != 0;
+    case TargetField::kSize:
+      return target.size != 0.0;
   }
   return false;
 }
@@ -106,6 +112,8 @@ const char* CountedThing(TargetType type) {
     case TargetType::kChessboard:
     case TargetType::kCircles:
     case TargetType::kAsymmetricCircles:
+    case TargetType::kAruco:
+    case TargetType::kAprilTag:
       break;
   }
   return "points";
@@ -147,6 +155,16 @@ std::optional<TargetProblem> CheckIds(const TargetSpec& target, TargetField fiel
     return TargetProblem{field, "unknown " + std::string(what) + " '" + name + "'",
                          "use one of " + Names(list)};
   }
+  if (IsSingleTag(target.type)) {
+    if (target.id >= entry->size) {
+      return TargetProblem{TargetField::kId,
+                           "id " + std::to_string(target.id) + " is not in " + name +
+                               ", whose ids are 0 to " + std::to_string(entry->size - 1),
+                           "give the id printed with the tag, and the " + std::string(what) +
+                               " it was generated from"};
+    }
+    return std::nullopt;
+  }
   const long last = static_cast<long>(target.first_id) + MarkerCount(target);
   if (last > entry->size) {
     return TargetProblem{target.first_id > 0 ? TargetField::kFirstId : field,
@@ -174,6 +192,10 @@ std::string_view TargetTypeName(TargetType type) {
       return "circles";
     case TargetType::kAsymmetricCircles:
       return "acircles";
+    case TargetType::kAruco:
+      return "aruco";
+    case TargetType::kAprilTag:
+      return "apriltag";
   }
   throw std::invalid_argument("TargetTypeName: unknown TargetType value");
 }
@@ -207,6 +229,10 @@ std::string_view TargetFieldName(TargetField field) {
       return "family";
     case TargetField::kFirstId:
       return "first_id";
+    case TargetField::kId:
+      return "id";
+    case TargetField::kSize:
+      return "size";
   }
   throw std::invalid_argument("TargetFieldName: unknown TargetField value");
 }
@@ -220,22 +246,27 @@ FieldUse TargetFieldUse(TargetType type, TargetField field) {
     return condition ? FieldUse::kRequired : FieldUse::kUnused;
   };
   const bool grid = type == TargetType::kArucoGrid || type == TargetType::kAprilTagGrid;
+  const bool tag = IsSingleTag(type);
   switch (field) {
     case TargetField::kCols:
     case TargetField::kRows:
-      return FieldUse::kRequired;
+      return required_if(!tag);
     case TargetField::kSquare:
-      return required_if(!grid);
+      return required_if(!grid && !tag);
     case TargetField::kMarker:
       return required_if(type == TargetType::kCharuco || grid);
     case TargetField::kSpacing:
       return required_if(grid);
     case TargetField::kDictionary:
-      return required_if(type == TargetType::kCharuco || type == TargetType::kArucoGrid);
+      return required_if(type == TargetType::kCharuco || type == TargetType::kArucoGrid ||
+                         type == TargetType::kAruco);
     case TargetField::kFamily:
-      return required_if(type == TargetType::kAprilTagGrid);
+      return required_if(type == TargetType::kAprilTagGrid || type == TargetType::kAprilTag);
     case TargetField::kFirstId:
       return grid ? FieldUse::kOptional : FieldUse::kUnused;
+    case TargetField::kId:
+    case TargetField::kSize:
+      return required_if(tag);
   }
   throw std::invalid_argument("TargetFieldUse: unknown TargetField value");
 }
@@ -247,6 +278,10 @@ std::span<const MarkerDictionary> AprilTagFamilies() {
   return kAprilTagFamilies;
 }
 
+bool IsSingleTag(TargetType type) {
+  return type == TargetType::kAruco || type == TargetType::kAprilTag;
+}
+
 int MarkerCount(const TargetSpec& target) {
   switch (target.type) {
     case TargetType::kCharuco:
@@ -254,6 +289,9 @@ int MarkerCount(const TargetSpec& target) {
     case TargetType::kArucoGrid:
     case TargetType::kAprilTagGrid:
       return target.cols * target.rows;
+    case TargetType::kAruco:
+    case TargetType::kAprilTag:
+      return 1;
     case TargetType::kChessboard:
     case TargetType::kCircles:
     case TargetType::kAsymmetricCircles:
@@ -269,6 +307,9 @@ int PointCount(const TargetSpec& target) {
     case TargetType::kArucoGrid:
     case TargetType::kAprilTagGrid:
       return 4 * target.cols * target.rows;
+    case TargetType::kAruco:
+    case TargetType::kAprilTag:
+      return 4;
     case TargetType::kChessboard:
     case TargetType::kCircles:
     case TargetType::kAsymmetricCircles:
@@ -285,11 +326,14 @@ std::optional<TargetProblem> CheckTarget(const TargetSpec& target) {
           "remove it, or choose the target type that has it"};
     }
   }
-  if (auto problem = CheckCount(target, TargetField::kCols, target.cols)) return problem;
-  if (auto problem = CheckCount(target, TargetField::kRows, target.rows)) return problem;
+  if (!IsSingleTag(target.type)) {
+    if (auto problem = CheckCount(target, TargetField::kCols, target.cols)) return problem;
+    if (auto problem = CheckCount(target, TargetField::kRows, target.rows)) return problem;
+  }
   const std::pair<TargetField, double> lengths[] = {{TargetField::kSquare, target.square},
                                                     {TargetField::kMarker, target.marker},
-                                                    {TargetField::kSpacing, target.spacing}};
+                                                    {TargetField::kSpacing, target.spacing},
+                                                    {TargetField::kSize, target.size}};
   for (const auto& [field, value] : lengths) {
     if (TargetFieldUse(target.type, field) != FieldUse::kRequired) continue;
     if (auto problem = CheckLength(target, field, value)) return problem;
@@ -312,6 +356,10 @@ std::optional<TargetProblem> CheckTarget(const TargetSpec& target) {
     return TargetProblem{TargetField::kFirstId,
                          "first_id is " + std::to_string(target.first_id) + ", not an id",
                          "give the id of the top-left marker (0 or more)"};
+  }
+  if (target.id < 0) {
+    return TargetProblem{TargetField::kId, "id is " + std::to_string(target.id) + ", not an id",
+                         "give the id printed with the tag (0 or more)"};
   }
   if (TargetFieldUse(target.type, TargetField::kDictionary) == FieldUse::kRequired) {
     return CheckIds(target, TargetField::kDictionary, kArucoDictionaries, target.dictionary,
@@ -365,6 +413,15 @@ std::vector<ObjectPoint> ObjectPoints(const TargetSpec& target) {
           add(x, y + target.marker);
         }
       }
+      break;
+    }
+    case TargetType::kAruco:
+    case TargetType::kAprilTag: {
+      const double half = target.size / 2.0;
+      add(-half, -half);
+      add(half, -half);
+      add(half, half);
+      add(-half, half);
       break;
     }
   }

@@ -1,6 +1,7 @@
 // hecal's target geometry against OpenCV 4.6 on identical specs: ChArUco and ArUco-grid object
-// points from cv::aruco's own boards, chessboard and circle-grid point order from OpenCV's
-// detectors on rendered images, and the dictionary / AprilTag family tables from the libraries.
+// points from cv::aruco's own boards, a single tag's frame against estimatePoseSingleMarkers'
+// object points, chessboard and circle-grid point order from OpenCV's detectors on rendered
+// images, and the dictionary / AprilTag family tables from the libraries.
 #include <apriltag/apriltag.h>
 #include <apriltag/tag16h5.h>
 #include <apriltag/tag25h9.h>
@@ -146,6 +147,45 @@ TEST(TargetOpenCv, GridCornersMatchGridBoard) {
               << TargetTypeName(type) << " marker " << m << " corner " << k;
         }
       }
+    }
+  }
+}
+
+// A single tag against OpenCV 4.6's estimatePoseSingleMarkers, which reports the object points it
+// used for the corners it is given (aruco order, as hecal's ids 0..3): with the default
+// PatternPos CCW_center they are hecal's turned half a turn about x, diag(1, −1, −1) (y up, z out
+// of the tag); with CW_top_left_corner, hecal's moved by (size/2, size/2) (target.h).
+TEST(TargetOpenCv, SingleTagFrameAgainstEstimatePoseSingleMarkers) {
+  TargetSpec spec;
+  spec.type = TargetType::kAruco;
+  spec.dictionary = "DICT_4X4_50";
+  spec.id = 3;
+  spec.size = 0.07;
+  const std::vector<ObjectPoint> points = ObjectPoints(spec);
+  // Any corners in front of a camera: the object points do not depend on them.
+  const std::vector<std::vector<cv::Point2f>> corners = {
+      {{300.f, 200.f}, {380.f, 205.f}, {378.f, 290.f}, {298.f, 284.f}}};
+  const cv::Matx33d K(600.0, 0.0, 320.0, 0.0, 600.0, 240.0, 0.0, 0.0, 1.0);
+  const Eigen::Vector3d turn(1.0, -1.0, -1.0);
+  for (const cv::aruco::PatternPos pattern :
+       {cv::aruco::CCW_center, cv::aruco::CW_top_left_corner}) {
+    const cv::Ptr<cv::aruco::EstimateParameters> parameters =
+        cv::aruco::EstimateParameters::create();
+    parameters->pattern = pattern;
+    std::vector<cv::Vec3d> rvecs, tvecs;
+    cv::Mat object;
+    cv::aruco::estimatePoseSingleMarkers(corners, static_cast<float>(spec.size), K, cv::noArray(),
+                                         rvecs, tvecs, object, parameters);
+    ASSERT_EQ(object.total(), 4u);
+    for (int k = 0; k < 4; ++k) {
+      const cv::Point3f theirs = object.at<cv::Point3f>(k);
+      const Eigen::Vector3d& ours = points[static_cast<size_t>(k)].position;
+      const Eigen::Vector3d expected =
+          pattern == cv::aruco::CCW_center
+              ? Eigen::Vector3d(turn.cwiseProduct(ours))
+              : Eigen::Vector3d(ours + Eigen::Vector3d(spec.size / 2.0, spec.size / 2.0, 0.0));
+      EXPECT_LT(Distance(expected, theirs), kFloatTolerance)
+          << "pattern " << pattern << " corner " << k;
     }
   }
 }

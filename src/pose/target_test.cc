@@ -41,6 +41,19 @@ TargetSpec ArucoGrid(int cols, int rows, double marker, double spacing) {
   return spec;
 }
 
+TargetSpec Tag(TargetType type, int id, double size) {
+  TargetSpec spec;
+  spec.type = type;
+  spec.id = id;
+  spec.size = size;
+  if (type == TargetType::kAruco) {
+    spec.dictionary = "DICT_4X4_50";
+  } else {
+    spec.family = "tag36h11";
+  }
+  return spec;
+}
+
 // One valid spec of every type.
 std::vector<TargetSpec> EveryType() {
   TargetSpec circles = Chessboard(4, 5, 0.02);
@@ -56,15 +69,25 @@ std::vector<TargetSpec> EveryType() {
           ArucoGrid(4, 3, 0.0256, 0.0066),
           april,
           circles,
-          acircles};
+          acircles,
+          Tag(TargetType::kAruco, 7, 0.05),
+          Tag(TargetType::kAprilTag, 0, 0.08)};
 }
 
 TEST(Target, NamesRoundTrip) {
-  ASSERT_EQ(TargetTypes().size(), 6u);
+  ASSERT_EQ(TargetTypes().size(), 8u);
+  ASSERT_EQ(EveryType().size(), TargetTypes().size());
   for (const TargetType type : TargetTypes()) {
     EXPECT_EQ(ParseTargetType(TargetTypeName(type)), type);
   }
   EXPECT_EQ(TargetTypeName(TargetType::kAsymmetricCircles), "acircles");
+  EXPECT_EQ(TargetTypeName(TargetType::kAruco), "aruco");
+  EXPECT_EQ(TargetTypeName(TargetType::kAprilTag), "apriltag");
+  for (const TargetField field : TargetFields()) {
+    EXPECT_FALSE(TargetFieldName(field).empty());
+  }
+  EXPECT_EQ(TargetFieldName(TargetField::kId), "id");
+  EXPECT_EQ(TargetFieldName(TargetField::kSize), "size");
   EXPECT_FALSE(ParseTargetType("Chessboard").has_value());
   EXPECT_FALSE(ParseTargetType("checkerboard").has_value());
 }
@@ -78,8 +101,10 @@ TEST(Target, IdsAreConsecutiveAndCountMatches) {
     for (size_t k = 0; k < points.size(); ++k) {
       EXPECT_EQ(points[k].id, static_cast<int>(k));
       EXPECT_EQ(points[k].position.z(), 0.0);
-      EXPECT_GE(points[k].position.x(), 0.0);  // origin at the top-left: x, y ≥ 0
-      EXPECT_GE(points[k].position.y(), 0.0);
+      if (!IsSingleTag(spec.type)) {  // origin at the top-left: x, y ≥ 0 (a tag's is its centre)
+        EXPECT_GE(points[k].position.x(), 0.0);
+        EXPECT_GE(points[k].position.y(), 0.0);
+      }
       distinct.insert({points[k].position.x(), points[k].position.y()});
     }
     EXPECT_EQ(distinct.size(), points.size()) << TargetTypeName(spec.type);
@@ -148,6 +173,24 @@ TEST(Target, GridMarkersAreClockwiseSquares) {
   EXPECT_NEAR(points[46].position.y(), 0.0900, 1e-15);
 }
 
+// A single tag: its centre is the origin, x right, y down (libapriltag's tag frame), corners
+// clockwise from the top-left as seen on the print, the side `size` apart.
+TEST(Target, SingleTagCornersAroundTheCentre) {
+  for (const TargetType type : {TargetType::kAruco, TargetType::kAprilTag}) {
+    const TargetSpec spec = Tag(type, 3, 0.08);
+    EXPECT_TRUE(IsSingleTag(type));
+    EXPECT_EQ(MarkerCount(spec), 1);
+    EXPECT_EQ(PointCount(spec), 4);
+    const std::vector<ObjectPoint> points = ObjectPoints(spec);
+    ASSERT_EQ(points.size(), 4u);
+    EXPECT_TRUE(points[0].position.isApprox(Eigen::Vector3d(-0.04, -0.04, 0.0)));  // top-left
+    EXPECT_TRUE(points[1].position.isApprox(Eigen::Vector3d(0.04, -0.04, 0.0)));   // top-right
+    EXPECT_TRUE(points[2].position.isApprox(Eigen::Vector3d(0.04, 0.04, 0.0)));    // bottom-right
+    EXPECT_TRUE(points[3].position.isApprox(Eigen::Vector3d(-0.04, 0.04, 0.0)));   // bottom-left
+  }
+  EXPECT_FALSE(IsSingleTag(TargetType::kAprilTagGrid));
+}
+
 TEST(Target, DictionaryTables) {
   ASSERT_EQ(ArucoDictionaries().size(), 21u);
   EXPECT_EQ(ArucoDictionaries()[0].name, "DICT_4X4_50");
@@ -171,6 +214,17 @@ TEST(Target, FieldUse) {
   EXPECT_EQ(TargetFieldUse(TargetType::kAprilTagGrid, TargetField::kFamily), FieldUse::kRequired);
   EXPECT_EQ(TargetFieldUse(TargetType::kAprilTagGrid, TargetField::kDictionary), FieldUse::kUnused);
   EXPECT_EQ(TargetFieldUse(TargetType::kAprilTagGrid, TargetField::kFirstId), FieldUse::kOptional);
+  EXPECT_EQ(TargetFieldUse(TargetType::kAprilTagGrid, TargetField::kSize), FieldUse::kUnused);
+  for (const TargetType tag : {TargetType::kAruco, TargetType::kAprilTag}) {
+    EXPECT_EQ(TargetFieldUse(tag, TargetField::kId), FieldUse::kRequired);
+    EXPECT_EQ(TargetFieldUse(tag, TargetField::kSize), FieldUse::kRequired);
+    EXPECT_EQ(TargetFieldUse(tag, TargetField::kCols), FieldUse::kUnused);
+    EXPECT_EQ(TargetFieldUse(tag, TargetField::kMarker), FieldUse::kUnused);
+    EXPECT_EQ(TargetFieldUse(tag, TargetField::kFirstId), FieldUse::kUnused);
+  }
+  EXPECT_EQ(TargetFieldUse(TargetType::kAruco, TargetField::kDictionary), FieldUse::kRequired);
+  EXPECT_EQ(TargetFieldUse(TargetType::kAprilTag, TargetField::kFamily), FieldUse::kRequired);
+  EXPECT_EQ(TargetFieldUse(TargetType::kAprilTag, TargetField::kDictionary), FieldUse::kUnused);
 }
 
 // The field CheckTarget blames and a piece of its message.
@@ -236,6 +290,26 @@ TEST(Target, CheckRejectsUnusableSpecs) {
   april.family = "tag36h11";
   april.spacing = 0.0;
   ExpectProblem(april, TargetField::kSpacing, "positive length");
+
+  // Single tags: the id must exist in the dictionary / family (DICT_4X4_50: 0..49; tag16h5:
+  // 0..29), be non-negative, and the size positive; grid keys do not apply.
+  TargetSpec tag = Tag(TargetType::kAruco, 49, 0.05);
+  EXPECT_FALSE(CheckTarget(tag).has_value());
+  tag.id = 50;
+  ExpectProblem(tag, TargetField::kId, "id 50 is not in DICT_4X4_50, whose ids are 0 to 49");
+  tag.id = -2;
+  ExpectProblem(tag, TargetField::kId, "id is -2");
+  tag.id = 1;
+  tag.size = 0.0;
+  ExpectProblem(tag, TargetField::kSize, "size must be a positive length");
+  tag.size = 0.05;
+  tag.cols = 2;
+  ExpectProblem(tag, TargetField::kCols, "does not apply to aruco targets");
+  TargetSpec april_tag = Tag(TargetType::kAprilTag, 30, 0.05);
+  april_tag.family = "tag16h5";
+  ExpectProblem(april_tag, TargetField::kId, "id 30 is not in tag16h5");
+  april_tag.marker = 0.05;
+  ExpectProblem(april_tag, TargetField::kMarker, "does not apply to apriltag targets");
 
   TargetSpec even = Chessboard(4, 10, 0.02);
   even.type = TargetType::kAsymmetricCircles;

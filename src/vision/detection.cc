@@ -246,7 +246,7 @@ cv::Mat ToGray(const cv::Mat& image) {
 }
 
 std::string KeepUniqueMarkers(std::vector<int>* ids, std::vector<std::vector<cv::Point2f>>* corners,
-                              const std::string& noun) {
+                              const std::string& noun, const std::vector<int>& others) {
   std::vector<int> repeated;
   for (const int id : *ids) {
     if (std::count(ids->begin(), ids->end(), id) > 1 &&
@@ -264,15 +264,37 @@ std::string KeepUniqueMarkers(std::vector<int>* ids, std::vector<std::vector<cv:
   ids->resize(kept);
   corners->resize(kept);
   std::string summary = std::to_string(kept) + " " + noun;
-  if (!repeated.empty()) {
-    summary += " (ids seen more than once, dropped:";
-    for (const int id : repeated) {
+  const auto list = [&summary](const std::string& what, const std::vector<int>& list_ids) {
+    if (list_ids.empty()) return;
+    summary += " (" + what + ":";
+    for (const int id : list_ids) {
       summary += ' ';
       summary += std::to_string(id);
     }
     summary += ")";
-  }
+  };
+  list("ids seen more than once, dropped", repeated);
+  std::vector<int> other_ids = others;
+  std::sort(other_ids.begin(), other_ids.end());
+  other_ids.erase(std::unique(other_ids.begin(), other_ids.end()), other_ids.end());
+  list("other ids in view, not the target's, ignored", other_ids);
   return summary;
+}
+
+MarkerGrid MarkerGridOf(const pose::TargetSpec& target) {
+  MarkerGrid grid;
+  if (pose::IsSingleTag(target.type)) {
+    grid.marker = target.size;
+    grid.first_id = target.id;
+    grid.origin = cv::Point2d(-target.size / 2.0, -target.size / 2.0);
+    return grid;
+  }
+  grid.cols = target.cols;
+  grid.rows = target.rows;
+  grid.marker = target.marker;
+  grid.spacing = target.spacing;
+  grid.first_id = target.first_id;
+  return grid;
 }
 
 std::vector<ImagePoint> GridMarkerPoints(const std::vector<int>& ids,
@@ -370,9 +392,11 @@ Detection DetectTarget(const cv::Mat& image, const pose::TargetSpec& target,
     case pose::TargetType::kCharuco:
       return internal::DetectCharuco(gray, target, options);
     case pose::TargetType::kArucoGrid:
-      return internal::DetectArucoGrid(gray, target, options);
+    case pose::TargetType::kAruco:
+      return internal::DetectArucoMarkers(gray, target, options);
     case pose::TargetType::kAprilTagGrid:
-      return internal::DetectAprilTagGrid(gray, target, options);
+    case pose::TargetType::kAprilTag:
+      return internal::DetectAprilTags(gray, target, options);
   }
   return NotFound(target, "unknown target type");
 }

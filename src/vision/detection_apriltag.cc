@@ -1,5 +1,5 @@
-// AprilTag grid detection with libapriltag 3.3, and the tag families shared with the renderer
-// (detection.h: corner order and id scheme).
+// AprilTag grid and single-tag detection with libapriltag 3.3, and the tag families shared with
+// the renderer (detection.h: corner order and id scheme).
 #include <apriltag.h>
 #include <tag16h5.h>
 #include <tag25h9.h>
@@ -102,8 +102,9 @@ cv::Mat AprilTagCells(const AprilTagFamily& family, int id) {
   return cells;
 }
 
-Detection DetectAprilTagGrid(const cv::Mat& gray, const pose::TargetSpec& target,
-                             const DetectOptions& options) {
+Detection DetectAprilTags(const cv::Mat& gray, const pose::TargetSpec& target,
+                          const DetectOptions& options) {
+  const MarkerGrid grid = MarkerGridOf(target);
   const AprilTagFamily family(target.family);
   const std::unique_ptr<apriltag_detector_t, DetectorDeleter> detector(apriltag_detector_create());
   apriltag_detector_add_family_bits(detector.get(), family.get(), options.apriltag_max_hamming);
@@ -117,23 +118,28 @@ Detection DetectAprilTagGrid(const cv::Mat& gray, const pose::TargetSpec& target
 
   std::vector<std::vector<cv::Point2f>> corners;
   std::vector<int> ids;
-  const int markers = target.cols * target.rows;
+  std::vector<int> others;
+  const int markers = grid.cols * grid.rows;
   for (int k = 0; k < zarray_size(found.get()); ++k) {
     apriltag_detection_t* tag = nullptr;
     zarray_get(found.get(), k, &tag);
-    const int m = tag->id - target.first_id;
-    if (m < 0 || m >= markers || tag->hamming > options.apriltag_max_hamming) continue;
+    if (tag->hamming > options.apriltag_max_hamming) continue;
+    const int m = tag->id - grid.first_id;
+    if (m < 0 || m >= markers) {
+      others.push_back(tag->id);
+      continue;
+    }
     std::vector<cv::Point2f> quad;
     for (const int corner : kAprilTagCornerOf) {
-      quad.emplace_back(static_cast<float>(tag->p[corner][0]),
-                        static_cast<float>(tag->p[corner][1]));
+      quad.emplace_back(static_cast<float>(tag->p[corner][0] - kPixelCentreOffset),
+                        static_cast<float>(tag->p[corner][1] - kPixelCentreOffset));
     }
     corners.push_back(std::move(quad));
     ids.push_back(tag->id);
   }
-  const std::string summary = KeepUniqueMarkers(&ids, &corners, "tags");
+  const std::string summary = KeepUniqueMarkers(&ids, &corners, "tags", others);
   RefineMarkerCorners(gray, family.width_at_border(), &corners);
-  std::vector<ImagePoint> points = GridMarkerPoints(ids, corners, target.first_id);
+  std::vector<ImagePoint> points = GridMarkerPoints(ids, corners, grid.first_id);
   return MarkerDetection(gray, target, options, std::move(points), summary);
 }
 

@@ -51,13 +51,30 @@ class AprilTagFamily {
 // 1 = white, 0 = black (apriltag_to_image).
 cv::Mat AprilTagCells(const AprilTagFamily& family, int id);
 
+// The markers of a target made of markers only, as a grid: aruco_grid and apriltag_grid as
+// they are, a single tag (aruco, apriltag) as a 1 × 1 grid of its id with no neighbours
+// (spacing 0). `origin` is the top-left corner of marker 0 in the target frame: (0, 0) for the
+// grids, (−size/2, −size/2) for a single tag (pose/target.h). Marker m's corners are point ids
+// 4m + 0..3 either way.
+struct MarkerGrid {
+  int cols = 1;
+  int rows = 1;
+  double marker = 0.0;   // side, metres
+  double spacing = 0.0;  // gap between neighbours, metres
+  int first_id = 0;      // tag id of marker 0
+  cv::Point2d origin;
+};
+// For aruco_grid, apriltag_grid, aruco and apriltag targets.
+MarkerGrid MarkerGridOf(const pose::TargetSpec& target);
+
 // The per-type detectors (detection_markers.cc, detection_apriltag.cc); `gray` is 8-bit grey.
+// The marker detectors take aruco_grid and aruco, apriltag_grid and apriltag targets.
 Detection DetectCharuco(const cv::Mat& gray, const pose::TargetSpec& target,
                         const DetectOptions& options);
-Detection DetectArucoGrid(const cv::Mat& gray, const pose::TargetSpec& target,
-                          const DetectOptions& options);
-Detection DetectAprilTagGrid(const cv::Mat& gray, const pose::TargetSpec& target,
+Detection DetectArucoMarkers(const cv::Mat& gray, const pose::TargetSpec& target,
                              const DetectOptions& options);
+Detection DetectAprilTags(const cv::Mat& gray, const pose::TargetSpec& target,
+                          const DetectOptions& options);
 
 // Edge-based corner refinement (detection_edges.cc).
 // Moves the corners of square markers (4 each, in order around the marker) to the intersections
@@ -72,9 +89,10 @@ void RefineSaddleCorners(const cv::Mat& gray, int cols, int rows, double band_fr
                          std::vector<std::optional<cv::Point2f>>* grid);
 
 // Removes every marker whose id occurs more than once (which of them belongs to the board cannot
-// be told); returns "<count> <noun>", naming the dropped ids.
+// be told); returns "<count> <noun>", naming the dropped ids and, when `others` (decoded ids
+// that are not the target's, ignored) is not empty, those.
 std::string KeepUniqueMarkers(std::vector<int>* ids, std::vector<std::vector<cv::Point2f>>* corners,
-                              const std::string& noun);
+                              const std::string& noun, const std::vector<int>& others);
 
 // The corner points of grid markers (aruco_grid, apriltag_grid): marker id first_id + m gives
 // point ids 4m + 0..3 from its corners in aruco order.

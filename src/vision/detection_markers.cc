@@ -1,4 +1,5 @@
-// ChArUco and ArUco grid detection with OpenCV 4.6's contrib aruco module (detection.h).
+// ChArUco, ArUco grid and single ArUco marker detection with OpenCV 4.6's contrib aruco module
+// (detection.h).
 #include <algorithm>
 #include <opencv2/aruco.hpp>
 #include <opencv2/aruco/charuco.hpp>
@@ -16,11 +17,11 @@ constexpr double kCharucoBandFraction = 0.5;
 struct Markers {
   std::vector<std::vector<cv::Point2f>> corners;
   std::vector<int> ids;
-  std::string summary;  // "12 markers", plus repeated ids
+  std::string summary;  // "12 markers", plus repeated ids and ids not on the board
 };
 
 // Detects the markers of `board`, recovers missed ones with the board layout and drops ids seen
-// more than once or not on the board.
+// more than once or not on the board (named in the summary).
 Markers DetectBoardMarkers(const cv::Mat& gray, const cv::Ptr<cv::aruco::Board>& board) {
   // Corners are refined afterwards (RefineMarkerCorners); the marker corners only seed them.
   const cv::Ptr<cv::aruco::DetectorParameters> parameters = cv::aruco::DetectorParameters::create();
@@ -32,8 +33,10 @@ Markers DetectBoardMarkers(const cv::Mat& gray, const cv::Ptr<cv::aruco::Board>&
                                    cv::noArray(), cv::noArray(), 10.f, 3.f, true, cv::noArray(),
                                    parameters);
   size_t kept = 0;
+  std::vector<int> others;
   for (size_t k = 0; k < markers.ids.size(); ++k) {
     if (std::find(board->ids.begin(), board->ids.end(), markers.ids[k]) == board->ids.end()) {
+      others.push_back(markers.ids[k]);
       continue;
     }
     markers.ids[kept] = markers.ids[k];
@@ -42,7 +45,7 @@ Markers DetectBoardMarkers(const cv::Mat& gray, const cv::Ptr<cv::aruco::Board>&
   }
   markers.ids.resize(kept);
   markers.corners.resize(kept);
-  markers.summary = KeepUniqueMarkers(&markers.ids, &markers.corners, "markers");
+  markers.summary = KeepUniqueMarkers(&markers.ids, &markers.corners, "markers", others);
   return markers;
 }
 
@@ -87,14 +90,18 @@ Detection DetectCharuco(const cv::Mat& gray, const pose::TargetSpec& target,
   return MarkerDetection(gray, target, options, std::move(points), markers.summary);
 }
 
-Detection DetectArucoGrid(const cv::Mat& gray, const pose::TargetSpec& target,
-                          const DetectOptions& options) {
+Detection DetectArucoMarkers(const cv::Mat& gray, const pose::TargetSpec& target,
+                             const DetectOptions& options) {
+  const MarkerGrid grid = MarkerGridOf(target);
+  // GridBoard::create requires a positive separation; a single marker has no neighbour, and any
+  // separation gives the same 1 × 1 board.
+  const double separation = grid.spacing > 0.0 ? grid.spacing : grid.marker;
   const cv::Ptr<cv::aruco::GridBoard> board = cv::aruco::GridBoard::create(
-      target.cols, target.rows, static_cast<float>(target.marker),
-      static_cast<float>(target.spacing), ArucoDictionary(target.dictionary), target.first_id);
+      grid.cols, grid.rows, static_cast<float>(grid.marker), static_cast<float>(separation),
+      ArucoDictionary(target.dictionary), grid.first_id);
   Markers markers = DetectBoardMarkers(gray, board);
   RefineMarkerCorners(gray, board->dictionary->markerSize + 2, &markers.corners);
-  std::vector<ImagePoint> points = GridMarkerPoints(markers.ids, markers.corners, target.first_id);
+  std::vector<ImagePoint> points = GridMarkerPoints(markers.ids, markers.corners, grid.first_id);
   return MarkerDetection(gray, target, options, std::move(points), markers.summary);
 }
 

@@ -142,14 +142,33 @@ class PrintedBoard {
         y1 = target.rows * markers_.pitch - target.spacing;
         break;
       }
+      case pose::TargetType::kAruco: {
+        const cv::Ptr<cv::aruco::Dictionary> dictionary =
+            internal::ArucoDictionary(target.dictionary);
+        markers_.n = dictionary->markerSize + 2;
+        markers_.cell = target.size / markers_.n;
+        markers_.pitch = target.size;
+        markers_.cols = 1;
+        markers_.rows = 1;
+        markers_.origin_x = -target.size / 2.0;
+        markers_.origin_y = -target.size / 2.0;
+        markers_.cells = {ArucoCells(*dictionary, target.id)};
+        pitch = target.size;
+        x0 = y0 = -target.size / 2.0;
+        x1 = y1 = target.size / 2.0;
+        break;
+      }
       case pose::TargetType::kAprilTagGrid:
-        SetAprilTags(target);
-        pitch = target.marker;
+      case pose::TargetType::kAprilTag: {
+        const internal::MarkerGrid grid = internal::MarkerGridOf(target);
+        SetAprilTags(target.family, grid);
+        pitch = grid.marker;
         x0 = markers_.origin_x;
         y0 = markers_.origin_y;
-        x1 = markers_.origin_x + (target.cols - 1) * markers_.pitch + markers_.n * markers_.cell;
-        y1 = markers_.origin_y + (target.rows - 1) * markers_.pitch + markers_.n * markers_.cell;
+        x1 = markers_.origin_x + (grid.cols - 1) * markers_.pitch + markers_.n * markers_.cell;
+        y1 = markers_.origin_y + (grid.rows - 1) * markers_.pitch + markers_.n * markers_.cell;
         break;
+      }
       case pose::TargetType::kCircles:
       case pose::TargetType::kAsymmetricCircles: {
         SetCircles(target, options.circle_radius);
@@ -192,6 +211,8 @@ class PrintedBoard {
       }
       case pose::TargetType::kArucoGrid:
       case pose::TargetType::kAprilTagGrid:
+      case pose::TargetType::kAruco:
+      case pose::TargetType::kAprilTag:
         return markers_.At(x, y).value_or(1.0);
       case pose::TargetType::kCircles:
       case pose::TargetType::kAsymmetricCircles:
@@ -201,37 +222,41 @@ class PrintedBoard {
   }
 
  private:
-  void SetAprilTags(const pose::TargetSpec& target) {
-    const internal::AprilTagFamily family(target.family);
+  // The tags of an apriltag_grid, or the one tag of an apriltag target (a 1 × 1 grid).
+  void SetAprilTags(const std::string& family_name, const internal::MarkerGrid& grid) {
+    const internal::AprilTagFamily family(family_name);
     const int total_width = family.total_width();
     const int width_at_border = family.width_at_border();
-    markers_.cell = target.marker / width_at_border;
-    markers_.pitch = target.marker + target.spacing;
-    markers_.cols = target.cols;
-    markers_.rows = target.rows;
-    markers_.cells.resize(static_cast<size_t>(target.cols * target.rows));
+    markers_.cell = grid.marker / width_at_border;
+    markers_.cols = grid.cols;
+    markers_.rows = grid.rows;
+    markers_.cells.resize(static_cast<size_t>(grid.cols * grid.rows));
     // Outer rings that are white on every tag print like the paper: drop them, so that only
     // cells with ink must fit between neighbouring markers.
     int rings = total_width;
     for (size_t m = 0; m < markers_.cells.size(); ++m) {
-      markers_.cells[m] = internal::AprilTagCells(family, target.first_id + static_cast<int>(m));
+      markers_.cells[m] = internal::AprilTagCells(family, grid.first_id + static_cast<int>(m));
       rings = std::min(rings, WhiteRings(markers_.cells[m]));
     }
     const int n = total_width - 2 * rings;
     for (cv::Mat& cells : markers_.cells) cells = cells(cv::Rect(rings, rings, n, n)).clone();
     markers_.n = n;
     const double overhang = (markers_.n - width_at_border) / 2.0 * markers_.cell;
-    markers_.origin_x = -overhang;
-    markers_.origin_y = -overhang;
-    if (markers_.n * markers_.cell > markers_.pitch * (1.0 + 1e-12)) {
+    markers_.origin_x = grid.origin.x - overhang;
+    markers_.origin_y = grid.origin.y - overhang;
+    const double printed = markers_.n * markers_.cell;
+    const double pitch = grid.marker + grid.spacing;
+    if (markers_.cells.size() > 1 && printed > pitch * (1.0 + 1e-12)) {
       std::ostringstream problem;
-      problem << "the " << target.family << " tags print " << markers_.n << " cells across ("
-              << markers_.n * markers_.cell << " m), more than the marker pitch " << markers_.pitch
+      problem << "the " << family_name << " tags print " << markers_.n << " cells across ("
+              << printed << " m), more than the marker pitch " << pitch
               << " m: neighbouring tags would overlap";
-      throw InputError("target", 0, problem.str(),
-                       "increase spacing to at least " +
-                           std::to_string(markers_.n * markers_.cell - target.marker) + " m");
+      throw InputError(
+          "target", 0, problem.str(),
+          "increase spacing to at least " + std::to_string(printed - grid.marker) + " m");
     }
+    // A single tag has no neighbour: its lattice cell is the printed tag.
+    markers_.pitch = std::max(pitch, printed);
   }
 
   void SetCircles(const pose::TargetSpec& target, double radius_fraction) {

@@ -87,6 +87,23 @@ TEST(RenderTarget, ArucoGridMatchesOpenCvDrawing) {
   EXPECT_LT(FractionDiffering(ours, theirs), 0.002);
 }
 
+// A single ArUco marker is centred on the target origin (pose/target.h): seen frontally with the
+// tag's top-left corner on pixel corner (0, 0), it is OpenCV's drawMarker, pixel for pixel.
+TEST(RenderTarget, SingleArucoMarkerMatchesOpenCvDrawing) {
+  pose::TargetSpec target;
+  target.type = pose::TargetType::kAruco;
+  target.dictionary = "DICT_4X4_250";
+  target.id = 17;
+  constexpr double kPixel = 1e-4;
+  target.size = 60 * kPixel;  // 6 cells of 10 px
+  FrontalView view = Frontal(60, 60, kPixel);
+  view.T_camera_target.translation() += Eigen::Vector3d(target.size / 2, target.size / 2, 0.0);
+  const cv::Mat ours = RenderTarget(target, view.camera, view.T_camera_target, BlackAndWhite());
+  cv::Mat theirs;
+  cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_250)->drawMarker(17, 60, theirs, 1);
+  EXPECT_EQ(FractionDiffering(ours, theirs), 0.0);
+}
+
 // Area-exactness: the imaged amount of black (Σ (white − I) / (white − black) over the board)
 // equals the area of the projected black squares, so edges sit where they should. A dilation of
 // the black by δ px would add δ × the squares' perimeter (here ~2000 px): the tolerance, 1 px²,

@@ -1,9 +1,10 @@
 // Calibration targets: their description (target.yaml, DESIGN.md §4.1; docs/targets.md) and the
 // 3-D positions of their points in the target frame. Lengths in metres; every point has z = 0.
 //
-// The target frame is OpenCV 4.6's frame for each type, so poses compare with OpenCV's: x to the
-// right along the columns, y down along the rows, z = x × y into the board (away from a viewer
-// facing the printed side). Origin and point ids (what a detection reports for each pixel):
+// The target frame of a board is OpenCV 4.6's frame for that board, so poses compare with
+// OpenCV's; a single tag's is libapriltag's. In every one x runs to the right (along the
+// columns), y down (along the rows), z = x × y into the board (away from a viewer facing the
+// printed side). Origin and point ids (what a detection reports for each pixel):
 //
 //   chessboard  cols × rows inner corners. Corner (c, r) has id r·cols + c and sits at
 //               (c·square, r·square, 0): the origin is the first inner corner, the order is
@@ -32,6 +33,21 @@
 //               OpenCV's aruco order: top-left, top-right, bottom-right, bottom-left (clockwise as
 //               seen on the printed side). For AprilTags, `marker` is the side of the square
 //               libapriltag's detection corners span (its tagsize).
+//   aruco, apriltag  ONE marker: tag `id` of the dictionary / family, side `size` (like
+//               `marker` above, the black square the detector's corners span). Origin at the
+//               tag's CENTRE, x to the right, y down, z into the tag: libapriltag 3's tag frame
+//               (apriltag_pose.c, estimate_tag_pose_orthogonal_iteration, puts its detection
+//               corners p[0..3] — bottom-left, bottom-right, top-right, top-left of the printed
+//               tag — at (−s/2, s/2), (s/2, s/2), (s/2, −s/2), (−s/2, −s/2)), also ViSP's
+//               vpDetectorAprilTag with setZAlignedWithCameraAxis(true). Corner ids 0..3 are
+//               top-left, top-right, bottom-right, bottom-left (aruco order, as for the grids) at
+//               (−s/2, −s/2, 0), (s/2, −s/2, 0), (s/2, s/2, 0), (−s/2, s/2, 0), s = size.
+//               OpenCV 4.6's aruco::estimatePoseSingleMarkers (default PatternPos CCW_center) and
+//               ViSP by default put the origin at the centre too, but with y UP and z OUT of the
+//               tag: their pose is T_camera_tag · diag(1, −1, −1), a half turn about x. OpenCV's
+//               CW_top_left_corner pattern is this frame moved to the top-left corner:
+//               T_camera_tag · Translation(−s/2, −s/2, 0). (target_opencv_test checks OpenCV's
+//               object points, detection_tag_test the poses of libapriltag and OpenCV.)
 //
 // OpenCV before 4.6 (and moveit_calibration's numbers) put ArUco/ChArUco boards' origin at the
 // bottom-left with y up and z out of the board; data/moveit-calibration/SOURCE.md converts.
@@ -57,7 +73,9 @@ enum class TargetType {
   kArucoGrid,
   kAprilTagGrid,
   kCircles,
-  kAsymmetricCircles
+  kAsymmetricCircles,
+  kAruco,    // one ArUco marker
+  kAprilTag  // one AprilTag
 };
 
 struct TargetSpec {
@@ -68,11 +86,14 @@ struct TargetSpec {
   double marker = 0.0;     // charuco / aruco_grid / apriltag_grid marker side
   double spacing = 0.0;    // aruco_grid / apriltag_grid gap between neighbouring markers
   std::string dictionary;  // charuco / aruco_grid: an ArucoDictionaries() name, "DICT_5X5_250"
-  std::string family;      // apriltag_grid: an AprilTagFamilies() name, "tag36h11"
+  std::string family;      // apriltag_grid / apriltag: an AprilTagFamilies() name, "tag36h11"
   int first_id = 0;        // grids: tag id of the top-left marker
+  int id = 0;              // aruco / apriltag: the tag's id
+  double size = 0.0;       // aruco / apriltag: the tag's side (see above)
 };
 
-// "chessboard" | "charuco" | "aruco_grid" | "apriltag_grid" | "circles" | "acircles".
+// "chessboard" | "charuco" | "aruco_grid" | "apriltag_grid" | "circles" | "acircles" | "aruco" |
+// "apriltag".
 std::string_view TargetTypeName(TargetType type);
 // The inverse of TargetTypeName; nullopt for any other text.
 std::optional<TargetType> ParseTargetType(std::string_view name);
@@ -80,9 +101,20 @@ std::optional<TargetType> ParseTargetType(std::string_view name);
 std::span<const TargetType> TargetTypes();
 
 // The fields of TargetSpec (target.yaml keys), and which of them a type uses.
-enum class TargetField { kCols, kRows, kSquare, kMarker, kSpacing, kDictionary, kFamily, kFirstId };
+enum class TargetField {
+  kCols,
+  kRows,
+  kSquare,
+  kMarker,
+  kSpacing,
+  kDictionary,
+  kFamily,
+  kFirstId,
+  kId,
+  kSize
+};
 enum class FieldUse { kUnused, kRequired, kOptional };
-std::string_view TargetFieldName(TargetField field);  // "cols", "rows", ..., "first_id"
+std::string_view TargetFieldName(TargetField field);  // "cols", "rows", ..., "id", "size"
 std::span<const TargetField> TargetFields();
 FieldUse TargetFieldUse(TargetType type, TargetField field);
 
@@ -97,10 +129,13 @@ std::span<const MarkerDictionary> ArucoDictionaries();
 // The AprilTag families libapriltag 3.3 (Debian 12's libapriltag-dev) ships.
 std::span<const MarkerDictionary> AprilTagFamilies();
 
-// Markers on the target: charuco ⌊cols·rows/2⌋, grids cols·rows, 0 for the others.
+// True for aruco and apriltag (one marker).
+bool IsSingleTag(TargetType type);
+
+// Markers on the target: charuco ⌊cols·rows/2⌋, grids cols·rows, single tags 1, 0 for the others.
 int MarkerCount(const TargetSpec& target);
 // Points ObjectPoints returns: chessboard/circles/acircles cols·rows, charuco (cols−1)·(rows−1),
-// grids 4·cols·rows.
+// grids 4·cols·rows, single tags 4.
 int PointCount(const TargetSpec& target);
 
 // Why a spec does not describe a usable target: the field at fault, what is wrong, how to fix.
@@ -113,8 +148,9 @@ struct TargetProblem {
 // and lengths positive and finite, names non-empty) and every unused field left at its default;
 // cols, rows ≥ 2 (charuco ≥ 3 squares, so the inner corners are not on one line) and ≤ 1000;
 // marker < square (charuco); a known dictionary / family with enough ids for
-// first_id + MarkerCount markers; first_id ≥ 0; acircles with an odd number of rows (see
-// above).
+// first_id + MarkerCount markers (single tags: id + 1); first_id, id ≥ 0; acircles with an odd
+// number of rows (see above). Whether the lengths are plausible for a printed target is the
+// file reader's question (io/target_file.h), which knows the unit they were written in.
 std::optional<TargetProblem> CheckTarget(const TargetSpec& target);
 
 struct ObjectPoint {

@@ -36,16 +36,21 @@
 //                  — CORNER_REFINE_SUBPIX — pulls these L-corners 0.15–0.25 px into the marker).
 //                  Partial allowed.
 //   apriltag_grid  libapriltag (apriltag_detector_detect, quad_decimate =
-//   options.apriltag_decimate,
-//                  at most options.apriltag_max_hamming corrected bits), same id scheme as
-//                  aruco_grid. libapriltag lists a tag's corners p[0..3] counter-clockwise as seen
-//                  in the image (u right, v down), starting at the printed tag's bottom-left:
-//                  bottom-left, bottom-right, top-right, top-left (apriltag_to_image row 0 at the
-//                  top); id 4m + k takes p[3 − k], so the order and handedness are aruco's
-//                  (clockwise in the image from the top-left). libapriltag puts pixel centres at
-//                  +0.5, so 0.5 px is subtracted; corners are then refined like aruco_grid's.
-//                  Render → detect tests check both against the projected corners.
-//   Marker ids seen more than once are dropped (named in the message).
+//                  options.apriltag_decimate, at most options.apriltag_max_hamming corrected
+//                  bits), same id scheme as aruco_grid. libapriltag lists a tag's corners p[0..3]
+//                  counter-clockwise as seen in the image (u right, v down), starting at the
+//                  printed tag's bottom-left: bottom-left, bottom-right, top-right, top-left
+//                  (apriltag_to_image row 0 at the top); id 4m + k takes p[3 − k], so the order
+//                  and handedness are aruco's (clockwise in the image from the top-left).
+//                  libapriltag puts pixel centres at +0.5, so 0.5 px is subtracted; corners are
+//                  then refined like aruco_grid's. Render → detect tests check both against the
+//                  projected corners.
+//   aruco,         one tag: the detectors above on a 1 × 1 grid whose only marker is `id`, so its
+//   apriltag       corners are point ids 0..3 (top-left, top-right, bottom-right, bottom-left).
+//                  Every other tag in view is ignored. found or not_found (a tag is decoded
+//                  whole or not at all).
+//   Marker ids seen more than once are dropped (named in the message); ids of the dictionary /
+//   family that are not the target's are ignored and named too (a wrong id or first_id shows).
 //
 // Status:
 //   found      every point of the target (grid types), or every point of a marker target.

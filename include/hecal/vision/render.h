@@ -30,11 +30,13 @@
 //   apriltag_grid  apriltag_to_image(family, first_id + m): the width_at_border² central cells
 //               span the marker square; outer rings that are white on every tag are left to the
 //               paper, the others (reversed-border families) must fit in the spacing.
+//   aruco, apriltag  the one marker `id` drawn as above, its black square (side `size`) centred
+//               on the target origin (pose/target.h).
 //   circles, acircles  black discs of radius options.circle_radius × the smallest distance
 //               between two centres, centred on pose::ObjectPoints.
 //   Around the pattern a white border of options.margin × the pattern pitch (square; marker for
-//   the grids) on every side; outside it and where rays miss the board (or the plane is behind
-//   the camera), options.background.
+//   the grids; size for a single tag) on every side; outside it and where rays miss the board (or
+//   the plane is behind the camera), options.background.
 // Then, in this order: Gaussian blur of options.blur_sigma px (none when 0), additive Gaussian
 // noise of options.noise_sigma grey levels (std::mt19937_64 seeded with options.seed), rounding
 // and saturation to 8 bits.
