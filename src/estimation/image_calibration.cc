@@ -81,7 +81,21 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   if (!calibrate.camera_sigma && !stations.empty()) {
     calibrate.camera_sigma = CameraSigmaFromCovariances(stations);
   }
-  out.pose_level = Calibrate(problem, calibrate);
+  // The pose-level camera sigma above is a crude summary of the PnP covariances (isotropic, the
+  // same for every image), so the outlier test at that level uses each image's own PnP
+  // covariance (station_selection.h): it rejects stations that disagree with the others, not
+  // stations whose PnP pose is merely less precise than the average.
+  StationSelection selection = AllStations(n);
+  if (calibrate.reject_outliers) {
+    StationSelectionOptions selection_options;
+    selection_options.robot_sigma = options.calibrate.robot_sigma;
+    selection_options.camera_sigma = calibrate.camera_sigma;
+    for (const ImageStation& station : stations)
+      selection_options.camera_covariances.push_back(station.camera_covariance);
+    selection_options.consensus = calibrate.consensus;
+    selection = SelectStations(problem, selection_options);
+  }
+  out.pose_level = Calibrate(problem, calibrate, selection);
 
   ReprojectionOptions reprojection;
   reprojection.setup = options.setup;

@@ -15,6 +15,32 @@ int CountUnused(const std::vector<bool>& used) {
   return static_cast<int>(std::count(used.begin(), used.end(), false));
 }
 
+// The stations' camera noise replaced by their own covariances (unit weight on the camera
+// rotation component, none on the camera translation component), and the robot noise of the
+// candidate set estimated next to them unless given.
+NoiseVariances WithCameraCovariances(const StationSelectionOptions& options,
+                                     const std::vector<bool>& candidate, double length_scale,
+                                     std::vector<StationLinearization>* stations) {
+  std::vector<StationLinearization> set;
+  for (size_t i = 0; i < stations->size(); ++i) {
+    StationLinearization& station = (*stations)[i];
+    station.components[kCameraRotation] = options.camera_covariances.at(i);
+    station.components[kCameraTranslation].setZero();
+    if (candidate[i]) set.push_back(station);
+  }
+  NoiseSpec spec;
+  spec.variances[kCameraRotation] = 1.0;
+  spec.variances[kCameraTranslation] = 0.0;
+  if (options.robot_sigma) {
+    spec.variances[kRobotRotation] = options.robot_sigma->rotation * options.robot_sigma->rotation;
+    spec.variances[kRobotTranslation] =
+        options.robot_sigma->translation * options.robot_sigma->translation;
+    return spec.variances;
+  }
+  spec.group = {0, 1, -1, -1};
+  return EstimateNoise(set, spec, length_scale).variances;
+}
+
 }  // namespace
 
 std::vector<int> StationSelection::Rejected() const {
@@ -50,8 +76,12 @@ StationSelection SelectStations(const handeye::Problem& problem,
     const handeye::Problem set = handeye::SubProblem(problem, candidate);
     handeye::CheckObservability(set);
     const MlResult fit = RefineMl(set, StartingSolutions(set), ml_options);
-    selection.tests =
-        TestStations(LinearizeStations(problem, fit.X, fit.Z), candidate, fit.noise.variances);
+    std::vector<StationLinearization> stations = LinearizeStations(problem, fit.X, fit.Z);
+    NoiseVariances variances = fit.noise.variances;
+    if (!options.camera_covariances.empty()) {
+      variances = WithCameraCovariances(options, candidate, handeye::LengthScale(set), &stations);
+    }
+    selection.tests = TestStations(stations, candidate, variances);
     selection.used = candidate;
     selection.rounds = round + 1;
     std::vector<bool> next(n);

@@ -36,6 +36,12 @@ namespace hecal::estimation {
 struct StationSelectionOptions {
   std::optional<PoseSigma> robot_sigma;   // given; estimated from the set when absent
   std::optional<PoseSigma> camera_sigma;  // given; estimated from the set when absent
+  // Camera poses measured by PnP: each station's own covariance of T_camera_target (right,
+  // (ω, v)). When given (one per station), the test uses them as the known camera noise —
+  // a PnP pose's precision varies strongly between views (distance, tilt, points seen), which
+  // one isotropic camera sigma cannot describe — and estimates the robot noise (unless given)
+  // next to them; camera_sigma then only weights the ml fit.
+  std::vector<Matrix6d> camera_covariances;
   handeye::ConsensusOptions consensus;
 };
 
