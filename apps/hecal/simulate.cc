@@ -32,6 +32,10 @@ Bound: first-order (Cramer-Rao-type) RMSE of the ml estimate at the truth, RMS o
 --covariance: every method is told the true noise model and predicts the covariance of X;
   NEES = e' C^-1 e of e = Log(X_est^-1 X_true), its mean should lie in the chi-square band,
   1-sigma / 2-sigma ellipsoid coverage should be 68.3% / 95.4%.
+--outliers K: K stations per data set get a random robot pose; every method also solves the
+  data set without them (the clean reference). --reject-outliers: every method runs through
+  calibrate's outlier rejection; the table adds the fraction of gross outliers found, of good
+  stations rejected, and the RMSE over the clean reference's RMSE.
 Same --seed, same CSV files whatever --threads.)";
 
 std::vector<SigmaLevel> ParseSigmaLevels(const std::string& text) {
@@ -89,6 +93,29 @@ void PrintConsistency(const study::StudyResult& result, size_t setting, std::ost
   }
 }
 
+// Outlier rejection per method (with --reject-outliers or --outliers), one line per method.
+void PrintRejection(const study::StudyResult& result, size_t setting, std::ostream& out) {
+  const study::Setting& s = result.options.settings[setting];
+  if (!result.options.reject_outliers && s.gross_outliers == 0) return;
+  out << "  " << Pad("method", 18, true) << Pad("found", 9) << Pad("all found", 11)
+      << Pad("good rej", 10) << Pad("rmse clean", 12) << Pad("ratio", 7)
+      << Pad("rmse clean [mm]", 17) << Pad("ratio", 7) << "\n";
+  for (const study::MethodSummary& m : result.summaries) {
+    if (m.setting != static_cast<int>(setting)) continue;
+    const auto percent = [](int part, int whole) {
+      return whole > 0 ? Fixed(100.0 * part / whole, 1) + "%" : std::string("-");
+    };
+    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+        << Pad(percent(m.outliers_rejected, m.outliers_injected), 9)
+        << Pad(percent(m.trials_all_found, m.trials - m.failures), 11)
+        << Pad(percent(m.good_rejected, m.good_stations), 10)
+        << Pad(Readable(m.rotation_rmse_clean * kDeg), 12)
+        << Pad(Fixed(m.rotation.rmse / m.rotation_rmse_clean, 3), 7)
+        << Pad(Readable(m.translation_rmse_clean * 1000.0), 17)
+        << Pad(Fixed(m.translation.rmse / m.translation_rmse_clean, 3), 7) << "\n";
+  }
+}
+
 void PrintTable(const study::StudyResult& result, std::ostream& out) {
   const auto& settings = result.options.settings;
   size_t row = 0;
@@ -99,7 +126,11 @@ void PrintTable(const study::StudyResult& result, std::ostream& out) {
         << study::NoiseOnName(setting.noise_on) << ", sigma "
         << study::FormatNumber(setting.translation_sigma * 1000.0) << " mm / "
         << study::FormatNumber(setting.rotation_sigma * kDeg) << " deg, " << result.options.trials
-        << " trials\n";
+        << " trials";
+    if (setting.gross_outliers > 0) {
+      out << ", " << setting.gross_outliers << " gross outlier(s) per data set";
+    }
+    out << "\n";
     const study::Bound& bound = result.setting_bounds[s];
     out << "  first-order bound (ml at the truth): rotation RMSE "
         << Readable(bound.rotation * kDeg) << " deg, translation RMSE "
@@ -123,6 +154,7 @@ void PrintTable(const study::StudyResult& result, std::ostream& out) {
           << Pad(Readable(m.translation.max * 1000.0), 11) << "\n";
     }
     PrintConsistency(result, s, out);
+    PrintRejection(result, s, out);
     out << "\n";
   }
 }
@@ -141,6 +173,7 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
     setups.push_back(*setup);
   }
   const std::vector<int> stations = ParseIntList("--stations", flags.stations, 3);
+  const std::vector<int> outliers = ParseIntList("--outliers", flags.outliers, 0);
   std::vector<study::NoiseOn> noise_on;
   for (const std::string& item : SplitList("--noise-on", flags.noise_on)) {
     const std::optional<study::NoiseOn> value = study::ParseNoiseOn(item);
@@ -182,19 +215,23 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
   options.trials = flags.trials;
   options.threads = flags.threads;
   options.seed = flags.seed;
+  options.reject_outliers = flags.reject_outliers;
   for (handeye::Setup setup : setups) {
     for (study::NoiseOn on : noise_on) {
       for (sim::NoiseModel::Kind kind : kinds) {
         for (const SigmaLevel& sigma : sigmas) {
           for (int n : stations) {
-            study::Setting setting;
-            setting.setup = setup;
-            setting.stations = n;
-            setting.noise_on = on;
-            setting.noise_kind = kind;
-            setting.translation_sigma = sigma.mm * 1e-3;
-            setting.rotation_sigma = sigma.deg / kDeg;
-            options.settings.push_back(setting);
+            for (int k : outliers) {
+              study::Setting setting;
+              setting.setup = setup;
+              setting.stations = n;
+              setting.noise_on = on;
+              setting.noise_kind = kind;
+              setting.translation_sigma = sigma.mm * 1e-3;
+              setting.rotation_sigma = sigma.deg / kDeg;
+              setting.gross_outliers = k;
+              options.settings.push_back(setting);
+            }
           }
         }
       }
@@ -241,6 +278,12 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->add_option("--covariance-samples", flags->covariance_samples,
                    "Monte Carlo samples per trial with --covariance montecarlo")
       ->capture_default_str();
+  simulate
+      ->add_option("--outliers", flags->outliers,
+                   "Stations per data set given a random robot pose (gross outliers; list sweeps)")
+      ->capture_default_str();
+  simulate->add_flag("--reject-outliers", flags->reject_outliers,
+                     "Every method through calibrate's outlier rejection (counts what it rejects)");
   simulate->add_option("--output", flags->output, "Per-trial CSV (written atomically)");
   simulate->add_option("--summary", flags->summary, "Summary CSV (written atomically)");
   simulate->footer(kFooter);

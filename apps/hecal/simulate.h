@@ -10,6 +10,7 @@
 //                  [--seed N] [--threads N]                     default 1, 0 (= every core)
 //                  [--covariance none|default|linear|unscented|montecarlo]  default none
 //                  [--covariance-samples N]                     default 1000 (montecarlo)
+//                  [--outliers K[,K...]] [--reject-outliers]    default 0, off
 //                  [--output trials.csv] [--summary summary.csv]
 // Every list flag is a sweep; the study runs the Cartesian product (setup × noise-on × noise ×
 // sigma × stations). A noise LEVEL is either one number n — n mm on each translation component
@@ -21,6 +22,11 @@
 // method's own default, estimation::DefaultCovarianceMethod) with the setting's noise model,
 // and the table and summary gain consistency columns: mean NEES with its 95% χ² band, 1σ/2σ
 // coverage, predicted/empirical standard deviation per axis (study.h).
+// --outliers K (a sweep too): K stations per data set get a random robot pose
+// (sim/gross_outliers.h); each method also solves the data set without them (the reference).
+// --reject-outliers: every method runs through calibrate's outlier rejection
+// (estimation/station_selection.h); the table and summary then report the fraction of gross
+// outliers found, of good stations rejected, and the RMSE against the reference.
 // Prints a table per setting (stdout); --output and --summary write the CSV files of
 // study/study_csv.h atomically. Bad flags are InputError (exit 2, one line on stderr).
 #pragma once
@@ -46,6 +52,8 @@ struct SimulateFlags {
   std::string summary;
   std::string covariance = "none";
   int covariance_samples = 1000;
+  std::string outliers = "0";
+  bool reject_outliers = false;
 };
 
 // Runs the study; throws hecal::InputError for bad flags.

@@ -13,6 +13,8 @@
 #include "hecal/estimation/calibrate.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
+#include "hecal/handeye/station_consensus.h"
+#include "hecal/sim/gross_outliers.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "hecal/sim/triangle_threshold.h"
 #include "hecal/uncertainty/parallel_for.h"
@@ -68,25 +70,28 @@ void SetRefinementSigmas(const Setting& setting, estimation::CalibrateOptions* o
 struct Estimate {
   Pose X;
   std::optional<Matrix6d> covariance_X;
+  std::vector<int> rejected;  // with outlier rejection: the stations left out
 };
 
 // One method on one data set. Without a covariance, closed-form methods go straight to their
 // solver (what `hecal bench` times) and the refinements through Calibrate with the noise model
 // of the setting; with one, every method goes through Calibrate with that noise model.
 Estimate SolveX(handeye::Method method, const handeye::Problem& problem, const Setting& setting,
-                const estimation::CovarianceOptions& covariance) {
+                const StudyOptions& study) {
+  const estimation::CovarianceOptions& covariance = study.covariance;
   const bool wants_covariance = covariance.method != estimation::CovarianceMethod::kNone;
-  if (handeye::Info(method).closed_form && !wants_covariance) {
-    return {handeye::SolveClosedForm(method, problem).X, std::nullopt};
+  if (handeye::Info(method).closed_form && !wants_covariance && !study.reject_outliers) {
+    return {handeye::SolveClosedForm(method, problem).X, std::nullopt, {}};
   }
   estimation::CalibrateOptions options;
   options.method = method;
   options.covariance = covariance;
   options.covariance.threads = 1;  // the trials run in parallel already
+  options.reject_outliers = study.reject_outliers;
   SetRefinementSigmas(setting, &options);
   const estimation::CalibrationResult result = estimation::Calibrate(problem, options);
-  if (result.covariance) return {result.X, result.covariance->X()};
-  return {result.X, std::nullopt};
+  if (result.covariance) return {result.X, result.covariance->X(), result.rejected};
+  return {result.X, std::nullopt, result.rejected};
 }
 
 // The first-order bound of the data set at the truth: 0 without noise, NaN when the noise model
@@ -177,6 +182,12 @@ void ValidateStudyOptions(const StudyOptions& options) {
                        "needs at least 3 stations (2 motions), got " + std::to_string(s.stations),
                        "the thesis' k motions are k + 1 stations");
     }
+    if (s.gross_outliers < 0 || s.stations - s.gross_outliers < 3) {
+      throw InputError("--outliers", 0,
+                       std::to_string(s.gross_outliers) + " gross outliers in " +
+                           std::to_string(s.stations) + " stations leave fewer than 3 good ones",
+                       "give 0 to stations - 3 outliers");
+    }
     if (!(s.translation_sigma >= 0.0) || !(s.rotation_sigma >= 0.0) ||
         !std::isfinite(s.translation_sigma) || !std::isfinite(s.rotation_sigma)) {
       throw InputError("--sigma", 0, "noise levels must be finite and non-negative",
@@ -214,10 +225,15 @@ StudyResult RunStudy(const StudyOptions& options) {
     sim::ProtocolOptions protocol;
     protocol.setup = setting.setup;
     protocol.stations = setting.stations;
-    const sim::SimulatedData data = sim::SimulateThesisProtocol(
+    sim::SimulatedData data = sim::SimulateThesisProtocol(
         protocol, NoiseFor(setting, setting.noise_on != NoiseOn::kCamera),
         NoiseFor(setting, setting.noise_on != NoiseOn::kRobot), rng);
+    const sim::SimulatedData clean_data = data;
+    const std::vector<int> replaced = sim::InjectGrossOutliers(&data, setting.gross_outliers, rng);
     const handeye::Problem problem = data.MeasuredProblem();
+    std::vector<bool> good(problem.A.size(), true);
+    for (int i : replaced) good[static_cast<size_t>(i)] = false;
+    const handeye::Problem clean = handeye::SubProblem(clean_data.MeasuredProblem(), good);
     const size_t base = (static_cast<size_t>(job.setting) * trials + job.trial) * methods;
     for (int m = 0; m < methods; ++m) {
       TrialResult& trial = result.trials[base + m];
@@ -226,7 +242,7 @@ StudyResult RunStudy(const StudyOptions& options) {
       trial.method = options.methods[m];
       trial.rotation_error = trial.translation_error = kNaN;
       try {
-        const Estimate estimate = SolveX(trial.method, problem, setting, options.covariance);
+        const Estimate estimate = SolveX(trial.method, problem, setting, options);
         if (!IsFinite(estimate.X)) {
           trial.status = TrialStatus::kNonFinite;
           continue;
@@ -238,6 +254,14 @@ StudyResult RunStudy(const StudyOptions& options) {
           trial.error_X = se3::Log(estimate.X.inverse() * data.X);
           trial.covariance_X = estimate.covariance_X;
           trial.nees = uncertainty::Nees(trial.error_X, *estimate.covariance_X);
+        }
+        for (int i : estimate.rejected)
+          ++(good[static_cast<size_t>(i)] ? trial.rejected_good : trial.rejected_outliers);
+        if (!replaced.empty()) {
+          const RotationTranslation clean_error =
+              PoseError(SolveX(trial.method, clean, setting, options).X, data.X);
+          trial.rotation_error_clean = clean_error.rotation;
+          trial.translation_error_clean = clean_error.translation;
         }
       } catch (const std::exception& e) {
         trial.status = TrialStatus::kThrew;
@@ -285,6 +309,9 @@ StudyResult RunStudy(const StudyOptions& options) {
       double inlier_rotation_sq = 0.0, inlier_translation_sq = 0.0;
       int inliers = 0;
       double worst_rotation = 0.0, worst_translation = 0.0;
+      double clean_rotation_sq = 0.0, clean_translation_sq = 0.0;
+      int clean_trials = 0;
+      const Setting& setting = options.settings[s];
       std::vector<Eigen::VectorXd> errors;
       std::vector<Eigen::MatrixXd> covariances;
       for (int t = 0; t < trials; ++t) {
@@ -302,6 +329,16 @@ StudyResult RunStudy(const StudyOptions& options) {
           errors.emplace_back(trial.error_X);
           covariances.emplace_back(*trial.covariance_X);
         }
+        summary.outliers_injected += setting.gross_outliers;
+        summary.outliers_rejected += trial.rejected_outliers;
+        summary.good_stations += setting.stations - setting.gross_outliers;
+        summary.good_rejected += trial.rejected_good;
+        if (trial.rejected_outliers == setting.gross_outliers) ++summary.trials_all_found;
+        if (std::isfinite(trial.rotation_error_clean)) {
+          ++clean_trials;
+          clean_rotation_sq += trial.rotation_error_clean * trial.rotation_error_clean;
+          clean_translation_sq += trial.translation_error_clean * trial.translation_error_clean;
+        }
         const Bound& bound = result.bounds[s][t];
         worst_rotation = std::max(worst_rotation, rotation[t] / bound.rotation);
         worst_translation = std::max(worst_translation, translation[t] / bound.translation);
@@ -309,6 +346,10 @@ StudyResult RunStudy(const StudyOptions& options) {
       summary.rotation_rmse_inliers = inliers > 0 ? std::sqrt(inlier_rotation_sq / inliers) : kNaN;
       summary.translation_rmse_inliers =
           inliers > 0 ? std::sqrt(inlier_translation_sq / inliers) : kNaN;
+      if (clean_trials > 0) {
+        summary.rotation_rmse_clean = std::sqrt(clean_rotation_sq / clean_trials);
+        summary.translation_rmse_clean = std::sqrt(clean_translation_sq / clean_trials);
+      }
       const bool bounded = std::isfinite(result.setting_bounds[s].rotation) &&
                            result.setting_bounds[s].rotation > 0.0;
       summary.worst_rotation_over_bound = bounded ? worst_rotation : kNaN;

@@ -49,7 +49,8 @@ std::string TrialsCsv(const StudyResult& result) {
   std::ostringstream out;
   out << "setup,stations,noise_on,noise,sigma_mm,sigma_deg,trial,method,status,"
          "rotation_error_deg,translation_error_mm,outlier,bound_rotation_deg,"
-         "bound_translation_mm,nees,message\n";
+         "bound_translation_mm,nees,message,gross_outliers,rejected_outliers,rejected_good,"
+         "rotation_error_clean_deg,translation_error_clean_mm\n";
   for (const TrialResult& trial : result.trials) {
     const Setting& setting = result.options.settings[trial.setting];
     const Bound& bound = result.bounds[trial.setting][trial.trial];
@@ -58,7 +59,10 @@ std::string TrialsCsv(const StudyResult& result) {
         << ',' << FormatNumber(trial.translation_error * kMm) << ',' << (trial.outlier ? 1 : 0)
         << ',' << FormatNumber(bound.rotation * kDeg) << ','
         << FormatNumber(bound.translation * kMm) << ',' << FormatNumber(trial.nees) << ','
-        << (trial.message.empty() ? std::string() : Quoted(trial.message)) << '\n';
+        << (trial.message.empty() ? std::string() : Quoted(trial.message)) << ','
+        << setting.gross_outliers << ',' << trial.rejected_outliers << ',' << trial.rejected_good
+        << ',' << FormatNumber(trial.rotation_error_clean * kDeg) << ','
+        << FormatNumber(trial.translation_error_clean * kMm) << '\n';
   }
   return out.str();
 }
@@ -72,7 +76,8 @@ std::string SummaryCsv(const StudyResult& result) {
          "bound_rotation_rmse_deg,bound_translation_rmse_mm,worst_rotation_over_bound,"
          "worst_translation_over_bound,mean_nees,nees_band_low,nees_band_high,coverage_1sigma,"
          "coverage_2sigma,sd_ratio_rx,sd_ratio_ry,sd_ratio_rz,sd_ratio_tx,sd_ratio_ty,"
-         "sd_ratio_tz\n";
+         "sd_ratio_tz,gross_outliers,outliers_found,good_rejected,trials_all_found,"
+         "rotation_rmse_clean_deg,translation_rmse_clean_mm\n";
   for (const MethodSummary& s : result.summaries) {
     const Bound& bound = result.setting_bounds[s.setting];
     out << SettingColumns(result.options.settings[s.setting]) << ',' << handeye::Info(s.method).name
@@ -93,6 +98,15 @@ std::string SummaryCsv(const StudyResult& result) {
     } else {
       out << ",nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan";
     }
+    const auto fraction = [](int part, int whole) {
+      return whole > 0 ? static_cast<double>(part) / whole : std::nan("");
+    };
+    out << ',' << result.options.settings[s.setting].gross_outliers << ','
+        << FormatNumber(fraction(s.outliers_rejected, s.outliers_injected)) << ','
+        << FormatNumber(fraction(s.good_rejected, s.good_stations)) << ','
+        << FormatNumber(fraction(s.trials_all_found, s.trials - s.failures)) << ','
+        << FormatNumber(s.rotation_rmse_clean * kDeg) << ','
+        << FormatNumber(s.translation_rmse_clean * kMm);
     out << '\n';
   }
   return out.str();

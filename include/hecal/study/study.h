@@ -22,6 +22,11 @@
 // covariance; the summary adds their consistency (uncertainty/consistency.h: mean NEES and its
 // 95% χ² band for 6 dof, 1σ/2σ ellipsoid coverage, predicted/empirical sd per axis). Inner
 // solves run on the trial's own thread (the trials are already parallel).
+// Gross outliers (Setting::gross_outliers, sim/gross_outliers.h): after the noise, k stations'
+// robot poses are replaced by random poses (drawn from the same trial stream, so settings that
+// differ only in k share their truth, stations and noise); each method also solves the same data
+// set without those stations, the reference its error is compared with. With
+// StudyOptions::reject_outliers the study counts which stations each method rejected.
 // Failures: a method that throws (e.g. DegenerateError) or returns a non-finite pose is a failed
 // trial (status and message kept, errors NaN); failures are not outliers and are left out of
 // the statistics.
@@ -58,6 +63,8 @@ struct Setting {
   sim::NoiseModel::Kind noise_kind = sim::NoiseModel::Kind::kGaussian;
   double translation_sigma = 0.0;  // metres, per component
   double rotation_sigma = 0.0;     // radians, per component
+  // Stations per data set whose robot pose is replaced by a random pose (sim/gross_outliers.h).
+  int gross_outliers = 0;
 };
 
 // Per-component standard deviation of the noise a setting puts on one pose (zero for the
@@ -81,6 +88,9 @@ struct StudyOptions {
   // The covariance each trial predicts for X: method nullopt = each method's default
   // (estimation::DefaultCovarianceMethod); kNone (the default) = none, no consistency columns.
   estimation::CovarianceOptions covariance = NoCovariance();
+  // Every method through estimation::Calibrate with its outlier rejection (station_selection.h);
+  // false: the estimators alone (the thesis study), closed forms straight to their solver.
+  bool reject_outliers = false;
 
   static estimation::CovarianceOptions NoCovariance() {
     estimation::CovarianceOptions options;
@@ -90,8 +100,8 @@ struct StudyOptions {
 };
 
 // Throws InputError (source "--<flag>") when options are unusable: no setting, no method,
-// trials < 1, stations < 3, negative sigma, covariance options (estimation::
-// ValidateCovarianceOptions).
+// trials < 1, stations < 3, negative sigma, gross outliers < 0 or leaving fewer than 3 good
+// stations, covariance options (estimation::ValidateCovarianceOptions).
 void ValidateStudyOptions(const StudyOptions& options);
 
 enum class TrialStatus { kOk, kThrew, kNonFinite };
@@ -113,6 +123,13 @@ struct TrialResult {
   Vector6d error_X = Vector6d::Constant(std::numeric_limits<double>::quiet_NaN());
   std::optional<Matrix6d> covariance_X;
   double nees = std::numeric_limits<double>::quiet_NaN();
+  // With gross outliers or reject_outliers: the stations the method rejected, split into the
+  // replaced ones and good ones, and (gross outliers only) the errors of the same method on
+  // the same data set without the replaced stations.
+  int rejected_outliers = 0;
+  int rejected_good = 0;
+  double rotation_error_clean = std::numeric_limits<double>::quiet_NaN();
+  double translation_error_clean = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A rotation and a translation magnitude: an error against the truth, or a bound.
@@ -142,6 +159,16 @@ struct MethodSummary {
   // With a covariance: the consistency of the predicted covariances of X with the errors, over
   // the trials that succeeded (outliers included: a covariance should cover them too).
   std::optional<uncertainty::Consistency> consistency;
+  // Outlier rejection over the successful trials: gross outliers injected and rejected, good
+  // stations and good stations rejected, trials in which every gross outlier was rejected, and
+  // the RMS errors without the replaced stations (NaN without gross outliers).
+  int outliers_injected = 0;
+  int outliers_rejected = 0;
+  int good_stations = 0;
+  int good_rejected = 0;
+  int trials_all_found = 0;
+  double rotation_rmse_clean = std::numeric_limits<double>::quiet_NaN();
+  double translation_rmse_clean = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct StudyResult {

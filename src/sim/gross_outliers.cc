@@ -1,0 +1,35 @@
+#include "hecal/sim/gross_outliers.h"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+namespace hecal::sim {
+
+std::vector<int> InjectGrossOutliers(SimulatedData* data, int count, std::mt19937_64& rng) {
+  const int n = static_cast<int>(data->T_base_gripper.size());
+  if (count < 0 || count > n) {
+    throw std::invalid_argument("InjectGrossOutliers: count must be within [0, stations]");
+  }
+  std::vector<int> stations(static_cast<size_t>(n));
+  std::iota(stations.begin(), stations.end(), 0);
+  for (int i = 0; i < count; ++i) {  // partial Fisher–Yates
+    std::uniform_int_distribution<int> pick(i, n - 1);
+    std::swap(stations[static_cast<size_t>(i)], stations[static_cast<size_t>(pick(rng))]);
+  }
+  stations.resize(static_cast<size_t>(count));
+  std::sort(stations.begin(), stations.end());
+  std::normal_distribution<double> gaussian;
+  std::uniform_real_distribution<double> box(-1.0, 1.0);
+  for (int i : stations) {
+    Eigen::Quaterniond q;
+    do {
+      q = Eigen::Quaterniond(gaussian(rng), gaussian(rng), gaussian(rng), gaussian(rng));
+    } while (q.norm() < 1e-6);
+    const Eigen::Vector3d t(box(rng), box(rng), box(rng));
+    data->T_base_gripper[static_cast<size_t>(i)] = MakePose(q.normalized().toRotationMatrix(), t);
+  }
+  return stations;
+}
+
+}  // namespace hecal::sim
