@@ -33,8 +33,9 @@
 // kClearlyBetter (4) times smaller and the other no more than kNotWorse (1.5) times larger,
 // medians floored at 1e-9 rad and 1e-9 of the length scale. For correct data every
 // alternative is far worse (a wrong inversion leaves residuals of the order of the rotations
-// between stations), so this never fires on them: measured 0 false alarms in 2000 simulated
-// correct data sets (convention_diagnosis_test; README, "When your data will not calibrate").
+// between stations), so this never fires on them: 0 false alarms in 1200 simulated correct data
+// sets, and 1077 of 1080 mistaken ones named (convention_diagnosis_test; README, "When your data
+// will not calibrate").
 #pragma once
 
 #include <optional>
