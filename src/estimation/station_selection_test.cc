@@ -1,0 +1,97 @@
+#include "hecal/estimation/station_selection.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <random>
+
+#include "hecal/geometry/se3.h"
+#include "hecal/sim/gross_outliers.h"
+#include "testing/handeye_cases.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// A moderate outlier (a 4° robot error against 0.5° noise per axis) is rejected, and it alone.
+TEST(SelectStations, AModerateOutlierIsRejected) {
+  sim::SimulatedData data =
+      testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 41, 0.5 * kDeg, 1e-3);
+  Vector6d offset;
+  offset << 0.0, 4.0 * kDeg, 0.0, 0.0, 0.0, 0.0;
+  data.T_base_gripper[4] = data.T_base_gripper[4] * se3::Exp(offset);
+  const StationSelection selection = SelectStations(data.MeasuredProblem(), {});
+  EXPECT_EQ(selection.Rejected(), std::vector<int>{4});
+  EXPECT_FALSE(selection.too_many);
+  EXPECT_GT(selection.tests[4].statistic, ThreeSigmaChiSquare(selection.tests[4].dof));
+  EXPECT_GE(selection.rounds, 1);
+}
+
+// Clean data: over 40 data sets of 20 stations (800 stations, 1 mm / 1°, noise estimated) at
+// most 1% of the stations are rejected — the test's level is 0.27%.
+TEST(SelectStations, CleanDataLoseAlmostNothing) {
+  int rejected = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const handeye::Setup setup =
+        trial % 2 == 0 ? handeye::Setup::kEyeInHand : handeye::Setup::kEyeToHand;
+    const sim::SimulatedData data = testing::ThesisCase(setup, 20, 600 + trial, kDeg, 1e-3);
+    rejected += static_cast<int>(SelectStations(data.MeasuredProblem(), {}).Rejected().size());
+  }
+  EXPECT_LE(rejected, 8);
+}
+
+// More stations fail the test than may be rejected — here the given sigmas are 20 times too
+// small: nothing is rejected and too_many says why.
+TEST(SelectStations, TooManyFlaggedRejectsNothing) {
+  const sim::SimulatedData data =
+      testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 42, kDeg, 1e-3);
+  StationSelectionOptions options;
+  options.robot_sigma = options.camera_sigma = PoseSigma{0.05 * kDeg, 5e-5};
+  const StationSelection selection = SelectStations(data.MeasuredProblem(), options);
+  EXPECT_TRUE(selection.too_many);
+  EXPECT_TRUE(selection.Rejected().empty());
+  EXPECT_GT(selection.flagged, 3);
+}
+
+// Four stations cannot spare one: nothing is tested, every station is used.
+TEST(SelectStations, FourStationsAreAllUsed) {
+  sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 4, 43, kDeg, 1e-3);
+  std::mt19937_64 rng(1);
+  sim::InjectGrossOutliers(&data, 1, rng);
+  const StationSelection selection = SelectStations(data.MeasuredProblem(), {});
+  EXPECT_TRUE(selection.Rejected().empty());
+  EXPECT_EQ(selection.rounds, 0);
+  EXPECT_EQ(AllStations(4).used, std::vector<bool>(4, true));
+}
+
+// Per-station camera covariances (PnP poses): a station whose camera pose is ten times noisier
+// than the others, and whose covariance says so, is kept; with one isotropic camera sigma it
+// would be rejected.
+TEST(SelectStations, PerStationCameraCovariancesKeepImpreciseViews) {
+  std::mt19937_64 rng(44);
+  sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 12, 44);
+  std::vector<Matrix6d> covariances;
+  std::normal_distribution<double> gaussian;
+  for (size_t i = 0; i < data.T_camera_target.size(); ++i) {
+    const double sigma_r = (i == 7 ? 1.0 : 0.1) * kDeg, sigma_t = (i == 7 ? 5e-3 : 5e-4);
+    Vector6d delta;
+    for (int k = 0; k < 6; ++k) delta(k) = gaussian(rng) * (k < 3 ? sigma_r : sigma_t);
+    if (i == 7) delta << 2.0 * sigma_r, -2.0 * sigma_r, 1.5 * sigma_r, 2.0 * sigma_t, 0, 0;
+    data.T_camera_target[i] = data.T_camera_target[i] * se3::Exp(delta);
+    Vector6d variances;
+    variances << Eigen::Vector3d::Constant(sigma_r * sigma_r),
+        Eigen::Vector3d::Constant(sigma_t * sigma_t);
+    covariances.push_back(variances.asDiagonal());
+  }
+  StationSelectionOptions isotropic;
+  isotropic.camera_sigma = PoseSigma{0.1 * kDeg, 5e-4};
+  isotropic.robot_sigma = PoseSigma{0.01 * kDeg, 1e-5};
+  EXPECT_EQ(SelectStations(data.MeasuredProblem(), isotropic).Rejected(), std::vector<int>{7});
+  StationSelectionOptions per_station = isotropic;
+  per_station.camera_covariances = covariances;
+  EXPECT_TRUE(SelectStations(data.MeasuredProblem(), per_station).Rejected().empty());
+}
+
+}  // namespace
+}  // namespace hecal::estimation
