@@ -80,7 +80,7 @@ RobustLoss ValidateOptions(const handeye::Problem& problem, const CalibrateOptio
   }
   if (!(options.robust_scale > 0.0) || !std::isfinite(options.robust_scale)) {
     throw InputError("--robust-scale", 0, "the robust loss scale must be positive",
-                     "use e.g. 3 (whitened units)");
+                     "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
   }
   if (problem.A.size() != problem.B.size()) {
     throw InputError("stations", 0, "the numbers of robot and camera poses differ",

@@ -34,6 +34,7 @@
 #include "hecal/estimation/covariance_method.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
+#include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/station_selection.h"
 #include "hecal/geometry/types.h"
 #include "hecal/handeye/methods.h"
@@ -46,9 +47,9 @@ struct CalibrateOptions {
   std::optional<PoseSigma> robot_sigma;   // --robot-sigma; estimated when absent
   std::optional<PoseSigma> camera_sigma;  // --camera-sigma; estimated when absent
   // Robust loss for ml: "none" | "huber" | "cauchy" (robust_loss.h); scale in whitened units
-  // per component (3: down-weight stations beyond the outlier level).
+  // per component (the default down-weights exactly the stations beyond the outlier level).
   std::string robust_loss = "none";
-  double robust_scale = 3.0;
+  double robust_scale = kOutlierLevelScale;
   // How the covariance of (X, Z) is computed (calibration_covariance.h).
   CovarianceOptions covariance;
   // Reject gross outliers before solving (station_selection.h); false: --keep-outliers.

@@ -47,7 +47,7 @@ struct MlOptions {
   std::optional<PoseSigma> robot_sigma;   // estimated when absent (see above)
   std::optional<PoseSigma> camera_sigma;  // estimated when absent
   RobustLoss robust_loss = RobustLoss::kNone;
-  double robust_scale = 3.0;      // whitened units per component (robust_loss.h)
+  double robust_scale = kOutlierLevelScale;      // whitened units per component (robust_loss.h)
   int max_noise_iterations = 10;  // pose / variance alternations
 };
 
