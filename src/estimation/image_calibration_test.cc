@@ -7,6 +7,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <string>
+#include <vector>
 
 #include "hecal/geometry/se3.h"
 #include "hecal/pose/pose_refinement.h"
@@ -145,6 +148,47 @@ TEST(CalibrateFromImages, MonteCarloCovarianceMatchesTheLinearOne) {
       EXPECT_NEAR(std::sqrt(c.covariance(j, j)), expected, 0.15 * expected + 3 * c.sd_std_error(j))
           << handeye::SetupName(setup) << " axis " << j;
     }
+  }
+}
+
+}  // namespace
+}  // namespace hecal::estimation
+
+namespace hecal::estimation {
+namespace {
+
+// A blurred view (its pixels 10× noisier than the others') is rejected at the image level, and
+// a station whose robot pose is wrong by 5° (a pairing slip) at the pose level; both are listed
+// with the stations' ids, and X is as good as without them.
+TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
+  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kDeg, 0.05e-3};
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    testing::ImageStations s = testing::MakeImageStations(setup, 12, 31, robot, 0.2);
+    std::mt19937_64 rng(9);
+    std::normal_distribution<double> gaussian;
+    for (Eigen::Vector2d& pixel : s.images[3].pixels)
+      pixel += 2.0 * Eigen::Vector2d(gaussian(rng), gaussian(rng));  // 2 px on top of 0.2 px
+    std::vector<ImageStation> stations = Stations(s);
+    Vector6d slip;
+    slip << 0.0, 0.0, 5.0 * kDeg, 0.0, 0.0, 0.0;
+    stations[8].T_base_gripper = stations[8].T_base_gripper * se3::Exp(slip);
+    ImageCalibrationOptions options = Options(setup);
+    for (int i = 0; i < 12; ++i) options.calibrate.station_ids.push_back("im" + std::to_string(i));
+    const ImageCalibrationResult result = CalibrateFromImages(stations, options);
+    EXPECT_EQ(result.pose_level.rejected, std::vector<int>{8}) << handeye::SetupName(setup);
+    EXPECT_EQ(result.image_rejected, std::vector<int>{3});
+    EXPECT_EQ(result.result.rejected, (std::vector<int>{3, 8}));
+    EXPECT_EQ(result.result.rejected_ids, (std::vector<std::string>{"im3", "im8"}));
+    ASSERT_EQ(result.result.rejected_residuals.size(), 2u);
+    EXPECT_GT(result.result.rejected_residuals[1].rotation, 3.0 * kDeg);
+    EXPECT_EQ(result.reprojection.image_rms_px.size(), 10u);
+    EXPECT_EQ(result.result.residuals.size(), 10u);
+    bool named = false;
+    for (const std::string& warning : result.result.warnings)
+      named = named || (warning.rfind("image im3 (", 0) == 0 &&
+                        warning.find(": rejected") != std::string::npos);
+    EXPECT_TRUE(named);
+    EXPECT_LT(se3::Log(s.data.X.inverse() * result.result.X).head<3>().norm(), 0.05 * kDeg);
   }
 }
 
