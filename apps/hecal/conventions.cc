@@ -92,24 +92,20 @@ std::string UnitFix(const std::string& file, bool matrix_lines, const std::strin
                            camera_fix + " (poses alone cannot tell these apart)");
     }
     case Convention::kRobotMillimetres:
-    case Convention::kRobotMetres: {
-      const std::string unit = better.convention == Convention::kRobotMillimetres ? "mm" : "m";
-      throw InputError(
-          robot, 0,
-          "the robot lengths fit as " +
-              std::string(unit == "mm" ? "millimetres, not metres" : "metres, not millimetres") +
-              evidence,
-          UnitFix(robot, flags.robot_matrix_lines, unit));
-    }
+    case Convention::kRobotMetres:
     case Convention::kCameraMillimetres:
     case Convention::kCameraMetres: {
-      const std::string unit = better.convention == Convention::kCameraMillimetres ? "mm" : "m";
+      const bool is_robot = better.convention == Convention::kRobotMillimetres ||
+                            better.convention == Convention::kRobotMetres;
+      const bool millimetres = better.convention == Convention::kRobotMillimetres ||
+                               better.convention == Convention::kCameraMillimetres;
+      const std::string& file = is_robot ? robot : camera;
       throw InputError(
-          camera, 0,
-          "the camera lengths fit as " +
-              std::string(unit == "mm" ? "millimetres, not metres" : "metres, not millimetres") +
-              evidence,
-          UnitFix(camera, flags.camera_matrix_lines, unit));
+          file, 0,
+          std::string(is_robot ? "the robot" : "the camera") + " lengths fit as " +
+              (millimetres ? "millimetres, not metres" : "metres, not millimetres") + evidence,
+          UnitFix(file, is_robot ? flags.robot_matrix_lines : flags.camera_matrix_lines,
+                  millimetres ? "mm" : "m"));
     }
     case Convention::kRobotQuaternionShiftedLeft:
     case Convention::kRobotQuaternionShiftedRight:

@@ -13,26 +13,12 @@
 
 #include "hecal/vision/detection.h"
 #include "render_test_views.h"
+#include "testing/moveit_photos.h"
 
 namespace hecal::vision {
 namespace {
 
-std::string DataFile(const std::string& name) {
-  return std::string(HECAL_SOURCE_DIR) + "/data/moveit-calibration/" + name;
-}
-
-pose::CameraModel Camera(double fx, double fy, double cx, double cy,
-                         const std::array<double, 5>& distortion) {
-  pose::CameraModel camera;
-  camera.fx = fx;
-  camera.fy = fy;
-  camera.cx = cx;
-  camera.cy = cy;
-  camera.width = 640;
-  camera.height = 480;
-  camera.distortion = distortion;
-  return camera;
-}
+using testing::MoveItPhotoPath;
 
 // The pose in the legacy (pre-4.6) board frame, SOURCE.md's conversion.
 Pose LegacyBoardFrame(const Pose& T, double board_height) {
@@ -68,20 +54,14 @@ void CheckPose(const Detection& detection, const pose::TargetSpec& target,
 // 5 × 7 squares, DICT_5X5_250, square 0.1971 / 7 m, marker 0.0176 m; SOURCE.md: 17 markers,
 // 24 corners with OpenCV 4.6.
 TEST(MoveItImages, CharucoBoardPose) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kCharuco;
-  target.cols = 5;
-  target.rows = 7;
-  target.square = 0.1971 / 7.0;
-  target.marker = 0.0176;
-  target.dictionary = "DICT_5X5_250";
-  const cv::Mat image = cv::imread(DataFile("test_charuco_board_detection.jpg"), cv::IMREAD_COLOR);
+  const pose::TargetSpec target = testing::MoveItCharucoBoard();
+  const cv::Mat image =
+      cv::imread(MoveItPhotoPath("test_charuco_board_detection.jpg"), cv::IMREAD_COLOR);
   ASSERT_FALSE(image.empty());
   const Detection detection = DetectTarget(image, target);
   ASSERT_EQ(detection.status, DetectionStatus::kFound) << detection.message;
   EXPECT_EQ(detection.num_points(), 24);
-  const pose::CameraModel camera = Camera(590.6972346, 592.84676713, 322.33104773, 247.40030325,
-                                          {0.15405498, -0.24916842, 0.00350791, -0.00110041, 0.0});
+  const pose::CameraModel camera = testing::MoveItCharucoCamera();
   CheckPose(
       detection, target, camera, 7.0 * target.square,
       {Eigen::Vector3d(-0.31304, -0.01452, -1.14793),
@@ -92,20 +72,14 @@ TEST(MoveItImages, CharucoBoardPose) {
 // 4 × 3 markers, DICT_4X4_250, marker 0.0256 m, separation 0.0066 m, no distortion; SOURCE.md:
 // all 12 markers with OpenCV 4.6.
 TEST(MoveItImages, ArucoGridPose) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kArucoGrid;
-  target.cols = 4;
-  target.rows = 3;
-  target.marker = 0.0256;
-  target.spacing = 0.0066;
-  target.dictionary = "DICT_4X4_250";
-  const cv::Mat image = cv::imread(DataFile("test_aruco_marker_detection.png"), cv::IMREAD_COLOR);
+  const pose::TargetSpec target = testing::MoveItArucoGrid();
+  const cv::Mat image =
+      cv::imread(MoveItPhotoPath("test_aruco_marker_detection.png"), cv::IMREAD_COLOR);
   ASSERT_FALSE(image.empty());
   const Detection detection = DetectTarget(image, target);
   ASSERT_EQ(detection.status, DetectionStatus::kFound) << detection.message;
   EXPECT_EQ(detection.num_points(), 48);
-  const pose::CameraModel camera = Camera(618.6002197265625, 619.1103515625, 321.9837646484375,
-                                          241.1459197998047, {0.0, 0.0, 0.0, 0.0, 0.0});
+  const pose::CameraModel camera = testing::MoveItArucoCamera();
   CheckPose(detection, target, camera, 3.0 * target.marker + 2.0 * target.spacing,
             {Eigen::Vector3d(0.170675, 1.532646, 0.265517),
              Eigen::Vector3d(0.020612, -0.074049, 0.561406),

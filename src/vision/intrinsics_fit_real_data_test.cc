@@ -9,6 +9,7 @@
 
 #include "hecal/vision/intrinsics_fit.h"
 #include "order_consistency_kuka2_views.h"
+#include "testing/moveit_photos.h"
 
 namespace hecal::vision {
 namespace {
@@ -31,22 +32,8 @@ std::vector<CalibrationView> ViewsOf(const std::vector<Detection>& detections,
   return views;
 }
 
-pose::CameraModel MoveItCamera(double fx, double fy, double cx, double cy,
-                               const std::array<double, 5>& distortion) {
-  pose::CameraModel camera;
-  camera.fx = fx;
-  camera.fy = fy;
-  camera.cx = cx;
-  camera.cy = cy;
-  camera.width = 640;
-  camera.height = 480;
-  camera.distortion = distortion;
-  return camera;
-}
-
 cv::Mat MoveItPhoto(const std::string& name) {
-  return cv::imread(std::string(HECAL_SOURCE_DIR) + "/data/moveit-calibration/" + name,
-                    cv::IMREAD_GRAYSCALE);
+  return cv::imread(testing::MoveItPhotoPath(name), cv::IMREAD_GRAYSCALE);
 }
 
 // Measured (E / H px): reference 0.076 / 0.077; fx, fy 10× 23.5 / 1.65; cx, cy swapped
@@ -81,30 +68,15 @@ TEST(IntrinsicsFitRealData, Kuka2ReferenceFitsAndMistakesAreNamed) {
 // Measured: ChArUco photo 0.25 / 0.20 px; ArUco photo declared 4 × 3: 41.9 / 41.8 px, as the
 // print (3 × 4): 0.55 px.
 TEST(IntrinsicsFitRealData, MoveItPhotos) {
-  pose::TargetSpec charuco;
-  charuco.type = pose::TargetType::kCharuco;
-  charuco.cols = 5;
-  charuco.rows = 7;
-  charuco.square = 0.1971 / 7.0;
-  charuco.marker = 0.0176;
-  charuco.dictionary = "DICT_5X5_250";
-  const pose::CameraModel charuco_camera =
-      MoveItCamera(590.6972346, 592.84676713, 322.33104773, 247.40030325,
-                   {0.15405498, -0.24916842, 0.00350791, -0.00110041, 0.0});
+  const pose::TargetSpec charuco = testing::MoveItCharucoBoard();
+  const pose::CameraModel charuco_camera = testing::MoveItCharucoCamera();
   const IntrinsicsFit fit = CheckIntrinsicsFit(
       ViewsOf({DetectTarget(MoveItPhoto("test_charuco_board_detection.jpg"), charuco)}, charuco),
       charuco_camera);
   EXPECT_EQ(fit.verdict, IntrinsicsVerdict::kFits);
 
-  pose::TargetSpec declared;
-  declared.type = pose::TargetType::kArucoGrid;
-  declared.cols = 4;
-  declared.rows = 3;
-  declared.marker = 0.0256;
-  declared.spacing = 0.0066;
-  declared.dictionary = "DICT_4X4_250";
-  const pose::CameraModel aruco_camera = MoveItCamera(
-      618.6002197265625, 619.1103515625, 321.9837646484375, 241.1459197998047, {0, 0, 0, 0, 0});
+  const pose::TargetSpec declared = testing::MoveItArucoGrid();
+  const pose::CameraModel aruco_camera = testing::MoveItArucoCamera();
   const cv::Mat photo = MoveItPhoto("test_aruco_marker_detection.png");
   const IntrinsicsFit layout =
       CheckIntrinsicsFit(ViewsOf({DetectTarget(photo, declared)}, declared), aruco_camera);
