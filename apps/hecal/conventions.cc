@@ -155,6 +155,16 @@ ConventionCheck CheckConventions(handeye::PoseData data, std::optional<Setup> se
                                  const handeye::ConsensusOptions& options) {
   const handeye::ConsensusOptions diagnosis_options = DiagnosisOptions(options);
   ConventionCheck check;
+  if (data.T_base_gripper.size() < 3) {  // nothing to compare: the solver reports the degeneracy
+    if (!setup) {
+      throw InputError("--setup", 0,
+                       "--setup auto needs at least 3 stations to tell the setups apart, got " +
+                           std::to_string(data.T_base_gripper.size()),
+                       "record more stations, or give --setup eye-in-hand or eye-to-hand");
+    }
+    check.setup = *setup;
+    return check;
+  }
   if (setup) {
     data.setup = *setup;
   } else {
