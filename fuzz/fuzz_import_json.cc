@@ -8,7 +8,7 @@
 #include "testing/import_properties.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  hecal::testing::RunImportProperty(hecal::testing::ImportReader::kMoveit, 0, text);
+  hecal::testing::RunImportFuzzInput(hecal::testing::ImportFuzzer::kJson,
+                                     std::string_view(reinterpret_cast<const char*>(data), size));
   return 0;
 }

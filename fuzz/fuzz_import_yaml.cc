@@ -9,12 +9,7 @@
 #include "testing/import_properties.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size == 0) return 0;
-  using hecal::testing::ImportReader;
-  constexpr ImportReader kReaders[] = {ImportReader::kCamodocal, ImportReader::kEasyHandeye,
-                                       ImportReader::kOpenCvYaml};
-  const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
-  hecal::testing::RunImportProperty(kReaders[data[0] % 3], static_cast<unsigned char>(data[0] / 3),
-                                    text);
+  hecal::testing::RunImportFuzzInput(hecal::testing::ImportFuzzer::kYaml,
+                                     std::string_view(reinterpret_cast<const char*>(data), size));
   return 0;
 }

@@ -165,6 +165,11 @@ std::vector<CameraLine> ReadCamera(std::string_view text, const std::string& sou
     for (int k = 0; k < 3; ++k) translation[k] = value(18 + k);
     CameraLine camera;
     const std::string id = import_internal::FileStem(tokens[0]);
+    if (id.empty()) {
+      Fail(source, line.number,
+           "image name " + import_internal::Quoted(tokens[0]) + " has no file name",
+           "start the line with the image file name, e.g. image0.png");
+    }
     if (!ids.insert(id).second) {
       Fail(source, line.number, "image " + import_internal::Quoted(id) + " appears twice",
            "list every image once");

@@ -1,6 +1,7 @@
 // Properties every successful import must have, checked by the import fuzzers
 // (fuzz/fuzz_import_*.cc) and by the replay of their findings
-// (src/io/import_fuzz_regression_test.cc). A violation aborts, so libFuzzer reports it as a crash.
+// (src/io/import_fuzz_regression_test.cc, tests/data/fuzz-regressions/import_*/). A violation
+// aborts, so libFuzzer reports it as a crash.
 #pragma once
 
 #include <cstdio>
@@ -104,6 +105,26 @@ inline void RunImportProperty(ImportReader reader, unsigned char options, std::s
   } catch (const InputError&) {
     // Rejected with a message: the expected outcome for most fuzz inputs.
   }
+}
+
+// The byte layout of each import fuzzer (fuzz/fuzz_import_*.cc), shared with the replay of their
+// findings so a kept input means the same thing to both.
+enum class ImportFuzzer { kText, kYaml, kJson };
+
+inline void RunImportFuzzInput(ImportFuzzer fuzzer, std::string_view bytes) {
+  if (fuzzer == ImportFuzzer::kJson) {
+    RunImportProperty(ImportReader::kMoveit, 0, bytes);
+    return;
+  }
+  if (bytes.empty()) return;
+  constexpr ImportReader kText[] = {ImportReader::kTabb, ImportReader::kEthz,
+                                    ImportReader::kMatrix16};
+  constexpr ImportReader kYaml[] = {ImportReader::kCamodocal, ImportReader::kEasyHandeye,
+                                    ImportReader::kOpenCvYaml};
+  const auto selector = static_cast<unsigned char>(bytes[0]);
+  const ImportReader reader =
+      fuzzer == ImportFuzzer::kText ? kText[selector % 3] : kYaml[selector % 3];
+  RunImportProperty(reader, static_cast<unsigned char>(selector / 3), bytes.substr(1));
 }
 
 }  // namespace hecal::testing
