@@ -79,8 +79,9 @@
 // With the camera the marker corners (aruco_grid, apriltag_grid, aruco, apriltag) are fitted and
 // intersected in undistorted coordinates and distorted back to pixels (detection_edges.cc). The
 // other types do not use it: the saddle corners of chessboards and ChArUco boards are fitted
-// with curves that absorb the bending (measured: no change from the camera, docs/targets.md),
-// and circle centres are centroids. Without the camera marker corners carry that bias.
+// with curves that absorb the bending (measured: no outward offset beyond 0.002 px under strong
+// barrel distortion, docs/targets.md), and circle centres are centroids. Without the camera
+// marker corners carry that bias.
 //
 // Errors: hecal::InputError (source "target") when pose::CheckTarget rejects the spec, when the
 // spec is a square chessboard or symmetric circle grid (cols == rows: a quarter turn maps it onto
