@@ -78,10 +78,12 @@ class OpenCvThreads {
   int previous_;
 };
 
-// Reads and detects every image, in parallel over images. Errors are raised after the loop, for
-// the first image in file-name order, so the message does not depend on the scheduling.
+// Reads and detects every image, in parallel over images, with the given intrinsics when they
+// are for the image's size (the intrinsics of another size are reported after the loop, by
+// CheckIntrinsicsSize). Errors are raised after the loop, for the first image in file-name
+// order, so the message does not depend on the scheduling.
 void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
-               std::vector<ImageRecord>* images) {
+               const std::optional<pose::CameraModel>& camera, std::vector<ImageRecord>* images) {
   std::vector<std::exception_ptr> errors(images->size());
   cv::parallel_for_(
       cv::Range(0, static_cast<int>(images->size())),
@@ -95,7 +97,10 @@ void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                                "replace the file with a readable png/jpg/bmp/tif, or remove it");
             }
             image.size = pixels.size();
-            image.detection = vision::DetectTarget(pixels, target);
+            const bool sized = camera && (camera->width <= 0 || (camera->width == pixels.cols &&
+                                                                 camera->height == pixels.rows));
+            image.detection = vision::DetectTarget(
+                pixels, target, {}, sized ? camera : std::optional<pose::CameraModel>());
           } catch (...) {
             errors[static_cast<std::size_t>(i)] = std::current_exception();
           }
@@ -448,7 +453,8 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
          << std::endl;
   {
     const OpenCvThreads threads(flags.threads);
-    DetectAll(set.target, flags.target, &set.images);
+    DetectAll(set.target, flags.target,
+              given ? std::optional<pose::CameraModel>(given->camera) : std::nullopt, &set.images);
   }
   CheckSameSize(set.images);
   set.size = set.images.front().size;

@@ -6,9 +6,17 @@
 //      *.tif, *.tiff in it (station id = file stem), or when it holds none, one image in each
 //      sub-folder (station id = sub-folder name); sorted by name. All must have the same size.
 //   2. Detection: vision::DetectTarget on each image (grey), in parallel over images on N
-//      threads (0 = every core; cv::parallel_for_). Chessboards and symmetric circle grids whose
-//      order is fixed only up to a half turn are made consistent across the images by
-//      vision::ResolveOrder (image rule); those still ambiguous are skipped.
+//      threads (0 = every core; cv::parallel_for_), with the given intrinsics: the corners of
+//      markers and single tags are then fitted in undistorted coordinates, free of the outward
+//      bias that lens distortion gives corners fitted on its bent edges (detection.h, "The
+//      camera"; docs/targets.md). Intrinsics estimated in step 3 do not exist yet, and those
+//      images are not detected again: the estimate itself rests on the biased corners, so
+//      removing the bias would mean iterating detection and calibration over every image, while
+//      the targets that estimate intrinsics well are the boards whose saddle corners carry no
+//      such bias (chessboard, ChArUco); single tags require the intrinsics anyway. Chessboards
+//      and symmetric circle grids whose order is fixed only up to a half turn are made
+//      consistent across the images by vision::ResolveOrder (image rule); those still ambiguous
+//      are skipped.
 //   3. Intrinsics: the given camera.yaml (io/camera_file.h), whose width × height, when it has
 //      them, must be the images' size; or, without it, estimated from the usable images by
 //      vision::CalibrateIntrinsics (cv::calibrateCamera, plumb_bob with k3), printed with their

@@ -24,6 +24,11 @@ constexpr int kMaxIterations = 100;
 constexpr int kMaxHalvings = 30;
 constexpr double kPixelTolerance = 1e-9;
 
+// The radial factor 1 + k1 r² + k2 r⁴ + k3 r⁶ at r² = r2.
+double Radial(const std::array<double, 5>& d, double r2) {
+  return 1.0 + r2 * (d[0] + r2 * (d[1] + r2 * d[4]));
+}
+
 // The plumb_bob map from normalised to distorted normalised coordinates, and its 2×2 Jacobian
 // when `jacobian` is not null.
 Eigen::Vector2d Distort(const std::array<double, 5>& d, const Eigen::Vector2d& p,
@@ -31,7 +36,7 @@ Eigen::Vector2d Distort(const std::array<double, 5>& d, const Eigen::Vector2d& p
   const double k1 = d[0], k2 = d[1], p1 = d[2], p2 = d[3], k3 = d[4];
   const double x = p.x(), y = p.y();
   const double r2 = x * x + y * y;
-  const double radial = 1.0 + r2 * (k1 + r2 * (k2 + r2 * k3));
+  const double radial = Radial(d, r2);
   const Eigen::Vector2d distorted(x * radial + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
                                   y * radial + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y);
   if (jacobian != nullptr) {
@@ -152,7 +157,10 @@ std::optional<Eigen::Vector2d> Undistort(const CameraModel& camera, const Eigen:
     }
     if (!improved) break;
   }
-  if (!(mismatch <= kPixelTolerance) || !(J.determinant() > 0.0)) return std::nullopt;
+  if (!(mismatch <= kPixelTolerance) || !(J.determinant() > 0.0) ||
+      !(Radial(camera.distortion, p.squaredNorm()) > 0.0)) {
+    return std::nullopt;
+  }
   return p;
 }
 

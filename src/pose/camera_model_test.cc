@@ -1,6 +1,6 @@
 // The camera model: pinhole values by hand, the analytic Jacobian against central finite
 // differences, and Undistort as the inverse of Project over the whole image, including strong
-// distortion and the fold beyond which no preimage exists.
+// distortion and the fold beyond which no preimage exists (nor one on a folded branch).
 #include "hecal/pose/camera_model.h"
 
 #include <gtest/gtest.h>
@@ -147,6 +147,18 @@ TEST(CameraModel, UndistortRefusesPixelsBeyondTheFold) {
   ASSERT_TRUE(p.has_value());
   EXPECT_LT(p->norm(), std::sqrt(2.0 / 3.0));
   EXPECT_LT((Project(camera, p->homogeneous()) - folded_pixel).norm(), 1e-9);
+  // Every pixel beyond the fold (r_d > 0.544) is refused, on a grid up to |x_d|, |y_d| = 2.
+  // Gauss–Newton lands on the twice-folded branch (r > √2, radial factor 1 − 0.5 r² < 0: the ray
+  // sent across the principal point) for some of them, where the determinant is positive again.
+  int accepted = 0;
+  for (double x_d = -2.0; x_d <= 2.0; x_d += 0.04) {
+    for (double y_d = -2.0; y_d <= 2.0; y_d += 0.04) {
+      if (std::hypot(x_d, y_d) < 0.55) continue;
+      const Eigen::Vector2d pixel(640.5 + 800.0 * x_d, 479.25 + 780.0 * y_d);
+      if (Undistort(camera, pixel).has_value()) ++accepted;
+    }
+  }
+  EXPECT_EQ(accepted, 0);
 }
 
 TEST(CameraModel, UndistortPointsNamesTheFailingPoint) {

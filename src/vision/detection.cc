@@ -173,6 +173,26 @@ Detection DetectCircles(const cv::Mat& gray, const pose::TargetSpec& target) {
                        "findCirclesGrid + grey-level centroids");
 }
 
+// The camera must be usable for undistortion and be this image's (detection.h: errors).
+void RequireCameraOf(const pose::CameraModel& camera, const cv::Size& size) {
+  bool finite = std::isfinite(camera.cx) && std::isfinite(camera.cy);
+  for (const double coefficient : camera.distortion) finite = finite && std::isfinite(coefficient);
+  if (!(camera.fx > 0.0) || !(camera.fy > 0.0) || !std::isfinite(camera.fx) ||
+      !std::isfinite(camera.fy) || !finite) {
+    throw InputError("camera", 0,
+                     "the intrinsics are not usable (fx, fy must be positive, every "
+                     "value finite)",
+                     "pass the camera's calibrated intrinsics");
+  }
+  if (camera.width > 0 && (camera.width != size.width || camera.height != size.height)) {
+    throw InputError("camera", 0,
+                     "the intrinsics are for " + std::to_string(camera.width) + "x" +
+                         std::to_string(camera.height) + " images but the image is " +
+                         std::to_string(size.width) + "x" + std::to_string(size.height),
+                     "pass the intrinsics of this camera at this resolution");
+  }
+}
+
 }  // namespace
 
 std::string_view DetectionStatusName(DetectionStatus status) {
@@ -369,7 +389,8 @@ Detection MarkerDetection(const cv::Mat& gray, const pose::TargetSpec& target,
 }  // namespace internal
 
 Detection DetectTarget(const cv::Mat& image, const pose::TargetSpec& target,
-                       const DetectOptions& options) {
+                       const DetectOptions& options,
+                       const std::optional<pose::CameraModel>& camera) {
   std::string why;
   if (!options.IsValid(&why)) throw InputError("options", 0, why, "fix the detection options");
   internal::RequireUsableTarget(target);
@@ -383,6 +404,7 @@ Detection DetectTarget(const cv::Mat& image, const pose::TargetSpec& target,
                      "use a board with different numbers of points along x and y");
   }
   const cv::Mat gray = internal::ToGray(image);
+  if (camera) RequireCameraOf(*camera, gray.size());
   switch (target.type) {
     case pose::TargetType::kChessboard:
       return DetectChessboard(gray, target, options);
@@ -393,10 +415,10 @@ Detection DetectTarget(const cv::Mat& image, const pose::TargetSpec& target,
       return internal::DetectCharuco(gray, target, options);
     case pose::TargetType::kArucoGrid:
     case pose::TargetType::kAruco:
-      return internal::DetectArucoMarkers(gray, target, options);
+      return internal::DetectArucoMarkers(gray, target, options, camera);
     case pose::TargetType::kAprilTagGrid:
     case pose::TargetType::kAprilTag:
-      return internal::DetectAprilTags(gray, target, options);
+      return internal::DetectAprilTags(gray, target, options, camera);
   }
   return NotFound(target, "unknown target type");
 }

@@ -103,7 +103,8 @@ cv::Mat AprilTagCells(const AprilTagFamily& family, int id) {
 }
 
 Detection DetectAprilTags(const cv::Mat& gray, const pose::TargetSpec& target,
-                          const DetectOptions& options) {
+                          const DetectOptions& options,
+                          const std::optional<pose::CameraModel>& camera) {
   const MarkerGrid grid = MarkerGridOf(target);
   const AprilTagFamily family(target.family);
   const std::unique_ptr<apriltag_detector_t, DetectorDeleter> detector(apriltag_detector_create());
@@ -138,7 +139,7 @@ Detection DetectAprilTags(const cv::Mat& gray, const pose::TargetSpec& target,
     ids.push_back(tag->id);
   }
   const std::string summary = KeepUniqueMarkers(&ids, &corners, "tags", others);
-  RefineMarkerCorners(gray, family.width_at_border(), &corners);
+  RefineMarkerCorners(gray, family.width_at_border(), camera, &corners);
   std::vector<ImagePoint> points = GridMarkerPoints(ids, corners, grid.first_id);
   return MarkerDetection(gray, target, options, std::move(points), summary);
 }

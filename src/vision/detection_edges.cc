@@ -18,11 +18,21 @@
 //   cut parallel to the crossing edge biased tilted views by 0.05 px). The weighted centroid of
 //   a blurred step's derivative is the edge, so a least-squares fit of the offset d(t) of the
 //   samples (t along the segment, weights = the projections) traces the edge.
-//   Markers: per side a line (the sides are short: lens distortion bends them by < 0.01 px), only
-//   the dominant polarity of the projection (the marker's outer edge; the border's inner edges and
-//   neighbouring markers have the opposite polarity within a cell); w = 0.75 × the marker's cell;
-//   corners = intersections of adjacent sides. Markers whose cells are under 2 px keep their
-//   corners.
+//   Markers: per side a line, only the dominant polarity of the projection (the marker's outer
+//   edge; the border's inner edges and neighbouring markers have the opposite polarity within a
+//   cell); w = 0.75 × the marker's cell; corners = intersections of adjacent sides. Markers whose
+//   cells are under 2 px keep their corners. Lens distortion bends the sides, and a line fitted
+//   to the middle 70% of a bent side and intersected with its neighbour misses the corner: with
+//   k1 = −0.12 (f = 620 px) the corners of 150–200 px tags came out 0.1–0.3 px outward, a scale
+//   of the pose (docs/targets.md). So when the camera is known the sides are fitted where they
+//   are straight: each sample's pixel centre is mapped to ideal pixels (the pinhole image with
+//   the same fx, fy, cx, cy and no distortion: K·pose::Undistort), the line is fitted to the
+//   samples' offsets there (band, crossings and weights stay those of the image), the corners
+//   are intersected there and projected back through the distortion (pose::Project). A blurred
+//   edge's cross-section is a few pixels wide, over which the distortion map is affine to
+//   < 1e-4 px, so the weighted centroid still maps to the edge. Where the camera model cannot be
+//   undistorted (beyond the fold of a strong barrel model, pose/camera_model.h) the samples are
+//   left out, and a marker whose corners are there is refined in pixels, as without the camera.
 //   Saddle corners (grids of inner corners, neighbours one square apart): through each corner
 //   the two grid lines, each from the segments to the two neighbours along that line (the outer
 //   squares beyond the first and last corners are printed, so a missing neighbour is
@@ -42,6 +52,7 @@
 #include <optional>
 
 #include "detection_internal.h"
+#include "hecal/pose/camera_model.h"
 
 namespace hecal::vision::internal {
 namespace {
@@ -176,55 +187,117 @@ std::optional<Eigen::Vector2d> Intersect(const Curve& first, const Curve& second
   return point;
 }
 
-// Marker side k of quad q as a line (see the header comment).
-std::optional<Curve> MarkerSide(const Gradients& gradients, const std::array<Eigen::Vector2d, 4>& q,
-                                int k, double half_width) {
+using Quad = std::array<Eigen::Vector2d, 4>;
+
+// Pixels ↔ ideal pixels, where the pinhole camera with the same fx, fy, cx, cy and no distortion
+// sees the same ray (K·pose::Undistort one way, pose::Project the other): the marker's sides are
+// straight there. The identity without a camera or distortion.
+class Lens {
+ public:
+  explicit Lens(const std::optional<pose::CameraModel>& camera) {
+    if (camera && camera->HasDistortion()) camera_ = camera;
+  }
+
+  std::optional<Eigen::Vector2d> Ideal(const Eigen::Vector2d& pixel) const {
+    if (!camera_) return pixel;
+    const std::optional<Eigen::Vector2d> normalised = pose::Undistort(*camera_, pixel);
+    if (!normalised) return std::nullopt;
+    return Eigen::Vector2d(camera_->fx * normalised->x() + camera_->cx,
+                           camera_->fy * normalised->y() + camera_->cy);
+  }
+  Eigen::Vector2d Pixel(const Eigen::Vector2d& ideal) const {
+    if (!camera_) return ideal;
+    return pose::Project(*camera_, Eigen::Vector3d((ideal.x() - camera_->cx) / camera_->fx,
+                                                   (ideal.y() - camera_->cy) / camera_->fy, 1.0));
+  }
+  bool identity() const { return !camera_; }
+
+ private:
+  std::optional<pose::CameraModel> camera_;
+};
+
+// The frame of side k of quad q (corners in order around it): origin at corner k, `along`
+// towards corner k + 1, `normal` out of the quad.
+Curve SideFrame(const Quad& q, int k) {
   const Eigen::Vector2d& a = q[k];
   const Eigen::Vector2d& b = q[(k + 1) % 4];
   const Eigen::Vector2d centre = (q[0] + q[1] + q[2] + q[3]) / 4.0;
   Curve side;
   side.origin = a;
-  const double length = (b - a).norm();
-  side.along = (b - a) / length;
+  side.along = (b - a).normalized();
   side.normal = Eigen::Vector2d(side.along.y(), -side.along.x());
   if (side.normal.dot(0.5 * (a + b) - centre) < 0.0) side.normal = -side.normal;
+  return side;
+}
+
+// Marker side k as a line in ideal pixels (see the header comment): sampled around the side of
+// quad q (pixels), fitted in the frame of the same side of `ideal` (q in ideal pixels).
+std::optional<Curve> MarkerSide(const Gradients& gradients, const Lens& lens, const Quad& q,
+                                const Quad& ideal, int k, double half_width) {
+  const Curve image_side = SideFrame(q, k);
+  const Eigen::Vector2d& a = q[k];
+  const Eigen::Vector2d& b = q[(k + 1) % 4];
+  const double length = (b - a).norm();
   const std::vector<Crossing> crossings = {
       {a, (a - q[(k + 3) % 4]).normalized(), kMarkerSideStart * length},
       {b, (q[(k + 2) % 4] - b).normalized(), kMarkerSideStart * length}};
   std::vector<EdgeSample> samples;
-  gradients.Band(a, side.along, side.normal, 0.0, length, half_width, crossings, &samples);
+  gradients.Band(a, image_side.along, image_side.normal, 0.0, length, half_width, crossings,
+                 &samples);
   double positive = 0.0, negative = 0.0;
   for (const EdgeSample& s : samples)
     (s.projection > 0.0 ? positive : negative) += std::abs(s.projection);
   const double sign = positive >= negative ? 1.0 : -1.0;
   std::vector<double> weights;
   for (const EdgeSample& s : samples) weights.push_back(std::max(0.0, sign * s.projection));
+  Curve side = SideFrame(ideal, k);
+  if (!lens.identity()) {
+    for (size_t i = 0; i < samples.size(); ++i) {
+      if (!(weights[i] > 0.0)) continue;
+      const std::optional<Eigen::Vector2d> p =
+          lens.Ideal(a + samples[i].t * image_side.along + samples[i].d * image_side.normal);
+      if (!p) {
+        weights[i] = 0.0;
+        continue;
+      }
+      samples[i].t = (*p - side.origin).dot(side.along);
+      samples[i].d = (*p - side.origin).dot(side.normal);
+    }
+  }
   const std::optional<Eigen::Vector3d> c = FitCurve<2>(samples, weights);
   if (!c) return std::nullopt;
   side.c = *c;
   return side;
 }
 
-void RefineQuad(const Gradients& gradients, int cells_across, std::vector<cv::Point2f>* quad) {
-  std::array<Eigen::Vector2d, 4> q;
+void RefineQuad(const Gradients& gradients, const Lens& lens, int cells_across,
+                std::vector<cv::Point2f>* quad) {
+  Quad q;
   for (int k = 0; k < 4; ++k) q[k] = Eigen::Vector2d((*quad)[k].x, (*quad)[k].y);
   double perimeter = 0.0;
   for (int k = 0; k < 4; ++k) perimeter += (q[(k + 1) % 4] - q[k]).norm();
   const double cell = perimeter / 4.0 / cells_across;
   if (cell < kMinCellPixels) return;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    Quad ideal;
+    for (int k = 0; k < 4; ++k) {
+      const std::optional<Eigen::Vector2d> corner = lens.Ideal(q[k]);
+      if (!corner) return;
+      ideal[k] = *corner;
+    }
     std::array<Curve, 4> sides;
     for (int k = 0; k < 4; ++k) {
-      const std::optional<Curve> side = MarkerSide(gradients, q, k, kMarkerBand * cell);
+      const std::optional<Curve> side =
+          MarkerSide(gradients, lens, q, ideal, k, kMarkerBand * cell);
       if (!side) return;
       sides[k] = *side;
     }
-    std::array<Eigen::Vector2d, 4> next;
+    Quad next;
     double shift = 0.0;
     for (int k = 0; k < 4; ++k) {
       const std::optional<Eigen::Vector2d> corner = Intersect(sides[(k + 3) % 4], sides[k]);
       if (!corner) return;
-      next[k] = *corner;
+      next[k] = lens.Pixel(*corner);
       shift = std::max(shift, (next[k] - q[k]).norm());
     }
     if (shift > cell) return;  // the fit left the marker: keep the corners we had
@@ -281,9 +354,16 @@ std::optional<Eigen::Vector2d> Direction(const Eigen::Vector2d& p,
 }  // namespace
 
 void RefineMarkerCorners(const cv::Mat& gray, int cells_across,
+                         const std::optional<pose::CameraModel>& camera,
                          std::vector<std::vector<cv::Point2f>>* markers) {
   const Gradients gradients(gray);
-  for (std::vector<cv::Point2f>& quad : *markers) RefineQuad(gradients, cells_across, &quad);
+  const Lens lens(camera), pixels(std::nullopt);
+  for (std::vector<cv::Point2f>& quad : *markers) {
+    const bool undistorted = std::all_of(quad.begin(), quad.end(), [&lens](const cv::Point2f& p) {
+      return lens.Ideal(Eigen::Vector2d(p.x, p.y)).has_value();
+    });
+    RefineQuad(gradients, undistorted ? lens : pixels, cells_across, &quad);
+  }
 }
 
 void RefineSaddleCorners(const cv::Mat& gray, int cols, int rows, double band_fraction,

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
 #include "hecal/vision/detection.h"
 
@@ -68,19 +69,24 @@ struct MarkerGrid {
 MarkerGrid MarkerGridOf(const pose::TargetSpec& target);
 
 // The per-type detectors (detection_markers.cc, detection_apriltag.cc); `gray` is 8-bit grey.
-// The marker detectors take aruco_grid and aruco, apriltag_grid and apriltag targets.
+// The marker detectors take aruco_grid and aruco, apriltag_grid and apriltag targets, and refine
+// the corners with `camera` when it is given (RefineMarkerCorners).
 Detection DetectCharuco(const cv::Mat& gray, const pose::TargetSpec& target,
                         const DetectOptions& options);
 Detection DetectArucoMarkers(const cv::Mat& gray, const pose::TargetSpec& target,
-                             const DetectOptions& options);
+                             const DetectOptions& options,
+                             const std::optional<pose::CameraModel>& camera);
 Detection DetectAprilTags(const cv::Mat& gray, const pose::TargetSpec& target,
-                          const DetectOptions& options);
+                          const DetectOptions& options,
+                          const std::optional<pose::CameraModel>& camera);
 
 // Edge-based corner refinement (detection_edges.cc).
 // Moves the corners of square markers (4 each, in order around the marker) to the intersections
 // of their fitted sides; `cells_across` is the number of marker cells the corners span (ArUco
-// markerSize + 2, AprilTag width_at_border).
+// markerSize + 2, AprilTag width_at_border). With `camera` (the image's intrinsics) the sides are
+// fitted and intersected in undistorted (ideal) pixels, where they are straight.
 void RefineMarkerCorners(const cv::Mat& gray, int cells_across,
+                         const std::optional<pose::CameraModel>& camera,
                          std::vector<std::vector<cv::Point2f>>* markers);
 // Moves the saddle corners of a cols × rows grid of inner corners (row-major, nullopt where not
 // detected) to the intersections of their fitted grid lines; the edge band's half-width is

@@ -91,7 +91,8 @@ Detection DetectCharuco(const cv::Mat& gray, const pose::TargetSpec& target,
 }
 
 Detection DetectArucoMarkers(const cv::Mat& gray, const pose::TargetSpec& target,
-                             const DetectOptions& options) {
+                             const DetectOptions& options,
+                             const std::optional<pose::CameraModel>& camera) {
   const MarkerGrid grid = MarkerGridOf(target);
   // GridBoard::create requires a positive separation; a single marker has no neighbour, and any
   // separation gives the same 1 × 1 board.
@@ -100,7 +101,7 @@ Detection DetectArucoMarkers(const cv::Mat& gray, const pose::TargetSpec& target
       grid.cols, grid.rows, static_cast<float>(grid.marker), static_cast<float>(separation),
       ArucoDictionary(target.dictionary), grid.first_id);
   Markers markers = DetectBoardMarkers(gray, board);
-  RefineMarkerCorners(gray, board->dictionary->markerSize + 2, &markers.corners);
+  RefineMarkerCorners(gray, board->dictionary->markerSize + 2, camera, &markers.corners);
   std::vector<ImagePoint> points = GridMarkerPoints(markers.ids, markers.corners, grid.first_id);
   return MarkerDetection(gray, target, options, std::move(points), markers.summary);
 }

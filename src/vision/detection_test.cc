@@ -1,12 +1,16 @@
 // DetectTarget against ground truth: images rendered by RenderTarget (render.h; its pattern and
 // its area-exactness are checked in render_test) through a camera with lens distortion at known
 // poses. Every detected point is compared with the projection of its object point
-// (pose::Project), and cv::solvePnP on the detection with the true pose.
+// (pose::Project), and cv::solvePnP on the detection with the true pose; with and without the
+// camera, whose lens model removes the marker corners' outward bias.
 #include "hecal/vision/detection.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "hecal/core/error.h"
 #include "hecal/vision/render.h"
@@ -117,10 +121,12 @@ struct ChainCase {
 
 class RenderDetect : public ::testing::TestWithParam<ChainCase> {};
 
-// Noise-free renders (blur σ = 0.7 px): RMS error below 0.05 px and every point within 0.1 px
-// of the truth, and the PnP pose on the detected points within 0.02° and 0.2 mm of the true
-// pose. Measured RMS / max (px): chessboard 0.022 / 0.052, charuco 0.011 / 0.019, aruco_grid
-// 0.033 / 0.076, apriltag_grid 0.039 / 0.092, circles 0.004 / 0.010, acircles 0.004 / 0.009.
+// Noise-free renders (blur σ = 0.7 px), detected with the camera (used by the marker grids):
+// RMS error below 0.05 px and every point within 0.1 px of the truth, and the PnP pose on the
+// detected points within 0.02° and 0.2 mm of the true pose. Measured RMS / max (px): chessboard
+// 0.021 / 0.050, charuco 0.011 / 0.019, aruco_grid 0.028 / 0.070 (0.033 / 0.076 without the
+// camera), apriltag_grid 0.034 / 0.075 (0.039 / 0.092), circles 0.004 / 0.010, acircles
+// 0.004 / 0.009.
 TEST_P(RenderDetect, PointsAndPoseMatchTheTruth) {
   const ChainCase& c = GetParam();
   const pose::CameraModel camera = TestCamera();
@@ -129,7 +135,7 @@ TEST_P(RenderDetect, PointsAndPoseMatchTheTruth) {
   RenderOptions render;
   render.blur_sigma = 0.7;
   const cv::Mat image = RenderTarget(c.target, camera, T_camera_target, render);
-  const Detection detection = DetectTarget(image, c.target);
+  const Detection detection = DetectTarget(image, c.target, {}, camera);
   // A symmetric circle grid is found completely but its half turn is fixed only by the image
   // rule (order_consistency_test covers that); its x axis points right here, as in the truth.
   const DetectionStatus expected = c.target.type == pose::TargetType::kCircles
@@ -202,6 +208,68 @@ cv::Mat RenderAt(const pose::TargetSpec& target, const Pose& T) {
   RenderOptions render;
   render.blur_sigma = 0.7;
   return RenderTarget(target, TestCamera(), T, render);
+}
+
+// Lens distortion bends straight edges (detection.h, "The camera"). Strong barrel distortion
+// (k1 = −0.3, k2 = 0.1), targets 0.35 m away: the mean outward offset of the points
+// (test_views::MeanOutwardOffset). Marker grids without the camera: corners on lines fitted in
+// the distorted image, outward by 0.125–0.128 px (measured; asserted > 0.06); with it
+// −0.0013–−0.0004 px (asserted within ±0.01). Chessboard and ChArUco saddle corners, fitted with
+// quadratic edge curves, −0.002 and +0.0007 px (within ±0.01) without using the camera: their
+// points are the same with and without it.
+TEST(DetectTarget, TheCameraRemovesTheOutwardBiasOfMarkerCorners) {
+  pose::CameraModel camera = TestCamera();
+  camera.distortion = {-0.3, 0.1, 0.0, 0.0, 0.0};
+  RenderOptions render;
+  render.blur_sigma = 0.7;
+  for (const pose::TargetSpec& target : {ArucoGrid(), AprilTagGrid(), Chessboard(), Charuco()}) {
+    const std::string name(pose::TargetTypeName(target.type));
+    const Pose T = ViewPose(target, 0.35, -15.0, 20.0, -25.0);
+    const cv::Mat image = RenderTarget(target, camera, T, render);
+    const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, camera, T);
+    const Detection with = DetectTarget(image, target, {}, camera);
+    const Detection without = DetectTarget(image, target);
+    ASSERT_TRUE(with.usable()) << with.message;
+    ASSERT_TRUE(without.usable()) << without.message;
+    const double outward_with = test_views::MeanOutwardOffset(with, truth);
+    const double outward_without = test_views::MeanOutwardOffset(without, truth);
+    std::cout << name << ": outward " << outward_with << " px with the camera, " << outward_without
+              << " px without\n";
+    EXPECT_LT(std::abs(outward_with), 0.01) << name;
+    if (target.type == pose::TargetType::kArucoGrid ||
+        target.type == pose::TargetType::kAprilTagGrid) {
+      EXPECT_GT(outward_without, 0.06) << name;
+    } else {
+      ASSERT_EQ(with.num_points(), without.num_points()) << name;
+      for (int k = 0; k < with.num_points(); ++k) {
+        EXPECT_EQ(with.points[static_cast<size_t>(k)].pixel,
+                  without.points[static_cast<size_t>(k)].pixel)
+            << name;
+      }
+    }
+  }
+}
+
+// A camera model with no preimage at the markers (a strong barrel model beyond its fold, here
+// with the principal point far outside the image; pose::Undistort fails): the markers are refined
+// in pixels, exactly as without the camera, rather than left unrefined.
+TEST(DetectTarget, MarkersTheCameraCannotUndistortAreRefinedInPixels) {
+  const pose::TargetSpec target = ArucoGrid();
+  const Pose T = ViewPose(target, 0.5, 10.0, -10.0, 5.0);
+  const cv::Mat image = RenderAt(target, T);
+  pose::CameraModel folded = TestCamera();
+  folded.cx = -1000.0;
+  folded.distortion = {-2.0, 0.0, 0.0, 0.0, 0.0};
+  ASSERT_FALSE(pose::Undistort(folded, Eigen::Vector2d(0.0, 0.0)).has_value());
+  const Detection with = DetectTarget(image, target, {}, folded);
+  const Detection without = DetectTarget(image, target);
+  ASSERT_EQ(with.status, DetectionStatus::kFound) << with.message;
+  ASSERT_EQ(with.num_points(), without.num_points());
+  for (int k = 0; k < with.num_points(); ++k) {
+    EXPECT_EQ(with.points[static_cast<size_t>(k)].pixel,
+              without.points[static_cast<size_t>(k)].pixel);
+  }
+  EXPECT_LT(CompareWithTruth(with, ProjectedTruth(target, TestCamera(), T)).max, 0.1);
 }
 
 // Half of a ChArUco board hidden: a partial detection whose ids are exactly the visible
@@ -343,6 +411,26 @@ TEST(DetectTarget, RejectsUnusableInput) {
   DetectOptions options;
   options.min_points = 3;
   EXPECT_THROW(DetectTarget(image, Chessboard(), options), InputError);
+  // The camera: positive focal lengths, finite values, and the image's size when it has one.
+  const auto camera_error = [&image](const pose::CameraModel& camera) {
+    try {
+      DetectTarget(image, ArucoGrid(), {}, camera);
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.source(), "camera");
+      return e.problem();
+    }
+    ADD_FAILURE() << "no error";
+    return std::string();
+  };
+  pose::CameraModel camera = TestCamera();  // 800 x 600, the image is 640 x 480
+  EXPECT_NE(camera_error(camera).find("for 800x600 images but the image is 640x480"),
+            std::string::npos);
+  camera.width = camera.height = 0;
+  camera.fx = 0.0;
+  EXPECT_NE(camera_error(camera).find("fx, fy must be positive"), std::string::npos);
+  camera.fx = 700.0;
+  camera.distortion[1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(camera_error(camera).find("every value finite"), std::string::npos);
   options = {};
   options.apriltag_max_hamming = 3;
   std::string why;

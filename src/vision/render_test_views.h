@@ -1,5 +1,6 @@
 // Test helpers for the render → detect chain: a camera with lens distortion, view poses, the
-// projected ground truth of a target's points and OpenCV's solvePnP on a detection.
+// projected ground truth of a target's points, the detection's errors against it (size and
+// outward offset) and OpenCV's solvePnP on a detection.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -107,6 +108,22 @@ inline PixelErrors CompareWithTruth(const Detection& detection,
   }
   if (!detection.points.empty()) errors.rms = std::sqrt(sum / detection.num_points());
   return errors;
+}
+
+// The mean offset of the detected points along the direction from the centre of their truth to
+// each true point, px: positive when the points sit outward (the pattern imaged too large, which
+// PnP turns into a pose too close).
+inline double MeanOutwardOffset(const Detection& detection,
+                                const std::vector<Eigen::Vector2d>& truth) {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const ImagePoint& p : detection.points) centre += truth.at(static_cast<size_t>(p.id));
+  centre /= static_cast<double>(detection.num_points());
+  double sum = 0.0;
+  for (const ImagePoint& p : detection.points) {
+    const Eigen::Vector2d& t = truth.at(static_cast<size_t>(p.id));
+    sum += (p.pixel - t).dot((t - centre).normalized());
+  }
+  return sum / detection.num_points();
 }
 
 // T_camera_target from cv::solvePnP (SOLVEPNP_ITERATIVE) on the detection's points.

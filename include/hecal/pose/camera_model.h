@@ -12,10 +12,12 @@
 // Undistort inverts the pixel map up to depth: it solves distort(x, y) = ((u − cx)/fx,
 // (v − cy)/fy) for the normalised image coordinates (x, y) by Gauss–Newton on the 2×2 system,
 // started at the distorted coordinates, halving a step that does not reduce the mismatch. A
-// solution is accepted when it reproduces the pixel to 1e-9 px and the distortion map is
-// orientation-preserving there (det ∂(x_d, y_d)/∂(x, y) > 0): beyond the radius where strong
-// barrel distortion folds back, a pixel has no physical preimage (or only one on the folded
-// branch) and Undistort returns nullopt.
+// solution is accepted when it reproduces the pixel to 1e-9 px, the distortion map is
+// orientation-preserving there (det ∂(x_d, y_d)/∂(x, y) > 0) and the radial factor is positive
+// (the ray is not sent across the principal point): beyond the radius where strong barrel
+// distortion folds back, a pixel has no physical preimage (or only one on a folded branch: once
+// folded, where the determinant is negative, or twice, farther out, where the radial factor is
+// negative and the determinant positive again) and Undistort returns nullopt.
 #pragma once
 
 #include <Eigen/Core>

@@ -33,8 +33,8 @@
 //                  m = id − first_id contributes its 4 corners as ids 4m + 0..3 (OpenCV's corner
 //                  order: top-left, top-right, bottom-right, bottom-left). Corners are refined as
 //                  intersections of the marker's fitted edges (detection_edges.cc; cv::cornerSubPix
-//                  — CORNER_REFINE_SUBPIX — pulls these L-corners 0.15–0.25 px into the marker).
-//                  Partial allowed.
+//                  — CORNER_REFINE_SUBPIX — pulls these L-corners 0.15–0.25 px into the marker),
+//                  in undistorted coordinates when the camera is given (below). Partial allowed.
 //   apriltag_grid  libapriltag (apriltag_detector_detect, quad_decimate =
 //                  options.apriltag_decimate, at most options.apriltag_max_hamming corrected
 //                  bits), same id scheme as aruco_grid. libapriltag lists a tag's corners p[0..3]
@@ -73,19 +73,33 @@
 // the same scale as OpenCV's measure; for a perfectly sharp edge the 3×3 Sobel operator limits it
 // to about 2 px.
 //
+// The camera (optional): the image's intrinsics (pose/camera_model.h). Lens distortion bends a
+// marker's straight sides, and corners intersected from lines fitted to the bent sides sit
+// outward (0.1–0.3 px on 150–200 px tags with k1 = −0.12, a scale of the pose: docs/targets.md).
+// With the camera the marker corners (aruco_grid, apriltag_grid, aruco, apriltag) are fitted and
+// intersected in undistorted coordinates and distorted back to pixels (detection_edges.cc). The
+// other types do not use it: the saddle corners of chessboards and ChArUco boards are fitted
+// with curves that absorb the bending (measured: no outward offset beyond 0.002 px under strong
+// barrel distortion, docs/targets.md), and circle centres are centroids. Without the camera
+// marker corners carry that bias.
+//
 // Errors: hecal::InputError (source "target") when pose::CheckTarget rejects the spec, when the
 // spec is a square chessboard or symmetric circle grid (cols == rows: a quarter turn maps it onto
 // itself, so even handedness cannot fix the order) and for invalid options (source "options");
-// InputError (source "image") for an empty image or one that is not 8-bit with 1, 3 or 4 channels.
+// InputError (source "image") for an empty image or one that is not 8-bit with 1, 3 or 4 channels;
+// InputError (source "camera") for a camera whose fx, fy are not positive, whose values are not
+// finite, or whose width × height (when set) is not the image's.
 #pragma once
 
 #include <Eigen/Core>
 #include <limits>
 #include <opencv2/core/mat.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
 
 namespace hecal::vision {
@@ -141,6 +155,7 @@ struct DetectOptions {
 };
 
 Detection DetectTarget(const cv::Mat& image, const pose::TargetSpec& target,
-                       const DetectOptions& options = {});
+                       const DetectOptions& options = {},
+                       const std::optional<pose::CameraModel>& camera = std::nullopt);
 
 }  // namespace hecal::vision
