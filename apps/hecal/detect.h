@@ -29,7 +29,7 @@ struct DetectFlags {
   std::string target;
   std::string intrinsics;  // "" = estimate from the images
   std::string output;
-  int threads = 0;  // 0 = every core
+  std::string threads = "0";  // 0 = every core (bounds.h: 0 … 256)
 };
 
 // Runs the command; throws hecal::InputError for bad flags or data.

@@ -41,17 +41,17 @@ namespace hecal::cli {
 struct SimulateFlags {
   std::string setup = "eye-in-hand";
   std::string stations = "3,5,10,15,20";
-  int trials = 200;
+  std::string trials = "200";  // 1 … 100000 (bounds.h)
   std::string noise_on = "both";
   std::string noise = "gaussian";
   std::string sigma = "0,0.3,1";
   std::string method = "all";
-  uint64_t seed = 1;
-  int threads = 0;
+  std::string seed = "1";     // 0 … 2^64 − 1
+  std::string threads = "0";  // 0 … 256, 0 = every core
   std::string output;
   std::string summary;
   std::string covariance = "none";
-  int covariance_samples = 1000;
+  std::string covariance_samples = "1000";  // 2 … 100000
   std::string outliers = "0";
   bool reject_outliers = false;
 };
