@@ -11,12 +11,12 @@
 // link.csv → robot.csv, broken.csv → nothing, null-link → /dev/null (symbolic links); pipe (a
 // FIFO); folder/, frames/init.csv/, det.points.csv/, est.camera.yaml/ (folders where files would
 // go); keep.txt; p.json (data/moveit-calibration/pose_samples.json); robot16.txt (3 rows of 16
-// numbers); contour.csv; object.csv, image.csv; target.yaml (the rwhe-kuka2 chessboard);
-// k1.yaml (intrinsics with k1 = 1e6); images3/ (3 rwhe-kuka2 images); kuka_mm.txt (the
-// rwhe-kuka2 robot poses with their translations × 1000); one_pixel/ (1×1 PNGs), huge/ (PNG
-// headers of 12000×12000), truncated_jpeg/ (JPEGs cut in half), corrupt_jpeg/ (a
-// JPEG with a stray marker in its scan), not_image/ (text named .png),
-// cut_png/ (a PNG cut inside its header).
+// numbers); colmajor.txt (a 4×4 written by columns); contour.csv; object.csv, image.csv;
+// target.yaml (the rwhe-kuka2 chessboard); k1.yaml (intrinsics with k1 = 1e6); images3/ (3
+// rwhe-kuka2 images); kuka_mm.txt (the rwhe-kuka2 robot poses with their translations × 1000);
+// one_pixel/ (1×1 PNGs), huge/ (PNG headers of 12000×12000), truncated_jpeg/ (JPEGs cut in half),
+// corrupt_jpeg/ (a JPEG with a stray marker in its scan), not_image/ (text named .png), cut_png/ (a
+// PNG cut inside its header).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -150,6 +150,7 @@ class RobustnessCorpus : public cli_test::CliTest {
     std::string row16;
     for (int i = 0; i < 16; ++i) row16 += (i % 5 == 0 ? "1 " : "0 ");
     Write("robot16.txt", row16 + "\n" + row16 + "\n" + row16 + "\n");
+    Write("colmajor.txt", "0 1 0 0 -1 0 0 0 0 0 1 0 0.1 0.2 0.3 1\n");
     Write("contour.csv", "x,y\n0,0\n100,0\n100,100\n0,100\n");
     Write("object.csv", "id,x,y,z\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,1,1,0\n");
     Write("image.csv", "id,u,v\n1,0,0\n2,10,0\n3,0,10\n4,10,10\n");
