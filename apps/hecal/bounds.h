@@ -9,7 +9,8 @@
 //   --threads                     0 … 256 (0 = every core)
 //   --seed                        0 … 2^64 − 1, a whole decimal number (no sign, no exponent)
 //   --covariance-samples          2 … 100000 (calibrate, simulate)
-//   simulate/bench --stations     3 … 100000;  simulate --trials 1 … 100000;
+//   simulate/bench --stations     3 … 100000;  simulate --trials 1 … 100000, --outliers
+//                                 0 … 100000;
 //   simulate                      at most 10000 settings (the product of the sweeps) and 10^6
 //                                 trial rows (settings × trials × methods)
 //   bench --datasets              1 … 10000, stations × data sets ≤ 10^6; --min-time 0 … 3600 s

@@ -4,7 +4,8 @@
 //         [--pixel-noise 0.5] [--z0 5000] [--focal 50] [--pixel-size 0.0083] [--contour FILE]
 //         [--samples 5000] [--seed 1] [--threads 0] [--ut-w0 0]
 //         [--output study.csv] [--plot study.svg] [--covariance-plot cov.svg [--covariance-at V]]
-// Lengths in mm, angles in degrees (the seed's units). --output writes one row per step and per
+// Lengths in mm, angles in degrees (the seed's units). --output writes a comment line with the
+// random seed and the sample count, then one row per step and per
 // pose component: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias
 // (component Tx,Ty,Tz,Rx,Ry,Rz; errors against the true motion; bias 1 when the SPEC C.5 check
 // flags the component). --plot (default: the CSV's name with .svg) draws the seed's Fig. 3: mean
@@ -12,7 +13,10 @@
 // --covariance-plot draws Fig. 4 at the step nearest --covariance-at (default: --from): every
 // 2×2 block of the pose covariance as 2σ ellipses (UT solid, Monte Carlo dashed) with 1000
 // Monte Carlo poses and the 13 sigma points. Stdout: a table per step and the largest
-// correlations. Every file is written atomically, and only after the whole study ran.
+// correlations. Every file is written atomically, all or none (io/atomic_file.h: the paths are
+// checked before the study runs), and only after the whole study ran. Bounds (bounds.h):
+// --steps 1 … 10000, --samples 2 … 10^6 with steps × samples ≤ 10^8, --threads 0 … 256,
+// --pixel-noise 0 … 100 px, --seed 0 … 2^64 − 1.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdint>

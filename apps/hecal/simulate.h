@@ -27,8 +27,10 @@
 // --reject-outliers: every method runs through calibrate's outlier rejection
 // (estimation/station_selection.h); the table and summary then report the fraction of gross
 // outliers found, of good stations rejected, and the RMSE against the reference.
-// Prints a table per setting (stdout); --output and --summary write the CSV files of
-// study/study_csv.h atomically. Bad flags are InputError (exit 2, one line on stderr).
+// Prints the seed and a table per setting (stdout); --output and --summary write the CSV files of
+// study/study_csv.h, both or neither (io/atomic_file.h; the paths are checked before the study
+// runs). Bad flags, and numbers outside the ranges of bounds.h (stations, trials, settings,
+// trial rows, sigmas, seeds, threads, samples), are InputError (exit 2, one line on stderr).
 #pragma once
 
 #include <cstdint>
