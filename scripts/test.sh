@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds hecal with warnings as errors and runs every correctness test (ctest label "unit").
+# Builds hecal with warnings as errors and runs every correctness test (ctest label "unit"; the
+# bad-input corpus, label "robustness", is part of it).
 # Slow studies carry the label "slow" and run with: ctest --test-dir build -L slow
 # Installs the Debian packages it needs first (scripts/install-deps.sh, apt-get only).
 set -euo pipefail

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <functional>
@@ -12,8 +13,10 @@
 #include <optional>
 #include <random>
 
+#include "bounds.h"
 #include "hecal/core/error.h"
 #include "hecal/estimation/calibrate.h"
+#include "hecal/io/delimited_text.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "hecal/study/study.h"
 #include "list_flags.h"
@@ -105,7 +108,7 @@ Row Measure(const std::string& impl, handeye::Method method, int stations,
   return row;
 }
 
-nlohmann::json ToJson(const Row& row) {
+nlohmann::json ToJson(const Row& row, std::uint64_t seed) {
   nlohmann::json object;
   object["impl"] = row.impl;
   object["method"] = std::string(handeye::Info(row.method).name);
@@ -118,6 +121,7 @@ nlohmann::json ToJson(const Row& row) {
   object["translation_unit"] = "m";
   object["failures"] = row.failures;
   object["datasets"] = row.datasets;
+  object["seed"] = seed;
   return object;
 }
 
@@ -139,10 +143,12 @@ std::string ErrorText(const std::optional<double>& value, double scale) {
   return v != 0.0 && v < 1e-3 ? Format("%.1e", v) : Format("%.4f", v);
 }
 
-void PrintTable(const std::vector<Row>& rows, const BenchFlags& flags, const Io& io) {
+void PrintTable(const std::vector<Row>& rows, const BenchFlags& flags, std::uint64_t seed,
+                const Io& io) {
   io.out << "hecal bench: thesis protocol, " << flags.setup << ", Gaussian noise " << flags.sigma
          << " (mm/deg) on robot and camera, " << flags.datasets
-         << " data sets per station count; errors of X are RMS over data sets; fail = threw, "
+         << " data sets per station count, seed " << seed
+         << "; errors of X are RMS over data sets; fail = threw, "
             "non-finite or > 10 deg\n";
   io.out << Pad("method", 18, true) << Pad("n", 4) << Pad("hecal us", 12) << Pad("opencv us", 12)
          << Pad("speed-up", 10) << Pad("hecal deg", 11) << Pad("hecal mm", 10) << Pad("fail", 5)
@@ -172,28 +178,41 @@ void PrintTable(const std::vector<Row>& rows, const BenchFlags& flags, const Io&
 }  // namespace
 
 void RunBench(const BenchFlags& flags, const Io& io) {
-  const std::vector<int> stations = ParseIntList("--stations", flags.stations, 3);
+  const std::vector<int> stations =
+      ParseIntList("--stations", flags.stations, kMinSimulatedStations, kMaxSimulatedStations);
   const std::vector<handeye::Method> methods = ParseMethodList("--method", flags.method);
   const std::optional<handeye::Setup> setup = handeye::ParseSetup(flags.setup);
   if (!setup) {
     throw InputError("--setup", 0, "unknown setup '" + flags.setup + "'",
                      "use eye-in-hand or eye-to-hand");
   }
-  if (flags.datasets < 1) {
-    throw InputError("--datasets", 0, "needs at least 1 data set", "e.g. --datasets 10");
+  const int datasets = ParseInt("--datasets", flags.datasets, 1, kMaxDatasets,
+                                "the number of data sets per station count (e.g. 10)");
+  for (int n : stations) {
+    if (std::int64_t{n} * datasets > kMaxBenchPoses) {
+      throw InputError("--datasets", 0,
+                       std::to_string(n) + " stations x " + std::to_string(datasets) +
+                           " data sets is more than " + std::to_string(kMaxBenchPoses) +
+                           " poses, the most hecal bench generates",
+                       "give fewer --datasets or fewer --stations");
+    }
   }
-  if (!(flags.min_time >= 0.0) || !std::isfinite(flags.min_time)) {
-    throw InputError("--min-time", 0, "must be a non-negative number of seconds",
+  if (!(flags.min_time >= 0.0 && flags.min_time <= kMaxMinTime)) {
+    throw InputError("--min-time", 0,
+                     "must be 0 to " + io::FormatDouble(kMaxMinTime) + " seconds, got " +
+                         io::FormatDouble(flags.min_time),
                      "e.g. --min-time 0.2");
   }
+  const std::uint64_t seed = ParseSeed("--seed", flags.seed);
   const SigmaLevel sigma = ParseSigmaLevel("--sigma", flags.sigma);
+  CheckNoiseLevel("--sigma", sigma.mm, sigma.deg);
   const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, sigma.deg / kDeg, sigma.mm * 1e-3};
 
   std::vector<Row> rows;
   for (int n : stations) {
     std::vector<DataSet> sets;
-    for (int d = 0; d < flags.datasets; ++d) {
-      std::mt19937_64 rng(study::TrialSeed(flags.seed, *setup, n, d));
+    for (int d = 0; d < datasets; ++d) {
+      std::mt19937_64 rng(study::TrialSeed(seed, *setup, n, d));
       sim::ProtocolOptions protocol;
       protocol.setup = *setup;
       protocol.stations = n;
@@ -240,10 +259,10 @@ void RunBench(const BenchFlags& flags, const Io& io) {
 
   if (flags.json) {
     nlohmann::json array = nlohmann::json::array();
-    for (const Row& row : rows) array.push_back(ToJson(row));
+    for (const Row& row : rows) array.push_back(ToJson(row, seed));
     io.out << array.dump(2) << "\n";
   } else {
-    PrintTable(rows, flags, io);
+    PrintTable(rows, flags, seed, io);
   }
 }
 
@@ -251,19 +270,19 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
   auto flags = std::make_shared<BenchFlags>();
   CLI::App* bench =
       app.add_subcommand("bench", "Time hecal's solvers and OpenCV's on identical generated data");
-  bench->add_option("--stations", flags->stations, "Station counts, comma separated")
+  bench->add_option("--stations", flags->stations, "Station counts, comma separated (3 to 100000)")
       ->capture_default_str();
   bench->add_flag("--json", flags->json, "Print one JSON array (DESIGN.md 4.2)");
   bench->add_option("--method", flags->method, "Method name(s), comma separated, or all")
       ->capture_default_str();
   bench->add_option("--setup", flags->setup, "eye-in-hand | eye-to-hand")->capture_default_str();
-  bench->add_option("--datasets", flags->datasets, "Data sets per station count")
+  bench->add_option("--datasets", flags->datasets, "Data sets per station count (1 to 10000)")
       ->capture_default_str();
   bench->add_option("--sigma", flags->sigma, "Noise on both: n (mm and deg) or MM/DEG")
       ->capture_default_str();
-  bench->add_option("--min-time", flags->min_time, "Timing budget per row, seconds")
+  bench->add_option("--min-time", flags->min_time, "Timing budget per row, seconds (0 to 3600)")
       ->capture_default_str();
-  bench->add_option("--seed", flags->seed, "Random seed")->capture_default_str();
+  bench->add_option("--seed", flags->seed, "Random seed (0 to 2^64-1)")->capture_default_str();
   bench->callback([flags, io] { RunBench(*flags, io); });
 }
 

@@ -44,10 +44,10 @@ struct BenchFlags {
   bool json = false;
   std::string method = "all";
   std::string setup = "eye-in-hand";
-  int datasets = 10;
+  std::string datasets = "10";  // 1 … 10000 (bounds.h)
   std::string sigma = "0.1";
   double min_time = 0.2;
-  uint64_t seed = 1;
+  std::string seed = "1";  // 0 … 2^64 − 1
 };
 
 // Runs the benchmark; throws hecal::InputError for bad flags.

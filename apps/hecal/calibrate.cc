@@ -13,10 +13,12 @@
 #include <sstream>
 #include <utility>
 
+#include "bounds.h"
 #include "conventions.h"
 #include "hecal/core/error.h"
 #include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
+#include "hecal/io/atomic_file.h"
 
 namespace hecal::cli {
 namespace {
@@ -39,6 +41,7 @@ estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& tex
     throw InputError(flag, 0, "expected two non-negative numbers MM,DEG, got '" + text + "'",
                      "write e.g. " + flag + " 0.5,0.1 for 0.5 mm and 0.1 degree per axis");
   }
+  CheckNoiseLevel(flag, values[0], values[1]);
   return {values[1] / kDegrees, values[0] * 1e-3};
 }
 
@@ -198,11 +201,13 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     }
     options.covariance.method = *covariance;
   }
-  options.covariance.samples = flags.covariance_samples;
-  options.covariance.seed = flags.seed;
-  options.consensus.seed = flags.seed;
+  options.covariance.samples =
+      ParseInt("--covariance-samples", flags.covariance_samples, 2, kMaxCovarianceSamples,
+               "the number of Monte Carlo samples (e.g. 5000)");
+  options.covariance.seed = ParseSeed("--seed", flags.seed);
+  options.consensus.seed = options.covariance.seed;
   options.reject_outliers = !flags.keep_outliers;
-  options.covariance.threads = flags.threads;
+  options.covariance.threads = ParseThreads("--threads", flags.threads);
   estimation::ValidateCovarianceOptions(options.covariance);
   options.robust_loss = flags.robust;
   if (flags.robust != "none" && flags.robust != "huber" && flags.robust != "cauchy") {
@@ -230,6 +235,17 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     }
   }
   return settings;
+}
+
+void CheckFiniteResult(const estimation::CalibrationResult& result) {
+  const bool finite = result.X.matrix().allFinite() && result.Z.matrix().allFinite() &&
+                      std::isfinite(result.rotation_rms) && std::isfinite(result.translation_rms) &&
+                      (!result.covariance || result.covariance->covariance.allFinite());
+  if (!finite) {
+    throw DegenerateError("X and Z: the solution is not finite",
+                          "check the poses' values and units (lengths far beyond a robot's "
+                          "reach overflow the solver)");
+  }
 }
 
 namespace {
@@ -317,6 +333,7 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
       notes.push_back(std::move(warning));
     result.warnings.insert(result.warnings.begin(), notes.begin(), notes.end());
   }
+  for (const estimation::CalibrationResult& result : document.results) CheckFiniteResult(result);
   for (size_t k = 0; k < document.results.size(); ++k) {
     if (k > 0) io.out << "\n";
     PrintSummary(io.out, document, document.results[k]);
@@ -330,6 +347,10 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
 
 void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   const CalibrateSettings settings = ParseCalibrateFlags(flags);
+  io::CheckOutputs({{"--output", flags.output}}, {{"--robot", flags.robot},
+                                                  {"--camera", flags.camera},
+                                                  {"--target", flags.target},
+                                                  {"--intrinsics", flags.intrinsics}});
   if (flags.images.empty()) {
     RunCalibratePoses(flags, settings, io);
   } else {
@@ -355,7 +376,8 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command->add_option("--pixel-sigma", flags->pixel_sigma,
                       "With --images: pixel noise per axis, px (estimated when absent)");
   command->add_option("--threads", flags->threads,
-                      "Threads for detection and covariance solves (default 0 = every core)");
+                      "Threads for detection and covariance solves, 0 to 256 (default 0 = every "
+                      "core)");
   command->add_flag("--refine-intrinsics", flags->refine_intrinsics,
                     "With --images: refine the intrinsics with X and Z in the joint refinement");
   command
@@ -387,11 +409,12 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "for ml, unscented for the other methods)");
   command
       ->add_option("--covariance-samples", flags->covariance_samples,
-                   "Monte Carlo samples for --covariance montecarlo")
+                   "Monte Carlo samples for --covariance montecarlo (2 to 100000)")
       ->capture_default_str();
   command
       ->add_option("--seed", flags->seed,
-                   "Random seed for --covariance montecarlo and the outlier consensus")
+                   "Random seed for --covariance montecarlo and the outlier consensus (0 to "
+                   "2^64-1)")
       ->capture_default_str();
   command->callback([flags, &io] { RunCalibrate(*flags, io); });
 }

@@ -15,7 +15,6 @@
 // From images (calibrate_images.cc): see RunCalibrateImages below.
 #pragma once
 
-#include <cstdint>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -31,11 +30,11 @@ namespace hecal::cli {
 struct CalibrateFlags {
   std::string robot;
   std::string camera;
-  std::string images;       // --images DIR (instead of --camera)
-  std::string target;       // --target target.yaml (with --images)
-  std::string intrinsics;   // --intrinsics camera.yaml (with --images; estimated when absent)
-  std::string pixel_sigma;  // --pixel-sigma PX (with --images; estimated when absent)
-  int threads = 0;          // --threads (detection, covariance solves; 0 = every core)
+  std::string images;         // --images DIR (instead of --camera)
+  std::string target;         // --target target.yaml (with --images)
+  std::string intrinsics;     // --intrinsics camera.yaml (with --images; estimated when absent)
+  std::string pixel_sigma;    // --pixel-sigma PX (with --images; estimated when absent)
+  std::string threads = "0";  // --threads (detection, covariance solves; 0 = every core)
   bool refine_intrinsics = false;  // --refine-intrinsics (with --images)
   std::string setup;
   std::string method = "ml";
@@ -49,9 +48,9 @@ struct CalibrateFlags {
   bool camera_inverse = false;
   bool keep_outliers = false;  // --keep-outliers: no outlier rejection
   std::string robust = "none";
-  std::string covariance;         // --covariance (empty: the method's default)
-  int covariance_samples = 5000;  // --covariance-samples (montecarlo)
-  std::uint64_t seed = 1;         // --seed (montecarlo, and the outlier consensus)
+  std::string covariance;                   // --covariance (empty: the method's default)
+  std::string covariance_samples = "5000";  // --covariance-samples (montecarlo)
+  std::string seed = "1";                   // --seed (montecarlo, and the outlier consensus)
 };
 
 // The flags every form shares, checked.
@@ -62,10 +61,15 @@ struct CalibrateSettings {
   io::PoseReadOptions read;              // --units, --degrees, --euler (robot and camera files)
 };
 
-// Throws InputError naming the flag for every bad value, when neither or both of --camera and
-// --images are given, and for a flag of the --images form (--target, --intrinsics,
+// Throws InputError naming the flag for every bad value (numbers outside the ranges of bounds.h),
+// when neither or both of --camera and --images are given, and for a flag of the --images form
+// (--target, --intrinsics,
 // --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
+
+// A result about to be printed and written: X, Z, the residual RMS and the covariance must be
+// finite (README "Reliability"); DegenerateError otherwise.
+void CheckFiniteResult(const estimation::CalibrationResult& result);
 
 // The readable summary of one result: X, Z, their 1σ, the residuals of every station.
 void PrintSummary(std::ostream& out, const report::ResultDocument& document,

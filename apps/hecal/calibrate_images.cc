@@ -14,6 +14,7 @@
 #include <sstream>
 #include <vector>
 
+#include "bounds.h"
 #include "conventions.h"
 #include "hecal/estimation/image_calibration.h"
 #include "hecal/estimation/plausibility.h"
@@ -35,6 +36,7 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
     throw InputError("--pixel-sigma", 0, "expected a positive number of pixels, got '" + text + "'",
                      "write e.g. --pixel-sigma 0.1, or leave it out to estimate it");
   }
+  CheckPixelSigma("--pixel-sigma", value);
   return value;
 }
 
@@ -155,8 +157,9 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   robot_read.invert = flags.robot_inverse;
   const io::PoseTable robot = io::ReadPoseTable(flags.robot, robot_read);
 
-  const ImageSet set = DetectImageSet({flags.images, flags.target, flags.intrinsics, flags.threads},
-                                      "hecal calibrate", io);
+  const ImageSet set = DetectImageSet(
+      {flags.images, flags.target, flags.intrinsics, settings.options.covariance.threads},
+      "hecal calibrate", io);
   const std::vector<Pose> robot_poses = RobotPosePerImage(robot, set, flags.images, io);
 
   report::ResultDocument document;
@@ -255,6 +258,7 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   report.image_rms_px = result.reprojection.image_rms_px;
   report.image_outlier = result.reprojection.image_outlier;
   report.pose_level = result.pose_level;
+  CheckFiniteResult(result.result);
   document.results.push_back(result.result);
   document.images = report;
 

@@ -5,6 +5,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/version.h"
+#include "library_logs.h"
 
 namespace hecal::cli {
 namespace {
@@ -18,6 +19,7 @@ constexpr Registrar kRegistrars[] = {
 }  // namespace
 
 int RunHecal(const std::vector<std::string>& argv, std::ostream& out, std::ostream& err) {
+  SilenceLibraryLogs();
   const Io io{out, err};
   CLI::App app{"hecal — hand–eye calibration with honest uncertainty", "hecal"};
   app.set_version_flag("--version", std::string(hecal::kVersion));

@@ -4,7 +4,8 @@
 //         [--pixel-noise 0.5] [--z0 5000] [--focal 50] [--pixel-size 0.0083] [--contour FILE]
 //         [--samples 5000] [--seed 1] [--threads 0] [--ut-w0 0]
 //         [--output study.csv] [--plot study.svg] [--covariance-plot cov.svg [--covariance-at V]]
-// Lengths in mm, angles in degrees (the seed's units). --output writes one row per step and per
+// Lengths in mm, angles in degrees (the seed's units). --output writes a comment line with the
+// random seed and the sample count, then one row per step and per
 // pose component: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias
 // (component Tx,Ty,Tz,Rx,Ry,Rz; errors against the true motion; bias 1 when the SPEC C.5 check
 // flags the component). --plot (default: the CSV's name with .svg) draws the seed's Fig. 3: mean
@@ -12,15 +13,20 @@
 // --covariance-plot draws Fig. 4 at the step nearest --covariance-at (default: --from): every
 // 2×2 block of the pose covariance as 2σ ellipses (UT solid, Monte Carlo dashed) with 1000
 // Monte Carlo poses and the 13 sigma points. Stdout: a table per step and the largest
-// correlations. Every file is written atomically, and only after the whole study ran.
+// correlations. Every file is written atomically, all or none (io/atomic_file.h: the paths are
+// checked before the study runs), and only after the whole study ran. Bounds (bounds.h):
+// --steps 1 … 10000, --samples 2 … 10^6 with steps × samples ≤ 10^8, --threads 0 … 256,
+// --pixel-noise 0 … 100 px, --seed 0 … 2^64 − 1.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iomanip>
 #include <memory>
 #include <numbers>
 #include <sstream>
 
+#include "bounds.h"
 #include "contour.h"
 #include "hecal/contour/contour_study.h"
 #include "hecal/core/error.h"
@@ -48,8 +54,6 @@ struct StudyCommandOptions {
   std::string output, plot, covariance_plot, covariance_at;
 };
 
-constexpr int kLargestCount = 1000000000;
-
 // Display units: mm for Tx..Tz, degrees for Rx..Rz.
 double Display(int component, double value) {
   return component < 3 ? value : value * kDegrees;
@@ -59,6 +63,8 @@ std::string Csv(const contour::ContourStudyOptions& o,
                 const std::vector<contour::StudyStep>& steps) {
   std::ostringstream out;
   out << std::setprecision(10);
+  out << "# hecal contour study: seed " << o.seed << ", " << o.samples
+      << " Monte Carlo samples per step\n";
   out << "motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias\n";
   for (const contour::StudyStep& step : steps) {
     for (int j = 0; j < 6; ++j) {
@@ -179,7 +185,7 @@ void PrintTable(std::ostream& out, const contour::ContourStudyOptions& o,
   out << "contour study: motion " << contour::StudyMotionName(o.motion) << ", Z0 " << o.z0_mm
       << " mm, f " << o.focal_mm << " mm (" << o.focal_mm / o.pixel_size_mm << " px), σ "
       << o.pixel_noise << " px, " << o.target.cols() << " control points, Monte Carlo " << o.samples
-      << " samples, UT 13 points\n";
+      << " samples (seed " << o.seed << "), UT 13 points\n";
   out << "errors against the true motion: mean ± sd (mm, deg); ratio = UT sd / MC sd; * = bias "
          "flag (SPEC C.5)\n";
   out << std::fixed;
@@ -225,18 +231,24 @@ void RunStudy(const StudyCommandOptions& flags, const Io& io) {
   o.motion = *motion;
   o.from = ParseNumber("--from", flags.from, "(one number)");
   o.to = ParseNumber("--to", flags.to, "(one number)");
-  o.steps = ParseCount("--steps", flags.steps, -kLargestCount, kLargestCount, "a whole number");
+  o.steps = ParseCount("--steps", flags.steps, 1, kMaxSteps, "the number of motion values");
   o.pixel_noise = ParseNumber("--pixel-noise", flags.pixel_noise, "(one number)");
+  CheckPixelSigma("--pixel-noise", o.pixel_noise, /*zero_allowed=*/true);
   o.z0_mm = ParseNumber("--z0", flags.z0, "(one number)");
   o.focal_mm = ParseNumber("--focal", flags.focal, "(one number)");
   o.pixel_size_mm = ParseNumber("--pixel-size", flags.pixel_size, "(one number)");
   if (!flags.contour.empty()) o.target = ReadContourFile(flags.contour);
-  o.samples =
-      ParseCount("--samples", flags.samples, -kLargestCount, kLargestCount, "a whole number");
-  o.seed = static_cast<std::uint64_t>(
-      ParseCount("--seed", flags.seed, 0, kLargestCount, "a whole number ≥ 0, e.g. 1"));
-  o.threads =
-      ParseCount("--threads", flags.threads, -kLargestCount, kLargestCount, "a whole number");
+  o.samples = ParseCount("--samples", flags.samples, 2, kMaxContourSamples,
+                         "the number of Monte Carlo samples per step");
+  if (std::int64_t{o.samples} * o.steps > kMaxContourSolves) {
+    throw InputError("--samples", 0,
+                     std::to_string(o.steps) + " steps x " + std::to_string(o.samples) +
+                         " samples is more than " + std::to_string(kMaxContourSolves) +
+                         " Monte Carlo solves",
+                     "give fewer --steps or --samples");
+  }
+  o.seed = ParseSeed("--seed", flags.seed);
+  o.threads = ParseThreads("--threads", flags.threads);
   o.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(
       ParseNumber("--ut-w0", flags.ut_w0, "(one number)"));
   std::string why;
@@ -245,26 +257,34 @@ void RunStudy(const StudyCommandOptions& flags, const Io& io) {
   }
   if (!flags.covariance_plot.empty()) o.keep_samples = 1000;
   contour::ValidateStudyOptions(o);
-
-  const std::vector<contour::StudyStep> steps = contour::RunContourStudy(o);
-  PrintTable(io.out, o, steps);
-
   std::string plot = flags.plot;
   if (plot.empty() && !flags.output.empty()) {
     plot = std::filesystem::path(flags.output).replace_extension(".svg").string();
   }
-  if (!flags.output.empty()) io::WriteFileAtomically(flags.output, Csv(o, steps));
-  if (!plot.empty()) io::WriteFileAtomically(plot, Figure3(o, steps));
+  io::CheckOutputs(
+      {{"--output", flags.output}, {"--plot", plot}, {"--covariance-plot", flags.covariance_plot}},
+      {{"--contour", flags.contour}});
+  const double covariance_at =
+      flags.covariance_at.empty()
+          ? o.from
+          : ParseNumber("--covariance-at", flags.covariance_at, "(one number)");
+
+  const std::vector<contour::StudyStep> steps = contour::RunContourStudy(o);
+  PrintTable(io.out, o, steps);
+
+  std::vector<io::OutputFile> outputs;
+  if (!flags.output.empty()) outputs.push_back({"--output", flags.output, Csv(o, steps)});
+  if (!plot.empty()) outputs.push_back({"--plot", plot, Figure3(o, steps)});
   if (!flags.covariance_plot.empty()) {
-    const double at = flags.covariance_at.empty()
-                          ? o.from
-                          : ParseNumber("--covariance-at", flags.covariance_at, "(one number)");
     const contour::StudyStep* nearest = &steps.front();
     for (const contour::StudyStep& step : steps) {
-      if (std::abs(step.value - at) < std::abs(nearest->value - at)) nearest = &step;
+      if (std::abs(step.value - covariance_at) < std::abs(nearest->value - covariance_at)) {
+        nearest = &step;
+      }
     }
-    io::WriteFileAtomically(flags.covariance_plot, Figure4(o, *nearest));
+    outputs.push_back({"--covariance-plot", flags.covariance_plot, Figure4(o, *nearest)});
   }
+  io::WriteFilesAtomically(outputs);
   for (const std::string& file : {flags.output, plot, flags.covariance_plot}) {
     if (!file.empty()) io.out << "wrote " << file << "\n";
   }
@@ -279,16 +299,19 @@ void AddContourStudyCommand(CLI::App& contour, const Io& io) {
   study->add_option("--motion", flags->motion, "tx|ty|tz|rx|ry|rz")->required();
   study->add_option("--from", flags->from, "First value (mm or degrees)")->required();
   study->add_option("--to", flags->to, "Last value (mm or degrees)")->required();
-  study->add_option("--steps", flags->steps, "Number of values from --from to --to")->required();
-  study->add_option("--pixel-noise", flags->pixel_noise, "σ per image coordinate, px (0.5)");
+  study->add_option("--steps", flags->steps, "Number of values from --from to --to (1 to 10000)")
+      ->required();
+  study->add_option("--pixel-noise", flags->pixel_noise,
+                    "σ per image coordinate, px (0.5; 0 to 100)");
   study->add_option("--z0", flags->z0, "Initial distance, mm (5000)");
   study->add_option("--focal", flags->focal, "Focal length, mm (50)");
   study->add_option("--pixel-size", flags->pixel_size, "Pixel size, mm (0.0083)");
   study->add_option("--contour", flags->contour,
                     "Target control points, CSV x,y in mm on the target plane (default: built in)");
-  study->add_option("--samples", flags->samples, "Monte Carlo samples per step (5000)");
-  study->add_option("--seed", flags->seed, "Random seed (1)");
-  study->add_option("--threads", flags->threads, "Threads (0: every core)");
+  study->add_option("--samples", flags->samples,
+                    "Monte Carlo samples per step (5000; 2 to 1000000)");
+  study->add_option("--seed", flags->seed, "Random seed (1; 0 to 2^64-1)");
+  study->add_option("--threads", flags->threads, "Threads, 0 to 256 (0: every core)");
   study->add_option("--ut-w0", flags->ut_w0, "UT centre weight w0 (0)");
   study->add_option("--output", flags->output,
                     "CSV: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias");

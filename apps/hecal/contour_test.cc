@@ -99,6 +99,8 @@ TEST_F(ContourStudyCommand, WritesTheCsvOfTheContractAndBothFigures) {
   std::istringstream csv(Read("rx.csv"));
   std::string line;
   std::getline(csv, line);
+  EXPECT_EQ(line, "# hecal contour study: seed 1, 2000 Monte Carlo samples per step");
+  std::getline(csv, line);
   EXPECT_EQ(line, "motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias");
   std::vector<std::string> rows;
   while (std::getline(csv, line)) rows.push_back(line);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -15,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bounds.h"
 #include "contour.h"
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/bspline.h"
@@ -32,6 +34,9 @@
 #include "hecal/io/delimited_text.h"
 #include "hecal/version.h"
 #include "image_files.h"
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+#include "image_read.h"
+#endif
 #include "json_matrix.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <opencv2/core.hpp>
@@ -71,11 +76,7 @@ std::string Lower(std::string text) {
 
 contour::GrayImage ReadGray(const fs::path& path) {
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-  const cv::Mat pixels = cv::imread(path.string(), cv::IMREAD_GRAYSCALE);
-  if (pixels.empty()) {
-    throw InputError(path.string(), 0, "cannot read the image",
-                     "check that it is a readable png/jpg/bmp/tif file");
-  }
+  const cv::Mat pixels = ReadGrayImage(path.string(), kMinRenderSide);
   contour::GrayImage image(pixels.cols, pixels.rows);
   for (int y = 0; y < pixels.rows; ++y) {
     const unsigned char* row = pixels.ptr<unsigned char>(y);
@@ -248,6 +249,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
   if (!options.measurement_sigma.empty()) {
     tracker_options.measurement_sigma =
         ParsePositive("--measurement-sigma", options.measurement_sigma, "σ in pixels");
+    CheckPixelSigma("--measurement-sigma", *tracker_options.measurement_sigma);
   }
   tracker_options.search.range =
       ParsePositive("--search-range", options.search_range, "the search range in pixels");
@@ -260,6 +262,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
                      "use control (B-spline control points) or curve (points on the contour)");
   }
   const OutputKind output_kind = ParseOutputKind(options.output);
+  io::CheckOutputs({{"--output", options.output}}, {{"--init", options.init}});
 
   Eigen::Matrix2Xd control = ReadContourFile(options.init);
   if (options.init_points == "curve") {
@@ -348,54 +351,41 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
 
 // ---- render ------------------------------------------------------------------------------------
 
-void RunContourRender(const ContourRenderOptions& options, const Io& io) {
-  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
-  const int frames = ParseCount("--frames", options.frames, 1, 100000, "the number of frames");
-  const std::vector<double> from =
-      ParseNumberList("--from", options.from, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
-  const std::vector<double> to =
-      ParseNumberList("--to", options.to, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
-  const std::vector<double> size = ParseNumberList("--size", options.size, 2, "W,H (px)");
-  for (double v : size) {
-    if (v != std::floor(v) || v < 8 || v > 20000) {
-      throw InputError("--size", 0, "W and H must be whole numbers from 8 to 20000",
-                       "give the image size in pixels, e.g. 768,576");
-    }
-  }
-  const int width = static_cast<int>(size[0]), height = static_cast<int>(size[1]);
-  contour::RenderOptions render;
-  render.noise_sigma = ParseNumber("--noise", options.noise, "the noise σ in grey levels");
-  if (render.noise_sigma < 0.0) {
-    throw InputError("--noise", 0, "must be ≥ 0", "give the noise σ in grey levels (e.g. 3)");
-  }
-  render.blur_sigma = ParseNumber("--blur", options.blur, "the blur σ in pixels");
-  if (render.blur_sigma < 0.0 || render.blur_sigma > 20.0) {
-    throw InputError("--blur", 0, "must be 0 … 20 px", "give the optics blur σ (e.g. 0.7)");
-  }
-  const double seed = ParseNumber("--seed", options.seed, "a whole number ≥ 0");
-  if (seed < 0.0 || seed != std::floor(seed) || seed > 9.0e15) {
-    throw InputError("--seed", 0, "must be a whole number ≥ 0", "give e.g. 1");
-  }
-  render.quantize = true;
-  const Eigen::Matrix2Xd target_points =
-      options.contour.empty() ? contour::DefaultTarget() : ReadContourFile(options.contour);
-  const contour::ClosedBSpline target(target_points);
-  // The ShapeSpace check: a collinear target has no affine deformation to track.
-  const contour::ShapeSpace check(target_points);
-  (void)check;
-#if !defined(HECAL_HAVE_OPENCV_PEERS)
-  (void)io;
-  (void)frames;
-  (void)width;
-  (void)height;
-  NeedsVision("--output");
-#else
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+namespace {
+
+// Creates the output folder of `contour render` when it is missing; returns the topmost folder
+// created (to remove on failure), nullopt when it existed. An existing path that is not a folder
+// is an InputError.
+std::optional<fs::path> CreateFolder(const std::string& output) {
   std::error_code error;
-  fs::create_directories(options.output, error);
-  if (error || !fs::is_directory(options.output)) {
-    throw InputError(options.output, 0, "cannot create the output folder",
+  const fs::file_status status = fs::status(output, error);
+  if (fs::exists(status)) {
+    if (!fs::is_directory(status)) {
+      throw InputError(output, 0, "cannot write the frames: it exists and is not a folder",
+                       "give --output a folder (created when missing)");
+    }
+    return std::nullopt;
+  }
+  fs::path topmost = fs::absolute(output, error);
+  while (topmost.has_parent_path() && topmost.parent_path() != topmost &&
+         !fs::exists(topmost.parent_path(), error)) {
+    topmost = topmost.parent_path();
+  }
+  fs::create_directories(output, error);
+  if (error || !fs::is_directory(output)) {
+    throw InputError(output, 0, "cannot create the output folder: " + error.message(),
                      "give --output a folder that can be created or written");
   }
+  return topmost;
+}
+
+void RenderFrames(const ContourRenderOptions& options, const contour::ContourCamera& camera,
+                  int frames, const std::vector<double>& from, const std::vector<double>& to,
+                  int width, int height, contour::RenderOptions render, std::uint64_t seed,
+                  const Eigen::Matrix2Xd& target_points, const contour::ClosedBSpline& target,
+                  const Io& io) {
+  io::StagedFiles staged;
   const Eigen::Vector2d principal((width - 1) / 2.0, (height - 1) / 2.0);
   std::string truth =
       "# hecal " + std::string(kVersion) +
@@ -403,7 +393,9 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
       io::FormatDouble(camera.z0) + ", f = " + io::FormatDouble(camera.focal) +
       " px, principal point " + io::FormatDouble(principal.x()) + "," +
       io::FormatDouble(principal.y()) +
-      "; tx..m12: the weak-perspective shape vector of the motion (tx, ty in px)\n"
+      "; tx..m12: the weak-perspective shape vector of the motion (tx, ty in px); noise seed " +
+      std::to_string(seed) +
+      "\n"
       "frame,image,Tx,Ty,Tz,Rx_deg,Ry_deg,Rz_deg,tx,ty,m11m1,m22m1,m21,m12\n";
   std::string init;
   int outside = 0;
@@ -423,7 +415,7 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
         outline.row(0).maxCoeff() > width - 1.0 || outline.row(1).maxCoeff() > height - 1.0) {
       ++outside;
     }
-    render.seed = SplitMix64(static_cast<std::uint64_t>(seed)) + static_cast<std::uint64_t>(t);
+    render.seed = SplitMix64(seed) + static_cast<std::uint64_t>(t);
     const contour::GrayImage image = contour::RenderPolygon(outline, width, height, render);
     cv::Mat pixels(height, width, CV_8UC1);
     for (int y = 0; y < height; ++y) {
@@ -433,15 +425,12 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", t);
     const std::string path = (fs::path(options.output) / name).string();
-    const std::string temporary = path + ".tmp.png";
-    if (!cv::imwrite(temporary, pixels)) {
-      throw InputError(path, 0, "cannot write the image", "check that the folder is writable");
+    std::vector<unsigned char> png;
+    if (!cv::imencode(".png", pixels, png)) {
+      throw InputError(path, 0, "cannot encode the image", "check the OpenCV build (PNG support)");
     }
-    fs::rename(temporary, path, error);
-    if (error) {
-      throw InputError(path, 0, "cannot write the image: " + error.message(),
-                       "check that the folder is writable");
-    }
+    staged.Stage("--output", path,
+                 std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
     truth += std::to_string(t) + "," + name;
     for (int i = 0; i < 6; ++i) {
       truth += ",";
@@ -466,14 +455,85 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
       }
     }
   }
-  io::WriteFileAtomically((fs::path(options.output) / "init.csv").string(), init);
-  io::WriteFileAtomically((fs::path(options.output) / "truth.csv").string(), truth);
+  staged.Stage("--output", (fs::path(options.output) / "init.csv").string(), init);
+  staged.Stage("--output", (fs::path(options.output) / "truth.csv").string(), truth);
+  staged.Commit();
   io.out << "rendered " << frames << " frames (" << width << "×" << height << ") to "
          << options.output << "\n";
   if (outside > 0) {
     io.err << "hecal: warning: the target leaves the image in " << outside
            << " frame(s); the tracker cannot follow it there (fix: a smaller motion or a larger "
               "--size)\n";
+  }
+}
+}  // namespace
+#endif
+
+void RunContourRender(const ContourRenderOptions& options, const Io& io) {
+  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
+  const int frames = ParseCount("--frames", options.frames, 1, kMaxFrames, "the number of frames");
+  const std::vector<double> from =
+      ParseNumberList("--from", options.from, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
+  const std::vector<double> to =
+      ParseNumberList("--to", options.to, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
+  const std::vector<double> size = ParseNumberList("--size", options.size, 2, "W,H (px)");
+  for (double v : size) {
+    if (v != std::floor(v) || v < kMinRenderSide || v > kMaxRenderSide) {
+      throw InputError("--size", 0,
+                       "W and H must be whole numbers from " + std::to_string(kMinRenderSide) +
+                           " to " + std::to_string(kMaxRenderSide),
+                       "give the image size in pixels, e.g. 768,576");
+    }
+  }
+  const int width = static_cast<int>(size[0]), height = static_cast<int>(size[1]);
+  const std::int64_t pixels = std::int64_t{width} * height;
+  if (pixels > kMaxImagePixels || pixels * frames > kMaxSequencePixels) {
+    throw InputError("--size", 0,
+                     std::to_string(frames) + " frames of " + std::to_string(width) + "×" +
+                         std::to_string(height) + " px are more than " +
+                         std::to_string(kMaxImagePixels) + " pixels a frame or " +
+                         std::to_string(kMaxSequencePixels) + " in all",
+                     "give a smaller --size or fewer --frames");
+  }
+  contour::RenderOptions render;
+  render.noise_sigma = ParseNumber("--noise", options.noise, "the noise σ in grey levels");
+  if (!(render.noise_sigma >= 0.0 && render.noise_sigma <= kMaxGreyNoise)) {
+    throw InputError("--noise", 0, "must be 0 … 255 grey levels",
+                     "give the noise σ in grey levels (e.g. 3)");
+  }
+  render.blur_sigma = ParseNumber("--blur", options.blur, "the blur σ in pixels");
+  if (render.blur_sigma < 0.0 || render.blur_sigma > 20.0) {
+    throw InputError("--blur", 0, "must be 0 … 20 px", "give the optics blur σ (e.g. 0.7)");
+  }
+  const std::uint64_t seed = ParseSeed("--seed", options.seed);
+  render.quantize = true;
+  const Eigen::Matrix2Xd target_points =
+      options.contour.empty() ? contour::DefaultTarget() : ReadContourFile(options.contour);
+  const contour::ClosedBSpline target(target_points);
+  // The ShapeSpace check: a collinear target has no affine deformation to track.
+  const contour::ShapeSpace check(target_points);
+  (void)check;
+#if !defined(HECAL_HAVE_OPENCV_PEERS)
+  (void)io;
+  (void)frames;
+  (void)width;
+  (void)height;
+  NeedsVision("--output");
+#else
+  // Every file is staged in the folder and renamed when all are written (atomic_file.h); a
+  // folder created here is removed again when the command fails.
+  const std::optional<fs::path> created = CreateFolder(options.output);
+  const auto remove_created = [&created] {
+    if (!created) return;
+    std::error_code ignored;
+    fs::remove_all(*created, ignored);
+  };
+  try {
+    RenderFrames(options, camera, frames, from, to, width, height, render, seed, target_points,
+                 target, io);
+  } catch (...) {
+    remove_created();
+    throw;
   }
 #endif
 }

@@ -38,8 +38,14 @@
 //   optics blur (--blur, default 0.7 px), pixel noise (--noise, default 3 grey levels; --seed,
 //   default 1), 8-bit. Writes DIR/frame_0000.png …, DIR/truth.csv (per frame: the motion, and
 //   the weak-perspective S = ShapeFromPose of it) and DIR/init.csv (x,y: the control points of
-//   the first view in pixels, ready for `track --init`). DIR is created when missing.
-// Errors: bad flags or files (with file:line), a missing or empty folder, an unreadable image,
+//   the first view in pixels, ready for `track --init`), and records --seed in truth.csv. DIR
+//   is created when missing. Every file is staged in DIR and renamed when all are rendered: a
+//   failure (a frame with the target behind the camera, a file that cannot be written) leaves
+//   none of them, and removes DIR when it was created. Bounds (bounds.h): 1 … 10000 frames,
+//   8 … 20000 px a side, ≤ 10^8 pixels a frame and 2·10^9 in all, --noise 0 … 255.
+// Errors: bad flags or files (with file:line), a missing or empty folder, an unreadable image
+// (image_read.h: larger than 10^8 pixels, smaller than 8 × 8, cut short or corrupt), an --output
+// that is --init or not a regular file (io/atomic_file.h),
 // images of different sizes, a collinear init contour (DegenerateError) → exit 2; no output
 // file is written then (track writes its output only when every frame is done).
 #pragma once

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "bounds.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
@@ -51,25 +52,22 @@ std::string OutputStem(const std::string& output) {
   return fs::path(output).replace_extension().string();
 }
 
-void CheckOutputDirectory(const std::string& output) {
-  const fs::path parent = fs::path(output).parent_path();
-  std::error_code error;
-  if (!parent.empty() && !fs::is_directory(parent, error)) {
-    throw InputError(output, 0, "the directory " + parent.string() + " does not exist",
-                     "create it, or give --output a path in an existing directory");
-  }
-}
-
 }  // namespace
 
 void RunDetect(const DetectFlags& flags, const Io& io) {
-  CheckOutputDirectory(flags.output);
-  const ImageSet set = DetectImageSet(
-      {flags.images, flags.target, flags.intrinsics, flags.threads, ImageUse::kPoses},
-      "hecal detect", io);
-
-  // Every file's text first, then the writes, the pose table last.
+  const int threads = ParseThreads("--threads", flags.threads);
+  // Every output is checked before the detection and written all or none after it.
   const std::string stem = OutputStem(flags.output);
+  const std::string points_path = stem + ".points.csv";
+  const std::string camera_path = flags.intrinsics.empty() ? stem + ".camera.yaml" : "";
+  io::CheckOutputs({{"--output", flags.output},
+                    {"--output (points)", points_path},
+                    {"--output (intrinsics)", camera_path}},
+                   {{"--target", flags.target}, {"--intrinsics", flags.intrinsics}});
+  const ImageSet set =
+      DetectImageSet({flags.images, flags.target, flags.intrinsics, threads, ImageUse::kPoses},
+                     "hecal detect", io);
+
   io::PoseTable table;
   table.source = flags.output;
   for (const ImageRecord& image : set.images) {
@@ -96,9 +94,10 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
              ", " + std::to_string(set.size.width) + "x" + std::to_string(set.size.height),
          "RMS reprojection error " + io::FormatDouble(set.estimated->rms_px) + " px"});
   }
-  io::WriteFileAtomically(stem + ".points.csv", points_text);
-  if (set.estimated) io::WriteFileAtomically(stem + ".camera.yaml", camera_text);
-  io::WriteFileAtomically(flags.output, pose_text);
+  std::vector<io::OutputFile> outputs = {{"--output", flags.output, pose_text},
+                                         {"--output (points)", points_path, points_text}};
+  if (set.estimated) outputs.push_back({"--output (intrinsics)", camera_path, camera_text});
+  io::WriteFilesAtomically(outputs);
   io.out << "hecal: wrote " << table.rows.size() << " poses to " << flags.output
          << " (T_camera_target, m, quaternion), points to " << stem << ".points.csv"
          << (set.estimated ? ", intrinsics to " + stem + ".camera.yaml" : std::string()) << "\n";
@@ -130,7 +129,8 @@ void RegisterDetectCommand(CLI::App& app, const Io& io) {
       ->add_option("--output", flags->output,
                    "Pose table of T_camera_target (CSV); also writes <output stem>.points.csv")
       ->required();
-  command->add_option("--threads", flags->threads, "Detection threads (default 0 = every core)");
+  command->add_option("--threads", flags->threads,
+                      "Detection threads, 0 to 256 (default 0 = every core)");
   command->callback([flags, &io] { RunDetect(*flags, io); });
 }
 

@@ -5,7 +5,7 @@
 // Steps 1–5 (images, detection, intrinsics, poses, per-image report) are the image front end of
 // image_set.h, shared with `hecal calibrate --images`. With --intrinsics one usable image is
 // enough (a pose needs no more); without, 3 (estimating the intrinsics needs them). Then
-//   6. Files (metres, written only when everything succeeded, each atomically):
+//   6. Files (metres, written only when everything succeeded, all or none: io/atomic_file.h):
 //      <output>                  pose table (io/pose_table.h): id (= the station: the image's
 //                                file stem, or its sub-folder's name),
 //                                x,y,z,qw,qx,qy,qz of T_camera_target, '#' lines saying how
@@ -14,8 +14,10 @@
 //      <output stem>.camera.yaml only when the intrinsics were estimated
 //   The output stem is <output> without its extension (camera.csv → camera).
 //
-// Errors (hecal::InputError, exit 2, nothing written): those of image_set.h, and an --output
-// in a directory that does not exist.
+// Errors (hecal::InputError, exit 2, nothing written): those of image_set.h, --threads outside
+// 0 … 256 (bounds.h), and any of the three output paths refused by io::CheckOutputs (checked
+// before the detection): in a directory that does not exist, a folder, a device or a FIFO, or
+// one of the inputs (--target, --intrinsics).
 #pragma once
 
 #include <string>
@@ -29,7 +31,7 @@ struct DetectFlags {
   std::string target;
   std::string intrinsics;  // "" = estimate from the images
   std::string output;
-  int threads = 0;  // 0 = every core
+  std::string threads = "0";  // 0 = every core (bounds.h: 0 … 256)
 };
 
 // Runs the command; throws hecal::InputError for bad flags or data.

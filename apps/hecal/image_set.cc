@@ -13,12 +13,15 @@
 #include <sstream>
 #include <string_view>
 
+#include "bounds.h"
 #include "hecal/io/camera_file.h"
+#include "hecal/io/delimited_text.h"
 #include "hecal/io/target_file.h"
 #include "hecal/vision/intrinsics_fit.h"
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
 #include "image_files.h"
+#include "image_read.h"
 #include "image_set.h"
 
 namespace hecal::cli {
@@ -91,11 +94,7 @@ void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
         for (int i = range.start; i < range.end; ++i) {
           ImageRecord& image = (*images)[static_cast<std::size_t>(i)];
           try {
-            const cv::Mat pixels = cv::imread(image.path.string(), cv::IMREAD_GRAYSCALE);
-            if (pixels.empty()) {
-              throw InputError(image.path.string(), 0, "cannot read the image",
-                               "replace the file with a readable png/jpg/bmp/tif, or remove it");
-            }
+            const cv::Mat pixels = ReadGrayImage(image.path.string(), kMinDetectionSide);
             image.size = pixels.size();
             const bool sized = camera && (camera->width <= 0 || (camera->width == pixels.cols &&
                                                                  camera->height == pixels.rows));
@@ -224,6 +223,32 @@ void CheckIntrinsicsSize(const pose::CameraModel& camera, const std::string& pat
   throw InputError(path, 0, sizes,
                    "use the intrinsics of this camera at this resolution, or leave out "
                    "--intrinsics to estimate them from the images");
+}
+
+// Distortion coefficients that move the image corner farther than 10 image diagonals (e.g.
+// k1 = 1e6 for 1e-6, or a coefficient in the wrong slot) describe no lens: every pose from them
+// would be nonsense ("behind the camera"), so they are refused naming the coefficients. The
+// displacement of the corner farthest from the principal point, at normalised radius r, is
+// bounded by |k1 r² + k2 r⁴ + k3 r⁶| r + 3 (|p1| + |p2|) r² (normalised), times fx in pixels.
+void CheckDistortionRange(const pose::CameraModel& camera, const std::string& path, cv::Size size) {
+  const double x = std::max(camera.cx, size.width - 1.0 - camera.cx) / camera.fx;
+  const double y = std::max(camera.cy, size.height - 1.0 - camera.cy) / camera.fy;
+  const double r2 = x * x + y * y;
+  const auto& d = camera.distortion;  // k1, k2, p1, p2, k3
+  const double radial = d[0] * r2 + d[1] * r2 * r2 + d[4] * r2 * r2 * r2;
+  const double shift_px =
+      (std::abs(radial) * std::sqrt(r2) + 3.0 * (std::abs(d[2]) + std::abs(d[3])) * r2) * camera.fx;
+  const double diagonal = std::hypot(size.width, size.height);
+  if (std::isfinite(shift_px) && shift_px <= 10.0 * diagonal) return;
+  throw InputError(path, 0,
+                   "the distortion (k1 " + io::FormatDouble(d[0]) + ", k2 " +
+                       io::FormatDouble(d[1]) + ", p1 " + io::FormatDouble(d[2]) + ", p2 " +
+                       io::FormatDouble(d[3]) + ", k3 " + io::FormatDouble(d[4]) +
+                       ") would move the image corner by " + Fixed(shift_px, 0) +
+                       " px, more than 10 image diagonals: no lens distorts like that",
+                   "check the coefficients and their order (k1 k2 p1 p2 k3, OpenCV's "
+                   "plumb_bob; a typo in an exponent?), or leave out --intrinsics to estimate "
+                   "them");
 }
 
 // The points of every used image, one view each.
@@ -427,10 +452,7 @@ std::vector<Eigen::Vector2d> PixelsOf(const vision::Detection& detection) {
 }
 
 ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, const Io& io) {
-  if (flags.threads < 0) {
-    throw InputError("--threads", 0, "must be >= 0, got " + std::to_string(flags.threads),
-                     "give a thread count, or 0 for every core");
-  }
+  ParseThreads("--threads", std::to_string(flags.threads));
   ImageSet set;
   set.target = io::ReadTargetFile(flags.target);
   set.board = pose::ObjectPoints(set.target);
@@ -458,7 +480,10 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
   }
   CheckSameSize(set.images);
   set.size = set.images.front().size;
-  if (given) CheckIntrinsicsSize(given->camera, flags.intrinsics, set.size);
+  if (given) {
+    CheckIntrinsicsSize(given->camera, flags.intrinsics, set.size);
+    CheckDistortionRange(given->camera, flags.intrinsics, set.size);
+  }
   ResolveAndMarkUnusable(set.target, &set.images);
   if (CountUsed(set.images) < Needed(flags).count) PrintReport(set.images, io.out);
   CheckEnoughViews(set.images, set.target, flags);

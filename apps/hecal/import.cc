@@ -2,10 +2,8 @@
 #include "import.h"
 
 #include <CLI/CLI.hpp>
-#include <filesystem>
 #include <memory>
 #include <optional>
-#include <system_error>
 
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
@@ -41,77 +39,6 @@ Output: robot.csv = T_base_gripper, camera.csv = T_camera_target, quaternions qw
   '#' lines naming the source, the convention applied and the units, and '# note:' lines for
   rotations that were projected onto SO(3) or normalised (also printed as warnings).
 Errors: one line on stderr, exit code 2, and no output file is written or changed.)";
-
-struct Output {
-  std::string path;
-  std::string contents;
-  std::string flag;
-};
-
-// The identity of an output path for the "two outputs are the same file" check.
-std::string PathKey(const std::string& path) {
-  std::error_code error;
-  const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
-  return error ? std::filesystem::path(path).lexically_normal().string() : canonical.string();
-}
-
-// Writes every output or none: checks the directories first, remembers what each path held, and
-// restores it when a later write fails.
-void WriteAllOrNothing(const std::vector<Output>& outputs) {
-  namespace fs = std::filesystem;
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    for (size_t j = 0; j < i; ++j) {
-      if (PathKey(outputs[i].path) == PathKey(outputs[j].path)) {
-        throw InputError(outputs[i].flag, 0,
-                         "names the same file as " + outputs[j].flag + " (" + outputs[i].path + ")",
-                         "give each output its own file");
-      }
-    }
-  }
-  struct Previous {
-    bool existed = false;
-    std::string contents;
-  };
-  std::vector<Previous> previous(outputs.size());
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    const fs::path path(outputs[i].path);
-    const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    std::error_code error;
-    if (!fs::is_directory(parent, error)) {
-      throw InputError(outputs[i].path, 0, "directory " + parent.string() + " does not exist",
-                       "create it, or give " + outputs[i].flag +
-                           " a path in an existing "
-                           "directory");
-    }
-    if (fs::is_directory(path, error)) {
-      throw InputError(outputs[i].path, 0, "is a directory",
-                       "give " + outputs[i].flag + " a file name");
-    }
-    if (fs::is_regular_file(path, error)) {
-      previous[i].existed = true;
-      previous[i].contents = io::ReadFile(outputs[i].path);
-    }
-  }
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    try {
-      io::WriteFileAtomically(outputs[i].path, outputs[i].contents);
-    } catch (...) {
-      for (size_t j = 0; j < i; ++j) {
-        try {
-          if (previous[j].existed) {
-            io::WriteFileAtomically(outputs[j].path, previous[j].contents);
-          } else {
-            std::error_code ignored;
-            fs::remove(outputs[j].path, ignored);
-          }
-        } catch (...) {
-          // Best effort: the original error is the one to report.
-        }
-      }
-      throw;
-    }
-  }
-}
 
 std::string CsvText(const io::PoseTable& table, const std::vector<std::string>& notes,
                     const std::string& format) {
@@ -168,13 +95,12 @@ void RunImport(const ImportCommandOptions& options, const Io& io) {
 
   const io::ImportedPoses imported = io::ImportFiles(*format, options.inputs, import_options);
 
-  std::vector<Output> outputs;
+  std::vector<io::OutputFile> outputs;
   outputs.push_back(
-      {options.robot, CsvText(imported.robot, imported.robot_notes, options.format), "--robot"});
+      {"--robot", options.robot, CsvText(imported.robot, imported.robot_notes, options.format)});
   if (imported.camera) {
-    outputs.push_back({options.camera,
-                       CsvText(*imported.camera, imported.camera_notes, options.format),
-                       "--camera"});
+    outputs.push_back({"--camera", options.camera,
+                       CsvText(*imported.camera, imported.camera_notes, options.format)});
   }
   if (!options.intrinsics.empty()) {
     if (!imported.intrinsics) {
@@ -188,10 +114,14 @@ void RunImport(const ImportCommandOptions& options, const Io& io) {
         "source: " + imported.intrinsics->source +
             " (K and plumb_bob distortion k1 k2 p1 p2 k3, pixels)",
         "width and height are not in the source; add them if a tool needs them"};
-    outputs.push_back({options.intrinsics, io::FormatIntrinsicsYaml(*imported.intrinsics, comments),
-                       "--intrinsics"});
+    outputs.push_back({"--intrinsics", options.intrinsics,
+                       io::FormatIntrinsicsYaml(*imported.intrinsics, comments)});
   }
-  WriteAllOrNothing(outputs);
+  std::vector<io::PathArgument> output_paths, inputs;
+  for (const io::OutputFile& output : outputs) output_paths.push_back({output.flag, output.path});
+  for (const std::string& source : imported.sources) inputs.push_back({"input", source});
+  io::CheckOutputs(output_paths, inputs);
+  io::WriteFilesAtomically(outputs);
   for (const std::string& warning : imported.robot.warnings) {
     io.err << "hecal: warning: " << warning << "\n";
   }

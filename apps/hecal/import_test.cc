@@ -313,7 +313,7 @@ TEST_F(ImportTest, BadFlagsAndInputsWriteNothing) {
   ExpectFailure({"--format", "moveit", Path("missing.json"), "--robot", robot, "--camera", camera},
                 "missing.json");
   ExpectFailure({"--format", "moveit", json, "--robot", robot, "--camera", robot},
-                "--camera: names the same file as --robot");
+                "--camera names the same file as --robot");
   ExpectFailure(
       {"--format", "moveit", json, "--robot", robot, "--camera", Path("no/such/dir/camera.csv")},
       "does not exist");

@@ -36,17 +36,22 @@ std::vector<std::string> SplitList(const std::string& flag, const std::string& t
   return items;
 }
 
-std::vector<int> ParseIntList(const std::string& flag, const std::string& text, int minimum) {
+std::vector<int> ParseIntList(const std::string& flag, const std::string& text, int minimum,
+                              int maximum) {
   std::vector<int> values;
   for (const std::string& item : SplitList(flag, text)) {
     int value = 0;
     const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-    if (error != std::errc() || end != item.data() + item.size()) {
+    const bool integer = error == std::errc() && end == item.data() + item.size();
+    if (!integer && error != std::errc::result_out_of_range) {
       throw InputError(flag, 0, "'" + item + "' is not an integer", "e.g. " + flag + " 10,20,50");
     }
-    if (value < minimum) {
-      throw InputError(flag, 0, "'" + item + "' is below the minimum " + std::to_string(minimum),
-                       "use values of at least " + std::to_string(minimum));
+    if (!integer || value < minimum || value > maximum) {
+      throw InputError(
+          flag, 0,
+          "'" + item + "' is outside the range " + std::to_string(minimum) + " to " +
+              std::to_string(maximum),
+          "use values from " + std::to_string(minimum) + " to " + std::to_string(maximum));
     }
     values.push_back(value);
   }

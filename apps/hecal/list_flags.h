@@ -13,8 +13,9 @@ namespace hecal::cli {
 // Splits at commas and trims spaces; an empty list or an empty item is an InputError.
 std::vector<std::string> SplitList(const std::string& flag, const std::string& text);
 
-// Integers ≥ minimum.
-std::vector<int> ParseIntList(const std::string& flag, const std::string& text, int minimum);
+// Integers in [minimum, maximum] (an item outside is an InputError naming the range).
+std::vector<int> ParseIntList(const std::string& flag, const std::string& text, int minimum,
+                              int maximum);
 
 // Method names (DESIGN.md §4) or "all" (every method in handeye::AllMethods() order).
 std::vector<handeye::Method> ParseMethodList(const std::string& flag, const std::string& text);

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bounds.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
@@ -267,7 +268,11 @@ void RunPose(const PoseCommandOptions& options, const Io& io) {
   if (!options.pixel_sigma.empty()) {
     pose_options.refinement.pixel_sigma =
         ParsePositive("--pixel-sigma", options.pixel_sigma, "the pixel noise σ in px");
+    CheckPixelSigma("--pixel-sigma", *pose_options.refinement.pixel_sigma);
   }
+  io::CheckOutputs({{"--output", options.output}}, {{"--points", options.points},
+                                                    {"--image-points", options.image_points},
+                                                    {"--intrinsics", options.intrinsics}});
   const pose::CameraModel camera = Camera(options, io);
 
   constexpr std::array<std::string_view, 3> kObjectColumns = {"x", "y", "z"};

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
 #include "hecal/io/pose_table.h"
 #include "hecal/io/rotation_format.h"
 #include "hecal/io/units.h"
@@ -55,6 +56,7 @@ void RunPosesConvert(const PosesConvertOptions& options, const Io& io) {
     }
   }
 
+  io::CheckOutputs({{"--output", options.output}}, {{"--input", options.input}});
   const io::PoseTable table = io::ReadPoseTable(options.input, read);
   for (const std::string& warning : table.warnings) io.err << "hecal: warning: " << warning << "\n";
 

@@ -3,10 +3,12 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <numbers>
 
+#include "bounds.h"
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/study/study.h"
@@ -172,8 +174,11 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
     }
     setups.push_back(*setup);
   }
-  const std::vector<int> stations = ParseIntList("--stations", flags.stations, 3);
-  const std::vector<int> outliers = ParseIntList("--outliers", flags.outliers, 0);
+  io::CheckOutputs({{"--output", flags.output}, {"--summary", flags.summary}}, {});
+  const std::vector<int> stations =
+      ParseIntList("--stations", flags.stations, kMinSimulatedStations, kMaxSimulatedStations);
+  const std::vector<int> outliers =
+      ParseIntList("--outliers", flags.outliers, 0, kMaxSimulatedStations);
   std::vector<study::NoiseOn> noise_on;
   for (const std::string& item : SplitList("--noise-on", flags.noise_on)) {
     const std::optional<study::NoiseOn> value = study::ParseNoiseOn(item);
@@ -193,12 +198,32 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
     kinds.push_back(*kind);
   }
   const std::vector<SigmaLevel> sigmas = ParseSigmaLevels(flags.sigma);
+  for (const SigmaLevel& sigma : sigmas) CheckNoiseLevel("--sigma", sigma.mm, sigma.deg);
   options.methods = ParseMethodList("--method", flags.method);
-  if (flags.trials < 1) {
-    throw InputError("--trials", 0, "needs at least 1 trial", "e.g. --trials 200");
+  const int trials = ParseInt("--trials", flags.trials, 1, kMaxTrials,
+                              "the number of data sets per setting (e.g. 200)");
+  const int threads = ParseThreads("--threads", flags.threads);
+  const std::uint64_t seed = ParseSeed("--seed", flags.seed);
+  const std::int64_t settings =
+      std::int64_t{1} * static_cast<std::int64_t>(setups.size()) *
+      static_cast<std::int64_t>(noise_on.size()) * static_cast<std::int64_t>(kinds.size()) *
+      static_cast<std::int64_t>(sigmas.size()) * static_cast<std::int64_t>(stations.size()) *
+      static_cast<std::int64_t>(outliers.size());
+  if (settings > kMaxSettings) {
+    throw InputError("--stations", 0,
+                     "the sweeps make " + std::to_string(settings) + " settings, more than " +
+                         std::to_string(kMaxSettings),
+                     "sweep fewer values of --setup, --noise-on, --noise, --sigma, --stations or "
+                     "--outliers");
   }
-  if (flags.threads < 0) {
-    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+  const std::int64_t rows = settings * trials * static_cast<std::int64_t>(options.methods.size());
+  if (rows > kMaxTrialRows) {
+    throw InputError("--trials", 0,
+                     std::to_string(settings) + " settings x " + std::to_string(trials) +
+                         " trials x " + std::to_string(options.methods.size()) + " methods make " +
+                         std::to_string(rows) + " trial rows, more than " +
+                         std::to_string(kMaxTrialRows),
+                     "give fewer --trials, methods or swept values");
   }
   if (flags.covariance != "default") {
     const auto covariance = estimation::ParseCovarianceMethod(flags.covariance);
@@ -210,11 +235,13 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
   } else {
     options.covariance.method = std::nullopt;
   }
-  options.covariance.samples = flags.covariance_samples;
-  options.covariance.seed = flags.seed;
-  options.trials = flags.trials;
-  options.threads = flags.threads;
-  options.seed = flags.seed;
+  options.covariance.samples =
+      ParseInt("--covariance-samples", flags.covariance_samples, 2, kMaxCovarianceSamples,
+               "the number of Monte Carlo samples (e.g. 1000)");
+  options.covariance.seed = seed;
+  options.trials = trials;
+  options.threads = threads;
+  options.seed = seed;
   options.reject_outliers = flags.reject_outliers;
   for (handeye::Setup setup : setups) {
     for (study::NoiseOn on : noise_on) {
@@ -239,8 +266,14 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
   }
 
   const study::StudyResult result = study::RunStudy(options);
-  if (!flags.output.empty()) io::WriteFileAtomically(flags.output, study::TrialsCsv(result));
-  if (!flags.summary.empty()) io::WriteFileAtomically(flags.summary, study::SummaryCsv(result));
+  std::vector<io::OutputFile> outputs;
+  if (!flags.output.empty())
+    outputs.push_back({"--output", flags.output, study::TrialsCsv(result)});
+  if (!flags.summary.empty()) {
+    outputs.push_back({"--summary", flags.summary, study::SummaryCsv(result)});
+  }
+  io::WriteFilesAtomically(outputs);
+  io.out << "hecal simulate: seed " << seed << "\n";
   PrintTable(result, io.out);
   if (!flags.output.empty()) io.out << "hecal: wrote per-trial errors to " << flags.output << "\n";
   if (!flags.summary.empty()) io.out << "hecal: wrote the summary to " << flags.summary << "\n";
@@ -252,9 +285,11 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       "simulate", "The thesis study: every method on simulated data, errors and summaries");
   simulate->add_option("--setup", flags->setup, "eye-in-hand | eye-to-hand (list sweeps)")
       ->capture_default_str();
-  simulate->add_option("--stations", flags->stations, "Stations per data set (list sweeps, >= 3)")
+  simulate
+      ->add_option("--stations", flags->stations,
+                   "Stations per data set (list sweeps, 3 to 100000)")
       ->capture_default_str();
-  simulate->add_option("--trials", flags->trials, "Random data sets per setting")
+  simulate->add_option("--trials", flags->trials, "Random data sets per setting (1 to 100000)")
       ->capture_default_str();
   simulate->add_option("--noise-on", flags->noise_on, "robot | camera | both (list sweeps)")
       ->capture_default_str();
@@ -266,8 +301,8 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->capture_default_str();
   simulate->add_option("--method", flags->method, "Method name(s), comma separated, or all")
       ->capture_default_str();
-  simulate->add_option("--seed", flags->seed, "Random seed")->capture_default_str();
-  simulate->add_option("--threads", flags->threads, "Worker threads (0 = every core)")
+  simulate->add_option("--seed", flags->seed, "Random seed (0 to 2^64-1)")->capture_default_str();
+  simulate->add_option("--threads", flags->threads, "Worker threads, 0 to 256 (0 = every core)")
       ->capture_default_str();
   simulate
       ->add_option("--covariance", flags->covariance,
@@ -276,7 +311,7 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->capture_default_str();
   simulate
       ->add_option("--covariance-samples", flags->covariance_samples,
-                   "Monte Carlo samples per trial with --covariance montecarlo")
+                   "Monte Carlo samples per trial with --covariance montecarlo (2 to 100000)")
       ->capture_default_str();
   simulate
       ->add_option("--outliers", flags->outliers,

@@ -27,8 +27,10 @@
 // --reject-outliers: every method runs through calibrate's outlier rejection
 // (estimation/station_selection.h); the table and summary then report the fraction of gross
 // outliers found, of good stations rejected, and the RMSE against the reference.
-// Prints a table per setting (stdout); --output and --summary write the CSV files of
-// study/study_csv.h atomically. Bad flags are InputError (exit 2, one line on stderr).
+// Prints the seed and a table per setting (stdout); --output and --summary write the CSV files of
+// study/study_csv.h, both or neither (io/atomic_file.h; the paths are checked before the study
+// runs). Bad flags, and numbers outside the ranges of bounds.h (stations, trials, settings,
+// trial rows, sigmas, seeds, threads, samples), are InputError (exit 2, one line on stderr).
 #pragma once
 
 #include <cstdint>
@@ -41,17 +43,17 @@ namespace hecal::cli {
 struct SimulateFlags {
   std::string setup = "eye-in-hand";
   std::string stations = "3,5,10,15,20";
-  int trials = 200;
+  std::string trials = "200";  // 1 … 100000 (bounds.h)
   std::string noise_on = "both";
   std::string noise = "gaussian";
   std::string sigma = "0,0.3,1";
   std::string method = "all";
-  uint64_t seed = 1;
-  int threads = 0;
+  std::string seed = "1";     // 0 … 2^64 − 1
+  std::string threads = "0";  // 0 … 256, 0 = every core
   std::string output;
   std::string summary;
   std::string covariance = "none";
-  int covariance_samples = 1000;
+  std::string covariance_samples = "1000";  // 2 … 100000
   std::string outliers = "0";
   bool reject_outliers = false;
 };

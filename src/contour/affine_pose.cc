@@ -129,7 +129,15 @@ ContourPose PoseFromShape(const Vector6d& shape, const ContourCamera& camera, Ro
   const double psi = WrapTo(std::atan2(-first(1), first(0)), 2.0 * kPi);
   const Eigen::Vector3d angles(phi, theta, psi);
   const Eigen::Matrix3d R = MatrixFromEuler(angles, *EulerSequence::Parse("ZXZ"));
-  return Finish(R, angles, translation, form);
+  ContourPose pose = Finish(R, angles, translation, form);
+  // Entries so large that M Mᵀ overflows (|M| ≳ 1e154) give inf/NaN above: never a pose.
+  if (!pose.translation.allFinite() || !pose.rotation.allFinite() || !pose.euler.allFinite()) {
+    throw DegenerateError(
+        "the camera motion: the shape vector's entries are too large to give a finite pose "
+        "(M Mᵀ overflows; a real view has |M − I| and |tx|, |ty| / f of order 1)",
+        "give the shape vector of a tracked contour (tx, ty, M11 − 1, M22 − 1, M21, M12)");
+  }
+  return pose;
 }
 
 Vector6d ShapeFromPose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation,

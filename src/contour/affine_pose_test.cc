@@ -182,5 +182,17 @@ TEST(AffinePose, ParametersAndNames) {
   EXPECT_FALSE(ParseRotationForm("xyz"));
 }
 
+TEST(AffinePose, OverflowingShapeVectorsAreRejectedNotNaN) {
+  // det M = 1e320 overflows to inf: before the guard this returned a NaN pose.
+  Vector6d S;
+  S << 1e160, 0, 1e160, 1e160, 0, 0;
+  EXPECT_THROW(PoseFromShape(S, kCamera, RotationForm::kZyx), DegenerateError);
+  S << 0, 0, 1e155, 0, 0, 0;
+  EXPECT_THROW(PoseFromShape(S, kCamera, RotationForm::kZxz), DegenerateError);
+  // Large but representable: a finite pose.
+  S << 1e3, 0, 1e3, 1e3, 0, 0;
+  EXPECT_TRUE(PoseFromShape(S, kCamera, RotationForm::kZyx).translation.allFinite());
+}
+
 }  // namespace
 }  // namespace hecal::contour

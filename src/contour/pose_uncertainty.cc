@@ -3,6 +3,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include "hecal/core/error.h"
 
 namespace hecal::contour {
 namespace {
@@ -63,9 +66,26 @@ ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shap
     result.sigma_poses.push_back(p);
     return p;
   };
-  const uncertainty::Moments<Eigen::VectorXd> moments =
-      uncertainty::UnscentedTransform<Eigen::VectorXd, Eigen::VectorXd>(
-          f, Eigen::VectorXd(shape), Eigen::MatrixXd(shape_covariance), options.unscented, 1);
+  // The pose of the shape itself exists (above): a failure now is a sigma point's, i.e. the
+  // covariance spreads the shape beyond the region where it has a pose.
+  const auto too_wide = [&](const std::string& why) {
+    return DegenerateError(
+        "the pose covariance: Σ_S is too large for the shape vector — a UT sigma point (the "
+        "shape ± a scaled column of √Σ_S) " +
+            why,
+        "give Σ_S of the tracked shape (standard deviations well below |M − I| and the distance "
+        "to det M = 0), or a smaller --ut-w0");
+  };
+  uncertainty::Moments<Eigen::VectorXd> moments;
+  try {
+    moments = uncertainty::UnscentedTransform<Eigen::VectorXd, Eigen::VectorXd>(
+        f, Eigen::VectorXd(shape), Eigen::MatrixXd(shape_covariance), options.unscented, 1);
+  } catch (const DegenerateError& error) {
+    throw too_wide("has no pose (" + error.unobservable() + ")");
+  }
+  if (!moments.mean.allFinite() || !moments.covariance.allFinite()) {
+    throw too_wide("gives a non-finite pose");
+  }
   result.mean = moments.mean;
   result.covariance = moments.covariance;
   for (int j = 0; j < 6; ++j) {

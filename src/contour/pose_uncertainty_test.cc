@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <string>
 
 #include "hecal/contour/contour_study.h"
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
+#include "hecal/core/error.h"
 
 namespace hecal::contour {
 namespace {
@@ -88,6 +90,22 @@ TEST(PoseUncertainty, LinearInTranslationForPureLateralMotion) {
   const double sd = std::sqrt(ut.covariance(0, 0));
   EXPECT_NEAR(sd, 0.2 * kCamera.z0 / kCamera.focal, 1e-9);
   EXPECT_NEAR(ut.mean(0), 100.0, 1e-9);
+}
+
+// A covariance whose sigma points leave the region where the shape has a pose (det M ≤ 0) is
+// named as too wide for the shape — the shape itself has a pose.
+TEST(PoseUncertainty, ACovarianceTooWideForTheShapeIsNamed) {
+  Vector6d shape;
+  shape << 0, 0, 0.1, 0.1, 0, 0;
+  EXPECT_NO_THROW(PoseFromShape(shape, kCamera, RotationForm::kZyx));
+  try {
+    UnscentedPose(shape, Matrix6d::Identity() * 1e6, kCamera, RotationForm::kZyx);
+    FAIL() << "expected DegenerateError";
+  } catch (const DegenerateError& error) {
+    EXPECT_NE(std::string(error.what()).find("Σ_S is too large for the shape vector"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ struct VarianceComponent {
 // keeps the robot prior's weights within the solver's numerical range on noise-free data.
 constexpr double kMinRobotSigma = 1e-7;
 
+// The farthest a robot pose may be from the base (metres): far beyond any industrial robot or
+// gantry, and far below the kilometres of millimetre lengths read as metres.
+constexpr double kMaxRobotReach = 100.0;
+
 Parameters ToParameters(const Pose& T) {
   Parameters p;
   PoseToParameters(T, p.data());
@@ -58,6 +62,50 @@ void Validate(const std::vector<Pose>& T_base_gripper, const std::vector<ImagePo
   if (options.pixel_sigma && !(*options.pixel_sigma > 0.0 && std::isfinite(*options.pixel_sigma))) {
     throw InputError("--pixel-sigma", 0, "the pixel sigma must be positive",
                      "give e.g. --pixel-sigma 0.3, or omit it to estimate it");
+  }
+}
+
+// The start must be finite, at a robot's scale, and put every target point in front of its
+// camera; otherwise the solver has nothing sound to start from (it would stop at once with a
+// non-finite cost, or wander off).
+void ValidateStart(const std::vector<Pose>& T_base_gripper, const std::vector<ImagePoints>& images,
+                   const Pose& X0, const Pose& Z0, const ReprojectionOptions& options) {
+  const auto finite = [](const Pose& T) { return T.matrix().allFinite(); };
+  if (!finite(X0) || !finite(Z0)) {
+    throw DegenerateError("the joint reprojection refinement: the start X, Z is not finite",
+                          "check the robot poses and the camera poses of the images");
+  }
+  for (size_t i = 0; i < images.size(); ++i) {
+    const Pose& G = T_base_gripper[i];
+    if (!finite(G)) {
+      throw InputError("robot poses", static_cast<int>(i + 1), "the robot pose is not finite",
+                       "give finite numbers in the robot file");
+    }
+    if (G.translation().norm() > kMaxRobotReach) {
+      throw DegenerateError("the joint reprojection refinement: robot pose " +
+                                std::to_string(i + 1) + " is " +
+                                std::to_string(static_cast<long>(G.translation().norm())) +
+                                " m from the base, beyond any robot's reach",
+                            "check the robot file's length unit (give --units mm for "
+                            "millimetres)");
+    }
+    for (size_t k = 0; k < images[i].target.size(); ++k) {
+      if (!images[i].target[k].allFinite() || !images[i].pixels[k].allFinite()) {
+        throw InputError("image points", static_cast<int>(i + 1),
+                         "a target point or pixel is not finite", "check the detections");
+      }
+    }
+    const Pose B = CameraFromUnknowns(options.setup, X0, Z0, G);
+    for (const Eigen::Vector3d& P : images[i].target) {
+      if (!((B * P).z() > 0.0)) {
+        throw DegenerateError(
+            "the joint reprojection refinement: its start (the pose-level X and Z) puts the "
+            "target behind the camera of image " +
+                std::to_string(i + 1),
+            "check that the robot poses pair with the images and that --setup and the length "
+            "units are right");
+      }
+    }
   }
 }
 
@@ -234,6 +282,7 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
                                       const std::vector<ImagePoints>& images, const Pose& X0,
                                       const Pose& Z0, const ReprojectionOptions& options) {
   Validate(T_base_gripper, images, options);
+  ValidateStart(T_base_gripper, images, X0, Z0, options);
   Refinement refinement(T_base_gripper, images, X0, Z0, options);
   size_t points = 0;
   for (const ImagePoints& image : images) points += image.target.size();
@@ -300,6 +349,13 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
     result.image_outlier.push_back(result.image_rms_px.back() > 3.0 * sigma);
   }
   result.rms_px = std::sqrt(total / std::max<double>(1.0, static_cast<double>(points)));
+  if (!result.X.matrix().allFinite() || !result.Z.matrix().allFinite() ||
+      !result.covariance.allFinite() || !std::isfinite(result.rms_px) ||
+      !std::isfinite(result.pixel_sigma)) {
+    throw DegenerateError("the joint reprojection refinement: the solution is not finite",
+                          "check the intrinsics (a distortion coefficient far outside its usual "
+                          "range?) and the robot poses");
+  }
   return result;
 }
 

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
@@ -116,6 +120,43 @@ TEST(ReprojectionRefinement, RefusesTooFewImagesAndBadSigmas) {
   ReprojectionOptions bad = Options(handeye::Setup::kEyeInHand, {-1.0, 0.0});
   EXPECT_THROW(RefineReprojection(s.data.T_base_gripper, s.images, s.data.X, s.data.Z, bad),
                InputError);
+}
+
+// A start the solver cannot use is refused with its reason before Ceres runs: robot lengths in
+// millimetres read as metres (the translations × 1000), a start that puts the target behind the
+// camera (X turned half a turn), a non-finite start or robot pose.
+TEST(ReprojectionRefinement, RefusesAStartItCannotUse) {
+  const testing::ImageStations s =
+      testing::MakeImageStations(handeye::Setup::kEyeInHand, 6, 43, kNoNoise, 0.0);
+  const ReprojectionOptions options = Options(handeye::Setup::kEyeInHand, {0.05 * kDeg, 1e-4});
+  const auto message = [&](const std::vector<Pose>& robot, const Pose& X, const Pose& Z) {
+    try {
+      RefineReprojection(robot, s.images, X, Z, options);
+    } catch (const DegenerateError& error) {
+      return std::string(error.what());
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  std::vector<Pose> millimetres = s.data.T_base_gripper;
+  for (Pose& G : millimetres) G.translation() *= 1000.0;
+  EXPECT_NE(message(millimetres, s.data.X, s.data.Z).find("beyond any robot's reach"),
+            std::string::npos);
+  const Pose turned =
+      s.data.X * Pose(Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()));
+  EXPECT_NE(message(s.data.T_base_gripper, turned, s.data.Z).find("behind the camera of image 1"),
+            std::string::npos);
+  Pose nan = s.data.X;
+  nan.translation().x() = std::nan("");
+  EXPECT_NE(message(s.data.T_base_gripper, nan, s.data.Z).find("start X, Z is not finite"),
+            std::string::npos);
+  std::vector<Pose> robot_nan = s.data.T_base_gripper;
+  robot_nan[2].translation().y() = std::numeric_limits<double>::infinity();
+  EXPECT_NE(message(robot_nan, s.data.X, s.data.Z).find("the robot pose is not finite"),
+            std::string::npos);
+  // The truth itself is accepted.
+  EXPECT_EQ(message(s.data.T_base_gripper, s.data.X, s.data.Z), "no error");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,106 @@ TEST_F(AtomicFileTest, ReadingAMissingFileIsAnInputError) {
 
 TEST_F(AtomicFileTest, ReadingADirectoryIsAnInputError) {
   EXPECT_THROW(ReadFile(dir_.string()), InputError);
+}
+
+// The message of the InputError `write` throws ("" when it throws none).
+template <typename F>
+std::string ErrorOf(F write) {
+  try {
+    write();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST_F(AtomicFileTest, ASymbolicLinkIsWrittenThroughAndStaysALink) {
+  const fs::path real = dir_ / "real.csv";
+  WriteFileAtomically(real.string(), "old\n");
+  fs::permissions(real, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  fs::create_symlink("real.csv", dir_ / "link.csv");
+  WriteFileAtomically((dir_ / "link.csv").string(), "new\n");
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.csv"));
+  EXPECT_EQ(ReadFile(real.string()), "new\n");
+  EXPECT_EQ(fs::status(real).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"link.csv", "real.csv"}));
+}
+
+TEST_F(AtomicFileTest, ABrokenLinkAFifoAndADeviceAreRefusedAndKept) {
+  fs::create_symlink("nowhere.csv", dir_ / "broken.csv");
+  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically((dir_ / "broken.csv").string(), "x"); }),
+              HasSubstr("broken link"));
+  ASSERT_EQ(mkfifo((dir_ / "pipe").c_str(), 0600), 0);
+  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically((dir_ / "pipe").string(), "x"); }),
+              HasSubstr("FIFO"));
+  EXPECT_TRUE(fs::is_fifo(dir_ / "pipe"));
+  EXPECT_THAT(ErrorOf([&] { ReadFile((dir_ / "pipe").string()); }), HasSubstr("FIFO"));
+  fs::create_symlink("/dev/null", dir_ / "null");
+  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically((dir_ / "null").string(), "x"); }),
+              HasSubstr("character device"));
+  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically("/dev/null", "x"); }),
+              HasSubstr("character device"));
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_THAT(ErrorOf([&] { ReadFile("/dev/zero"); }), HasSubstr("character device"));
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"broken.csv", "null", "pipe"}));
+}
+
+TEST_F(AtomicFileTest, AnOutputThatIsAnInputIsRefusedHardLinksIncluded) {
+  const std::string input = (dir_ / "in.csv").string();
+  WriteFileAtomically(input, "data\n");
+  fs::create_hard_link(input, dir_ / "alias.csv");
+  for (const std::string& output :
+       {input, (dir_ / "." / "in.csv").string(), (dir_ / "alias.csv").string()}) {
+    EXPECT_THAT(ErrorOf([&] {
+                  CheckOutputs({{"--output", output}}, {{"--robot", input}});
+                }),
+                HasSubstr("names the input --robot"))
+        << output;
+  }
+  EXPECT_THAT(ErrorOf([&] {
+                CheckOutputs({{"--output", (dir_ / "a.csv").string()},
+                              {"--summary", (dir_ / "." / "a.csv").string()}},
+                             {});
+              }),
+              HasSubstr("same file as --output"));
+  EXPECT_EQ(ErrorOf([&] {
+              CheckOutputs({{"--output", (dir_ / "new.csv").string()}, {"--x", ""}},
+                           {{"--robot", input}});
+            }),
+            "");
+  EXPECT_EQ(ReadFile(input), "data\n");
+}
+
+TEST_F(AtomicFileTest, SeveralFilesAreWrittenAllOrNone) {
+  const std::string kept = (dir_ / "kept.csv").string();
+  WriteFileAtomically(kept, "previous\n");
+  // The second target's directory is missing: nothing is written, the first file keeps its text.
+  EXPECT_THAT(ErrorOf([&] {
+                WriteFilesAtomically({{"--output", kept, "new\n"},
+                                      {"--summary", (dir_ / "no" / "s.csv").string(), "s\n"}});
+              }),
+              HasSubstr("does not exist"));
+  EXPECT_EQ(ReadFile(kept), "previous\n");
+  EXPECT_EQ(Entries(), std::vector<std::string>{"kept.csv"});
+  // A rename that fails after the first succeeded (the second target became a directory after
+  // staging) puts the first file back.
+  fs::create_directories(dir_ / "late");
+  {
+    StagedFiles staged;
+    staged.Stage("--output", kept, "new\n");
+    fs::remove(dir_ / "late");
+    staged.Stage("--summary", (dir_ / "late").string(), "s\n");
+    fs::create_directories(dir_ / "late" / "inside");
+    EXPECT_THROW(staged.Commit(), InputError);
+  }
+  EXPECT_EQ(ReadFile(kept), "previous\n");
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"kept.csv", "late"}));
+  WriteFilesAtomically(
+      {{"--output", kept, "new\n"}, {"--summary", (dir_ / "s.csv").string(), "s\n"}});
+  EXPECT_EQ(ReadFile(kept), "new\n");
+  EXPECT_EQ(ReadFile((dir_ / "s.csv").string()), "s\n");
+  EXPECT_EQ(Entries(), (std::vector<std::string>{"kept.csv", "late", "s.csv"}));
 }
 
 }  // namespace

@@ -94,27 +94,33 @@ void InvertSide(const std::string& flag, const std::string& frame, PoseTable* ta
                    frame);
 }
 
+// ReadFile, remembering the path in `sources`.
+std::string ReadSource(std::vector<std::string>* sources, const std::string& path) {
+  sources->push_back(path);
+  return ReadFile(path);
+}
+
 ImportedPoses Read(ImportFormat format, const std::vector<std::string>& inputs,
-                   const ImportOptions& options) {
+                   const ImportOptions& options, std::vector<std::string>* sources) {
   const size_t count = inputs.size();
   switch (format) {
     case ImportFormat::kMoveit:
       if (count != 1) WrongInputCount(format, count);
-      return ParseMoveitSamples(ReadFile(inputs[0]), inputs[0]);
+      return ParseMoveitSamples(ReadSource(sources, inputs[0]), inputs[0]);
     case ImportFormat::kEasyHandeye:
       if (count != 1) WrongInputCount(format, count);
-      return ParseEasyHandeyeSamples(ReadFile(inputs[0]), inputs[0], options.setup);
+      return ParseEasyHandeyeSamples(ReadSource(sources, inputs[0]), inputs[0], options.setup);
     case ImportFormat::kCamodocal:
       if (count != 1) WrongInputCount(format, count);
-      return ParseCamodocalPairs(ReadFile(inputs[0]), inputs[0]);
+      return ParseCamodocalPairs(ReadSource(sources, inputs[0]), inputs[0]);
     case ImportFormat::kOpenCvYaml:
       if (count != 1) WrongInputCount(format, count);
-      return ParseOpenCvHandEyeYaml(ReadFile(inputs[0]), inputs[0],
+      return ParseOpenCvHandEyeYaml(ReadSource(sources, inputs[0]), inputs[0],
                                     options.units.value_or(LengthUnit::kMetre));
     case ImportFormat::kEthz: {
       if (count != 2) WrongInputCount(format, count);
-      const std::string robot = ReadFile(inputs[0]);
-      const std::string camera = ReadFile(inputs[1]);
+      const std::string robot = ReadSource(sources, inputs[0]);
+      const std::string camera = ReadSource(sources, inputs[1]);
       return ParseEthzStreams(robot, inputs[0], camera, inputs[1]);
     }
     case ImportFormat::kTabb: {
@@ -129,8 +135,8 @@ ImportedPoses Read(ImportFormat format, const std::vector<std::string>& inputs,
       } else {
         WrongInputCount(format, count);
       }
-      const std::string robot = ReadFile(robot_path);
-      const std::string camera = ReadFile(camera_path);
+      const std::string robot = ReadSource(sources, robot_path);
+      const std::string camera = ReadSource(sources, camera_path);
       return ParseTabb(robot, robot_path, camera, camera_path);
     }
     case ImportFormat::kMatrix16: {
@@ -141,16 +147,16 @@ ImportedPoses Read(ImportFormat format, const std::vector<std::string>& inputs,
       }
       Matrix16Options matrix_options;
       matrix_options.unit = options.units.value_or(LengthUnit::kMetre);
-      const std::string robot = ReadFile(inputs[0]);
+      const std::string robot = ReadSource(sources, inputs[0]);
       if (count == 1) return ParseMatrix16(robot, inputs[0], std::nullopt, "", matrix_options);
-      const std::string camera = ReadFile(inputs[1]);
+      const std::string camera = ReadSource(sources, inputs[1]);
       return ParseMatrix16(robot, inputs[0], std::string_view(camera), inputs[1], matrix_options);
     }
     case ImportFormat::kVisp: {
       if (count == 0) WrongInputCount(format, count);
       std::vector<VispPoseFile> files;
       for (const std::string& path : ListVispPoseFiles(inputs)) {
-        files.push_back({path, ReadFile(path)});
+        files.push_back({path, ReadSource(sources, path)});
       }
       return ParseVispPoseFiles(files);
     }
@@ -186,7 +192,9 @@ std::string ImportFormatList() {
 ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& inputs,
                           const ImportOptions& options) {
   CheckOptions(format, options);
-  ImportedPoses poses = Read(format, inputs, options);
+  std::vector<std::string> sources;
+  ImportedPoses poses = Read(format, inputs, options, &sources);
+  poses.sources = std::move(sources);
   if (options.robot_inverse) {
     InvertSide("--robot-inverse", "T_base_gripper", &poses.robot, &poses.robot_notes);
   }

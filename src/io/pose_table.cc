@@ -232,11 +232,19 @@ void ParseMatrixRows(LineCursor& cursor, std::string_view first_line,
                                std::abs(m[14]) <= kHomogeneousRowTolerance &&
                                std::abs(m[15] - 1.0) <= kHomogeneousRowTolerance;
       if (!homogeneous) {
-        throw InputError(source, number,
-                         "the last row of the 4×4 matrix is " + FormatDouble(m[12]) + " " +
-                             FormatDouble(m[13]) + " " + FormatDouble(m[14]) + " " +
-                             FormatDouble(m[15]) + ", not 0 0 0 1",
-                         "write a rigid transform (row-major 4×4 with last row 0 0 0 1)");
+        // Zeros where a row-major matrix has its translation: the matrix was written by columns.
+        const bool column_major = std::abs(m[3]) <= kHomogeneousRowTolerance &&
+                                  std::abs(m[7]) <= kHomogeneousRowTolerance &&
+                                  std::abs(m[11]) <= kHomogeneousRowTolerance &&
+                                  std::abs(m[15] - 1.0) <= kHomogeneousRowTolerance;
+        throw InputError(
+            source, number,
+            "the last row of the 4×4 matrix is " + FormatDouble(m[12]) + " " + FormatDouble(m[13]) +
+                " " + FormatDouble(m[14]) + " " + FormatDouble(m[15]) + ", not 0 0 0 1",
+            column_major ? "the matrix looks column-major (translation in the last row, as "
+                           "Eigen and OpenGL store it); write it row-major (m11 m12 m13 m14 "
+                           "= r11 r12 r13 tx, …, last row 0 0 0 1)"
+                         : "write a rigid transform (row-major 4×4 with last row 0 0 0 1)");
       }
     }
     Eigen::Matrix3d M;

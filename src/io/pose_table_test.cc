@@ -587,6 +587,17 @@ TEST(PoseTableErrorsTest, LastRowOf4x4MustBe0001) {
   EXPECT_EQ(ParseError("1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 2\n").line(), 1);
 }
 
+// A 4×4 written by columns (Eigen's and OpenGL's storage order): zeros where the translation
+// belongs, the translation in the last row — the fix says so; other bad last rows do not.
+TEST(PoseTableErrorsTest, AColumnMajor4x4GetsItsHint) {
+  // R = Rz(90°), t = (0.1, 0.2, 0.3): row-major 0 -1 0 .1  1 0 0 .2  0 0 1 .3  0 0 0 1.
+  const InputError transposed = ParseError("0 1 0 0 -1 0 0 0 0 0 1 0 0.1 0.2 0.3 1\n");
+  EXPECT_THAT(transposed.what(), HasSubstr("looks column-major"));
+  const InputError other = ParseError("0 -1 0 0.1 1 0 0 0.2 0 0 1 0.3 0 0 0.3 1\n");
+  EXPECT_THAT(other.what(), Not(HasSubstr("column-major")));
+  EXPECT_THAT(other.what(), HasSubstr("not 0 0 0 1"));
+}
+
 TEST(PoseTableErrorsTest, HeaderlessLinesNeed12Or16Numbers) {
   const InputError error = ParseError("1 0 0 0 0 1 0 0 0 0 1 0 5\n");
   EXPECT_EQ(error.line(), 1);

@@ -90,7 +90,9 @@ struct ReprojectionResult {
 
 // Requires T_base_gripper.size() == images.size() and a start (X0, Z0) close enough for the
 // target to stay in front of every camera (the pose-level ml estimate). Throws DegenerateError
-// for fewer than 3 images or 2m ≤ 12 pixel residuals; InputError for invalid sigmas.
+// for fewer than 3 images or 2m ≤ 12 pixel residuals, a non-finite start, a robot pose more than
+// 100 m from the base (lengths in the wrong unit), a start that puts a target point behind a
+// camera, and a non-finite solution; InputError for invalid sigmas and non-finite inputs.
 ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
                                       const std::vector<ImagePoints>& images, const Pose& X0,
                                       const Pose& Z0, const ReprojectionOptions& options);

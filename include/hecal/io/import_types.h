@@ -45,6 +45,8 @@ struct ImportedPoses {
   bool synchronised = true;
   // Intrinsics, when the source has one camera model for every image.
   std::optional<ImportedIntrinsics> intrinsics;
+  // The files read (ImportFiles), so that a command can refuse to write over one of them.
+  std::vector<std::string> sources;
 };
 
 // camera.yaml text (DESIGN.md §4.1: fx, fy, cx, cy, distortion {model, coefficients}) preceded by

@@ -1,0 +1,80 @@
+// The bounds of the command line (README "Reliability"): every number that reaches an
+// allocation or a loop — threads, samples, stations, trials, data sets, steps, frames, image
+// sizes, noise levels, seeds — is checked against its range before any work, and a value outside
+// it is a hecal::InputError naming the flag, the value and the range (exit 2). The ranges are
+// wide enough for every study in this repository and small enough that no flag alone can ask for
+// more memory than a workstation has (the largest: 10^5 Monte Carlo samples of two poses, 10^6
+// trial rows of `hecal simulate`, 10^8 pixels per image).
+//
+//   --threads                     0 … 256 (0 = every core)
+//   --seed                        0 … 2^64 − 1, a whole decimal number (no sign, no exponent)
+//   --covariance-samples          2 … 100000 (calibrate, simulate)
+//   simulate/bench --stations     3 … 100000;  simulate --trials 1 … 100000, --outliers
+//                                 0 … 100000;
+//   simulate                      at most 10000 settings (the product of the sweeps) and 10^6
+//                                 trial rows (settings × trials × methods)
+//   bench --datasets              1 … 10000, stations × data sets ≤ 10^6; --min-time 0 … 3600 s
+//   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma,
+//                                 simulate/bench --sigma)
+//   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px;
+//                                 contour study --pixel-noise 0 … 100 px
+//   contour study                 --steps 1 … 10000, --samples 2 … 1000000, steps × samples
+//                                 ≤ 10^8
+//   contour render                --frames 1 … 10000, --size 8 … 20000 px a side, at most
+//                                 10^8 pixels a frame and 2·10^9 over the sequence,
+//                                 --noise 0 … 255 grey levels
+//   images read                   at most 10^8 pixels (checked in the file header before
+//                                 decoding), at least 16 × 16 for detection
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace hecal::cli {
+
+constexpr int kMaxThreads = 256;
+constexpr int kMaxCovarianceSamples = 100000;
+constexpr int kMinSimulatedStations = 3;
+constexpr int kMaxSimulatedStations = 100000;
+constexpr int kMaxTrials = 100000;
+constexpr std::int64_t kMaxSettings = 10000;
+constexpr std::int64_t kMaxTrialRows = 1000000;
+constexpr int kMaxDatasets = 10000;
+constexpr std::int64_t kMaxBenchPoses = 1000000;  // stations × data sets
+constexpr double kMaxMinTime = 3600.0;            // seconds
+constexpr double kMaxSigmaMm = 1000.0;
+constexpr double kMaxSigmaDeg = 180.0;
+constexpr double kMaxPixelSigma = 100.0;
+constexpr int kMaxSteps = 10000;
+constexpr int kMaxContourSamples = 1000000;
+constexpr std::int64_t kMaxContourSolves = 100000000;  // steps × samples
+constexpr int kMaxFrames = 10000;
+constexpr int kMinRenderSide = 8;
+constexpr int kMaxRenderSide = 20000;
+constexpr std::int64_t kMaxImagePixels = 100000000;
+constexpr std::int64_t kMaxSequencePixels = 2000000000;
+constexpr int kMinDetectionSide = 16;
+constexpr double kMaxGreyNoise = 255.0;
+
+// A whole number in [min, max] written in decimal ("12", "-3"); InputError with the range
+// otherwise. `what` says what the number is, for the fix ("the number of trials").
+std::int64_t ParseInteger(const std::string& flag, const std::string& text, std::int64_t min,
+                          std::int64_t max, const std::string& what);
+
+// ParseInteger for an int-sized range.
+int ParseInt(const std::string& flag, const std::string& text, int min, int max,
+             const std::string& what);
+
+// --threads: 0 … kMaxThreads.
+int ParseThreads(const std::string& flag, const std::string& text);
+
+// --seed: 0 … 2^64 − 1.
+std::uint64_t ParseSeed(const std::string& flag, const std::string& text);
+
+// A noise level per axis: millimetres in [0, kMaxSigmaMm], degrees in [0, kMaxSigmaDeg].
+void CheckNoiseLevel(const std::string& flag, double mm, double deg);
+
+// A pixel noise σ in (0, kMaxPixelSigma] (or [0, …] with `zero_allowed`).
+void CheckPixelSigma(const std::string& flag, double px, bool zero_allowed = false);
+
+}  // namespace hecal::cli
