@@ -7,8 +7,8 @@
 // Above kMaxStartStations stations the closed forms run on kMaxStartStations evenly spaced ones
 // (station ⌊k·n/kMaxStartStations⌋, k = 0, 1, …): a start only has to lie in the right basin
 // (wrong minima are tens of degrees away: multi_start.h), which 500 stations give to ~0.1° at
-// σ = 1 mm / 1°, and the refinement then uses every station. Ten closed forms on all n would
-// cost more than the refinement itself (n = 10⁵: ~15 s against ~3 s per ml solve).
+// σ = 1 mm / 1°, and the refinement then uses every station. Measured at n = 10⁵: the eight
+// motion-based closed forms take 1.7–2.1 s each on every station, all ten 0.6 s on 500.
 #pragma once
 
 #include <cstddef>
