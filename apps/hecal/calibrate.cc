@@ -196,8 +196,9 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     const auto covariance = estimation::ParseCovarianceMethod(flags.covariance);
     if (!covariance || *covariance == estimation::CovarianceMethod::kNone) {
       throw InputError("--covariance", 0, "unknown covariance method '" + flags.covariance + "'",
-                       "use linear, unscented or montecarlo (or leave it out for the method's "
-                       "default: linear for ml, unscented for the others)");
+                       "use linear, unscented, montecarlo or information (or leave it out for "
+                       "the method's default: linear for ml, unscented for the others up to "
+                       "100 stations, information above)");
     }
     options.covariance.method = *covariance;
   }
@@ -405,8 +406,9 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                     "rejected by consensus and a 3-sigma test, and listed)");
   command->add_option("--robust", flags->robust, "Robust loss for ml: none|huber|cauchy");
   command->add_option("--covariance", flags->covariance,
-                      "Covariance of X and Z: linear | unscented | montecarlo (default: linear "
-                      "for ml, unscented for the other methods)");
+                      "Covariance of X and Z: linear | unscented | montecarlo | information "
+                      "(default: linear for ml; unscented for the other methods up to 100 "
+                      "stations, information above)");
   command
       ->add_option("--covariance-samples", flags->covariance_samples,
                    "Monte Carlo samples for --covariance montecarlo (2 to 100000)")

@@ -2,7 +2,7 @@
 //   hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand|auto
 //                   [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
 //                   [--output result.json] [--units m|mm] [--keep-outliers]
-//                   [--covariance linear|unscented|montecarlo] [--covariance-samples N]
+//                   [--covariance linear|unscented|montecarlo|information] [--covariance-samples N]
 //                   [--seed S] [--threads N]
 //   hecal calibrate --images DIR --target target.yaml [--intrinsics camera.yaml]
 //                   --robot robot.csv --setup ... [--pixel-sigma PX] [--threads N] ...

@@ -201,7 +201,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   // The covariance of (X, Z) under that noise model: ml's analytic information when linear,
   // else propagated through the solver (calibration_covariance.h).
   const CovarianceMethod covariance_method =
-      options.covariance.method.value_or(DefaultCovarianceMethod(options.method));
+      options.covariance.method.value_or(DefaultCovarianceMethod(options.method, n));
   if (ml_covariance && covariance_method == CovarianceMethod::kLinear) {
     CalibrationCovariance covariance;
     covariance.covariance = *ml_covariance;

@@ -36,7 +36,8 @@ TEST(Calibrate, EveryMethodDispatchesAndTheRefinementsAreExact) {
       EXPECT_EQ(result.method, info.method);
       ASSERT_EQ(result.residuals.size(), problem.A.size());
       ASSERT_TRUE(result.covariance.has_value()) << info.name;  // every method has one
-      EXPECT_EQ(result.covariance->method, DefaultCovarianceMethod(info.method)) << info.name;
+      EXPECT_EQ(result.covariance->method, DefaultCovarianceMethod(info.method, problem.A.size()))
+          << info.name;
       if (info.closed_form) {
         const handeye::Solution direct = handeye::SolveClosedForm(info.method, problem);
         EXPECT_TRUE(result.X.isApprox(direct.X, 1e-12)) << info.name;

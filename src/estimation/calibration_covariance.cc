@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/estimation/bound.h"
 #include "hecal/estimation/ml.h"
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/strobl.h"
@@ -57,6 +58,7 @@ std::optional<CovarianceMethod> ParseCovarianceMethod(std::string_view text) {
   if (text == "linear") return CovarianceMethod::kLinear;
   if (text == "unscented") return CovarianceMethod::kUnscented;
   if (text == "montecarlo") return CovarianceMethod::kMonteCarlo;
+  if (text == "information") return CovarianceMethod::kInformation;
   return std::nullopt;
 }
 
@@ -70,12 +72,16 @@ std::string_view CovarianceMethodName(CovarianceMethod method) {
       return "unscented";
     case CovarianceMethod::kMonteCarlo:
       return "montecarlo";
+    case CovarianceMethod::kInformation:
+      return "information";
   }
   return "none";
 }
 
-CovarianceMethod DefaultCovarianceMethod(handeye::Method method) {
-  return method == handeye::Method::kMl ? CovarianceMethod::kLinear : CovarianceMethod::kUnscented;
+CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations) {
+  if (method == handeye::Method::kMl) return CovarianceMethod::kLinear;
+  return stations <= kMaxUnscentedStations ? CovarianceMethod::kUnscented
+                                           : CovarianceMethod::kInformation;
 }
 
 void ValidateCovarianceOptions(const CovarianceOptions& options) {
@@ -141,12 +147,21 @@ std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem&
                                                          const CalibrateOptions& calibrate_options,
                                                          const StationNoise& noise,
                                                          const CovarianceOptions& options) {
-  const CovarianceMethod method = options.method.value_or(DefaultCovarianceMethod(result.method));
+  const CovarianceMethod method =
+      options.method.value_or(DefaultCovarianceMethod(result.method, problem.A.size()));
   if (method == CovarianceMethod::kNone) return std::nullopt;
   if (noise.robot.size() != problem.A.size() || noise.camera.size() != problem.B.size()) {
     throw std::invalid_argument(
         "PropagateCovariance: one robot and one camera covariance per "
         "station");
+  }
+  CalibrationCovariance out;
+  out.method = method;
+  if (method == CovarianceMethod::kInformation) {
+    out.covariance =
+        FirstOrderBound(problem, result.X, result.Z, result.robot_sigma, result.camera_sigma)
+            .covariance;
+    return out;
   }
   const Poses stations = StackStations(problem);
   const Eigen::MatrixXd input = InputCovariance(noise);
@@ -155,8 +170,6 @@ std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem&
         Resolve(UnstackStations(problem, perturbed), result, calibrate_options);
     return {solution.X, solution.Z};
   };
-  CalibrationCovariance out;
-  out.method = method;
   if (method == CovarianceMethod::kMonteCarlo) {
     uncertainty::MonteCarloOptions mc;
     mc.samples = options.samples;

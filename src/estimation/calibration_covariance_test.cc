@@ -70,8 +70,10 @@ TEST(PropagateCovariance, NumericLinearThroughMlEqualsTheInformationMatrix) {
 
 // UT vs Monte Carlo through the solver, per axis of X and Z, for ml and a closed-form method,
 // both setups: within 10% (the criterion for n ≥ 10) plus 3 standard errors of the MC
-// standard deviation (2000 samples: ~1.6%).
-TEST(PropagateCovariance, UnscentedMatchesMonteCarlo) {
+// standard deviation (2000 samples: ~1.6%). The information covariance (no solves) matches the
+// MC as closely for ml, which attains it, and is a lower bound for the closed form: no axis
+// above the MC by more than the 3 standard errors.
+TEST(PropagateCovariance, UnscentedMatchesMonteCarloAndTheInformationBoundsIt) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     for (handeye::Method method : {handeye::Method::kMl, handeye::Method::kParkMartin}) {
       const Case c = MakeCase(setup, method, 6);
@@ -80,9 +82,18 @@ TEST(PropagateCovariance, UnscentedMatchesMonteCarlo) {
       EXPECT_EQ(ut.solves, 1 + 24 * 15);
       EXPECT_EQ(mc.samples, 2000);
       EXPECT_EQ(mc.failures, 0);
+      const CalibrationCovariance information = Propagate(c, CovarianceMethod::kInformation);
+      EXPECT_EQ(information.solves, 0);
       for (int j = 0; j < 12; ++j) {
-        EXPECT_NEAR(Sd(ut)(j), Sd(mc)(j), 0.10 * Sd(mc)(j) + 3.0 * mc.sd_std_error(j))
+        const double tolerance = 0.10 * Sd(mc)(j) + 3.0 * mc.sd_std_error(j);
+        EXPECT_NEAR(Sd(ut)(j), Sd(mc)(j), tolerance)
             << handeye::SetupName(setup) << " " << handeye::Info(method).name << " axis " << j;
+        if (method == handeye::Method::kMl) {
+          EXPECT_NEAR(Sd(information)(j), Sd(mc)(j), tolerance) << handeye::SetupName(setup);
+        } else {
+          EXPECT_LT(Sd(information)(j), Sd(mc)(j) + 3.0 * mc.sd_std_error(j))
+              << handeye::SetupName(setup) << " axis " << j;
+        }
       }
     }
   }
@@ -129,6 +140,31 @@ TEST(Calibrate, AttachesTheDefaultOrRequestedCovariance) {
   EXPECT_EQ(mc.covariance->samples, 50);
   options.covariance.samples = 1;
   EXPECT_THROW(Calibrate(problem, options), InputError);
+}
+
+// Above kMaxUnscentedStations the closed forms default to the information covariance (no
+// solves); ml keeps its analytic one at every n.
+TEST(Calibrate, DefaultCovarianceByStationCount) {
+  for (handeye::Method method :
+       {handeye::Method::kTsaiLenz, handeye::Method::kShah, handeye::Method::kStrobl}) {
+    EXPECT_EQ(DefaultCovarianceMethod(method, kMaxUnscentedStations), CovarianceMethod::kUnscented);
+    EXPECT_EQ(DefaultCovarianceMethod(method, kMaxUnscentedStations + 1),
+              CovarianceMethod::kInformation);
+  }
+  EXPECT_EQ(DefaultCovarianceMethod(handeye::Method::kMl, 100000), CovarianceMethod::kLinear);
+  const int n = static_cast<int>(kMaxUnscentedStations) + 1;
+  const sim::SimulatedData data =
+      testing::ThesisCase(handeye::Setup::kEyeInHand, n, 10, kSigma.rotation, kSigma.translation);
+  CalibrateOptions options;
+  options.method = handeye::Method::kTsaiLenz;
+  options.robot_sigma = options.camera_sigma = kSigma;
+  options.reject_outliers = false;
+  const CalibrationResult tsai = Calibrate(data.MeasuredProblem(), options);
+  EXPECT_EQ(tsai.covariance->method, CovarianceMethod::kInformation);
+  EXPECT_EQ(tsai.covariance->solves, 0);
+  const AccuracyBound bound =
+      FirstOrderBound(data.MeasuredProblem(), tsai.X, tsai.Z, kSigma, kSigma);
+  EXPECT_TRUE(tsai.covariance->covariance.isApprox(bound.covariance, 1e-12));
 }
 
 // The UT covariance stays positive definite for a strongly nonlinear solver: Daniilidis' dual

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "hecal/core/error.h"
+#include "hecal/handeye/station_consensus.h"
 
 namespace hecal::estimation {
 namespace {
@@ -12,14 +13,24 @@ bool IsFinite(const Pose& T) {
   return T.matrix().allFinite();
 }
 
+// Every station up to kMaxStartStations, else that many evenly spaced ones.
+handeye::Problem StartStations(const handeye::Problem& problem) {
+  const size_t n = problem.A.size();
+  if (n <= kMaxStartStations) return problem;
+  std::vector<bool> used(n, false);
+  for (size_t k = 0; k < kMaxStartStations; ++k) used[k * n / kMaxStartStations] = true;
+  return handeye::SubProblem(problem, used);
+}
+
 }  // namespace
 
 std::vector<InitialSolution> InitialSolutions(const handeye::Problem& problem) {
+  const handeye::Problem stations = StartStations(problem);
   std::vector<InitialSolution> initial;
   for (const handeye::MethodInfo& info : handeye::AllMethods()) {
     if (!info.closed_form) continue;
     try {
-      handeye::Solution solution = handeye::SolveClosedForm(info.method, problem);
+      handeye::Solution solution = handeye::SolveClosedForm(info.method, stations);
       if (IsFinite(solution.X) && IsFinite(solution.Z)) {
         initial.push_back({info.method, solution});
       }

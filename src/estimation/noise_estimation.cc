@@ -362,7 +362,9 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
     if (flagged <= max_excluded) {
       for (size_t i = 0; i < n; ++i) next_included[i] = !estimate.stations[i].outlier;
     }
-    if (next_included == included) break;
+    size_t changed = 0;
+    for (size_t i = 0; i < n; ++i) changed += next_included[i] != included[i] ? 1 : 0;
+    if (static_cast<double>(changed) < kStableFlagsFraction * static_cast<double>(n)) break;
     included = next_included;
   }
   return estimate;

@@ -72,10 +72,14 @@ StationSelection SelectStations(const handeye::Problem& problem,
   MlOptions ml_options;
   ml_options.robot_sigma = options.robot_sigma;
   ml_options.camera_sigma = options.camera_sigma;
+  std::vector<handeye::Solution> starts;
   for (int round = 0; round < kMaxRounds; ++round) {
     const handeye::Problem set = handeye::SubProblem(problem, candidate);
     handeye::CheckObservability(set);
-    const MlResult fit = RefineMl(set, StartingSolutions(set), ml_options);
+    // Later rounds change the set by a few stations: the last fit is in the right basin.
+    if (round == 0) starts = StartingSolutions(set);
+    const MlResult fit = RefineMl(set, starts, ml_options);
+    starts = {{fit.X, fit.Z}};
     std::vector<StationLinearization> stations = LinearizeStations(problem, fit.X, fit.Z);
     NoiseVariances variances = fit.noise.variances;
     if (!options.camera_covariances.empty()) {

@@ -77,7 +77,7 @@ constexpr MethodInfo kMethods[] = {
 using MotionSolver = Pose (*)(const std::vector<Motion>&);
 using PoseSolver = Solution (*)(const Problem&);
 
-// AX = XB solvers on all station-pair motions (Z from EstimateZ) …
+// AX = XB solvers on station-pair motions (motion.h; Z from EstimateZ) …
 constexpr std::pair<Method, MotionSolver> kMotionSolvers[] = {
     {Method::kTsaiLenz, SolveTsaiLenz},   {Method::kParkMartin, SolveParkMartin},
     {Method::kHoraud, SolveHoraud},       {Method::kHoraudNonlinear, SolveHoraudNonlinear},
@@ -124,7 +124,7 @@ Solution SolveClosedForm(Method method, const Problem& problem) {
   }
   for (const auto& [motion_method, solve] : kMotionSolvers) {
     if (motion_method == method) {
-      const Pose X = solve(AllPairMotions(problem));
+      const Pose X = solve(StationPairMotions(problem));
       return {X, EstimateZ(problem, X)};
     }
   }

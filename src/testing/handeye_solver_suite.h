@@ -31,12 +31,12 @@ namespace hecal::testing {
 
 using ProblemSolver = std::function<handeye::Solution(const handeye::Problem&)>;
 
-// A motion-based solver as the dispatcher runs it: X from all station-pair motions, Z by
-// EstimateZ.
+// A motion-based solver as the dispatcher runs it: X from the station-pair motions (motion.h),
+// Z by EstimateZ.
 inline ProblemSolver FromMotionSolver(
     const std::function<Pose(const std::vector<handeye::Motion>&)>& solve) {
   return [solve](const handeye::Problem& problem) {
-    const Pose X = solve(handeye::AllPairMotions(problem));
+    const Pose X = solve(handeye::StationPairMotions(problem));
     return handeye::Solution{X, handeye::EstimateZ(problem, X)};
   };
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,13 +18,20 @@
 namespace hecal::estimation {
 
 // kNone: no covariance (studies that do not need one; the CLI's calibrate never uses it).
-enum class CovarianceMethod { kNone, kLinear, kUnscented, kMonteCarlo };
-// "none" | "linear" | "unscented" | "montecarlo"; nullopt otherwise.
+enum class CovarianceMethod { kNone, kLinear, kUnscented, kMonteCarlo, kInformation };
+// "none" | "linear" | "unscented" | "montecarlo" | "information"; nullopt otherwise.
 std::optional<CovarianceMethod> ParseCovarianceMethod(std::string_view text);
 std::string_view CovarianceMethodName(CovarianceMethod method);
-// kLinear for ml (its analytic Gauss–Newton information: free and validated), kUnscented for
-// every other method (the seed's approach; a numeric linearisation costs the same solves).
-CovarianceMethod DefaultCovarianceMethod(handeye::Method method);
+
+// Above this many stations the closed forms and strobl default to kInformation: the UT costs
+// 24n + 1 solves of a method that is itself O(n) (O(n²) with all station pairs, motion.h) and a
+// dense 12n × 12n input covariance — tsai-lenz at n = 100: 1 s, n = 200: 7 s, n = 10⁴: 115 GB.
+inline constexpr size_t kMaxUnscentedStations = 100;
+
+// kLinear for ml (its analytic Gauss–Newton information: free and validated). For every other
+// method kUnscented up to kMaxUnscentedStations stations (the seed's approach; a numeric
+// linearisation costs the same solves), kInformation above.
+CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations);
 
 struct CovarianceOptions {
   std::optional<CovarianceMethod> method;  // nullopt: DefaultCovarianceMethod

@@ -10,7 +10,8 @@
 //    then every station's statistic at that fit — for a station of the set its residual against
 //    its residual covariance, for a station outside it the prediction from the set — against
 //    the χ² quantile of the two-sided 3σ level. The set becomes the stations that pass, and
-//    1–2 repeat from the fit on it until it is stable (at most 5 rounds). A station that the
+//    1–2 repeat from the fit on it until it is stable (at most 5 rounds; ml restarts from the
+//    previous round's fit, not from every closed form). A station that the
 //    consensus left out but that fits the noise of the others comes back; one that the
 //    consensus kept but fails the test is rejected.
 // Guards: at most ⌊(n − 3)/2⌋ stations are rejected. When the test flags more, the data as a

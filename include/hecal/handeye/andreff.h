@@ -1,6 +1,6 @@
 // Andreff, Horaud & Espiau (2001), "Robot hand-eye calibration using structure-from-motion",
 // IJRR 20(3):228–248 — the linear (Kronecker-product) formulation of A_ij X = X B_ij
-// (motion.h) from all station-pair motions.
+// (motion.h) from station-pair motions.
 //
 // Equations, re-derived for hecal's A X = X B with column-major vec (kronecker.h K1):
 //   rotation     R_A R_X = R_X R_B  ⇔  R_A R_X R_Bᵀ = R_X  ⇔

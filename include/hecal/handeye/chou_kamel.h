@@ -11,8 +11,8 @@
 // in the unit rotation axes k_A, k_B (Q, W: quaternion_matrices.h). Each 4×4 B_i has rank 2;
 // two motions with non-parallel axes give rank 3, and q is the right singular vector of the
 // smallest singular value of the stacked system [B_1; B_2; …] (Chou & Kamel use two motions;
-// hecal stacks every station-pair motion — the least-squares generalisation). The translation
-// follows from (R_A − I) t_X = R_X t_B − t_A in least squares (translation.h).
+// hecal stacks every station-pair motion of motion.h — the least-squares generalisation). The
+// translation follows from (R_A − I) t_X = R_X t_B − t_A in least squares (translation.h).
 //
 // Implementation and robustness:
 //  - The 4N×4 stack is never formed: its 4×4 triangular factor R is updated 16 motions at a

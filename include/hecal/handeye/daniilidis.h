@@ -1,6 +1,6 @@
 // Daniilidis (1999), "Hand-eye calibration using dual quaternions", IJRR 18(3):286–298 — the
 // method the thesis implemented (SPEC.md A.2.3). Solves A_ij X = X B_ij (motion.h) for rotation
-// and translation together, from all station-pair motions.
+// and translation together, from station-pair motions.
 //
 // Equations. With the unit dual quaternions ǎ = a + εa' of A_ij, b̌ = b + εb' of B_ij and
 // x̌ = q + εq' of X (dual_quaternion.h: q' = ½ t q), A X = X B is ǎ x̌ = x̌ b̌. When the scalar

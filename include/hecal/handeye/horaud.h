@@ -1,6 +1,6 @@
 // Horaud & Dornaika (1995), "Hand-eye calibration", IJRR 14(3):195–210, §5 — the closed-form
 // "R then t" variant (SPEC.md A.2.2): rotation of X as a unit-quaternion eigenproblem, then the
-// translation by linear least squares, from A_ij X = X B_ij (motion.h), all station-pair motions.
+// translation by linear least squares, from A_ij X = X B_ij (motion.h), station-pair motions.
 // (The simultaneous nonlinear "R and t" variant is horaud_nonlinear.h.)
 //
 // Equations. Each motion gives v'_i = R_X v_i for its rotation axes (v'_i of A_ij, v_i of

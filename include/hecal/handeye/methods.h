@@ -38,8 +38,9 @@ std::span<const MethodInfo> AllMethods();
 const MethodInfo& Info(Method method);
 std::optional<Method> ParseMethod(std::string_view name);
 
-// Runs a closed-form method (closed_form == true) on all station-pair motions (AX = XB methods)
-// or on the absolute poses (shah, li). Motion-based methods get Z from EstimateZ. Calls
+// Runs a closed-form method (closed_form == true) on station-pair motions (AX = XB methods;
+// every pair up to 632 stations, a subsample linear in n above: motion.h) or on the absolute
+// poses (shah, li). Motion-based methods get Z from EstimateZ. Calls
 // CheckObservability first; throws DegenerateError on degenerate data.
 Solution SolveClosedForm(Method method, const Problem& problem);
 

@@ -1,6 +1,6 @@
 // Park & Martin (1994), "Robot sensor calibration: solving AX = XB on the Euclidean group",
 // IEEE Trans. Robotics and Automation 10(5):717–721 — rotation then translation of X from
-// A_ij X = X B_ij (motion.h), all station-pair motions.
+// A_ij X = X B_ij (motion.h), station-pair motions.
 //
 // Equations (the paper's, whose A X = X B has the same orientation as hecal's: A robot motion,
 // B camera motion). With the logarithms α = log R_A and β = log R_B (rotation vectors),

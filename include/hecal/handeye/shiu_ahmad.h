@@ -2,7 +2,7 @@
 // transform equations of the form AX = XB", IEEE Trans. Robotics and Automation 5(1):16–29 —
 // the first closed-form solution: rotation from the rotation axes through a one-parameter family
 // of solutions per motion and a linear system, then translation, from A_ij X = X B_ij
-// (motion.h), all station-pair motions.
+// (motion.h), station-pair motions.
 //
 // Equations. R_A R_X = R_X R_B means R_X maps the unit axis k_B of R_B onto the axis k_A of R_A,
 // and every rotation doing so is
