@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <memory>
 #include <numbers>
+#include <numeric>
 #include <sstream>
 #include <utility>
 
@@ -24,6 +25,9 @@ namespace hecal::cli {
 namespace {
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
+// The printout lists every station up to this many, else the largest residuals only.
+constexpr size_t kMaxPrintedStations = 200;
+constexpr size_t kLargestPrintedStations = 20;
 
 // "MM,DEG" → PoseSigma in metres and radians.
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
@@ -92,7 +96,21 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
       << result.translation_rms * scale << " " << unit << "\n";
   out << "  station        rotation_deg   translation_" << unit << "   whitened\n";
   const std::vector<std::string> used = report::UsedStationIds(document);
-  for (size_t k = 0; k < used.size() && k < result.residuals.size(); ++k) {
+  const size_t shown = std::min(used.size(), result.residuals.size());
+  // Every station up to kMaxPrintedStations; above, the largest whitened residuals (the file
+  // has them all).
+  std::vector<size_t> order(shown);
+  std::iota(order.begin(), order.end(), size_t{0});
+  if (shown > kMaxPrintedStations) {
+    std::partial_sort(order.begin(), order.begin() + kLargestPrintedStations, order.end(),
+                      [&](size_t a, size_t b) {
+                        return result.residuals[a].whitened > result.residuals[b].whitened;
+                      });
+    order.resize(kLargestPrintedStations);
+    out << "  (the " << kLargestPrintedStations << " largest of " << shown
+        << " stations; every station is in the result file)\n";
+  }
+  for (const size_t k : order) {
     const estimation::StationResidual& r = result.residuals[k];
     out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(12)
         << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)

@@ -204,6 +204,29 @@ TEST_F(CalibrateCommand, SyntheticDataInMillimetresWithGivenNoise) {
   EXPECT_LT((X.translation() - data.X.translation()).norm(), 4.0 * translation_sd);
 }
 
+// Many stations: the printout lists the 20 largest whitened residuals instead of every station
+// (the result file keeps them all), and a covariance propagated through the solver, which needs
+// a dense 12n x 12n input, is refused above 500 stations before anything is written.
+TEST_F(CalibrateCommand, ManyStationsPrintTheLargestResidualsAndBoundTheCovariance) {
+  WriteSyntheticMm(handeye::Setup::kEyeInHand, 501, 9, 0.2 * kDegree, 0.5e-3);
+  const std::vector<std::string> args = {
+      "calibrate", "--robot",     Path("robot.csv"), "--camera",  Path("camera.csv"),
+      "--setup",   "eye-in-hand", "--method",        "tsai-lenz", "--keep-outliers"};
+  std::vector<std::string> with_output = args;
+  with_output.insert(with_output.end(), {"--output", Path("result.json")});
+  const cli_test::Outcome run = Hecal(with_output);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("the 20 largest of 501 stations"), std::string::npos) << run.out;
+  EXPECT_EQ(std::count(run.out.begin(), run.out.end(), '\n') < 80, true) << run.out;
+  const json result = json::parse(Read("result.json"));
+  EXPECT_EQ(result["residuals"]["per_station"].size(), 501u);
+  EXPECT_EQ(result["covariance"]["method"], "information");
+  std::filesystem::remove(Path("result.json"));
+  std::vector<std::string> unscented = args;
+  unscented.insert(unscented.end(), {"--covariance", "unscented"});
+  ExpectRefused(unscented, "at most 500 stations, got 501");
+}
+
 // --covariance: the UT and a seeded Monte Carlo through park-martin on the same synthetic data;
 // the UT's σ per axis is within 10% (+ 3 standard errors) of the Monte Carlo's, the file says
 // how it was computed, and the same seed writes the same file.

@@ -87,6 +87,9 @@ RobustLoss ValidateOptions(const handeye::Problem& problem, const CalibrateOptio
                      "give one camera pose per robot pose");
   }
   ValidateCovarianceOptions(options.covariance);
+  if (options.covariance.method) {
+    CheckCovarianceFits(*options.covariance.method, options.method, problem.A.size());
+  }
   return *loss;
 }
 

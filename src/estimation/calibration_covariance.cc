@@ -94,6 +94,22 @@ void ValidateCovarianceOptions(const CovarianceOptions& options) {
   }
 }
 
+void CheckCovarianceFits(CovarianceMethod method, handeye::Method solver, size_t stations) {
+  const bool analytic = method == CovarianceMethod::kNone ||
+                        method == CovarianceMethod::kInformation ||
+                        (method == CovarianceMethod::kLinear && solver == handeye::Method::kMl);
+  if (analytic || stations <= kMaxPropagatedStations) return;
+  std::string problem(CovarianceMethodName(method));
+  problem += " propagation needs a dense 12n x 12n input covariance: at most ";
+  problem += std::to_string(kMaxPropagatedStations);
+  problem += " stations, got ";
+  problem += std::to_string(stations);
+  std::string fix = "leave --covariance out (above ";
+  fix += std::to_string(kMaxUnscentedStations);
+  fix += " stations the default is information, O(n)) or use --covariance information";
+  throw InputError("--covariance", 0, problem, fix);
+}
+
 CalibrationCovariance FromMonteCarlo(const uncertainty::MonteCarloMoments<Poses>& mc) {
   CalibrationCovariance out;
   out.method = CovarianceMethod::kMonteCarlo;
@@ -163,6 +179,7 @@ std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem&
             .covariance;
     return out;
   }
+  CheckCovarianceFits(method, result.method, problem.A.size());
   const Poses stations = StackStations(problem);
   const Eigen::MatrixXd input = InputCovariance(noise);
   auto solve = [&](const Poses& perturbed) -> Poses {

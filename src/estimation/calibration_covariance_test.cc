@@ -167,6 +167,38 @@ TEST(Calibrate, DefaultCovarianceByStationCount) {
   EXPECT_TRUE(tsai.covariance->covariance.isApprox(bound.covariance, 1e-12));
 }
 
+// A propagated covariance needs the dense 12n × 12n input: above kMaxPropagatedStations an
+// explicit request is refused before solving, naming the option and the limit; ml's analytic
+// linear covariance and the information covariance have no such limit.
+TEST(Calibrate, PropagatedCovarianceRefusedAboveItsStationLimit) {
+  const int n = static_cast<int>(kMaxPropagatedStations) + 1;
+  const sim::SimulatedData data =
+      testing::ThesisCase(handeye::Setup::kEyeInHand, n, 11, kSigma.rotation, kSigma.translation);
+  CalibrateOptions options;
+  options.method = handeye::Method::kTsaiLenz;
+  options.robot_sigma = options.camera_sigma = kSigma;
+  options.reject_outliers = false;
+  for (CovarianceMethod method :
+       {CovarianceMethod::kUnscented, CovarianceMethod::kLinear, CovarianceMethod::kMonteCarlo}) {
+    options.covariance.method = method;
+    try {
+      Calibrate(data.MeasuredProblem(), options);
+      ADD_FAILURE() << CovarianceMethodName(method) << " accepted at " << n << " stations";
+    } catch (const InputError& error) {
+      const std::string what = error.what();
+      EXPECT_NE(what.find("--covariance"), std::string::npos) << what;
+      EXPECT_NE(what.find("at most 500 stations, got 501"), std::string::npos) << what;
+    }
+  }
+  options.covariance.method = CovarianceMethod::kInformation;
+  EXPECT_EQ(Calibrate(data.MeasuredProblem(), options).covariance->method,
+            CovarianceMethod::kInformation);
+  options.method = handeye::Method::kMl;
+  options.covariance.method = CovarianceMethod::kLinear;
+  EXPECT_EQ(Calibrate(data.MeasuredProblem(), options).covariance->method,
+            CovarianceMethod::kLinear);
+}
+
 // The UT covariance stays positive definite for a strongly nonlinear solver: Daniilidis' dual
 // quaternion method at σ = 1 mm / 1°, where the standard form with the negative centre weight
 // was indefinite for 1 of these 25 data sets (the modified form of unscented.h).

@@ -27,6 +27,10 @@ std::string_view CovarianceMethodName(CovarianceMethod method);
 // 24n + 1 solves of a method that is itself O(n) (O(n²) with all station pairs, motion.h) and a
 // dense 12n × 12n input covariance — tsai-lenz at n = 100: 1 s, n = 200: 7 s, n = 10⁴: 115 GB.
 inline constexpr size_t kMaxUnscentedStations = 100;
+// The most stations kLinear-through-the-solver, kUnscented and kMonteCarlo accept: they need the
+// dense 12n × 12n input covariance (and its square root), 0.3 GB at 500 stations, 115 GB at 10⁴.
+// Above it only kInformation (and ml's kLinear, its analytic information) are offered.
+inline constexpr size_t kMaxPropagatedStations = 500;
 
 // kLinear for ml (its analytic Gauss–Newton information: free and validated). For every other
 // method kUnscented up to kMaxUnscentedStations stations (the seed's approach; a numeric
@@ -45,6 +49,10 @@ struct CovarianceOptions {
 // samples or a negative thread count. Calibrate and RunStudy call it; the CLI too, before any
 // input is read.
 void ValidateCovarianceOptions(const CovarianceOptions& options);
+// Throws InputError (source "--covariance") when `method` for `solver` needs the dense input
+// covariance and there are more than kMaxPropagatedStations stations. Calibrate calls it before
+// solving, PropagateCovariance again.
+void CheckCovarianceFits(CovarianceMethod method, handeye::Method solver, size_t stations);
 
 struct CalibrationCovariance {
   CovarianceMethod method = CovarianceMethod::kLinear;
