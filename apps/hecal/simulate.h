@@ -54,6 +54,8 @@ struct SimulateFlags {
   int covariance_samples = 1000;
   std::string outliers = "0";
   bool reject_outliers = false;
+  std::string robot_scale = "1";  // robot noise = scale × level (list sweeps)
+  bool estimate_noise = false;    // tell no method the sigmas (Calibrate estimates them)
 };
 
 // Runs the study; throws hecal::InputError for bad flags.

@@ -297,8 +297,8 @@ TEST(RunStudy, GrossOutliersAreRejectedAndCostNothing) {
   const StudyResult result = RunStudy(options);
   for (const MethodSummary& s : result.summaries) {
     const Setting& setting = options.settings[s.setting];
-    SCOPED_TRACE(std::string(handeye::SetupName(setting.setup)) + ", k = " +
-                 std::to_string(setting.gross_outliers));
+    SCOPED_TRACE(std::string(handeye::SetupName(setting.setup)) +
+                 ", k = " + std::to_string(setting.gross_outliers));
     EXPECT_EQ(s.failures, 0);
     EXPECT_GE(s.trials_all_found, 196);  // ≥ 98% of the trials
     EXPECT_GE(s.outliers_rejected, 0.98 * s.outliers_injected);
