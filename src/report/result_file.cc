@@ -146,16 +146,20 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
     skipped.push_back({{"id", document.station_ids.at(document.rejected[k])},
                        {"reason", report.skipped_reasons[k]}});
   }
+  json pose_level = {
+      {"method", handeye::Info(report.pose_level.method).name},
+      {"X", PoseJson(report.pose_level.X, handeye::XFrameName(document.setup), scale)},
+      {"Z", PoseJson(report.pose_level.Z, handeye::ZFrameName(document.setup), scale)}};
+  // The pose-level covariance's model check (the joint refinement's covariance is not checked).
+  if (report.pose_level.model_check)
+    pose_level["model_check"] = ModelCheckJson(*report.pose_level.model_check, scale);
   return {{"intrinsics", intrinsics},
           {"pixel_sigma_px", report.pixel_sigma},
           {"pixel_sigma_estimated", report.pixel_sigma_estimated},
           {"reprojection_rms_px", report.rms_px},
           {"per_image", per_image},
           {"skipped", skipped},
-          {"pose_level",
-           {{"method", handeye::Info(report.pose_level.method).name},
-            {"X", PoseJson(report.pose_level.X, handeye::XFrameName(document.setup), scale)},
-            {"Z", PoseJson(report.pose_level.Z, handeye::ZFrameName(document.setup), scale)}}}};
+          {"pose_level", pose_level}};
 }
 
 json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
