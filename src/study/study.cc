@@ -87,7 +87,8 @@ struct Estimate {
   std::optional<Matrix6d> covariance_X;
   std::optional<Matrix6d> covariance_X_model;  // before the model check
   bool check_used = false;
-  std::vector<int> rejected;  // with outlier rejection: the stations left out
+  std::vector<int> rejected;          // with outlier rejection: the stations left out
+  estimation::PoseSigma robot_sigma;  // given or estimated (Calibrate only)
 };
 
 // One method on one data set. Without a covariance, closed-form methods go straight to their
@@ -98,7 +99,7 @@ Estimate SolveX(handeye::Method method, const handeye::Problem& problem, const S
   const estimation::CovarianceOptions& covariance = study.covariance;
   const bool wants_covariance = covariance.method != estimation::CovarianceMethod::kNone;
   if (handeye::Info(method).closed_form && !wants_covariance && !study.reject_outliers) {
-    return {handeye::SolveClosedForm(method, problem).X, std::nullopt, std::nullopt, false, {}};
+    return {handeye::SolveClosedForm(method, problem).X, std::nullopt, std::nullopt, false, {}, {}};
   }
   estimation::CalibrateOptions options;
   options.method = method;
@@ -108,12 +109,17 @@ Estimate SolveX(handeye::Method method, const handeye::Problem& problem, const S
   options.model_check = wants_covariance;
   if (!study.estimate_noise) SetRefinementSigmas(setting, &options);
   const estimation::CalibrationResult result = estimation::Calibrate(problem, options);
-  if (!result.covariance) return {result.X, std::nullopt, std::nullopt, false, result.rejected};
+  if (!result.covariance) {
+    return {result.X, std::nullopt, std::nullopt, false, result.rejected, result.robot_sigma};
+  }
   const bool checked = result.model_check && result.model_check->possible;
-  return {result.X, result.covariance->X(),
+  return {result.X,
+          result.covariance->X(),
           checked ? Matrix6d(result.model_check->model_covariance.topLeftCorner<6, 6>())
                   : result.covariance->X(),
-          checked && result.model_check->used, result.rejected};
+          checked && result.model_check->used,
+          result.rejected,
+          result.robot_sigma};
 }
 
 // The first-order bound of the data set at the truth: 0 without noise, NaN when the noise model
@@ -272,6 +278,7 @@ StudyResult RunStudy(const StudyOptions& options) {
         const RotationTranslation error = PoseError(estimate.X, data.X);
         trial.rotation_error = error.rotation;
         trial.translation_error = error.translation;
+        trial.robot_sigma = estimate.robot_sigma;
         if (estimate.covariance_X) {
           trial.error_X = se3::Log(estimate.X.inverse() * data.X);
           trial.covariance_X = estimate.covariance_X;

@@ -50,7 +50,8 @@ std::string TrialsCsv(const StudyResult& result) {
   out << "setup,stations,noise_on,noise,sigma_mm,sigma_deg,trial,method,status,"
          "rotation_error_deg,translation_error_mm,outlier,bound_rotation_deg,"
          "bound_translation_mm,nees,message,gross_outliers,rejected_outliers,rejected_good,"
-         "rotation_error_clean_deg,translation_error_clean_mm,robot_scale,nees_model,check_used\n";
+         "rotation_error_clean_deg,translation_error_clean_mm,robot_scale,nees_model,check_used,"
+         "robot_sigma_deg,robot_sigma_mm\n";
   for (const TrialResult& trial : result.trials) {
     const Setting& setting = result.options.settings[trial.setting];
     const Bound& bound = result.bounds[trial.setting][trial.trial];
@@ -64,7 +65,8 @@ std::string TrialsCsv(const StudyResult& result) {
         << ',' << FormatNumber(trial.rotation_error_clean * kDeg) << ','
         << FormatNumber(trial.translation_error_clean * kMm) << ','
         << FormatNumber(setting.robot_scale) << ',' << FormatNumber(trial.nees_model) << ','
-        << (trial.check_used ? 1 : 0) << '\n';
+        << (trial.check_used ? 1 : 0) << ',' << FormatNumber(trial.robot_sigma.rotation * kDeg)
+        << ',' << FormatNumber(trial.robot_sigma.translation * kMm) << '\n';
   }
   return out.str();
 }

@@ -140,6 +140,9 @@ struct TrialResult {
   std::optional<Matrix6d> covariance_X_model;
   double nees_model = std::numeric_limits<double>::quiet_NaN();
   bool check_used = false;
+  // The robot noise the method's covariance assumed: given, or estimated from the residuals
+  // (StudyOptions::estimate_noise); zero for closed forms solved without Calibrate.
+  estimation::PoseSigma robot_sigma;
   // With gross outliers or reject_outliers: the stations the method rejected, split into the
   // replaced ones and good ones, and (gross outliers only) the errors of the same method on
   // the same data set without the replaced stations.
