@@ -253,10 +253,12 @@ TEST(RunStudy, MlLinearCovarianceIsConsistent) {
 // The model check (estimation/model_check.h) with the noise estimated (no sigmas given) on
 // data that break the noise model, 100 trials each, n = 15: PnP-shaped camera noise
 // (eye-to-hand), Student-t(3) noise and a robot five times noisier than the camera
-// (eye-in-hand). The model-only covariance undercovers (2σ coverage ≤ 90%, or its smallest
-// predicted/empirical σ ratio ≤ 0.75); the reported one covers more (2σ at least 8 points
-// higher, ≥ 82%; 1σ at least 10 points higher) and its σ ratios are ≥ 0.85 on every axis.
-// Measured: 90.0 → 98.0%, 81.0 → 91.0%, 74.0 → 82.0% (2σ); the README has the 200-trial table.
+// (eye-in-hand). The model-only covariance (with the noise estimate's posterior mean,
+// noise_estimation.h) undercovers (2σ coverage ≤ 92%, or its smallest predicted/empirical σ
+// ratio ≤ 0.75); the reported one covers more (2σ at least 3 points higher and ≥ 85%; 1σ at least
+// 6 points higher) and its σ ratios are ≥ 0.85 on every axis. Measured (1σ / 2σ / smallest
+// ratio): 70 / 92 / 0.70 → 79 / 97 / 0.89, 58 / 87 / 0.85 → 69 / 94 / 0.95, 53 / 79 / 0.75 →
+// 61 / 88 / 0.94; the README has the 200-trial table.
 TEST(RunStudy, ModelCheckCoversWhenTheNoiseModelIsWrong) {
   Setting pnp = MakeSetting(handeye::Setup::kEyeToHand, 15, 1.0, 1.0, NoiseOn::kBoth,
                             sim::NoiseModel::Kind::kPnp);
@@ -275,12 +277,12 @@ TEST(RunStudy, ModelCheckCoversWhenTheNoiseModelIsWrong) {
     ASSERT_TRUE(s.consistency && s.consistency_model);
     const uncertainty::Consistency& model = *s.consistency_model;
     const uncertainty::Consistency& reported = *s.consistency;
-    EXPECT_TRUE(model.coverage_2sigma <= 0.90 || model.sd_ratio.minCoeff() <= 0.75);
-    EXPECT_GE(reported.coverage_2sigma, model.coverage_2sigma + 0.08);
-    EXPECT_GE(reported.coverage_2sigma, 0.82);
-    EXPECT_GE(reported.coverage_1sigma, model.coverage_1sigma + 0.10);
+    EXPECT_TRUE(model.coverage_2sigma <= 0.92 || model.sd_ratio.minCoeff() <= 0.75);
+    EXPECT_GE(reported.coverage_2sigma, model.coverage_2sigma + 0.03);
+    EXPECT_GE(reported.coverage_2sigma, 0.85);
+    EXPECT_GE(reported.coverage_1sigma, model.coverage_1sigma + 0.06);
     EXPECT_GE(reported.sd_ratio.minCoeff(), 0.85);
-    EXPECT_GT(s.check_used, 25);
+    EXPECT_GT(s.check_used, 20);
   }
 }
 
