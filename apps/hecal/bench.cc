@@ -236,6 +236,7 @@ void RunBench(const BenchFlags& flags, const Io& io) {
         // The solve only, like the closed forms and OpenCV (strobl's default UT covariance
         // would add 24n + 1 solves).
         options.covariance.method = estimation::CovarianceMethod::kNone;
+        options.model_check = false;
         if (!noise.IsZero()) {
           options.robot_sigma =
               estimation::PoseSigma{noise.rotation_sigma, noise.translation_sigma};

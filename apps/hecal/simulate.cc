@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <numbers>
 
@@ -92,6 +93,15 @@ void PrintConsistency(const study::StudyResult& result, size_t setting, std::ost
         << Pad(Fixed(100.0 * c.coverage_2sigma, 1) + "%", 9) << " ";
     for (Eigen::Index j = 0; j < c.sd_ratio.size(); ++j) out << Pad(Fixed(c.sd_ratio(j), 2), 6);
     out << "\n";
+    if (m.consistency_model) {
+      const uncertainty::Consistency& o = *m.consistency_model;
+      out << "  " << Pad("  model only", 18, true) << Pad(Fixed(o.mean_nees, 2), 8) << Pad("", 16)
+          << Pad(o.band.Contains(o.mean_nees) ? "ok" : "out", 4)
+          << Pad(Fixed(100.0 * o.coverage_1sigma, 1) + "%", 9)
+          << Pad(Fixed(100.0 * o.coverage_2sigma, 1) + "%", 9) << " ";
+      for (Eigen::Index j = 0; j < o.sd_ratio.size(); ++j) out << Pad(Fixed(o.sd_ratio(j), 2), 6);
+      out << " (check inflated " << m.check_used << " of " << (m.trials - m.failures) << ")\n";
+    }
   }
 }
 
@@ -129,6 +139,8 @@ void PrintTable(const study::StudyResult& result, std::ostream& out) {
         << study::FormatNumber(setting.translation_sigma * 1000.0) << " mm / "
         << study::FormatNumber(setting.rotation_sigma * kDeg) << " deg, " << result.options.trials
         << " trials";
+    if (setting.robot_scale != 1.0)
+      out << ", robot noise " << study::FormatNumber(setting.robot_scale) << "x";
     if (setting.gross_outliers > 0) {
       out << ", " << setting.gross_outliers << " gross outlier(s) per data set";
     }
@@ -193,12 +205,28 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
     const std::optional<sim::NoiseModel::Kind> kind = sim::ParseNoiseKind(item);
     if (!kind) {
       throw InputError("--noise", 0, "unknown noise kind '" + item + "'",
-                       "use gaussian, uniform or systematic");
+                       "use gaussian, uniform, systematic, student-t3 or pnp");
     }
     kinds.push_back(*kind);
   }
   const std::vector<SigmaLevel> sigmas = ParseSigmaLevels(flags.sigma);
   for (const SigmaLevel& sigma : sigmas) CheckNoiseLevel("--sigma", sigma.mm, sigma.deg);
+  std::vector<double> robot_scales;
+  for (const std::string& item : SplitList("--robot-scale", flags.robot_scale)) {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0' || !(value > 0.0) || !(value <= 1000.0)) {
+      throw InputError("--robot-scale", 0,
+                       "'" + item + "' is not a number above 0 and at most 1000",
+                       "e.g. --robot-scale 1,5");
+    }
+    robot_scales.push_back(value);
+  }
+  for (const SigmaLevel& sigma : sigmas) {
+    for (double scale : robot_scales) {
+      CheckNoiseLevel("--robot-scale", sigma.mm * scale, sigma.deg * scale);
+    }
+  }
   options.methods = ParseMethodList("--method", flags.method);
   const int trials = ParseInt("--trials", flags.trials, 1, kMaxTrials,
                               "the number of data sets per setting (e.g. 200)");
@@ -208,13 +236,13 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
       std::int64_t{1} * static_cast<std::int64_t>(setups.size()) *
       static_cast<std::int64_t>(noise_on.size()) * static_cast<std::int64_t>(kinds.size()) *
       static_cast<std::int64_t>(sigmas.size()) * static_cast<std::int64_t>(stations.size()) *
-      static_cast<std::int64_t>(outliers.size());
+      static_cast<std::int64_t>(outliers.size()) * static_cast<std::int64_t>(robot_scales.size());
   if (settings > kMaxSettings) {
     throw InputError("--stations", 0,
                      "the sweeps make " + std::to_string(settings) + " settings, more than " +
                          std::to_string(kMaxSettings),
-                     "sweep fewer values of --setup, --noise-on, --noise, --sigma, --stations or "
-                     "--outliers");
+                     "sweep fewer values of --setup, --noise-on, --noise, --sigma, --stations, "
+                     "--outliers or --robot-scale");
   }
   const std::int64_t rows = settings * trials * static_cast<std::int64_t>(options.methods.size());
   if (rows > kMaxTrialRows) {
@@ -243,21 +271,25 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
   options.threads = threads;
   options.seed = seed;
   options.reject_outliers = flags.reject_outliers;
-  for (handeye::Setup setup : setups) {
-    for (study::NoiseOn on : noise_on) {
-      for (sim::NoiseModel::Kind kind : kinds) {
-        for (const SigmaLevel& sigma : sigmas) {
-          for (int n : stations) {
-            for (int k : outliers) {
-              study::Setting setting;
-              setting.setup = setup;
-              setting.stations = n;
-              setting.noise_on = on;
-              setting.noise_kind = kind;
-              setting.translation_sigma = sigma.mm * 1e-3;
-              setting.rotation_sigma = sigma.deg / kDeg;
-              setting.gross_outliers = k;
-              options.settings.push_back(setting);
+  options.estimate_noise = flags.estimate_noise;
+  for (double robot_scale : robot_scales) {
+    for (handeye::Setup setup : setups) {
+      for (study::NoiseOn on : noise_on) {
+        for (sim::NoiseModel::Kind kind : kinds) {
+          for (const SigmaLevel& sigma : sigmas) {
+            for (int n : stations) {
+              for (int k : outliers) {
+                study::Setting setting;
+                setting.setup = setup;
+                setting.stations = n;
+                setting.noise_on = on;
+                setting.noise_kind = kind;
+                setting.translation_sigma = sigma.mm * 1e-3;
+                setting.rotation_sigma = sigma.deg / kDeg;
+                setting.gross_outliers = k;
+                setting.robot_scale = robot_scale;
+                options.settings.push_back(setting);
+              }
             }
           }
         }
@@ -293,7 +325,9 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->capture_default_str();
   simulate->add_option("--noise-on", flags->noise_on, "robot | camera | both (list sweeps)")
       ->capture_default_str();
-  simulate->add_option("--noise", flags->noise, "gaussian | uniform | systematic (list sweeps)")
+  simulate
+      ->add_option("--noise", flags->noise,
+                   "gaussian | uniform | systematic | student-t3 | pnp (camera) (list sweeps)")
       ->capture_default_str();
   simulate
       ->add_option("--sigma", flags->sigma,
@@ -319,6 +353,12 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->capture_default_str();
   simulate->add_flag("--reject-outliers", flags->reject_outliers,
                      "Every method through calibrate's outlier rejection (counts what it rejects)");
+  simulate
+      ->add_option("--robot-scale", flags->robot_scale,
+                   "Robot noise = this times the level, camera noise = the level (list sweeps)")
+      ->capture_default_str();
+  simulate->add_flag("--estimate-noise", flags->estimate_noise,
+                     "Tell no method the sigmas: estimated from the residuals (the default path)");
   simulate->add_option("--output", flags->output, "Per-trial CSV (written atomically)");
   simulate->add_option("--summary", flags->summary, "Summary CSV (written atomically)");
   simulate->footer(kFooter);

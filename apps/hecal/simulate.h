@@ -56,6 +56,8 @@ struct SimulateFlags {
   std::string covariance_samples = "1000";  // 2 … 100000
   std::string outliers = "0";
   bool reject_outliers = false;
+  std::string robot_scale = "1";  // robot noise = scale × level (list sweeps)
+  bool estimate_noise = false;    // tell no method the sigmas (Calibrate estimates them)
 };
 
 // Runs the study; throws hecal::InputError for bad flags.

@@ -214,6 +214,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
         problem, result, options, StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma),
         options.covariance);
   }
+  if (result.covariance && options.model_check) ApplyModelCheck(problem, options, &result);
   if (result.covariance && result.covariance->method == CovarianceMethod::kMonteCarlo)
     result.seed = options.covariance.seed;
   if (result.covariance) {

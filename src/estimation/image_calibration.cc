@@ -64,6 +64,38 @@ std::vector<int> Indices(const std::vector<bool>& flags) {
 
 }  // namespace
 
+std::string RobotNoiseAgreementWarning(const PoseSigma& joint, const PoseSigma& pose_level,
+                                       size_t stations, double length_scale,
+                                       const std::string& largest, double largest_deg) {
+  const double dof = 3.0 * static_cast<double>(stations) - 6.0;
+  if (dof <= 0.0) return {};
+  const double limit = 2.0 / std::sqrt(dof);
+  auto effect = [&](const PoseSigma& sigma) {
+    return std::hypot(sigma.translation, sigma.rotation * length_scale);
+  };
+  const double a = effect(joint), b = effect(pose_level);
+  if (!(a > 0.0 && b > 0.0) || std::abs(std::log(a / b)) <= limit) return {};
+  const double deg = 180.0 / std::numbers::pi;
+  char text[720];
+  std::snprintf(
+      text, sizeof text,
+      "the robot noise estimated from the images (%.3g deg, %.3g mm: %.3g mm at %.3g m) "
+      "disagrees with what the pose-level residuals imply (%.3g deg, %.3g mm: %.3g mm) by a "
+      "factor %.2f, beyond their sampling error (%.2f with %zu stations); the covariance of X "
+      "rests on the image estimate. Likely cause: %s; the largest pose-level residual is station "
+      "%s (%.3g deg) (fix: check that station's robot pose and image, or give --robot-sigma)",
+      joint.rotation * deg, joint.translation * 1e3, a * 1e3, length_scale,
+      pose_level.rotation * deg, pose_level.translation * 1e3, b * 1e3, std::max(a / b, b / a),
+      std::exp(limit), stations,
+      a < b ? "a few stations dominate the pose-level residuals (a robot pose off by more than "
+              "the noise is absorbed into that station's free robot pose, and the estimate "
+              "collapses toward zero with the covariance)"
+            : "the pose-level camera noise (an isotropic summary of the PnP covariances) is "
+              "wrong, or the pixels are noisier than the robot poses explain",
+      largest.c_str(), largest_deg);
+  return text;
+}
+
 ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stations,
                                            const ImageCalibrationOptions& options) {
   std::vector<Pose> robot, camera;
@@ -180,6 +212,22 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   const NoiseEstimate noise = EstimateNoise(LinearizeStations(used_problem, result.X, result.Z),
                                             known, handeye::LengthScale(used_problem));
   SetStationResiduals(used_problem, noise, &result);
+  if (out.reprojection.robot_sigma_estimated) {
+    const std::vector<int> used_index = Indices(used);
+    size_t largest = 0;
+    for (size_t k = 0; k < result.residuals.size(); ++k)
+      if (result.residuals[k].rotation > result.residuals[largest].rotation) largest = k;
+    if (!result.residuals.empty()) {
+      if (std::string warning = RobotNoiseAgreementWarning(
+              result.robot_sigma, out.pose_level.robot_sigma, used_index.size(),
+              handeye::LengthScale(used_problem),
+              StationName(options.calibrate, static_cast<size_t>(used_index[largest])),
+              result.residuals[largest].rotation * 180.0 / std::numbers::pi);
+          !warning.empty()) {
+        result.warnings.push_back(std::move(warning));
+      }
+    }
+  }
   result.rejected.clear();
   for (size_t i = 0; i < n; ++i)
     if (!used[i]) result.rejected.push_back(static_cast<int>(i));

@@ -22,6 +22,13 @@ constexpr double kTolerance = 1e-6;       // relative change of the variances
 constexpr int kMaxVarianceIterations = 200;
 constexpr int kMaxExclusionRounds = 10;
 constexpr int kMaxHalvings = 30;
+// Posterior mean: points per estimated group of the coarse and the fine grid, the coarse grid's
+// span relative to the group's energy bound, and the largest problem it is computed for.
+constexpr int kCoarseGridPoints = 16;
+constexpr int kFineGridPoints = 24;
+constexpr double kPosteriorGridLow = 1e-6;
+constexpr double kPosteriorGridHigh = 4.0;
+constexpr size_t kPosteriorMaxStations = 100;
 
 bool IsRotation(int k) {
   return k == kRobotRotation || k == kCameraRotation;
@@ -199,6 +206,125 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
   return next;
 }
 
+// A log-spaced grid per estimated group: log θ_g from low[g] to high[g].
+struct LogGrid {
+  int points = 0;
+  std::array<double, kMaxGroups> low{}, high{};
+  double Value(int g, int index) const {
+    return std::exp(low[g] + (high[g] - low[g]) * index / (points - 1));
+  }
+};
+
+// exp(ℓ_R) · Π_g θ_g^(1/2) (prior θ^(−1/2) times dθ = θ d log θ) on `grid`, integrated: the
+// posterior means of the groups' σ, and per group the range of log θ_g where the weight exceeds
+// e⁻²⁵ of its largest value.
+struct GridIntegral {
+  std::array<double, kMaxGroups> mean{}, low{}, high{};
+  bool valid = false;
+};
+
+GridIntegral IntegrateOnGrid(const std::vector<StationLinearization>& stations,
+                             const std::vector<bool>& included, const NoiseSpec& spec,
+                             const NoiseVariances& base, const LogGrid& grid) {
+  const int G = spec.NumGroups();
+  int points = 1;
+  for (int g = 0; g < G; ++g) points *= grid.points;
+  std::vector<double> log_weight(static_cast<size_t>(points));
+  std::vector<std::array<int, kMaxGroups>> index(static_cast<size_t>(points));
+  double max_log_weight = -std::numeric_limits<double>::infinity();
+  for (int p = 0; p < points; ++p) {
+    NoiseVariances theta = base;
+    double log_measure = 0.0;
+    for (int g = 0, rest = p; g < G; ++g, rest /= grid.points) {
+      index[p][g] = rest % grid.points;
+      const double value = grid.Value(g, index[p][g]);
+      log_measure += 0.5 * std::log(value);
+      for (int k = 0; k < kNumNoiseComponents; ++k)
+        if (spec.group[k] == g) theta[k] = value;
+    }
+    try {
+      log_weight[p] = LinearRefit(stations, included, theta).log_likelihood + log_measure;
+    } catch (const std::invalid_argument&) {  // a grid corner too ill-conditioned to whiten
+      log_weight[p] = -std::numeric_limits<double>::infinity();
+    }
+    if (std::isfinite(log_weight[p])) max_log_weight = std::max(max_log_weight, log_weight[p]);
+  }
+  GridIntegral integral;
+  if (!std::isfinite(max_log_weight)) return integral;
+  integral.valid = true;
+  std::array<int, kMaxGroups> first, last;
+  first.fill(grid.points);
+  last.fill(-1);
+  double total = 0.0;
+  for (int p = 0; p < points; ++p) {
+    if (!std::isfinite(log_weight[p])) continue;
+    const double weight = std::exp(log_weight[p] - max_log_weight);
+    total += weight;
+    for (int g = 0; g < G; ++g) {
+      integral.mean[g] += weight * std::sqrt(grid.Value(g, index[p][g]));
+      if (log_weight[p] - max_log_weight > -25.0) {
+        first[g] = std::min(first[g], index[p][g]);
+        last[g] = std::max(last[g], index[p][g]);
+      }
+    }
+  }
+  for (int g = 0; g < G; ++g) {
+    integral.mean[g] /= total;
+    integral.low[g] = std::log(grid.Value(g, first[g]));
+    integral.high[g] = std::log(grid.Value(g, last[g]));
+  }
+  return integral;
+}
+
+// The estimated group variances as posterior mean σ, squared (header: "Posterior mean").
+NoiseVariances PosteriorMean(const std::vector<StationLinearization>& stations,
+                             const std::vector<bool>& included, const NoiseSpec& spec,
+                             const NoiseVariances& reml) {
+  const int G = spec.NumGroups();
+  // Coarse grid per group: up to 4 times the variance that alone would explain all the residual
+  // energy of its block (an upper scale: other components explain part of it; at least the
+  // REML estimate), down to 10⁻⁶ of it.
+  LogGrid coarse;
+  coarse.points = kCoarseGridPoints;
+  for (int g = 0; g < G; ++g) {
+    double energy = 0.0, unit = 0.0, reml_value = 0.0;
+    bool rotation_group = false;
+    for (int k = 0; k < kNumNoiseComponents; ++k) {
+      if (spec.group[k] != g) continue;
+      rotation_group = IsRotation(k);
+      reml_value = reml[k];
+    }
+    const int block = rotation_group ? 0 : 3;
+    for (size_t i = 0; i < stations.size(); ++i) {
+      if (!included[i]) continue;
+      energy += stations[i].residual.segment<3>(block).squaredNorm();
+      for (int k = 0; k < kNumNoiseComponents; ++k)
+        if (spec.group[k] == g) unit += stations[i].components[k].block<3, 3>(block, block).trace();
+    }
+    const double upper = std::max(energy / std::max(unit, 1e-300), reml_value);
+    coarse.low[g] = std::log(kPosteriorGridLow * upper);
+    coarse.high[g] = std::log(kPosteriorGridHigh * upper);
+  }
+  const GridIntegral first = IntegrateOnGrid(stations, included, spec, reml, coarse);
+  if (!first.valid) return reml;
+  // Fine grid over where the coarse weights are not negligible, one coarse step wider on each
+  // side: a sharp likelihood (many degrees of freedom) is narrower than a coarse step.
+  LogGrid fine;
+  fine.points = kFineGridPoints;
+  for (int g = 0; g < G; ++g) {
+    const double step = (coarse.high[g] - coarse.low[g]) / (coarse.points - 1);
+    fine.low[g] = first.low[g] - step;
+    fine.high[g] = first.high[g] + step;
+  }
+  const GridIntegral second = IntegrateOnGrid(stations, included, spec, reml, fine);
+  const GridIntegral& integral = second.valid ? second : first;
+  NoiseVariances posterior = reml;
+  for (int k = 0; k < kNumNoiseComponents; ++k)
+    if (spec.group[k] >= 0)
+      posterior[k] = integral.mean[spec.group[k]] * integral.mean[spec.group[k]];
+  return posterior;
+}
+
 double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
   double change = 0.0;
   for (int k = 0; k < kNumNoiseComponents; ++k) {
@@ -273,6 +399,7 @@ NoiseSpec NoiseSpec::FromSigmas(const std::optional<PoseSigma>& robot,
     spec.group = {0, 1, 0, 1};
     spec.variances = {};
   }
+  spec.posterior_mean = true;
   return spec;
 }
 
@@ -319,7 +446,7 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
     throw std::invalid_argument("EstimateNoise supports at most two variance groups");
   }
   NoiseEstimate estimate;
-  estimate.variances = spec.variances;
+  estimate.variances = estimate.reml_variances = spec.variances;
   std::vector<bool> included(n, true);
   const size_t max_excluded = (n - 3) / 2;
   if (spec.AnyEstimated())
@@ -353,6 +480,10 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
           estimate.converged = true;
           break;
         }
+      }
+      estimate.reml_variances = estimate.variances;
+      if (spec.posterior_mean && n <= kPosteriorMaxStations) {
+        estimate.variances = PosteriorMean(stations, included, spec, estimate.reml_variances);
       }
     }
     estimate.stations = TestStations(stations, included, estimate.variances);

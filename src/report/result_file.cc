@@ -77,6 +77,39 @@ json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double sc
   return section;
 }
 
+// covariance.model_check (estimation/model_check.h): both sigmas per axis, their ratio, the
+// check's relative sampling error, the flagged axes and whether the reported covariance is the
+// inflated one.
+json ModelCheckJson(const estimation::ModelCheck& check, double scale) {
+  if (!check.possible)
+    return {{"method", "jackknife"}, {"possible", false}, {"reason", check.reason}};
+  const Eigen::Matrix<double, 12, 1> ratio = check.Ratio();
+  json flagged = json::array();
+  for (int k = 0; k < 12; ++k) {
+    static const char* const kNames[6] = {"rx", "ry", "rz", "tx", "ty", "tz"};
+    if (check.flagged[static_cast<size_t>(k)])
+      flagged.push_back(std::string(k < 6 ? "X." : "Z.") + kNames[k % 6]);
+  }
+  auto per_axis = [](const Vector6d& v) {
+    return json{{"rotation", {v(0), v(1), v(2)}}, {"translation", {v(3), v(4), v(5)}}};
+  };
+  return {{"method", "jackknife"},
+          {"possible", true},
+          {"groups", check.groups},
+          {"sigma_model",
+           {{"X", SigmaJson(check.sigma_model.head<6>(), scale)},
+            {"Z", SigmaJson(check.sigma_model.tail<6>(), scale)}}},
+          {"sigma_check",
+           {{"X", SigmaJson(check.sigma_check.head<6>(), scale)},
+            {"Z", SigmaJson(check.sigma_check.tail<6>(), scale)}}},
+          {"ratio", {{"X", per_axis(ratio.head<6>())}, {"Z", per_axis(ratio.tail<6>())}}},
+          {"relative_error",
+           {{"X", per_axis(check.relative_error.head<6>())},
+            {"Z", per_axis(check.relative_error.tail<6>())}}},
+          {"flagged", flagged},
+          {"used", check.used}};
+}
+
 json CameraJson(const pose::CameraModel& camera) {
   return {{"fx", camera.fx},
           {"fy", camera.fy},
@@ -113,16 +146,20 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
     skipped.push_back({{"id", document.station_ids.at(document.rejected[k])},
                        {"reason", report.skipped_reasons[k]}});
   }
+  json pose_level = {
+      {"method", handeye::Info(report.pose_level.method).name},
+      {"X", PoseJson(report.pose_level.X, handeye::XFrameName(document.setup), scale)},
+      {"Z", PoseJson(report.pose_level.Z, handeye::ZFrameName(document.setup), scale)}};
+  // The pose-level covariance's model check (the joint refinement's covariance is not checked).
+  if (report.pose_level.model_check)
+    pose_level["model_check"] = ModelCheckJson(*report.pose_level.model_check, scale);
   return {{"intrinsics", intrinsics},
           {"pixel_sigma_px", report.pixel_sigma},
           {"pixel_sigma_estimated", report.pixel_sigma_estimated},
           {"reprojection_rms_px", report.rms_px},
           {"per_image", per_image},
           {"skipped", skipped},
-          {"pose_level",
-           {{"method", handeye::Info(report.pose_level.method).name},
-            {"X", PoseJson(report.pose_level.X, handeye::XFrameName(document.setup), scale)},
-            {"Z", PoseJson(report.pose_level.Z, handeye::ZFrameName(document.setup), scale)}}}};
+          {"pose_level", pose_level}};
 }
 
 json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
@@ -135,7 +172,16 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
       {"X", PoseJson(result.X, handeye::XFrameName(document.setup), scale)},
       {"Z", PoseJson(result.Z, handeye::ZFrameName(document.setup), scale)},
   };
-  if (result.covariance) object["covariance"] = CovarianceSectionJson(*result.covariance, scale);
+  if (result.covariance) {
+    object["covariance"] = CovarianceSectionJson(*result.covariance, scale);
+    if (result.model_check) {
+      object["covariance"]["model_check"] = ModelCheckJson(*result.model_check, scale);
+      if (result.model_check->used)
+        object["covariance"]["method"] =
+            std::string(estimation::CovarianceMethodName(result.covariance->method)) +
+            "+model_check";
+    }
+  }
   const std::vector<std::string> used = UsedStationIds(document);
   json per_station = json::array();
   for (size_t k = 0; k < used.size() && k < result.residuals.size(); ++k) {

@@ -1,6 +1,9 @@
 #include "hecal/sim/noise.h"
 
+#include <cmath>
+
 #include "hecal/geometry/se3.h"
+#include "hecal/geometry/so3.h"
 
 namespace hecal::sim {
 
@@ -8,6 +11,8 @@ std::optional<NoiseModel::Kind> ParseNoiseKind(std::string_view text) {
   if (text == "gaussian") return NoiseModel::Kind::kGaussian;
   if (text == "uniform") return NoiseModel::Kind::kUniform;
   if (text == "systematic") return NoiseModel::Kind::kSystematic;
+  if (text == "student-t3") return NoiseModel::Kind::kStudentT3;
+  if (text == "pnp") return NoiseModel::Kind::kPnp;
   return std::nullopt;
 }
 
@@ -19,6 +24,10 @@ std::string_view NoiseKindName(NoiseModel::Kind kind) {
       return "uniform";
     case NoiseModel::Kind::kSystematic:
       return "systematic";
+    case NoiseModel::Kind::kStudentT3:
+      return "student-t3";
+    case NoiseModel::Kind::kPnp:
+      return "pnp";
   }
   return "gaussian";
 }
@@ -26,6 +35,8 @@ std::string_view NoiseKindName(NoiseModel::Kind kind) {
 Vector6d SamplePerturbation(const NoiseModel& model, std::mt19937_64& rng) {
   Vector6d delta;
   const double sigma[2] = {model.rotation_sigma, model.translation_sigma};
+  // kPnp: tilt x, y, spin z; lateral x, y, depth z (noise.h), in units of σ.
+  constexpr double kPnpShape[6] = {2.0, 2.0, 0.1, 0.5, 0.5, 5.0};
   for (int k = 0; k < 6; ++k) {
     const double s = sigma[k / 3];
     switch (model.kind) {
@@ -38,6 +49,12 @@ Vector6d SamplePerturbation(const NoiseModel& model, std::mt19937_64& rng) {
       case NoiseModel::Kind::kSystematic:
         delta(k) = s;
         break;
+      case NoiseModel::Kind::kStudentT3:
+        delta(k) = s * std::student_t_distribution<double>(3.0)(rng) / std::sqrt(3.0);
+        break;
+      case NoiseModel::Kind::kPnp:
+        delta(k) = s * kPnpShape[k] * std::normal_distribution<double>()(rng);
+        break;
     }
   }
   return delta;
@@ -45,7 +62,12 @@ Vector6d SamplePerturbation(const NoiseModel& model, std::mt19937_64& rng) {
 
 Pose AddNoise(const Pose& T, const NoiseModel& model, std::mt19937_64& rng) {
   if (model.IsZero()) return T;
-  return T * se3::Exp(SamplePerturbation(model, rng));
+  const Vector6d delta = SamplePerturbation(model, rng);
+  if (model.kind != NoiseModel::Kind::kPnp) return T * se3::Exp(delta);
+  Pose noisy = T;
+  noisy.linear() = so3::Exp(delta.head<3>()) * T.linear();
+  noisy.translation() = T.translation() + delta.tail<3>();
+  return noisy;
 }
 
 }  // namespace hecal::sim

@@ -28,18 +28,33 @@ constexpr double kOutlierFloorRotation = 1e-9;     // radians
 constexpr double kOutlierFloorTranslation = 1e-9;  // metres
 
 // RMS magnitude per component of the noise a model puts on a pose.
-estimation::PoseSigma ModelSigma(const Setting& setting) {
-  const double scale =
-      setting.noise_kind == sim::NoiseModel::Kind::kUniform ? 1.0 / std::sqrt(3.0) : 1.0;
-  return {scale * setting.rotation_sigma, scale * setting.translation_sigma};
+// For the robot (`robot`) or the camera: kPnp shapes the camera's noise only (study.h).
+estimation::PoseSigma ModelSigma(const Setting& setting, bool robot) {
+  const double scale = robot ? setting.robot_scale : 1.0;
+  const sim::NoiseModel::Kind kind = robot && setting.noise_kind == sim::NoiseModel::Kind::kPnp
+                                         ? sim::NoiseModel::Kind::kGaussian
+                                         : setting.noise_kind;
+  switch (kind) {
+    case sim::NoiseModel::Kind::kUniform:
+      return {scale * setting.rotation_sigma / std::sqrt(3.0),
+              scale * setting.translation_sigma / std::sqrt(3.0)};
+    case sim::NoiseModel::Kind::kPnp:
+      return {std::sqrt((4.0 + 4.0 + 0.01) / 3.0) * setting.rotation_sigma,
+              std::sqrt((0.25 + 0.25 + 25.0) / 3.0) * setting.translation_sigma};
+    default:
+      return {scale * setting.rotation_sigma, scale * setting.translation_sigma};
+  }
 }
 
-sim::NoiseModel NoiseFor(const Setting& setting, bool noisy) {
+sim::NoiseModel NoiseFor(const Setting& setting, bool robot, bool noisy) {
   sim::NoiseModel model;
   model.kind = setting.noise_kind;
+  if (robot && model.kind == sim::NoiseModel::Kind::kPnp)
+    model.kind = sim::NoiseModel::Kind::kGaussian;
   if (noisy) {
-    model.rotation_sigma = setting.rotation_sigma;
-    model.translation_sigma = setting.translation_sigma;
+    const double scale = robot ? setting.robot_scale : 1.0;
+    model.rotation_sigma = scale * setting.rotation_sigma;
+    model.translation_sigma = scale * setting.translation_sigma;
   }
   return model;
 }
@@ -70,7 +85,10 @@ void SetRefinementSigmas(const Setting& setting, estimation::CalibrateOptions* o
 struct Estimate {
   Pose X;
   std::optional<Matrix6d> covariance_X;
-  std::vector<int> rejected;  // with outlier rejection: the stations left out
+  std::optional<Matrix6d> covariance_X_model;  // before the model check
+  bool check_used = false;
+  std::vector<int> rejected;          // with outlier rejection: the stations left out
+  estimation::PoseSigma robot_sigma;  // given or estimated (Calibrate only)
 };
 
 // One method on one data set. Without a covariance, closed-form methods go straight to their
@@ -81,17 +99,27 @@ Estimate SolveX(handeye::Method method, const handeye::Problem& problem, const S
   const estimation::CovarianceOptions& covariance = study.covariance;
   const bool wants_covariance = covariance.method != estimation::CovarianceMethod::kNone;
   if (handeye::Info(method).closed_form && !wants_covariance && !study.reject_outliers) {
-    return {handeye::SolveClosedForm(method, problem).X, std::nullopt, {}};
+    return {handeye::SolveClosedForm(method, problem).X, std::nullopt, std::nullopt, false, {}, {}};
   }
   estimation::CalibrateOptions options;
   options.method = method;
   options.covariance = covariance;
   options.covariance.threads = 1;  // the trials run in parallel already
   options.reject_outliers = study.reject_outliers;
-  SetRefinementSigmas(setting, &options);
+  options.model_check = wants_covariance;
+  if (!study.estimate_noise) SetRefinementSigmas(setting, &options);
   const estimation::CalibrationResult result = estimation::Calibrate(problem, options);
-  if (result.covariance) return {result.X, result.covariance->X(), result.rejected};
-  return {result.X, std::nullopt, result.rejected};
+  if (!result.covariance) {
+    return {result.X, std::nullopt, std::nullopt, false, result.rejected, result.robot_sigma};
+  }
+  const bool checked = result.model_check && result.model_check->possible;
+  return {result.X,
+          result.covariance->X(),
+          checked ? Matrix6d(result.model_check->model_covariance.topLeftCorner<6, 6>())
+                  : result.covariance->X(),
+          checked && result.model_check->used,
+          result.rejected,
+          result.robot_sigma};
 }
 
 // The first-order bound of the data set at the truth: 0 without noise, NaN when the noise model
@@ -153,12 +181,12 @@ std::string_view TrialStatusName(TrialStatus status) {
 
 estimation::PoseSigma RobotSigma(const Setting& setting) {
   if (setting.noise_on == NoiseOn::kCamera) return {};
-  return ModelSigma(setting);
+  return ModelSigma(setting, true);
 }
 
 estimation::PoseSigma CameraSigma(const Setting& setting) {
   if (setting.noise_on == NoiseOn::kRobot) return {};
-  return ModelSigma(setting);
+  return ModelSigma(setting, false);
 }
 
 void ValidateStudyOptions(const StudyOptions& options) {
@@ -226,8 +254,8 @@ StudyResult RunStudy(const StudyOptions& options) {
     protocol.setup = setting.setup;
     protocol.stations = setting.stations;
     sim::SimulatedData data = sim::SimulateThesisProtocol(
-        protocol, NoiseFor(setting, setting.noise_on != NoiseOn::kCamera),
-        NoiseFor(setting, setting.noise_on != NoiseOn::kRobot), rng);
+        protocol, NoiseFor(setting, true, setting.noise_on != NoiseOn::kCamera),
+        NoiseFor(setting, false, setting.noise_on != NoiseOn::kRobot), rng);
     const sim::SimulatedData clean_data = data;
     const std::vector<int> replaced = sim::InjectGrossOutliers(&data, setting.gross_outliers, rng);
     const handeye::Problem problem = data.MeasuredProblem();
@@ -250,10 +278,14 @@ StudyResult RunStudy(const StudyOptions& options) {
         const RotationTranslation error = PoseError(estimate.X, data.X);
         trial.rotation_error = error.rotation;
         trial.translation_error = error.translation;
+        trial.robot_sigma = estimate.robot_sigma;
         if (estimate.covariance_X) {
           trial.error_X = se3::Log(estimate.X.inverse() * data.X);
           trial.covariance_X = estimate.covariance_X;
           trial.nees = uncertainty::Nees(trial.error_X, *estimate.covariance_X);
+          trial.covariance_X_model = estimate.covariance_X_model;
+          trial.nees_model = uncertainty::Nees(trial.error_X, *estimate.covariance_X_model);
+          trial.check_used = estimate.check_used;
         }
         for (int i : estimate.rejected)
           ++(good[static_cast<size_t>(i)] ? trial.rejected_good : trial.rejected_outliers);
@@ -313,7 +345,7 @@ StudyResult RunStudy(const StudyOptions& options) {
       int clean_trials = 0;
       const Setting& setting = options.settings[s];
       std::vector<Eigen::VectorXd> errors;
-      std::vector<Eigen::MatrixXd> covariances;
+      std::vector<Eigen::MatrixXd> covariances, model_covariances;
       for (int t = 0; t < trials; ++t) {
         TrialResult& trial = result.trials[(static_cast<size_t>(s) * trials + t) * methods + m];
         if (trial.status != TrialStatus::kOk) continue;
@@ -328,6 +360,8 @@ StudyResult RunStudy(const StudyOptions& options) {
         if (trial.covariance_X) {
           errors.emplace_back(trial.error_X);
           covariances.emplace_back(*trial.covariance_X);
+          model_covariances.emplace_back(*trial.covariance_X_model);
+          summary.check_used += trial.check_used ? 1 : 0;
         }
         summary.outliers_injected += setting.gross_outliers;
         summary.outliers_rejected += trial.rejected_outliers;
@@ -354,8 +388,10 @@ StudyResult RunStudy(const StudyOptions& options) {
                            result.setting_bounds[s].rotation > 0.0;
       summary.worst_rotation_over_bound = bounded ? worst_rotation : kNaN;
       summary.worst_translation_over_bound = bounded ? worst_translation : kNaN;
-      if (!errors.empty())
+      if (!errors.empty()) {
         summary.consistency = uncertainty::AssessConsistency(errors, covariances);
+        summary.consistency_model = uncertainty::AssessConsistency(errors, model_covariances);
+      }
       result.summaries.push_back(summary);
     }
   }

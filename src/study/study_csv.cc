@@ -50,7 +50,8 @@ std::string TrialsCsv(const StudyResult& result) {
   out << "setup,stations,noise_on,noise,sigma_mm,sigma_deg,trial,method,status,"
          "rotation_error_deg,translation_error_mm,outlier,bound_rotation_deg,"
          "bound_translation_mm,nees,message,gross_outliers,rejected_outliers,rejected_good,"
-         "rotation_error_clean_deg,translation_error_clean_mm\n";
+         "rotation_error_clean_deg,translation_error_clean_mm,robot_scale,nees_model,check_used,"
+         "robot_sigma_deg,robot_sigma_mm\n";
   for (const TrialResult& trial : result.trials) {
     const Setting& setting = result.options.settings[trial.setting];
     const Bound& bound = result.bounds[trial.setting][trial.trial];
@@ -62,7 +63,10 @@ std::string TrialsCsv(const StudyResult& result) {
         << (trial.message.empty() ? std::string() : Quoted(trial.message)) << ','
         << setting.gross_outliers << ',' << trial.rejected_outliers << ',' << trial.rejected_good
         << ',' << FormatNumber(trial.rotation_error_clean * kDeg) << ','
-        << FormatNumber(trial.translation_error_clean * kMm) << '\n';
+        << FormatNumber(trial.translation_error_clean * kMm) << ','
+        << FormatNumber(setting.robot_scale) << ',' << FormatNumber(trial.nees_model) << ','
+        << (trial.check_used ? 1 : 0) << ',' << FormatNumber(trial.robot_sigma.rotation * kDeg)
+        << ',' << FormatNumber(trial.robot_sigma.translation * kMm) << '\n';
   }
   return out.str();
 }
@@ -77,7 +81,10 @@ std::string SummaryCsv(const StudyResult& result) {
          "worst_translation_over_bound,mean_nees,nees_band_low,nees_band_high,coverage_1sigma,"
          "coverage_2sigma,sd_ratio_rx,sd_ratio_ry,sd_ratio_rz,sd_ratio_tx,sd_ratio_ty,"
          "sd_ratio_tz,gross_outliers,outliers_found,good_rejected,trials_all_found,"
-         "rotation_rmse_clean_deg,translation_rmse_clean_mm\n";
+         "rotation_rmse_clean_deg,translation_rmse_clean_mm,robot_scale,mean_nees_model,"
+         "coverage_1sigma_model,coverage_2sigma_model,sd_ratio_model_rx,sd_ratio_model_ry,"
+         "sd_ratio_model_rz,sd_ratio_model_tx,sd_ratio_model_ty,sd_ratio_model_tz,"
+         "check_used\n";
   for (const MethodSummary& s : result.summaries) {
     const Bound& bound = result.setting_bounds[s.setting];
     out << SettingColumns(result.options.settings[s.setting]) << ',' << handeye::Info(s.method).name
@@ -106,7 +113,18 @@ std::string SummaryCsv(const StudyResult& result) {
         << FormatNumber(fraction(s.good_rejected, s.good_stations)) << ','
         << FormatNumber(fraction(s.trials_all_found, s.trials - s.failures)) << ','
         << FormatNumber(s.rotation_rmse_clean * kDeg) << ','
-        << FormatNumber(s.translation_rmse_clean * kMm);
+        << FormatNumber(s.translation_rmse_clean * kMm) << ','
+        << FormatNumber(result.options.settings[s.setting].robot_scale);
+    if (s.consistency_model) {
+      const uncertainty::Consistency& c = *s.consistency_model;
+      out << ',' << FormatNumber(c.mean_nees) << ',' << FormatNumber(c.coverage_1sigma) << ','
+          << FormatNumber(c.coverage_2sigma);
+      for (Eigen::Index j = 0; j < c.sd_ratio.size(); ++j)
+        out << ',' << FormatNumber(c.sd_ratio(j));
+      out << ',' << FormatNumber(fraction(s.check_used, s.trials - s.failures));
+    } else {
+      out << ",nan,nan,nan,nan,nan,nan,nan,nan,nan,nan";
+    }
     out << '\n';
   }
   return out.str();

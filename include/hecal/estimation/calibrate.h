@@ -14,7 +14,10 @@
 // (noise_estimation.h; equal split between robot and camera — only their combined effect is
 // identifiable from poses) and a warning says so.
 // Covariance: of (X, Z) under that noise model, by options.covariance (default: ml's analytic
-// information, the UT through the solver for every other method; calibration_covariance.h).
+// information, the UT through the solver for every other method; calibration_covariance.h),
+// then checked against a delete-group jackknife over the stations used, which does not trust
+// the noise model, and inflated per axis when the model understates it (model_check.h; with
+// ≤ 6 stations a warning says no check is possible).
 // A solver that throws at a UT sigma point or a linearisation step makes Calibrate throw that
 // error (Monte Carlo instead counts such samples and warns).
 // Outliers: by default gross outliers are rejected first (station_selection.h: consensus over
@@ -32,6 +35,7 @@
 #include <vector>
 
 #include "hecal/estimation/covariance_method.h"
+#include "hecal/estimation/model_check.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/estimation/robust_loss.h"
@@ -55,6 +59,10 @@ struct CalibrateOptions {
   // Reject gross outliers before solving (station_selection.h); false: --keep-outliers.
   bool reject_outliers = true;
   handeye::ConsensusOptions consensus;  // its hypotheses and seed
+  // Check the covariance against a delete-group jackknife over stations and inflate it when the
+  // noise model understates it (model_check.h). false: the model's covariance alone (solver
+  // timing, studies that need the solve only).
+  bool model_check = true;
   // Station names for warnings, one per station of the problem (default: numbers from 1).
   std::vector<std::string> station_ids;
 };
@@ -72,8 +80,12 @@ struct CalibrationResult {
   Pose Z = Pose::Identity();
   // Right-perturbation covariance of (X, Z), (rx, ry, rz, tx, ty, tz) each, radians and
   // metres, under the noise model robot_sigma / camera_sigma (calibration_covariance.h).
-  // Absent only with CovarianceMethod::kNone.
+  // Absent only with CovarianceMethod::kNone. When model_check->used, this is the model's
+  // covariance inflated per axis by the check (model_check.h).
   std::optional<CalibrationCovariance> covariance;
+  // The check of that covariance against a jackknife over stations (absent with
+  // options.model_check false or no covariance).
+  std::optional<ModelCheck> model_check;
   std::vector<StationResidual> residuals;  // one per USED station, in problem order
   double rotation_rms = 0.0;               // radians
   double translation_rms = 0.0;            // metres

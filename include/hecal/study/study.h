@@ -22,6 +22,8 @@
 // covariance; the summary adds their consistency (uncertainty/consistency.h: mean NEES and its
 // 95% χ² band for 6 dof, 1σ/2σ ellipsoid coverage, predicted/empirical sd per axis). Inner
 // solves run on the trial's own thread (the trials are already parallel).
+// With the model check (estimation/model_check.h, on in Calibrate) the reported covariance may be
+// inflated; the model's own covariance is recorded beside it, with its own consistency.
 // Gross outliers (Setting::gross_outliers, sim/gross_outliers.h): after the noise, k stations'
 // robot poses are replaced by random poses (drawn from the same trial stream, so settings that
 // differ only in k share their truth, stations and noise); each method also solves the same data
@@ -65,6 +67,10 @@ struct Setting {
   double rotation_sigma = 0.0;     // radians, per component
   // Stations per data set whose robot pose is replaced by a random pose (sim/gross_outliers.h).
   int gross_outliers = 0;
+  // The robot's noise is robot_scale times the setting's level (the camera's is the level):
+  // 5 makes the robot five times noisier than the camera, a split the estimated model (equal
+  // split) gets wrong.
+  double robot_scale = 1.0;
 };
 
 // Per-component standard deviation of the noise a setting puts on one pose (zero for the
@@ -74,8 +80,12 @@ struct Setting {
 //  - a device without noise gets 1e-3 of the other's sigma (a singular noise model has no
 //    whitening; the limit is the same estimator);
 //  - noise-free data get a nominal 1 mm / 1 mrad (the exact fit minimises any weighting);
-//  - when the level has a zero rotation or a zero translation part (e.g. --sigma 0/1), nothing
-//    is given and Calibrate estimates the noise from the residuals.
+//  - when the level has a zero rotation or a zero translation part (e.g. --sigma 0/1), or with
+//    StudyOptions::estimate_noise, nothing is given and Calibrate estimates the noise from the
+//    residuals.
+// Noise kinds: kPnp is the camera's noise shape (sim/noise.h); with it the robot poses get
+// Gaussian noise of the same level. The sigmas below are the per-component RMS of the kind
+// (for kPnp √((2² + 2² + 0.1²)/3) σ_r and √((0.5² + 0.5² + 5²)/3) σ_t).
 estimation::PoseSigma RobotSigma(const Setting& setting);
 estimation::PoseSigma CameraSigma(const Setting& setting);
 
@@ -91,6 +101,8 @@ struct StudyOptions {
   // Every method through estimation::Calibrate with its outlier rejection (station_selection.h);
   // false: the estimators alone (the thesis study), closed forms straight to their solver.
   bool reject_outliers = false;
+  // Tell no method the noise: Calibrate estimates it from the residuals (hecal's default path).
+  bool estimate_noise = false;
 
   static estimation::CovarianceOptions NoCovariance() {
     estimation::CovarianceOptions options;
@@ -123,6 +135,14 @@ struct TrialResult {
   Vector6d error_X = Vector6d::Constant(std::numeric_limits<double>::quiet_NaN());
   std::optional<Matrix6d> covariance_X;
   double nees = std::numeric_limits<double>::quiet_NaN();
+  // The covariance of X from the noise model alone (before the model check,
+  // estimation/model_check.h), its NEES, and whether the check inflated the reported one.
+  std::optional<Matrix6d> covariance_X_model;
+  double nees_model = std::numeric_limits<double>::quiet_NaN();
+  bool check_used = false;
+  // The robot noise the method's covariance assumed: given, or estimated from the residuals
+  // (StudyOptions::estimate_noise); zero for closed forms solved without Calibrate.
+  estimation::PoseSigma robot_sigma;
   // With gross outliers or reject_outliers: the stations the method rejected, split into the
   // replaced ones and good ones, and (gross outliers only) the errors of the same method on
   // the same data set without the replaced stations.
@@ -159,6 +179,10 @@ struct MethodSummary {
   // With a covariance: the consistency of the predicted covariances of X with the errors, over
   // the trials that succeeded (outliers included: a covariance should cover them too).
   std::optional<uncertainty::Consistency> consistency;
+  // The same for the model-only covariance, and the trials in which the model check inflated
+  // the reported covariance.
+  std::optional<uncertainty::Consistency> consistency_model;
+  int check_used = 0;
   // Outlier rejection over the successful trials: gross outliers injected and rejected, good
   // stations and good stations rejected, trials in which every gross outlier was rejected, and
   // the RMS errors without the replaced stations (NaN without gross outliers).
