@@ -68,9 +68,9 @@ EpipolarPolish PolishEpipolar(const global::EpipolarProblem& problem, const Pose
                               std::optional<double> ray_sigma) {
   const int n = global::PairCount(problem);
   if (n < 7) {
-    throw DegenerateError("the hand–eye transform (6 unknowns) from " + std::to_string(n) +
-                              " bearing pairs",
-                          "give at least 7 point matches");
+    throw DegenerateError(
+        "the hand–eye transform (6 unknowns) from " + std::to_string(n) + " bearing pairs",
+        "give at least 7 point matches");
   }
   Pose X = start;
   // Two rounds: the second re-centres δ at the first round's solution, so the Jacobian the

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <thread>
 #include <vector>
-#include <cstdio>
-#include <cstdlib>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/so3.h"
@@ -58,9 +58,14 @@ class Search {
     while (best_error_ - lower > options_.epsilon && !stuck) {
       const double level = std::isfinite(best_error_) ? 0.5 * (lower + best_error_) : M_PI / 4;
       switch (Decide(level)) {
-        case Answer::kYes: break;  // best_error_ ≤ level + (old upper − level) / 4
-        case Answer::kNo: lower = level; break;
-        case Answer::kUnknown: stuck = true; break;
+        case Answer::kYes:
+          break;  // best_error_ ≤ level + (old upper − level) / 4
+        case Answer::kNo:
+          lower = level;
+          break;
+        case Answer::kUnknown:
+          stuck = true;
+          break;
       }
     }
     GlobalSolution solution;
@@ -116,8 +121,7 @@ class Search {
   // LP's points lie on the boundary of the relaxation, so asking for ≤ level exactly would
   // split cubes forever for candidates a rounding error above it).
   Answer Decide(double level) {
-    const double enough =
-        std::isfinite(best_error_) ? level + 0.25 * (best_error_ - level) : level;
+    const double enough = std::isfinite(best_error_) ? level + 0.25 * (best_error_ - level) : level;
     std::vector<Cube> work, kept;
     for (Cube& cube : leaves_) (cube.infeasible_at >= level ? kept : work).push_back(cube);
     bool found = false, unresolved = false;
@@ -139,7 +143,9 @@ class Search {
         for (int i = chunk; i < count; i += chunks) outcomes[i] = Evaluate(batch[i], level);
         glp_free_env();  // GLPK keeps one environment per thread
       });
-      if (std::getenv("HECAL_DEBUG")) std::fprintf(stderr, "  batch level %.3g cubes %ld half %.3g work %zu kept %zu\n", level, cubes_, batch[0].half_width, work.size(), kept.size());
+      if (std::getenv("HECAL_DEBUG"))
+        std::fprintf(stderr, "  batch level %.3g cubes %ld half %.3g work %zu kept %zu\n", level,
+                     cubes_, batch[0].half_width, work.size(), kept.size());
       for (int i = 0; i < count; ++i) {
         Cube& cube = batch[i];
         const Outcome& outcome = outcomes[i];
@@ -170,7 +176,9 @@ class Search {
         }
       }
     }
-    if (std::getenv("HECAL_DEBUG")) std::fprintf(stderr, "level %.3g cubes %ld best %.3g work %zu kept %zu found %d\n", level, cubes_, best_error_, work.size(), kept.size(), int(found));
+    if (std::getenv("HECAL_DEBUG"))
+      std::fprintf(stderr, "level %.3g cubes %ld best %.3g work %zu kept %zu found %d\n", level,
+                   cubes_, best_error_, work.size(), kept.size(), int(found));
     kept.insert(kept.end(), work.begin(), work.end());
     leaves_ = std::move(kept);
     if (found || best_error_ <= enough) return Answer::kYes;

@@ -61,7 +61,7 @@ TEST(SolveGlobal, IsNeverBeatenByADenseSearchAndItsLowerBoundHolds) {
   spec.pixel_sigma = 0.5;
   const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 8);
   SearchOptions options;
-  options.epsilon = 2e-5;
+  options.epsilon = 1e-4;
   options.translation_bound = 1.0;
   const GlobalSolution solution = SolveGlobal(scene.problem, options);
   const Certificate& c = solution.certificate;

@@ -58,8 +58,8 @@ std::vector<Row> Rows(const EpipolarProblem& problem, const CubeQuery& query) {
     const double eta_A = std::min(2.0, 8.0 * std::sin(beta / 2) * std::sin(delta / 2));
     const double gamma = 2.0 * std::asin(std::min(1.0, eta_A / 2));
     const Eigen::Vector3d t_B = R.transpose() * motion.hand.translation();
-    const double slack = eta_A * query.translation_bound +
-                         2.0 * std::sin(std::min(delta, M_PI) / 2) * t_B.norm();
+    const double slack =
+        eta_A * query.translation_bound + 2.0 * std::sin(std::min(delta, M_PI) / 2) * t_B.norm();
     const Eigen::Matrix3d M = R_A - Eigen::Matrix3d::Identity();
     for (const BearingPair& pair : motion.pairs) {
       const Eigen::Vector3d a = pair.first.normalized();
@@ -72,7 +72,6 @@ std::vector<Row> Rows(const EpipolarProblem& problem, const CubeQuery& query) {
   }
   return rows;
 }
-
 
 // GLPK on the rows `active`: the LP's point s, or nullopt when infeasible (proved by the solver;
 // a failure of the solver returns the hint, which keeps the cube).
@@ -106,8 +105,8 @@ std::optional<Eigen::Vector3d> SolveSubset(const std::vector<Row>& rows,
   if (code == GLP_ENOPFS || status == GLP_NOFEAS) {
     result = std::nullopt;
   } else if (status == GLP_OPT || status == GLP_FEAS) {
-    result = Eigen::Vector3d(glp_get_col_prim(lp, 1), glp_get_col_prim(lp, 2),
-                             glp_get_col_prim(lp, 3));
+    result =
+        Eigen::Vector3d(glp_get_col_prim(lp, 1), glp_get_col_prim(lp, 2), glp_get_col_prim(lp, 3));
   }
   glp_delete_prob(lp);
   return result;
@@ -125,8 +124,8 @@ std::optional<Eigen::Vector3d> TestCube(const EpipolarProblem& problem, const Cu
   constexpr int kRowsPerRound = 24;
   std::vector<char> in(rows.size(), 0);
   std::vector<int> active;
-  Eigen::Vector3d s = (R.transpose() * hint).cwiseMax(-query.translation_bound)
-                          .cwiseMin(query.translation_bound);
+  Eigen::Vector3d s =
+      (R.transpose() * hint).cwiseMax(-query.translation_bound).cwiseMin(query.translation_bound);
   while (true) {
     std::vector<std::pair<double, int>> violated;
     for (std::size_t i = 0; i < rows.size(); ++i) {

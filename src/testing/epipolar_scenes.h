@@ -16,21 +16,21 @@ namespace hecal::testing {
 
 struct EpipolarSceneSpec {
   int motions = 5;
-  int pairs = 50;              // per motion
-  double rotation = 0.6;       // radians: robot rotation between the stations of a motion
-  double step = 0.3;           // metres: robot translation between the stations
-  double depth = 1.0;          // metres: mean scene depth in front of the first camera
-  double focal = 1000.0;       // pixels
-  double pixel_sigma = 0.0;    // pixels, per axis
-  double wrong_fraction = 0.0; // share of pairs whose second ray points at another point
-  bool planar = false;         // scene points on one plane (z = depth in the first camera)
+  int pairs = 50;               // per motion
+  double rotation = 0.6;        // radians: robot rotation between the stations of a motion
+  double step = 0.3;            // metres: robot translation between the stations
+  double depth = 1.0;           // metres: mean scene depth in front of the first camera
+  double focal = 1000.0;        // pixels
+  double pixel_sigma = 0.0;     // pixels, per axis
+  double wrong_fraction = 0.0;  // share of pairs whose second ray points at another point
+  bool planar = false;          // scene points on one plane (z = depth in the first camera)
   handeye::Setup setup = handeye::Setup::kEyeInHand;
 };
 
 struct EpipolarScene {
   global::EpipolarProblem problem;
-  Pose X = Pose::Identity();        // T_hand_camera, the truth
-  std::vector<Pose> T_base_gripper;  // two stations per motion
+  Pose X = Pose::Identity();             // T_hand_camera, the truth
+  std::vector<Pose> T_base_gripper;      // two stations per motion
   std::vector<std::vector<bool>> wrong;  // per motion and pair
 };
 
@@ -48,8 +48,8 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   EpipolarScene scene;
   scene.problem.setup = spec.setup;
-  scene.X = MakePose(RandomRotation(rng), 0.2 * Eigen::Vector3d(uniform(rng), uniform(rng),
-                                                                uniform(rng)));
+  scene.X = MakePose(RandomRotation(rng),
+                     0.2 * Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)));
   const Pose H0 = MakePose(RandomRotation(rng), Eigen::Vector3d(0.5, 0.1, 0.6));
   for (int m = 0; m < spec.motions; ++m) {
     global::EpipolarMotion motion;
@@ -67,7 +67,8 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
       const Pose camera_motion = global::CameraMotion(scene.X, H_first.inverse() * H_second);
       points.clear();
       for (int tries = 0; tries < 50 * spec.pairs && int(points.size()) < spec.pairs; ++tries) {
-        const double z = spec.planar ? spec.depth : spec.depth * (0.6 + 0.8 * std::abs(uniform(rng)));
+        const double z =
+            spec.planar ? spec.depth : spec.depth * (0.6 + 0.8 * std::abs(uniform(rng)));
         const Eigen::Vector3d p(0.5 * z * uniform(rng), 0.4 * z * uniform(rng), z);
         const Eigen::Vector3d q = camera_motion.inverse() * p;  // second camera frame
         if (q.z() > 0.2 && std::abs(q.x() / q.z()) < 0.6 && std::abs(q.y() / q.z()) < 0.5) {
@@ -84,7 +85,8 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
       Eigen::Vector3d q = camera_motion.inverse() * p;
       if (std::uniform_real_distribution<double>(0, 1)(rng) < spec.wrong_fraction) {
         wrong[j] = true;
-        const Eigen::Vector3d& other = points[(j + 1 + rng() % (points.size() - 1)) % points.size()];
+        const Eigen::Vector3d& other =
+            points[(j + 1 + rng() % (points.size() - 1)) % points.size()];
         q = camera_motion.inverse() * other;
       }
       motion.pairs.push_back({NoisyBearing(p, spec.focal, spec.pixel_sigma, rng),
@@ -92,8 +94,7 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
     }
     // The robot poses as the robot file would give them.
     const Pose G_first = spec.setup == handeye::Setup::kEyeInHand ? H_first : H_first.inverse();
-    const Pose G_second =
-        spec.setup == handeye::Setup::kEyeInHand ? H_second : H_second.inverse();
+    const Pose G_second = spec.setup == handeye::Setup::kEyeInHand ? H_second : H_second.inverse();
     scene.T_base_gripper.push_back(G_first);
     scene.T_base_gripper.push_back(G_second);
     scene.wrong.push_back(wrong);

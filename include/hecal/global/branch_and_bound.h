@@ -7,8 +7,8 @@
 //
 // Search space: rotation vectors r in the ball |r| ≤ π (every rotation), covered by cubes, and
 // translations |t| ≤ T (options.translation_bound, metres). Bisection on ε: for the level ε
-// between the bounds [lower, upper], cubes are tested best first (cube_feasibility.h; lowest error at
-// the parent's candidate first), in batches spread over the threads; an infeasible cube is
+// between the bounds [lower, upper], cubes are tested best first (cube_feasibility.h; lowest error
+// at the parent's candidate first), in batches spread over the threads; an infeasible cube is
 // pruned (and stays pruned for every smaller ε), a feasible one gives a candidate X (its centre
 // rotation and the LP's translation) whose max E is evaluated, and is split into 8. A candidate
 // with max E ≤ ε sets upper = its error; all cubes pruned sets lower = ε. It stops when
