@@ -55,7 +55,7 @@ class Search {
     const auto begin = std::chrono::steady_clock::now();
     double lower = 0.0;
     bool stuck = false;
-    while (best_error_ - lower > options_.epsilon && !stuck) {
+    while (best_error_ - lower > options_.epsilon && best_error_ > options_.stop_below && !stuck) {
       const double level = std::isfinite(best_error_) ? 0.5 * (lower + best_error_) : M_PI / 4;
       switch (Decide(level)) {
         case Answer::kYes:

@@ -81,12 +81,16 @@ RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const Sea
                                        const OutlierOptions& options) {
   RobustGlobalSolution result;
   result.inliers = PrefilterPairs(problem, options, &result.removed);
+  // The rounds only need to tell whether the optimum exceeds the threshold: they stop at an X
+  // within it, or close the gap to a quarter of it; the last solve closes the requested gap.
   SearchOptions round_options = search;
+  round_options.epsilon = std::max(search.epsilon, 0.25 * options.threshold);
+  round_options.stop_below = options.threshold;
   while (true) {
     result.solution = SolveGlobal(result.inliers, round_options);
     ++result.rounds;
     const double optimum = result.solution.certificate.upper;
-    if (result.solution.certificate.lower <= options.threshold ||
+    if (optimum <= options.threshold || result.solution.certificate.lower <= options.threshold ||
         result.rounds >= options.max_rounds) {
       break;
     }
@@ -106,6 +110,12 @@ RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const Sea
       pairs = std::move(kept);
     }
     round_options.start = result.solution.X;
+  }
+  if (result.solution.certificate.upper - result.solution.certificate.lower > search.epsilon) {
+    SearchOptions final_options = search;
+    final_options.start = result.solution.X;
+    result.solution = SolveGlobal(result.inliers, final_options);
+    ++result.rounds;
   }
   return result;
 }

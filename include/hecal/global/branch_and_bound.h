@@ -32,6 +32,9 @@ struct SearchOptions {
   long max_cubes = 20'000'000;     // budget of cube tests
   int threads = 0;                 // 0: every core
   std::optional<Pose> start;       // an incumbent X (e.g. from a local solve), if any
+  // Stop as soon as an X with max E ≤ stop_below is found (a decision, not an optimum: used by
+  // the outlier removal to ask "is everything consistent within the threshold?").
+  double stop_below = -1.0;
 };
 
 struct Certificate {

@@ -8,7 +8,9 @@
 //  2. L∞ outlier removal (Sim & Hartley, "Removing outliers using the L∞ norm", CVPR 2006, as
 //     used by Heller et al., TPAMI 2016 §5): solve globally; while the certified optimum exceeds
 //     the threshold, remove the support set — the pairs whose error equals the optimum (one of
-//     them at least is an outlier) — and solve again, warm-started at the previous X.
+//     them at least is an outlier) — and solve again, warm-started at the previous X. A round
+//     stops at the first X within the threshold (then every pair left is consistent with it) or
+//     when the gap is a quarter of the threshold; a last solve closes the requested gap.
 // Pairs are named by (motion index, BearingPair::id). Deterministic for a given seed.
 #pragma once
 
