@@ -329,7 +329,8 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
 }
 
 void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
-  if (flags.method == "global" || !flags.correspondences.empty()) return RunCalibrateGlobal(flags, io);
+  if (flags.method == "global" || !flags.correspondences.empty())
+    return RunCalibrateGlobal(flags, io);
   const CalibrateSettings settings = ParseCalibrateFlags(flags);
   if (flags.images.empty()) {
     RunCalibratePoses(flags, settings, io);
@@ -368,11 +369,13 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "Method name, or all (default ml), or global (target-free, certified)");
   command->add_option("--correspondences", flags->correspondences,
                       "With --method global: point matches between station images (CSV)");
-  command->add_option("--epsilon", flags->epsilon,
-                      "With --method global: requested certificate gap, radians")
+  command
+      ->add_option("--epsilon", flags->epsilon,
+                   "With --method global: requested certificate gap, radians")
       ->capture_default_str();
-  command->add_option("--reach", flags->reach,
-                      "With --method global: search X's translation up to this length, metres")
+  command
+      ->add_option("--reach", flags->reach,
+                   "With --method global: search X's translation up to this length, metres")
       ->capture_default_str();
   command->add_option("--robot-sigma", flags->robot_sigma,
                       "Robot pose noise per axis, MM,DEG (estimated when absent)");

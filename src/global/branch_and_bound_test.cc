@@ -1,12 +1,9 @@
-// The branch-and-bound on noise-free scenes (exact recovery, a certificate closed to ε, both
-// setups) and its global optimality against a dense search over rotations on a small noisy
-// problem.
+// The branch-and-bound on noise-free scenes: exact recovery and a certificate closed to ε, in
+// both setups. (Global optimality against a dense search: branch_and_bound_slow_test.cc.)
 #include "hecal/global/branch_and_bound.h"
 
 #include <gtest/gtest.h>
 
-#include "hecal/geometry/so3.h"
-#include "hecal/global/cube_feasibility.h"
 #include "testing/epipolar_scenes.h"
 
 namespace hecal::global {
@@ -35,58 +32,6 @@ TEST(SolveGlobal, RecoversXFromNoiseFreeScenesWithAClosedCertificate) {
     EXPECT_LT(testing::RotationError(solution.X, scene.X), 2e-5);
     EXPECT_LT((solution.X.translation() - scene.X.translation()).norm(), 2e-5);
   }
-}
-
-// min over t of max E at the rotation R, from above: bisection on the level of the LP at R
-// alone, each feasible point evaluated exactly.
-double DenseValue(const EpipolarProblem& problem, const Eigen::Vector3d& r, double bound) {
-  double low = 0.0, high = 0.3, best = M_PI / 2;
-  for (int step = 0; step < 14; ++step) {
-    const double level = 0.5 * (low + high);
-    const auto t = TestCube(problem, {r, 0.0, level, bound});
-    if (!t) {
-      low = level;
-      continue;
-    }
-    best = std::min(best, MaxRayError(problem, MakePose(so3::Exp(r), *t)));
-    high = level;
-  }
-  return best;
-}
-
-TEST(SolveGlobal, IsNeverBeatenByADenseSearchAndItsLowerBoundHolds) {
-  testing::EpipolarSceneSpec spec;
-  spec.motions = 3;
-  spec.pairs = 20;
-  spec.pixel_sigma = 2.0;
-  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 8);
-  SearchOptions options;
-  options.epsilon = 1e-3;
-  options.translation_bound = 1.0;
-  const GlobalSolution solution = SolveGlobal(scene.problem, options);
-  const Certificate& c = solution.certificate;
-  ASSERT_TRUE(c.certified);
-  EXPECT_GT(c.lower, 0.0);  // noisy pairs cannot all be met
-  // Dense samples: a coarse grid over the whole rotation ball and a fine one round the truth.
-  double dense_min = M_PI / 2;
-  const Eigen::Vector3d truth = so3::Log(scene.X.linear());
-  auto sample = [&](const Eigen::Vector3d& r) {
-    if (r.norm() > M_PI) return;
-    const double value = DenseValue(scene.problem, r, options.translation_bound);
-    EXPECT_GE(value, c.lower) << r.transpose();  // nothing below the certified lower bound
-    dense_min = std::min(dense_min, value);
-  };
-  for (double x = -3.0; x <= 3.0; x += 0.75) {
-    for (double y = -3.0; y <= 3.0; y += 0.75) {
-      for (double z = -3.0; z <= 3.0; z += 0.75) sample(Eigen::Vector3d(x, y, z));
-    }
-  }
-  for (int i = -3; i <= 3; ++i) {
-    for (int j = -3; j <= 3; ++j) {
-      for (int k = -3; k <= 3; ++k) sample(truth + 1e-3 * Eigen::Vector3d(i, j, k));
-    }
-  }
-  EXPECT_LE(c.upper, dense_min + options.epsilon);  // the optimum is never above the dense one
 }
 
 }  // namespace
