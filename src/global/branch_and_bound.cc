@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -143,9 +141,6 @@ class Search {
         for (int i = chunk; i < count; i += chunks) outcomes[i] = Evaluate(batch[i], level);
         glp_free_env();  // GLPK keeps one environment per thread
       });
-      if (std::getenv("HECAL_DEBUG"))
-        std::fprintf(stderr, "  batch level %.3g cubes %ld half %.3g work %zu kept %zu\n", level,
-                     cubes_, batch[0].half_width, work.size(), kept.size());
       for (int i = 0; i < count; ++i) {
         Cube& cube = batch[i];
         const Outcome& outcome = outcomes[i];
@@ -176,9 +171,6 @@ class Search {
         }
       }
     }
-    if (std::getenv("HECAL_DEBUG"))
-      std::fprintf(stderr, "level %.3g cubes %ld best %.3g work %zu kept %zu found %d\n", level,
-                   cubes_, best_error_, work.size(), kept.size(), int(found));
     kept.insert(kept.end(), work.begin(), work.end());
     leaves_ = std::move(kept);
     if (found || best_error_ <= enough) return Answer::kYes;

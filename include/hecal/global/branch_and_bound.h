@@ -10,8 +10,10 @@
 // between the bounds [lower, upper], cubes are tested best first (cube_feasibility.h; lowest error
 // at the parent's candidate first), in batches spread over the threads; an infeasible cube is
 // pruned (and stays pruned for every smaller ε), a feasible one gives a candidate X (its centre
-// rotation and the LP's translation) whose max E is evaluated, and is split into 8. A candidate
-// with max E ≤ ε sets upper = its error; all cubes pruned sets lower = ε. It stops when
+// rotation and the LP's translation) whose max E is evaluated, and is split into 8. Every
+// candidate lowers `upper` when better; one within a quarter of the way from ε to the old upper
+// bound ends the level (LP points lie on the relaxation's boundary, so demanding ≤ ε exactly
+// would split cubes forever); all cubes pruned sets lower = ε. It stops when
 // upper − lower ≤ options.epsilon (the certificate), or when a budget runs out (cubes, or cube
 // size below options.min_half_width): then `certified` is false and the bounds are what was
 // proved. Results do not depend on the thread count.
