@@ -123,7 +123,7 @@ class Search {
     std::vector<Cube> work, kept;
     for (Cube& cube : leaves_) (cube.infeasible_at >= level ? kept : work).push_back(cube);
     bool found = false, unresolved = false;
-    const int batch_size = 64 * threads_;
+    constexpr int batch_size = 128;  // independent of the threads: the same search on any count
     while (!work.empty() && !found) {
       if (cubes_ >= options_.max_cubes) {
         unresolved = true;
