@@ -365,11 +365,19 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
 }
 
 void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
+  const auto check_outputs = [&] {
+    io::CheckOutputs({{"--output", flags.output}}, {{"--robot", flags.robot},
+                                                    {"--camera", flags.camera},
+                                                    {"--target", flags.target},
+                                                    {"--intrinsics", flags.intrinsics},
+                                                    {"--correspondences", flags.correspondences}});
+  };
+  if (flags.method == "global" || !flags.correspondences.empty()) {
+    check_outputs();
+    return RunCalibrateGlobal(flags, io);
+  }
   const CalibrateSettings settings = ParseCalibrateFlags(flags);
-  io::CheckOutputs({{"--output", flags.output}}, {{"--robot", flags.robot},
-                                                  {"--camera", flags.camera},
-                                                  {"--target", flags.target},
-                                                  {"--intrinsics", flags.intrinsics}});
+  check_outputs();
   if (flags.images.empty()) {
     RunCalibratePoses(flags, settings, io);
   } else {
@@ -404,7 +412,18 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                    "eye-in-hand (camera on the robot) | eye-to-hand (camera fixed) | auto (the "
                    "setup the data fit, with the evidence)")
       ->required();
-  command->add_option("--method", flags->method, "Method name, or all (default ml)");
+  command->add_option("--method", flags->method,
+                      "Method name, or all (default ml), or global (target-free, certified)");
+  command->add_option("--correspondences", flags->correspondences,
+                      "With --method global: point matches between station images (CSV)");
+  command
+      ->add_option("--epsilon", flags->epsilon,
+                   "With --method global: requested certificate gap, radians")
+      ->capture_default_str();
+  command
+      ->add_option("--reach", flags->reach,
+                   "With --method global: search X's translation up to this length, metres")
+      ->capture_default_str();
   command->add_option("--robot-sigma", flags->robot_sigma,
                       "Robot pose noise per axis, MM,DEG (estimated when absent)");
   command->add_option("--camera-sigma", flags->camera_sigma,

@@ -13,6 +13,7 @@
 // method(s) on the stations kept; adds the plausibility warnings (estimation/plausibility.h) and
 // the readers' notes; prints a readable summary and writes the result file (DESIGN.md §5).
 // From images (calibrate_images.cc): see RunCalibrateImages below.
+// Target-free, globally optimal (calibrate_global.cc): see RunCalibrateGlobal below.
 #pragma once
 
 #include <optional>
@@ -51,6 +52,9 @@ struct CalibrateFlags {
   std::string covariance;                   // --covariance (empty: the method's default)
   std::string covariance_samples = "5000";  // --covariance-samples (montecarlo)
   std::string seed = "1";                   // --seed (montecarlo, and the outlier consensus)
+  std::string correspondences;              // --correspondences FILE (--method global)
+  double epsilon = 2e-4;  // --epsilon RAD: the certificate's requested gap (global)
+  double reach = 2.0;     // --reach M: |t| of X is searched up to this (global)
 };
 
 // The flags every form shares, checked.
@@ -97,5 +101,20 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 // (estimation/image_monte_carlo.h).
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
+
+// `hecal calibrate --method global --correspondences FILE --intrinsics camera.yaml --robot
+// robot.csv --setup eye-in-hand|eye-to-hand [--pixel-sigma PX] [--epsilon RAD] [--reach M]`
+// (docs/global.md): reads the robot poses and the point matches (io/correspondence_file.h;
+// pixels are undistorted through the intrinsics, bearings are taken as they are), removes
+// wrong matches (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel
+// sigma 0.5 px unless given), certifies the L∞ optimum (global/branch_and_bound.h), polishes
+// it in L2 with a covariance (estimation/epipolar_polish.h), prints a summary and writes the
+// result file (JSON): X, `certificate` {lower, upper, cubes, lps, seconds, certified, epsilon},
+// the inliers, the removed matches with their ids, `covariance` of X (ω, v right perturbation).
+// Errors (InputError, exit 2, nothing written): a missing or unreadable file, a station the
+// robot file does not have, pixels without --intrinsics, a pixel that cannot be undistorted,
+// --setup auto, --camera or --images (not used by this form), a non-positive --epsilon or
+// --reach, too few matches.
+void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io);
 
 }  // namespace hecal::cli

@@ -1,0 +1,130 @@
+// `hecal calibrate --method global` end to end on a synthetic target-free scene written as a
+// robot file and a correspondence file (bearings, and pixels with intrinsics), and its refusals
+// (exit 2, one line, no result file).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_test_util.h"
+#include "testing/epipolar_scenes.h"
+
+namespace hecal::cli {
+namespace {
+
+using cli_test::CliTest;
+using cli_test::Hecal;
+
+class CalibrateGlobal : public CliTest {
+ protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    testing::EpipolarSceneSpec spec;
+    spec.motions = 4;
+    spec.pairs = 20;
+    scene_ = testing::MakeEpipolarScene(spec, 12);
+    std::ostringstream robot;
+    robot.precision(17);
+    robot << "id,x,y,z,qw,qx,qy,qz\n";
+    for (std::size_t i = 0; i < scene_.T_base_gripper.size(); ++i) {
+      const Pose& T = scene_.T_base_gripper[i];
+      const Eigen::Quaterniond q(T.linear());
+      robot << "s" << i << "," << T.translation().x() << "," << T.translation().y() << ","
+            << T.translation().z() << "," << q.w() << "," << q.x() << "," << q.y() << "," << q.z()
+            << "\n";
+    }
+    Write("robot.csv", robot.str());
+    std::ostringstream bearings, pixels;
+    bearings.precision(17);
+    pixels.precision(17);
+    bearings << "first,second,id,x1,y1,z1,x2,y2,z2\n";
+    pixels << "# pixels of a 1000 px pinhole camera centred at (320, 240)\n"
+           << "first,second,id,u1,v1,u2,v2\n";
+    for (const global::EpipolarMotion& motion : scene_.problem.motions) {
+      for (const global::BearingPair& pair : motion.pairs) {
+        const Eigen::Vector3d& v = pair.first;
+        const Eigen::Vector3d& u = pair.second;
+        bearings << "s" << motion.first_station << ",s" << motion.second_station << "," << pair.id
+                 << "," << v.x() << "," << v.y() << "," << v.z() << "," << u.x() << "," << u.y()
+                 << "," << u.z() << "\n";
+        pixels << "s" << motion.first_station << ",s" << motion.second_station << "," << pair.id
+               << "," << 320 + 1000 * v.x() / v.z() << "," << 240 + 1000 * v.y() / v.z() << ","
+               << 320 + 1000 * u.x() / u.z() << "," << 240 + 1000 * u.y() / u.z() << "\n";
+      }
+    }
+    Write("bearings.csv", bearings.str());
+    Write("pixels.csv", pixels.str());
+    Write("camera.yaml",
+          "fx: 1000\nfy: 1000\ncx: 320\ncy: 240\nwidth: 640\nheight: 480\n"
+          "distortion: {model: plumb_bob, coefficients: [0, 0, 0, 0, 0]}\n");
+  }
+
+  void ExpectSolved(const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {
+        "calibrate", "--method",    "global",        "--robot", Path("robot.csv"),
+        "--setup",   "eye-in-hand", "--epsilon",     "1e-5",    "--reach",
+        "1",         "--output",    Path("out.json")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto result = Hecal(args);
+    ASSERT_EQ(result.code, 0) << result.err;
+    const nlohmann::json doc = nlohmann::json::parse(Read("out.json"));
+    for (const char* key : {"lower", "upper", "cubes", "lps", "seconds"}) {
+      EXPECT_TRUE(doc["certificate"].contains(key)) << key;
+    }
+    EXPECT_LE(doc["certificate"]["upper"].get<double>() - doc["certificate"]["lower"].get<double>(),
+              1e-5);
+    EXPECT_EQ(doc["certificate"]["epsilon"].get<double>(), 1e-5);
+    EXPECT_EQ(doc["matches"]["inliers"].get<int>(), 80);
+    EXPECT_TRUE(doc["matches"]["removed"].empty());
+    Eigen::Matrix3d R;
+    Eigen::Vector3d t;
+    for (int r = 0; r < 3; ++r) {
+      t[r] = doc["X"]["translation_m"][r].get<double>();
+      for (int c = 0; c < 3; ++c) R(r, c) = doc["X"]["rotation"][r][c].get<double>();
+    }
+    EXPECT_LT(Eigen::AngleAxisd(R.transpose() * scene_.X.linear()).angle(), 1e-6);
+    EXPECT_LT((t - scene_.X.translation()).norm(), 1e-6);
+    EXPECT_EQ(doc["covariance"]["X"].size(), 6u);
+  }
+
+  testing::EpipolarScene scene_;
+};
+
+TEST_F(CalibrateGlobal, RecoversXFromBearingsAndFromPixelsWithACertificate) {
+  ExpectSolved({"--correspondences", Path("bearings.csv")});
+  ExpectSolved({"--correspondences", Path("pixels.csv"), "--intrinsics", Path("camera.yaml")});
+}
+
+void ExpectRefusal(const cli_test::Outcome& result, const std::string& words) {
+  EXPECT_EQ(result.code, 2) << result.out;
+  EXPECT_NE(result.err.find(words), std::string::npos) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+}
+
+TEST_F(CalibrateGlobal, RefusesBadInputWithOneLineAndNoFile) {
+  auto run = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"calibrate",       "--method", "global",        "--robot",
+                                     Path("robot.csv"), "--output", Path("out.json")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return Hecal(args);
+  };
+  ExpectRefusal(run({"--setup", "eye-in-hand"}), "needs point matches");
+  ExpectRefusal(run({"--setup", "auto", "--correspondences", Path("bearings.csv")}),
+                "needs the setup");
+  ExpectRefusal(run({"--setup", "eye-in-hand", "--correspondences", Path("pixels.csv")}),
+                "gives pixels");
+  Write("unknown.csv", "first,second,x1,y1,z1,x2,y2,z2\ns0,s99,0,0,1,0,0,1\n");
+  ExpectRefusal(run({"--setup", "eye-in-hand", "--correspondences", Path("unknown.csv")}),
+                "unknown.csv:2: station 's99' is not in");
+  Write("bad.csv", "first,second,x1,y1,z1,x2,y2,z2\ns0,s1,0,0,1,0,0\n");
+  ExpectRefusal(run({"--setup", "eye-in-hand", "--correspondences", Path("bad.csv")}),
+                "bad.csv:2:");
+  ExpectRefusal(
+      run({"--setup", "eye-in-hand", "--correspondences", Path("bearings.csv"), "--epsilon", "0"}),
+      "--epsilon");
+  EXPECT_FALSE(std::filesystem::exists(Path("out.json")));
+}
+
+}  // namespace
+}  // namespace hecal::cli

@@ -1,0 +1,59 @@
+// Globally optimal target-free hand–eye calibration: the X = T_hand_camera that minimises the
+// largest cheiral ray error max E over all bearing pairs (epipolar_problem.h), with a
+// certificate. Heller, Havlena, Pajdla, "A branch-and-bound algorithm for globally optimal
+// hand-eye calibration", CVPR 2012, and "Globally optimal hand-eye calibration using
+// branch-and-bound", TPAMI 38(5), 2016 (Algorithm 1); the rotation-space search of Hartley &
+// Kahl, "Global optimization through rotation space search", IJCV 2009.
+//
+// Search space: rotation vectors r in the ball |r| ≤ π (every rotation), covered by cubes, and
+// translations |t| ≤ T (options.translation_bound, metres). Bisection on ε: for the level ε
+// between the bounds [lower, upper], cubes are tested best first (cube_feasibility.h; lowest error
+// at the parent's candidate first), in batches spread over the threads; an infeasible cube is
+// pruned (and stays pruned for every smaller ε), a feasible one gives a candidate X (its centre
+// rotation and the LP's translation) whose max E is evaluated, and is split into 8. Every
+// candidate lowers `upper` when better; one within a quarter of the way from ε to the old upper
+// bound ends the level (LP points lie on the relaxation's boundary, so demanding ≤ ε exactly
+// would split cubes forever); all cubes pruned sets lower = ε. It stops when
+// upper − lower ≤ options.epsilon (the certificate), or when a budget runs out (cubes, or cube
+// size below options.min_half_width): then `certified` is false and the bounds are what was
+// proved. Results do not depend on the thread count.
+//
+// The certificate: no X with |t| ≤ T has max E below `lower`; `X` has max E = `upper`.
+#pragma once
+
+#include <optional>
+
+#include "hecal/global/epipolar_problem.h"
+
+namespace hecal::global {
+
+struct SearchOptions {
+  double epsilon = 1e-4;           // requested gap upper − lower (radians)
+  double translation_bound = 2.0;  // T (metres): the camera lies within T of the hand origin
+  double min_half_width = 1e-9;    // smallest cube (radians)
+  long max_cubes = 20'000'000;     // budget of cube tests
+  int threads = 0;                 // 0: every core
+  std::optional<Pose> start;       // an incumbent X (e.g. from a local solve), if any
+  // Stop as soon as an X with max E ≤ stop_below is found (a decision, not an optimum: used by
+  // the outlier removal to ask "is everything consistent within the threshold?").
+  double stop_below = -1.0;
+};
+
+struct Certificate {
+  double lower = 0.0;  // radians: no X reaches a smaller max E
+  double upper = 0.0;  // radians: max E of the returned X
+  long cubes = 0;      // cubes tested
+  long lps = 0;        // linear programmes solved
+  double seconds = 0.0;
+  bool certified = false;  // upper − lower ≤ the requested epsilon
+};
+
+struct GlobalSolution {
+  Pose X = Pose::Identity();  // T_hand_camera
+  Certificate certificate;
+};
+
+// Precondition: at least one pair. Throws hecal::DegenerateError when no motion has a pair.
+GlobalSolution SolveGlobal(const EpipolarProblem& problem, const SearchOptions& options);
+
+}  // namespace hecal::global

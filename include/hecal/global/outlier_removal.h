@@ -1,0 +1,53 @@
+// Removing wrong matches before and inside the global search (docs/global.md). The L∞ optimum
+// is ruined by a single wrong match, so:
+//  1. Per motion, a robust epipolar pre-filter: RANSAC over the essential matrix E = [t_A]× R_A
+//     (linear eight-point estimate on bearings, vᵀ E u = 0; Hartley & Zisserman, "Multiple View
+//     Geometry", 2nd ed., §11.2), scoring a pair by its angular Sampson error
+//     |vᵀ E u| / sqrt(|P_v E u|² + |P_u Eᵀ v|²), P_x = I − x xᵀ (radians of ray);
+//     pairs above options.threshold for the best model are removed. It uses no robot data.
+//  2. L∞ outlier removal (Sim & Hartley, "Removing outliers using the L∞ norm", CVPR 2006, as
+//     used by Heller et al., TPAMI 2016 §5): solve globally; while the certified optimum exceeds
+//     the threshold, remove the support set — the pairs whose error equals the optimum (one of
+//     them at least is an outlier) — and solve again, warm-started at the previous X. A round
+//     stops at the first X within the threshold (then every pair left is consistent with it) or
+//     when the gap is a quarter of the threshold; a last solve closes the requested gap.
+// Pairs are named by (motion index, BearingPair::id). Deterministic for a given seed.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "hecal/global/branch_and_bound.h"
+#include "hecal/global/epipolar_problem.h"
+
+namespace hecal::global {
+
+struct OutlierOptions {
+  double threshold = 3e-3;  // radians of ray: the largest error an inlier may have
+  int ransac_iterations = 500;
+  int max_rounds = 20;  // L∞ removal rounds
+  std::uint64_t seed = 1;
+};
+
+struct RemovedPair {
+  int motion = 0;
+  int id = 0;
+  bool by_prefilter = true;  // else by the L∞ support-set removal
+};
+
+struct RobustGlobalSolution {
+  GlobalSolution solution;  // on the inliers (the certificate of the last solve)
+  EpipolarProblem inliers;  // the problem without the removed pairs
+  std::vector<RemovedPair> removed;
+  int rounds = 0;  // global solves
+};
+
+// The problem without the pairs the pre-filter rejects (step 1); appends them to `removed`.
+EpipolarProblem PrefilterPairs(const EpipolarProblem& problem, const OutlierOptions& options,
+                               std::vector<RemovedPair>* removed);
+
+// Steps 1 and 2.
+RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const SearchOptions& search,
+                                       const OutlierOptions& options);
+
+}  // namespace hecal::global

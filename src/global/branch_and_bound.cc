@@ -1,0 +1,200 @@
+#include "hecal/global/branch_and_bound.h"
+
+#include <glpk.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <thread>
+#include <vector>
+
+#include "hecal/core/error.h"
+#include "hecal/geometry/so3.h"
+#include "hecal/global/cube_feasibility.h"
+#include "hecal/uncertainty/parallel_for.h"
+
+namespace hecal::global {
+namespace {
+
+struct Cube {
+  Eigen::Vector3d centre;
+  double half_width = 0.0;
+  double infeasible_at = -1.0;  // the largest ε at which the cube was proved infeasible
+  double score = 0.0;           // max E at the parent's candidate (best-first order)
+  Eigen::Vector3d hint = Eigen::Vector3d::Zero();  // the parent's candidate translation
+};
+
+// Whether the cube meets the ball |r| ≤ π.
+bool MeetsBall(const Cube& cube) {
+  const Eigen::Vector3d nearest =
+      cube.centre.cwiseAbs() - Eigen::Vector3d::Constant(cube.half_width);
+  return nearest.cwiseMax(0.0).norm() <= M_PI;
+}
+
+struct Outcome {
+  bool feasible = false;
+  double error = std::numeric_limits<double>::infinity();
+  Pose X = Pose::Identity();
+  int lps = 0;
+};
+
+class Search {
+ public:
+  Search(const EpipolarProblem& problem, const SearchOptions& options)
+      : problem_(problem), options_(options) {
+    threads_ = options.threads > 0 ? options.threads
+                                   : std::max(1, int(std::thread::hardware_concurrency()));
+    leaves_.push_back({Eigen::Vector3d::Zero(), M_PI, -1.0, 0.0, Eigen::Vector3d::Zero()});
+    if (options.start) Offer(*options.start, MaxRayError(problem, *options.start));
+  }
+
+  GlobalSolution Run() {
+    const auto begin = std::chrono::steady_clock::now();
+    double lower = 0.0;
+    bool stuck = false;
+    while (best_error_ - lower > options_.epsilon && best_error_ > options_.stop_below && !stuck) {
+      const double level = std::isfinite(best_error_) ? 0.5 * (lower + best_error_) : M_PI / 4;
+      switch (Decide(level)) {
+        case Answer::kYes:
+          break;  // best_error_ ≤ level + (old upper − level) / 4
+        case Answer::kNo:
+          lower = level;
+          break;
+        case Answer::kUnknown:
+          stuck = true;
+          break;
+      }
+    }
+    GlobalSolution solution;
+    solution.X = best_;
+    solution.certificate.lower = std::min(lower, best_error_);
+    solution.certificate.upper = best_error_;
+    solution.certificate.cubes = cubes_;
+    solution.certificate.lps = lps_;
+    solution.certificate.certified = best_error_ - lower <= options_.epsilon;
+    solution.certificate.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    return solution;
+  }
+
+ private:
+  enum class Answer { kYes, kNo, kUnknown };
+
+  void Offer(const Pose& X, double error) {
+    if (error < best_error_) {
+      best_error_ = error;
+      best_ = X;
+    }
+  }
+
+  Outcome Evaluate(const Cube& cube, double level) const {
+    Outcome outcome;
+    CubeQuery query{cube.centre, cube.half_width, level, options_.translation_bound};
+    const auto t = TestCube(problem_, query, cube.hint, &outcome.lps);
+    if (!t) return outcome;
+    outcome.feasible = true;
+    const Eigen::Matrix3d R = so3::Exp(cube.centre);
+    outcome.X = MakePose(R, *t);
+    outcome.error = MaxRayError(problem_, outcome.X);
+    if (outcome.error > level && cube.half_width > 0.0) {
+      // The pyramid is looser than the cone near the caps: the centre rotation alone at a
+      // tighter level often gives a candidate that the wider test did not.
+      query.half_width = 0.0;
+      query.epsilon = 0.9 * level;
+      if (const auto t_centre = TestCube(problem_, query, *t, &outcome.lps)) {
+        const Pose X = MakePose(R, *t_centre);
+        const double error = MaxRayError(problem_, X);
+        if (error < outcome.error) {
+          outcome.error = error;
+          outcome.X = X;
+        }
+      }
+    }
+    return outcome;
+  }
+
+  // Is there an X with max E ≤ level? No (proved), unknown (budget), or yes: found an X whose
+  // error is at most `enough` (a quarter of the way from the level to the old upper bound; the
+  // LP's points lie on the boundary of the relaxation, so asking for ≤ level exactly would
+  // split cubes forever for candidates a rounding error above it).
+  Answer Decide(double level) {
+    const double enough = std::isfinite(best_error_) ? level + 0.25 * (best_error_ - level) : level;
+    std::vector<Cube> work, kept;
+    for (Cube& cube : leaves_) (cube.infeasible_at >= level ? kept : work).push_back(cube);
+    bool found = false, unresolved = false;
+    constexpr int batch_size = 128;  // independent of the threads: the same search on any count
+    while (!work.empty() && !found) {
+      if (cubes_ >= options_.max_cubes) {
+        unresolved = true;
+        break;
+      }
+      // Best first: the lowest scores go into this batch.
+      const int count = std::min<int>(batch_size, int(work.size()));
+      std::nth_element(work.begin(), work.end() - count, work.end(),
+                       [](const Cube& a, const Cube& b) { return a.score > b.score; });
+      std::vector<Cube> batch(work.end() - count, work.end());
+      work.resize(work.size() - count);
+      std::vector<Outcome> outcomes(batch.size());
+      const int chunks = std::min<int>(count, 4 * threads_);
+      uncertainty::ParallelFor(chunks, threads_, [&](int chunk) {
+        for (int i = chunk; i < count; i += chunks) outcomes[i] = Evaluate(batch[i], level);
+        glp_free_env();  // GLPK keeps one environment per thread
+      });
+      for (int i = 0; i < count; ++i) {
+        Cube& cube = batch[i];
+        const Outcome& outcome = outcomes[i];
+        ++cubes_;
+        lps_ += outcome.lps;
+        if (!outcome.feasible) {
+          cube.infeasible_at = level;
+          kept.push_back(cube);
+          continue;
+        }
+        Offer(outcome.X, outcome.error);
+        if (outcome.error <= enough) found = true;
+        if (cube.half_width / 2 < options_.min_half_width) {
+          unresolved = true;
+          kept.push_back(cube);
+          continue;
+        }
+        const double half = cube.half_width / 2;
+        for (int k = 0; k < 8; ++k) {
+          Cube child = cube;
+          child.half_width = half;
+          child.score = outcome.error;
+          child.hint = outcome.X.translation();
+          for (int axis = 0; axis < 3; ++axis) {
+            child.centre[axis] += ((k >> axis) & 1) ? half : -half;
+          }
+          if (MeetsBall(child)) work.push_back(child);
+        }
+      }
+    }
+    kept.insert(kept.end(), work.begin(), work.end());
+    leaves_ = std::move(kept);
+    if (found || best_error_ <= enough) return Answer::kYes;
+    return unresolved ? Answer::kUnknown : Answer::kNo;
+  }
+
+  const EpipolarProblem& problem_;
+  const SearchOptions& options_;
+  int threads_ = 1;
+  std::vector<Cube> leaves_;
+  Pose best_ = Pose::Identity();
+  double best_error_ = std::numeric_limits<double>::infinity();
+  long cubes_ = 0;
+  long lps_ = 0;
+};
+
+}  // namespace
+
+GlobalSolution SolveGlobal(const EpipolarProblem& problem, const SearchOptions& options) {
+  if (PairCount(problem) == 0) {
+    throw DegenerateError("the hand–eye transform from no bearing pairs",
+                          "give point matches between the images of at least two motions");
+  }
+  return Search(problem, options).Run();
+}
+
+}  // namespace hecal::global
