@@ -9,8 +9,9 @@
 // true poses and sigmas) for ml and within 100× for the closed forms (they are not efficient:
 // README "Methods"), and, at 10⁵, under 60 s of CPU time (user + system: the wall clock
 // depends on what else the machine runs) and 2 GB per run. Prints the table.
-// HECAL_SCALE_STATIONS (e.g. "1000,10000") overrides the station counts. Needs the hecal
-// executable built next to this test (build/bin) and /usr/bin/time.
+// HECAL_SCALE_STATIONS (e.g. "1000,10000") overrides the station counts, HECAL_SCALE_METHODS
+// (e.g. "ml,shah") picks methods. Needs the hecal executable built next to this test (build/bin)
+// and /usr/bin/time.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -98,6 +99,16 @@ Pose ReadX(const std::string& path) {
   return X;
 }
 
+// Whether HECAL_SCALE_METHODS (a comma-separated list) names `method`; all when unset.
+bool Picked(const std::string& method) {
+  const char* text = std::getenv("HECAL_SCALE_METHODS");
+  if (text == nullptr) return true;
+  std::istringstream list(text);
+  for (std::string field; std::getline(list, field, ',');)
+    if (field == method) return true;
+  return false;
+}
+
 class Scale : public cli_test::CliTest {};
 
 TEST_F(Scale, EveryMethodCalibratesTenToTheFiveStations) {
@@ -117,6 +128,7 @@ TEST_F(Scale, EveryMethodCalibratesTenToTheFiveStations) {
         data.X, data.Z, sigma, sigma);
     for (const handeye::MethodInfo& info : handeye::AllMethods()) {
       if (!info.closed_form && info.method != handeye::Method::kMl) continue;
+      if (!Picked(std::string(info.name))) continue;
       const std::string command = "/usr/bin/time -v -o " + Path("time.txt") + " " + hecal +
                                   " calibrate --robot " + Path("robot.csv") + " --camera " +
                                   Path("camera.csv") + " --setup eye-in-hand --method " +

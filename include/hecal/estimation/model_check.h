@@ -50,6 +50,15 @@
 // undercovers — which, with the noise estimated from 8 or 15 stations, includes data whose
 // noise IS Gaussian and equally split (the estimated sigma is itself uncertain).
 //
+// Many stations. Above kModelCheckSolvedStations the delete-group solutions are not solved but
+// taken one Gauss–Newton step from the estimate in the linearised ml problem:
+//        δ_(−g) = −(N − N_g)⁻¹ (b − b_g),   b_g = Σ_{i∈g} J_iᵀ Σ_i⁻¹ r_i,  J_i = ∂r_i/∂δ
+// (the infinitesimal form of the same jackknife, Efron 1982 ch. 6). With thousands of stations
+// leaving out 1/20 of them moves the estimate by a small fraction of its own σ, far inside the
+// linear range, so the step is the solve to first order; it costs one pass over the stations
+// instead of 20 solves (ml at 10⁵ stations: 20 refinements, ~30 s). For the closed forms the step
+// is ml's, as E_jk is.
+//
 // Limits: with n ≤ 6 no check is made (removing a station leaves too few for the remaining
 // spread to mean anything); with G < 12 the jackknife covariance has rank < 12 and only its
 // diagonal is used. A solve that fails without a group (degenerate rest) ends the check with
@@ -74,6 +83,8 @@ inline constexpr double kModelCheckFlagLevel = 2.0;
 inline constexpr size_t kModelCheckMinStations = 7;
 // The number of jackknife groups at most.
 inline constexpr size_t kModelCheckMaxGroups = 20;
+// Above this many stations the delete-group solutions are linearised steps, not solves.
+inline constexpr size_t kModelCheckSolvedStations = 2000;
 
 struct ModelCheck {
   bool possible = false;
@@ -108,6 +119,12 @@ ModelCheck CompareWithJackknife(const Pose& X, const Pose& Z,
 Eigen::Matrix<double, 12, 12> ExpectedJackknife(const std::vector<StationLinearization>& stations,
                                                 const NoiseVariances& variances,
                                                 const std::vector<std::vector<bool>>& groups);
+
+// The delete-group solutions as one Gauss–Newton step each from (X, Z) in the linearised
+// problem (see "Many stations" above), in JackknifeGroups order.
+std::vector<handeye::Solution> LinearizedWithoutGroups(
+    const std::vector<StationLinearization>& stations, const NoiseVariances& variances,
+    const std::vector<std::vector<bool>>& groups, const Pose& X, const Pose& Z);
 
 // The covariance to report: D C_model D when check.used, else C_model.
 Eigen::Matrix<double, 12, 12> ReportedCovariance(const ModelCheck& check);
