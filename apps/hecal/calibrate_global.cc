@@ -1,5 +1,6 @@
 // `hecal calibrate --method global` (calibrate.h: RunCalibrateGlobal).
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -116,6 +117,8 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
     throw InputError("--reach", 0, "must be above 0 and at most 1000 m",
                      "give the largest camera offset from the hand in metres, e.g. 2");
   }
+  const int threads = ParseThreads("--threads", flags.threads);
+  const std::uint64_t seed = ParseSeed("--seed", flags.seed);
   double pixel_sigma = 0.5;
   if (!flags.pixel_sigma.empty()) {
     std::istringstream in(flags.pixel_sigma);
@@ -129,10 +132,10 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   global::SearchOptions search;
   search.epsilon = flags.epsilon;
   search.translation_bound = flags.reach;
-  search.threads = ParseThreads("--threads", flags.threads);
+  search.threads = threads;
   global::OutlierOptions outliers;
   outliers.threshold = 4.0 * std::sqrt(2.0) * pixel_sigma / input.focal;
-  outliers.seed = ParseSeed("--seed", flags.seed);
+  outliers.seed = seed;
   const global::RobustGlobalSolution robust =
       global::SolveGlobalRobust(input.problem, search, outliers);
   const estimation::EpipolarPolish polish =

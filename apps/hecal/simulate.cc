@@ -224,7 +224,13 @@ void RunSimulate(const SimulateFlags& flags, const Io& io) {
   }
   for (const SigmaLevel& sigma : sigmas) {
     for (double scale : robot_scales) {
-      CheckNoiseLevel("--robot-scale", sigma.mm * scale, sigma.deg * scale);
+      if (sigma.mm * scale > kMaxSigmaMm || sigma.deg * scale > kMaxSigmaDeg) {
+        throw InputError("--robot-scale", 0,
+                         "the robot noise (--sigma times --robot-scale) must stay within " +
+                             std::to_string(static_cast<int>(kMaxSigmaMm)) + " mm and " +
+                             std::to_string(static_cast<int>(kMaxSigmaDeg)) + " deg per axis",
+                         "give a smaller --robot-scale or --sigma");
+      }
     }
   }
   options.methods = ParseMethodList("--method", flags.method);
