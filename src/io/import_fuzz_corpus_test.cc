@@ -1,7 +1,8 @@
 // Replays the import fuzzers' seed corpora (fuzz/corpus/import_*) and a few adversarial inputs
 // through the same property check the fuzzers run (testing/import_properties.h), so the unit
 // tests catch a reader that crashes, throws anything but InputError, or accepts a broken pose.
-// Add any input a fuzzer finds to crash to fuzz/corpus/import_<reader>/ and it is replayed here.
+// Inputs a fuzzer finds to fail go to tests/data/fuzz-regressions/import_<fuzzer>/ and are
+// replayed here too.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,42 +15,53 @@ namespace hecal::io {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::ImportFuzzer;
 using testing::ImportReader;
 
-// The fuzzers' input layouts: fuzz/fuzz_import_{yaml,json,text}.cc.
-void Replay(const std::string& corpus, const std::string& input) {
-  if (corpus == "import_json") {
-    testing::RunImportProperty(ImportReader::kMoveit, 0, input);
-    return;
+// Replays every file of `dir` with the byte layout of `fuzzer` (RunImportFuzzInput); returns
+// how many.
+int ReplayFolder(const fs::path& dir, ImportFuzzer fuzzer) {
+  int replayed = 0;
+  if (!fs::is_directory(dir)) return 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    SCOPED_TRACE(entry.path().string());
+    testing::RunImportFuzzInput(fuzzer, ReadFile(entry.path().string()));
+    ++replayed;
   }
-  if (input.empty()) return;
-  const unsigned char selector = static_cast<unsigned char>(input[0]);
-  const std::string_view text = std::string_view(input).substr(1);
-  if (corpus == "import_yaml") {
-    constexpr ImportReader kReaders[] = {ImportReader::kCamodocal, ImportReader::kEasyHandeye,
-                                         ImportReader::kOpenCvYaml};
-    testing::RunImportProperty(kReaders[selector % 3], static_cast<unsigned char>(selector / 3),
-                               text);
-  } else {
-    constexpr ImportReader kReaders[] = {ImportReader::kTabb, ImportReader::kEthz,
-                                         ImportReader::kMatrix16};
-    testing::RunImportProperty(kReaders[selector % 3], static_cast<unsigned char>(selector / 3),
-                               text);
-  }
+  return replayed;
 }
 
 TEST(ImportFuzzCorpus, EverySeedKeepsTheProperties) {
   const fs::path root = fs::path(HECAL_SOURCE_DIR) / "fuzz" / "corpus";
-  int replayed = 0;
-  for (const char* corpus : {"import_yaml", "import_json", "import_text"}) {
-    ASSERT_TRUE(fs::is_directory(root / corpus)) << root / corpus;
-    for (const fs::directory_entry& entry : fs::directory_iterator(root / corpus)) {
-      SCOPED_TRACE(entry.path().string());
-      Replay(corpus, ReadFile(entry.path().string()));
-      ++replayed;
-    }
-  }
+  const int replayed = ReplayFolder(root / "import_yaml", ImportFuzzer::kYaml) +
+                       ReplayFolder(root / "import_json", ImportFuzzer::kJson) +
+                       ReplayFolder(root / "import_text", ImportFuzzer::kText);
   EXPECT_GE(replayed, 12);
+}
+
+// Inputs a fuzzer flagged, kept in tests/data/fuzz-regressions/import_{text,yaml,json}/ (their
+// README says what each found).
+TEST(ImportFuzzCorpus, KeptFindingsStayFixed) {
+  const fs::path root = fs::path(HECAL_SOURCE_DIR) / "tests" / "data" / "fuzz-regressions";
+  EXPECT_GE(ReplayFolder(root / "import_text", ImportFuzzer::kText), 1);
+  ReplayFolder(root / "import_yaml", ImportFuzzer::kYaml);
+  ReplayFolder(root / "import_json", ImportFuzzer::kJson);
+}
+
+// The finding itself, stated: a cali.txt image name that is only a folder has no stem to pair
+// the robot block with, and is refused with its line.
+TEST(ImportFuzzCorpus, TabbImageNameWithoutStemIsRefused) {
+  const std::string robot = "1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+  const std::string camera =
+      "1\nimages/ 1000 0 320 0 1000 240 0 0 1 1 0 0 0 1 0 0 0 1 0 0 500 0 0 0 0 0 0 0 0\n";
+  try {
+    ParseTabb(robot, "robot_cali.txt", camera, "cali.txt");
+    FAIL() << "accepted an image name without a file name";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("cali.txt:2"), std::string::npos) << what;
+    EXPECT_NE(what.find("has no file name"), std::string::npos) << what;
+  }
 }
 
 TEST(ImportFuzzCorpus, SeedsAreAccepted) {

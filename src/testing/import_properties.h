@@ -1,6 +1,6 @@
 // Properties every successful import must have, checked by the import fuzzers
 // (fuzz/fuzz_import_*.cc) and by the replay of their findings
-// (src/io/import_fuzz_regression_test.cc, tests/data/fuzz-regressions/import_*/). A violation
+// (src/io/import_fuzz_corpus_test.cc, tests/data/fuzz-regressions/import_*/). A violation
 // aborts, so libFuzzer reports it as a crash.
 #pragma once
 
