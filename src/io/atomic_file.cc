@@ -279,9 +279,10 @@ void StagedFiles::Commit() {
       int error = 0;
       backups[i] = Backup(staged_[i].target, &error);
       if (!backups[i]) {
+        const std::string path = staged_[i].path;  // Discard clears staged_
         remove_backups();
         Discard();
-        throw InputError(staged_[i].path, 0,
+        throw InputError(path, 0,
                          "cannot keep a copy of the existing file while replacing it with the "
                          "other outputs: " +
                              ErrnoText(error),
