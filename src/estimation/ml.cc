@@ -1,24 +1,19 @@
 #include "hecal/estimation/ml.h"
 
-#include <ceres/problem.h>
-#include <ceres/solver.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 
-#include "hecal/estimation/loop_residual.h"
-#include "hecal/estimation/se3_manifold.h"
 #include "hecal/estimation/station_covariance.h"
+#include "loop_solver.h"
 #include "multi_start.h"
-#include "small_problem.h"
 
 namespace hecal::estimation {
 namespace {
 
-using Matrix12d = Eigen::Matrix<double, 12, 12>;
+using internal::Matrix12d;
 
 constexpr double kRefreshRotation = 1e-3;     // rad: re-evaluate Σ_i when X moved more
 constexpr double kRefreshTranslation = 1e-3;  // × L
@@ -53,13 +48,10 @@ class MlSolver {
   Evaluation Evaluate(const handeye::Solution& solution, const NoiseVariances& theta) const {
     const std::vector<Matrix6d> W = Whitening(solution.X, theta);
     Evaluation evaluation;
+    evaluation.cost = CostWith(solution, W);
+    // W is triangular with det W = det(Σ)^(−1/2).
     double log_det = 0.0;
-    for (size_t i = 0; i < W.size(); ++i) {
-      const Vector6d r = LoopResidual(problem_.A[i], problem_.B[i], solution.X, solution.Z);
-      evaluation.cost += LossValue(loss_.get(), (W[i] * r).squaredNorm());
-      // W is triangular with det W = det(Σ)^(−1/2).
-      log_det -= 2.0 * W[i].diagonal().array().abs().log().sum();
-    }
+    for (const Matrix6d& W_i : W) log_det -= 2.0 * W_i.diagonal().array().abs().log().sum();
     evaluation.nll = evaluation.cost + log_det;
     return evaluation;
   }
@@ -85,25 +77,14 @@ class MlSolver {
 
   // Σ ρ(|W_i r_i|²) with the given whitening.
   double CostWith(const handeye::Solution& solution, const std::vector<Matrix6d>& W) const {
-    double cost = 0.0;
-    for (size_t i = 0; i < W.size(); ++i) {
-      const Vector6d r = LoopResidual(problem_.A[i], problem_.B[i], solution.X, solution.Z);
-      cost += LossValue(loss_.get(), (W[i] * r).squaredNorm());
-    }
-    return cost;
+    return internal::LoopCostValue(problem_, W, loss_.get(), solution);
   }
 
   // Gauss–Newton inverse information at the solution, robust weights ρ'(s_i).
   Matrix12d Covariance(const handeye::Solution& solution, const NoiseVariances& theta) const {
-    const std::vector<Matrix6d> W = Whitening(solution.X, theta);
-    Matrix12d information = Matrix12d::Zero();
-    for (size_t i = 0; i < W.size(); ++i) {
-      Matrix6x12d J;
-      const Vector6d r = LoopResidual(problem_.A[i], problem_.B[i], solution.X, solution.Z, &J);
-      const Matrix6x12d WJ = W[i] * J;
-      const double weight = LossWeight(loss_.get(), (W[i] * r).squaredNorm());
-      information.noalias() += weight * WJ.transpose() * WJ;
-    }
+    const Matrix12d information =
+        internal::LinearizeLoopCost(problem_, Whitening(solution.X, theta), loss_.get(), solution)
+            .hessian;
     const Eigen::LLT<Matrix12d> llt(information);
     if (llt.info() == Eigen::Success) return llt.solve(Matrix12d::Identity());
     return information.completeOrthogonalDecomposition().pseudoInverse();
@@ -112,25 +93,12 @@ class MlSolver {
  private:
   handeye::Solution SolveOnce(const handeye::Solution& start, const std::vector<Matrix6d>& W) {
     ++solves_;
-    double x[kPoseAmbientSize], z[kPoseAmbientSize];
-    PoseToParameters(start.X, x);
-    PoseToParameters(start.Z, z);
-    ceres::Problem ceres_problem(internal::SmallProblemOptions());
-    ceres_problem.AddParameterBlock(x, kPoseAmbientSize, &manifold_);
-    ceres_problem.AddParameterBlock(z, kPoseAmbientSize, &manifold_);
-    for (size_t i = 0; i < W.size(); ++i) {
-      ceres_problem.AddResidualBlock(LoopCost::Create(problem_.A[i], problem_.B[i], W[i]),
-                                     loss_.get(), x, z);
-    }
-    ceres::Solver::Summary summary;
-    ceres::Solve(internal::SmallSolverOptions(), &ceres_problem, &summary);
-    return {PoseFromParameters(x), PoseFromParameters(z)};
+    return internal::MinimizeLoopCost(problem_, W, loss_.get(), start);
   }
 
   const handeye::Problem& problem_;
   double length_scale_;
   std::unique_ptr<ceres::LossFunction> loss_;
-  Se3RightManifold manifold_;
   int solves_ = 0;
 };
 
@@ -143,14 +111,47 @@ double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
   return change;
 }
 
+// The multi-start with one common whitening, Σ_i at the start of lowest negative log-likelihood
+// (Σ_i depends on X only through lever arms, so the minima are where they would be with per-start
+// weights, and the costs compare directly); then Σ_i is refreshed at the winner. Sets the start
+// counts of `result` when it is not null.
+handeye::Solution RefineStarts(MlSolver& solver, const std::vector<handeye::Solution>& starts,
+                               const NoiseVariances& theta, MlResult* result) {
+  size_t best_start = 0;
+  if (starts.size() > 1) {
+    std::vector<double> start_nll(starts.size());
+    for (size_t i = 0; i < starts.size(); ++i) {
+      start_nll[i] = solver.Evaluate(starts[i], theta).nll;
+      if (start_nll[i] < start_nll[best_start]) best_start = i;
+    }
+  }
+  const std::vector<Matrix6d> common = solver.Whitening(starts[best_start].X, theta);
+  const internal::MultiStartResult multi = internal::RunMultiStart(
+      starts, solver.length_scale(),
+      [&](const handeye::Solution& start) { return solver.CostWith(start, common); },
+      [&](const handeye::Solution& start) {
+        const handeye::Solution optimum = solver.SolveWith(start, common);
+        return internal::Optimum{optimum, solver.CostWith(optimum, common)};
+      });
+  if (result != nullptr) {
+    result->starts_refined = multi.starts_refined;
+    result->distinct_minima = multi.distinct_minima;
+  }
+  return solver.Solve(multi.best.solution, theta);
+}
+
+void CheckStations(const handeye::Problem& problem) {
+  if (problem.A.size() < 3 || problem.A.size() != problem.B.size()) {
+    throw std::invalid_argument("RefineMl: needs at least 3 stations with robot and camera poses");
+  }
+}
+
 }  // namespace
 
 MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::Solution>& starts,
                   const MlOptions& options) {
   if (starts.empty()) throw std::invalid_argument("RefineMl: no starting solution");
-  if (problem.A.size() < 3 || problem.A.size() != problem.B.size()) {
-    throw std::invalid_argument("RefineMl: needs at least 3 stations with robot and camera poses");
-  }
+  CheckStations(problem);
   MlSolver solver(problem, options);
   const double L = solver.length_scale();
   const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
@@ -169,26 +170,8 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
     }
   }
 
-  // Multi-start with one common whitening, Σ_i at the start of lowest negative log-likelihood
-  // (Σ_i depends on X only through lever arms, so the minima are where they would be with
-  // per-start weights, and the costs compare directly); then Σ_i is refreshed at the winner.
   MlResult result;
-  std::vector<double> start_nll(starts.size());
-  size_t best_start = 0;
-  for (size_t i = 0; i < starts.size(); ++i) {
-    start_nll[i] = solver.Evaluate(starts[i], theta).nll;
-    if (start_nll[i] < start_nll[best_start]) best_start = i;
-  }
-  const std::vector<Matrix6d> common = solver.Whitening(starts[best_start].X, theta);
-  const internal::MultiStartResult multi = internal::RunMultiStart(
-      starts, L, [&](const handeye::Solution& start) { return solver.CostWith(start, common); },
-      [&](const handeye::Solution& start) {
-        const handeye::Solution optimum = solver.SolveWith(start, common);
-        return internal::Optimum{optimum, solver.CostWith(optimum, common)};
-      });
-  result.starts_refined = multi.starts_refined;
-  result.distinct_minima = multi.distinct_minima;
-  handeye::Solution best = solver.Solve(multi.best.solution, theta);
+  handeye::Solution best = RefineStarts(solver, starts, theta, &result);
 
   // Alternate the noise estimate and the pose estimate.
   NoiseSpec current = spec;
@@ -209,6 +192,17 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
   result.cost = solver.Evaluate(best, theta).cost;
   result.solves = solver.solves();
   return result;
+}
+
+handeye::Solution RefineMlFromGoodStart(const handeye::Problem& problem,
+                                        const handeye::Solution& start, const MlOptions& options) {
+  CheckStations(problem);
+  if (!options.robot_sigma || !options.camera_sigma) {
+    throw std::invalid_argument("RefineMlFromGoodStart: needs both the robot and the camera sigma");
+  }
+  MlSolver solver(problem, options);
+  return RefineStarts(solver, {start}, Variances(*options.robot_sigma, *options.camera_sigma),
+                      nullptr);
 }
 
 }  // namespace hecal::estimation

@@ -1,0 +1,111 @@
+#include "loop_solver.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+#include "hecal/estimation/robust_loss.h"
+#include "hecal/geometry/se3.h"
+
+namespace hecal::estimation::internal {
+namespace {
+
+constexpr int kMaxIterations = 100;
+constexpr double kInitialRadius = 1e4;
+constexpr double kMaxRadius = 1e16;
+constexpr double kMinRadius = 1e-32;
+constexpr double kMinDiagonal = 1e-6;
+constexpr double kMaxDiagonal = 1e32;
+constexpr double kMinRelativeDecrease = 1e-3;
+constexpr double kFunctionTolerance = 1e-14;
+constexpr double kGradientTolerance = 1e-16;
+constexpr double kParameterTolerance = 1e-13;
+
+double ParameterNorm(const handeye::Solution& solution) {
+  return std::sqrt(2.0 + solution.X.translation().squaredNorm() +
+                   solution.Z.translation().squaredNorm());
+}
+
+}  // namespace
+
+double LoopCostValue(const handeye::Problem& problem, const std::vector<Matrix6d>& whitening,
+                     const ceres::LossFunction* loss, const handeye::Solution& solution) {
+  double cost = 0.0;
+  for (size_t i = 0; i < whitening.size(); ++i) {
+    const Vector6d r = LoopResidual(problem.A[i], problem.B[i], solution.X, solution.Z);
+    cost += LossValue(loss, (whitening[i] * r).squaredNorm());
+  }
+  return cost;
+}
+
+LoopNormalEquations LinearizeLoopCost(const handeye::Problem& problem,
+                                      const std::vector<Matrix6d>& whitening,
+                                      const ceres::LossFunction* loss,
+                                      const handeye::Solution& solution) {
+  LoopNormalEquations equations;
+  Matrix6x12d J;
+  for (size_t i = 0; i < whitening.size(); ++i) {
+    const Vector6d r = LoopResidual(problem.A[i], problem.B[i], solution.X, solution.Z, &J);
+    const Matrix6d& W = whitening[i];
+    const Vector6d whitened = W * r;
+    const Matrix6x12d WJ = W * J;
+    const double s = whitened.squaredNorm();
+    const double weight = LossWeight(loss, s);
+    equations.cost += LossValue(loss, s);
+    equations.hessian.selfadjointView<Eigen::Upper>().rankUpdate(WJ.transpose(), weight);
+    equations.gradient.noalias() += weight * WJ.transpose() * whitened;
+  }
+  equations.hessian.triangularView<Eigen::StrictlyLower>() = equations.hessian.transpose();
+  return equations;
+}
+
+handeye::Solution MinimizeLoopCost(const handeye::Problem& problem,
+                                   const std::vector<Matrix6d>& whitening,
+                                   const ceres::LossFunction* loss,
+                                   const handeye::Solution& start) {
+  handeye::Solution current = start;
+  LoopNormalEquations equations = LinearizeLoopCost(problem, whitening, loss, current);
+  double radius = kInitialRadius;
+  double nu = 2.0;
+  bool newton_decrease_due = true;  // after each linearisation
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    if (!(equations.gradient.lpNorm<Eigen::Infinity>() > kGradientTolerance)) break;
+    if (newton_decrease_due) {
+      // The most the model can still gain: ½ gᵀ H⁻¹ g, at its minimum.
+      const double newton_decrease =
+          0.5 * equations.gradient.dot(equations.hessian.ldlt().solve(equations.gradient));
+      if (newton_decrease <= kFunctionTolerance * 0.5 * equations.cost) break;
+      newton_decrease_due = false;
+    }
+    Matrix12d damped = equations.hessian;
+    damped.diagonal() +=
+        equations.hessian.diagonal().cwiseMax(kMinDiagonal).cwiseMin(kMaxDiagonal) / radius;
+    const Vector12d step = -damped.ldlt().solve(equations.gradient);
+    if (!step.allFinite()) break;
+    if (step.norm() <= kParameterTolerance * (ParameterNorm(current) + kParameterTolerance)) break;
+    const handeye::Solution candidate{current.X * se3::Exp(step.head<6>()),
+                                      current.Z * se3::Exp(step.tail<6>())};
+    const double candidate_cost = LoopCostValue(problem, whitening, loss, candidate);
+    const double predicted =
+        -(equations.gradient.dot(step) + 0.5 * step.dot(equations.hessian * step));
+    const double actual = 0.5 * (equations.cost - candidate_cost);
+    const double ratio = predicted > 0.0 ? actual / predicted : -1.0;
+    if (std::isfinite(candidate_cost) && ratio > kMinRelativeDecrease) {
+      const bool converged = actual <= kFunctionTolerance * 0.5 * equations.cost;
+      current = candidate;
+      if (converged) break;
+      equations = LinearizeLoopCost(problem, whitening, loss, current);
+      newton_decrease_due = true;
+      radius =
+          std::min(kMaxRadius, radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * ratio - 1.0, 3)));
+      nu = 2.0;
+    } else {
+      radius /= nu;
+      nu *= 2.0;
+      if (radius < kMinRadius) break;
+    }
+  }
+  return current;
+}
+
+}  // namespace hecal::estimation::internal
