@@ -146,8 +146,7 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
       ml.camera_sigma = result.camera_sigma;
       ml.robust_loss = ParseRobustLoss(options.robust_loss).value_or(RobustLoss::kNone);
       ml.robust_scale = options.robust_scale;
-      const MlResult refined = RefineMl(problem, start, ml);
-      return {refined.X, refined.Z};
+      return RefineMlFromGoodStart(problem, start.front(), ml);
     }
     case handeye::Method::kStrobl: {
       const StroblResult refined = RefineStrobl(problem, start);

@@ -65,6 +65,37 @@ TEST_P(MlTest, NoiseFreeConvergesFromAPerturbedStart) {
   EXPECT_TRUE(result.sigmas_estimated);
 }
 
+// The good-start path: RefineMl's refinement from that one start (the same X and Z, with and
+// without a robust loss), the truth to 1e-9 on noise-free data, and both sigmas required.
+TEST_P(MlTest, GoodStartIsRefineMlFromThatStart) {
+  const PoseSigma sigma{0.2 * kDeg, 0.5e-3};
+  MlOptions options;
+  options.robot_sigma = sigma;
+  options.camera_sigma = sigma;
+  Vector6d offset;
+  offset << 0.01, -0.02, 0.01, 0.01, -0.01, 0.02;
+  const sim::SimulatedData noisy =
+      testing::ThesisCase(GetParam(), 12, 55, sigma.rotation, sigma.translation);
+  const handeye::Solution start{noisy.X * se3::Exp(offset), noisy.Z * se3::Exp(-offset)};
+  for (RobustLoss loss : {RobustLoss::kNone, RobustLoss::kHuber}) {
+    options.robust_loss = loss;
+    const MlResult full = RefineMl(noisy.MeasuredProblem(), {start}, options);
+    const handeye::Solution fast = RefineMlFromGoodStart(noisy.MeasuredProblem(), start, options);
+    EXPECT_LT(testing::Error(fast.X, full.X).rotation, 1e-12);
+    EXPECT_LT(testing::Error(fast.X, full.X).translation, 1e-12);
+    EXPECT_LT(testing::Error(fast.Z, full.Z).rotation, 1e-12);
+    EXPECT_LT(testing::Error(fast.Z, full.Z).translation, 1e-12);
+  }
+  const sim::SimulatedData clean = testing::ThesisCase(GetParam(), 8, 56);
+  const handeye::Solution fast = RefineMlFromGoodStart(
+      clean.MeasuredProblem(), {clean.X * se3::Exp(offset), clean.Z * se3::Exp(-offset)}, options);
+  EXPECT_LT(testing::Error(fast.X, clean.X).rotation, 1e-9);
+  EXPECT_LT(testing::Error(fast.X, clean.X).translation, 1e-9);
+  options.camera_sigma.reset();
+  EXPECT_THROW(RefineMlFromGoodStart(clean.MeasuredProblem(), start, options),
+               std::invalid_argument);
+}
+
 struct StudyFigures {
   double rmse_rotation = 0, rmse_translation = 0;    // ml, radians / metres
   double bound_rotation = 0, bound_translation = 0;  // sqrt(mean bound²)

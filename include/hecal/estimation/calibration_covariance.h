@@ -60,7 +60,8 @@ struct StationNoise {
 };
 
 // The method of `result` solved on `problem`: closed-form methods directly; ml and strobl
-// refined from (result.X, result.Z) with result's sigmas fixed and `options`' robust loss.
+// refined from (result.X, result.Z) with result's sigmas fixed and `options`' robust loss (ml by
+// RefineMlFromGoodStart, ml.h: no closed-form starts, pose only).
 handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResult& result,
                           const CalibrateOptions& options);
 
