@@ -12,6 +12,12 @@
 // is reported as an error (SkipWithError). OpenCV's results are reported, not judged: on this
 // protocol its TSAI, HORAUD and DANIILIDIS fail (issue 3), and that is part of the comparison.
 //
+// hecal/ml-good-start/<n> times ml re-solved from a good start the way the model check's
+// jackknife and the covariance propagation re-solve (estimation::Resolve, ml.h
+// RefineMlFromGoodStart): from the true X and Z (off the data's optimum by about the estimate's
+// own error) with the true sigmas; compare with hecal/ml/<n>, which starts from every closed-form
+// solution after the outlier rejection.
+//
 //   handeye_bench [--benchmark_filter=opencv/park-martin/50] [other Google Benchmark flags]
 // Names: <impl>/<method>/<stations>, impl = hecal | opencv.
 #include <benchmark/benchmark.h>
@@ -24,6 +30,7 @@
 #include <vector>
 
 #include "hecal/estimation/calibrate.h"
+#include "hecal/estimation/calibration_covariance.h"
 #include "hecal/handeye/methods.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "hecal/study/study.h"
@@ -132,6 +139,21 @@ Solver HecalSolver(handeye::Method method) {
   };
 }
 
+Solver GoodStartMlSolver() {
+  hecal::estimation::CalibrateOptions options;
+  options.robot_sigma = hecal::estimation::PoseSigma{kSigmaRotation, kSigmaTranslation};
+  options.camera_sigma = options.robot_sigma;
+  return [options](const DataSet& set) {
+    hecal::estimation::CalibrationResult start;
+    start.method = handeye::Method::kMl;
+    start.X = set.data.X;
+    start.Z = set.data.Z;
+    start.robot_sigma = *options.robot_sigma;
+    start.camera_sigma = *options.camera_sigma;
+    return hecal::estimation::Resolve(set.problem, start, options).X;
+  };
+}
+
 void RegisterAll() {
   for (const handeye::MethodInfo& info : handeye::AllMethods()) {
     for (int n : {10, 20, 50}) {
@@ -141,6 +163,13 @@ void RegisterAll() {
                                                                  n](benchmark::State& state) {
         RunSolver(state, HecalSolver(method), n, /*judge=*/true);
       })->Unit(benchmark::kMicrosecond);
+      if (method == handeye::Method::kMl) {
+        benchmark::RegisterBenchmark(("hecal/ml-good-start/" + std::to_string(n)).c_str(),
+                                     [n](benchmark::State& state) {
+                                       RunSolver(state, GoodStartMlSolver(), n, /*judge=*/true);
+                                     })
+            ->Unit(benchmark::kMicrosecond);
+      }
 #ifdef HECAL_HAVE_OPENCV_PEERS
       if (hecal::peers::HasOpenCvPeer(method)) {
         benchmark::RegisterBenchmark(("opencv/" + suffix).c_str(), [method,

@@ -51,6 +51,27 @@ TEST(BenchCommand, JsonHasOneObjectPerImplMethodAndStations) {
 #endif
 }
 
+// ml is timed twice: from the closed-form starts and from a good start (the truth), both right.
+TEST(BenchCommand, MlHasAGoodStartRow) {
+  const Outcome run = Hecal({"bench", "--stations", "8", "--json", "--method", "ml,andreff",
+                             "--datasets", "2", "--min-time", "0"});
+  ASSERT_EQ(run.code, 0) << run.err;
+  std::set<std::string> keys;
+  for (const nlohmann::json& row : nlohmann::json::parse(run.out)) {
+    if (row["impl"] != "hecal") continue;
+    keys.insert(row["method"].get<std::string>() + "/" +
+                (row["start"].is_null() ? "null" : row["start"].get<std::string>()));
+    EXPECT_LT(row["rotation_error_deg"].get<double>(), 1.0);
+    EXPECT_EQ(row["failures"].get<int>(), 0);
+  }
+  EXPECT_EQ(keys, (std::set<std::string>{"ml/closed-form", "ml/good", "andreff/null"}));
+  const Outcome table =
+      Hecal({"bench", "--stations", "8", "--method", "ml", "--datasets", "1", "--min-time", "0"});
+  ASSERT_EQ(table.code, 0) << table.err;
+  EXPECT_NE(table.out.find("ml from a good start, n = 8: "), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("faster than from the closed-form starts"), std::string::npos);
+}
+
 TEST(BenchCommand, TablePrintsTheSpeedUp) {
   const Outcome run = Hecal(
       {"bench", "--stations", "6", "--method", "andreff", "--datasets", "1", "--min-time", "0"});
