@@ -1,4 +1,4 @@
-// Issue 5: the UT against a 5000-sample Monte Carlo on the same calibrations (label "slow";
+// The UT against a 5000-sample Monte Carlo on the same calibrations (label "slow";
 // about a minute on 2 cores). Thesis protocol, σ = 1 mm / 1° on robot and camera, both setups,
 // ml and park-martin, n = 5, 10, 15, 20 stations, 3 data sets each. Prints the largest per-axis
 // |σ_UT/σ_MC − 1| of X and Z per case; asserts it below 10% (+ 3 standard errors of σ_MC, about
