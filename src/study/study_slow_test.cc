@@ -1,6 +1,6 @@
 // The figures of docs/thesis-study.md on the thesis protocol, as a slow test (label "slow"; a
 // few seconds on 2 cores in Release, much longer under sanitizers). `hecal simulate` produces
-// the same numbers for the issue note.
+// the same numbers for the README's tables.
 #include <gtest/gtest.h>
 
 #include <numbers>
