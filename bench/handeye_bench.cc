@@ -10,7 +10,7 @@
 //   failures      data sets where it threw, returned a non-finite pose, or erred by > 10°
 // A hecal solver whose error exceeds 1° or 10 mm on any data set (≈ 20× what this noise gives)
 // is reported as an error (SkipWithError). OpenCV's results are reported, not judged: on this
-// protocol its TSAI, HORAUD and DANIILIDIS fail (issue 3), and that is part of the comparison.
+// protocol its TSAI, HORAUD and DANIILIDIS fail, and that is part of the comparison.
 //
 // hecal/ml-good-start/<n> times ml re-solved from a good start the way the model check's
 // jackknife and the covariance propagation re-solve (estimation::Resolve, ml.h

@@ -1,8 +1,8 @@
-// Accuracy study of pose from known points (SPEC.md B): seed 004 alone (linear-raw), seed 004 +
-// reprojection refinement (linear), the normalised DLT / homography + refinement (dlt), and
-// OpenCV 4.6's solvePnP methods as peers (ITERATIVE, EPNP, SQPNP; IPPE on planar targets), on
-// identical synthetic data: for each cell (shape, N, pixel σ) the same scenes and the same noisy
-// pixels go to every method.
+// Accuracy study of pose from known points (docs/pose-from-points.md): the linear pose paper alone
+// (linear-raw), the linear pose paper + reprojection refinement (linear), the normalised DLT /
+// homography + refinement (dlt), and OpenCV 4.6's solvePnP methods as peers (ITERATIVE, EPNP,
+// SQPNP; IPPE on planar targets), on identical synthetic data: for each cell (shape, N, pixel σ)
+// the same scenes and the same noisy pixels go to every method.
 //
 // Scenes (src/testing/pose_scenes.h): a 1280×960 camera, f ≈ 1000 px, mild plumb_bob distortion;
 // N points uniform in a 0.4 m cube 1 m away (uniformly random orientation), or on a 0.4 m square

@@ -1,4 +1,4 @@
-// libFuzzer target for the pose-table reader (DESIGN.md §3) and, through the round trip, the
+// libFuzzer target for the pose-table reader (docs/pose-files.md) and, through the round trip, the
 // writer. The first byte picks the reader options (units, degrees, invert, Euler sequence; see
 // PoseReadOptionsFromByte), the rest is the file. Properties: testing/pose_table_properties.h.
 #include <cstddef>

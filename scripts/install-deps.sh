@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages hecal builds and tests with (DESIGN.md §7).
+# Installs the Debian 12 packages hecal builds and tests with (the list in README "Library, build and tests").
 # Idempotent: prints nothing and touches nothing when every package is present.
 # Usage: scripts/install-deps.sh [--fuzz]   (--fuzz adds clang + libFuzzer runtime)
 set -euo pipefail

@@ -9,7 +9,7 @@ Usage (Debian 12: python3-scipy 1.10.1 is the system python's; a pyenv python ma
 Deterministic: a fixed seed, and the poses are built from explicit lists. Re-running with the
 same scipy/numpy reproduces the files byte for byte.
 
-What it writes (pose tables in the DESIGN.md §3 contract: `#` comment lines, then a header of
+What it writes (pose tables in the docs/pose-files.md contract: `#` comment lines, then a header of
 named columns, `id` first, `x,y,z` in metres, one rotation group, numbers as %.17g):
   poses_quaternion.csv            input: id,x,y,z,qw,qx,qy,qz (unit Hamilton quaternions)
   expected_rotvec.csv             rx,ry,rz (radians)            scipy as_rotvec

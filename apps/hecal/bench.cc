@@ -336,7 +336,7 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
       app.add_subcommand("bench", "Time hecal's solvers and OpenCV's on identical generated data");
   bench->add_option("--stations", flags->stations, "Station counts, comma separated (3 to 100000)")
       ->capture_default_str();
-  bench->add_flag("--json", flags->json, "Print one JSON array (DESIGN.md 4.2)");
+  bench->add_flag("--json", flags->json, "Print one JSON array (docs/bench.md)");
   bench->add_option("--method", flags->method, "Method name(s), comma separated, or all")
       ->capture_default_str();
   bench->add_option("--setup", flags->setup, "eye-in-hand | eye-to-hand")->capture_default_str();

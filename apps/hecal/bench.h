@@ -1,5 +1,5 @@
 // `hecal bench`: times every hecal solver and the matching OpenCV 4.6 function on IDENTICAL
-// generated data in one process, and reports their errors (DESIGN.md §4.2, issue 3).
+// generated data in one process, and reports their errors (docs/bench.md).
 //
 //   hecal bench [--stations N[,N...]]          default 10,20,50
 //               [--json]                       one JSON array instead of the table
@@ -25,7 +25,7 @@
 // cv::calibrateHandEye / cv::calibrateRobotWorldHandEye on inputs converted beforehand
 // (peers/opencv_handeye.h), without computing Z for calibrateHandEye.
 //
-// JSON (DESIGN.md §4.2), one object per (impl, method, stations):
+// JSON (docs/bench.md), one object per (impl, method, stations):
 //   {"impl": "hecal"|"opencv", "method": "park-martin", "start": null|"closed-form"|"good",
 //    "stations": 50, "us_per_solve": 12.3,
 //    "rotation_error_deg": …, "translation_error": …,

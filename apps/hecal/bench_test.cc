@@ -1,4 +1,4 @@
-// `hecal bench` through RunHecal: the JSON contract (DESIGN.md §4.2), the table, bad flags.
+// `hecal bench` through RunHecal: the JSON contract (docs/bench.md), the table, bad flags.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -392,7 +392,7 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   CLI::App* command = app.add_subcommand(
       "calibrate",
       "Solve the hand–eye calibration from robot poses and camera poses (or target images)");
-  command->add_option("--robot", flags->robot, "Robot poses T_base_gripper (CSV, DESIGN.md §3)")
+  command->add_option("--robot", flags->robot, "Robot poses T_base_gripper (docs/pose-files.md)")
       ->required();
   command->add_option("--camera", flags->camera, "Camera poses T_camera_target (CSV)");
   command->add_option("--images", flags->images,

@@ -1,4 +1,4 @@
-// `hecal calibrate` (DESIGN.md §4):
+// `hecal calibrate` (docs/cli.md):
 //   hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand|auto
 //                   [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
 //                   [--output result.json] [--units m|mm] [--keep-outliers]
@@ -11,7 +11,7 @@
 // file or a wrong unit is named, never solved; --setup auto picks the setup); rejects gross
 // outliers (estimation/station_selection.h, unless --keep-outliers); solves with the chosen
 // method(s) on the stations kept; adds the plausibility warnings (estimation/plausibility.h) and
-// the readers' notes; prints a readable summary and writes the result file (DESIGN.md §5).
+// the readers' notes; prints a readable summary and writes the result file (docs/result-file.md).
 // From images (calibrate_images.cc): see RunCalibrateImages below.
 // Target-free, globally optimal (calibrate_global.cc): see RunCalibrateGlobal below.
 #pragma once
@@ -79,10 +79,10 @@ void CheckFiniteResult(const estimation::CalibrationResult& result);
 void PrintSummary(std::ostream& out, const report::ResultDocument& document,
                   const estimation::CalibrationResult& result);
 
-// `hecal calibrate --images` (issue 4, "End to end"):
+// `hecal calibrate --images`:
 //   1. the image front end of image_set.h: detection, intrinsics (given or estimated), PnP poses
 //      with covariances, and the per-image report;
-//   2. pairing with the robot rows (DESIGN.md §4.1): when every robot row has an id and some id
+//   2. pairing with the robot rows (docs/targets.md): when every robot row has an id and some id
 //      is an image's file stem, by id (each image needs a row; rows without an image are left
 //      out with a note); otherwise by sorted file name — one robot row per image file, in order,
 //      counting the images where the target was not usable (their rows are left out); ids that

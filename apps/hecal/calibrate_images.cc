@@ -40,7 +40,7 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
   return value;
 }
 
-// The robot row of every image (DESIGN.md §4.1): by id = file stem when the rows have ids and
+// The robot row of every image (docs/targets.md): by id = file stem when the rows have ids and
 // they name the images, else by sorted file name. Ids that name no image at all (e.g. the row
 // numbers `hecal import` writes) do not pair by id: then the rows pair by order, with a note.
 // Returns one pose per image of `set`, in its order.

@@ -3,7 +3,7 @@
 // the board on the robot (eye-to-hand), the robot poses computed from the chosen views and a
 // known X and Z (Z = A_i X B_i, handeye/problem.h). Checks X and Z against that truth (also from
 // one sub-folder per station, and from views of a single AprilTag), the result file's image
-// section, the pairing rules of DESIGN.md §4.1, and bad input (exit 2, nothing written).
+// section, the pairing rules of docs/targets.md, and bad input (exit 2, nothing written).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -131,7 +131,7 @@ Pose PoseOf(const json& object) {
 
 // Both setups, robot poses exact: X and Z from the rendered images within what sub-pixel
 // corners (≈0.03 px) allow: measured ≤ 0.01° and ≤ 0.05 mm; asserted at 0.05° and 0.3 mm. The
-// result file carries the image section (DESIGN.md §5 plus "refinement" and "images").
+// result file carries the image section (docs/result-file.md, with "refinement" and "images").
 TEST_F(CalibrateImagesTest, RecoversXAndZFromRenderedImages) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const cli_test::Outcome run = Hecal(Args(setup, RobotFile(setup, AllViews(), false)));
@@ -190,7 +190,7 @@ TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
   EXPECT_NE(run.out.find("intrinsics refined with X and Z"), std::string::npos) << run.out;
 }
 
-// Issue 4: on rendered image sets the joint reprojection refinement is at least as accurate as
+// On rendered image sets the joint reprojection refinement is at least as accurate as
 // the pose-level ml it starts from. Four sets of 8 views (those of rendered_views::Views turned by
 // 0, 15, 30 and 45° in azimuth), exact robot poses, both setups: summed squared X errors over the
 // sets. Measured: eye-in-hand pose-level 0.0040° / 0.018 mm RMS, reprojection 0.0020° / 0.016 mm;

@@ -1,4 +1,4 @@
-// `hecal calibrate` through RunHecal: the result file contract (DESIGN.md §5) on real data
+// `hecal calibrate` through RunHecal: the result file contract (docs/result-file.md) on real data
 // (moveit-calibration, upstream answer in its SOURCE.md) and on synthetic data with known truth,
 // `--method all`, units, and bad or degenerate input (exit 2, one line, no output file).
 #include <gtest/gtest.h>
@@ -97,7 +97,7 @@ class CalibrateCommand : public cli_test::CliTest {
   }
 };
 
-// Real data, default method: the result file follows DESIGN.md §5 and X meets the upstream
+// Real data, default method: the result file follows docs/result-file.md and X meets the upstream
 // expectation (t ≈ (0.659, −0.249, 0.830) m to 0.01).
 TEST_F(CalibrateCommand, MoveItResultFileFollowsTheContract) {
   ImportMoveIt();

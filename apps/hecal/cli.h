@@ -1,6 +1,6 @@
 // The hecal command line: a table of subcommands, each in its own file with a testable Run*
 // function (COLMAP-style). RunHecal parses argv, runs the chosen subcommand and maps failures to
-// exit codes (DESIGN.md §4): 0 success, 2 bad input (InputError, DegenerateError, bad flags; one
+// exit codes (docs/cli.md): 0 success, 2 bad input (InputError, DegenerateError, bad flags; one
 // line on stderr), 1 internal error.
 #pragma once
 

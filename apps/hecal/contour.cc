@@ -129,7 +129,7 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
   const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
   if (!form) {
     throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
-                     "use zyx (roll–pitch–yaw, the seed's choice) or zxz");
+                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
   }
   const contour::ContourPose pose = contour::PoseFromShape(shape, camera, *form);
   std::optional<contour::ContourPoseUncertainty> ut;
@@ -185,7 +185,8 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
     }
     io.out << "\n";
     if (ut->any_biased) {
-      io.out << "bias: the UT mean departs from the pose of the mean shape (SPEC C.5: tilt near "
+      io.out << "bias: the UT mean departs from the pose of the mean shape "
+                "(docs/contour.md#the-bias-check: tilt near "
                 "zero; the Necker sign fold)\n";
     }
   }
@@ -193,7 +194,7 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
 
 void RegisterContourCommand(CLI::App& app, const Io& io) {
   CLI::App* contour = app.add_subcommand(
-      "contour", "Camera motion from the affine deformation of a planar contour (seed 000)");
+      "contour", "Camera motion from the affine deformation of a planar contour (docs/contour.md)");
   contour->require_subcommand(1);
 
   auto options = std::make_shared<ContourPoseOptions>();

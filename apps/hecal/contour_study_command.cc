@@ -1,15 +1,16 @@
-// `hecal contour study`: the seed's experiments (contour/contour_study.h) from the command line.
+// `hecal contour study`: the contour paper's experiments (contour/contour_study.h) from the command
+// line.
 //
 //   hecal contour study --motion tx|ty|tz|rx|ry|rz --from A --to B --steps N
 //         [--pixel-noise 0.5] [--z0 5000] [--focal 50] [--pixel-size 0.0083] [--contour FILE]
 //         [--samples 5000] [--seed 1] [--threads 0] [--ut-w0 0]
 //         [--output study.csv] [--plot study.svg] [--covariance-plot cov.svg [--covariance-at V]]
-// Lengths in mm, angles in degrees (the seed's units). --output writes a comment line with the
-// random seed and the sample count, then one row per step and per
+// Lengths in mm, angles in degrees (the contour paper's units). --output writes a comment line with
+// the random seed and the sample count, then one row per step and per
 // pose component: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias
-// (component Tx,Ty,Tz,Rx,Ry,Rz; errors against the true motion; bias 1 when the SPEC C.5 check
-// flags the component). --plot (default: the CSV's name with .svg) draws the seed's Fig. 3: mean
-// error ± 2σ against the motion, UT solid, Monte Carlo dashed, one panel per component.
+// (component Tx,Ty,Tz,Rx,Ry,Rz; errors against the true motion; bias 1 when the bias check
+// flags the component). --plot (default: the CSV's name with .svg) draws the contour paper's Fig.
+// 3: mean error ± 2σ against the motion, UT solid, Monte Carlo dashed, one panel per component.
 // --covariance-plot draws Fig. 4 at the step nearest --covariance-at (default: --from): every
 // 2×2 block of the pose covariance as 2σ ellipses (UT solid, Monte Carlo dashed) with 1000
 // Monte Carlo poses and the 13 sigma points. Stdout: a table per step and the largest
@@ -187,7 +188,7 @@ void PrintTable(std::ostream& out, const contour::ContourStudyOptions& o,
       << o.pixel_noise << " px, " << o.target.cols() << " control points, Monte Carlo " << o.samples
       << " samples (seed " << o.seed << "), UT 13 points\n";
   out << "errors against the true motion: mean ± sd (mm, deg); ratio = UT sd / MC sd; * = bias "
-         "flag (SPEC C.5)\n";
+         "flag (docs/contour.md#the-bias-check)\n";
   out << std::fixed;
   for (const contour::StudyStep& step : steps) {
     out << std::setprecision(2) << MotionLabel(o.motion) << " = " << step.value << "\n";
@@ -294,8 +295,9 @@ void RunStudy(const StudyCommandOptions& flags, const Io& io) {
 
 void AddContourStudyCommand(CLI::App& contour, const Io& io) {
   auto flags = std::make_shared<StudyCommandOptions>();
-  CLI::App* study = contour.add_subcommand(
-      "study", "The seed's experiments: UT vs Monte Carlo along one motion (SPEC.md C.6)");
+  CLI::App* study = contour.add_subcommand("study",
+                                           "The contour paper's experiments: UT vs Monte Carlo "
+                                           "along one motion (docs/contour.md#the-experiments)");
   study->add_option("--motion", flags->motion, "tx|ty|tz|rx|ry|rz")->required();
   study->add_option("--from", flags->from, "First value (mm or degrees)")->required();
   study->add_option("--to", flags->to, "Last value (mm or degrees)")->required();

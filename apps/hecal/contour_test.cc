@@ -1,4 +1,4 @@
-// `hecal contour pose` and `hecal contour study` as DESIGN.md §4 and issue 6 state them:
+// `hecal contour pose` and `hecal contour study` as docs/cli.md states them:
 // flags, JSON fields, CSV columns, plots, and bad input (exit 2, one line, no file written).
 #include <gtest/gtest.h>
 
@@ -25,7 +25,7 @@ std::string ShapeFlag(const Vector6d& S) {
 }
 
 TEST(ContourPoseCommand, JsonRecoversAKnownMotion) {
-  // The seed's setting in mm: f = 50, Z0 = 5000; a combined motion inside the zyx ranges.
+  // The paper's setting in mm: f = 50, Z0 = 5000; a combined motion inside the zyx ranges.
   const contour::ContourCamera camera{50.0, 5000.0};
   const Eigen::Matrix3d R = contour::RotationZyx(0.3, 0.2, 1.1);
   const Eigen::Vector3d T(120.0, -80.0, -900.0);

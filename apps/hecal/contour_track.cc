@@ -236,7 +236,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
   const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
   if (!form) {
     throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
-                     "use zyx (roll–pitch–yaw, the seed's choice) or zxz");
+                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
   }
   contour::ShapeTrackerOptions tracker_options;
   const std::optional<contour::ShapeSubspace> subspace =
@@ -275,7 +275,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
         return Eigen::Vector2d(p[0], p[1]);
       }();
   contour::ShapeTracker tracker(control, principal, tracker_options);
-  // The pose model: the seed's weak perspective, or the perspective correction
+  // The pose model: the contour paper's weak perspective, or the perspective correction
   // (contour/perspective_pose.h), which needs the true principal point; auto picks it when
   // --principal-point is given.
   if (options.pose_model != "auto" && options.pose_model != "weak" &&
@@ -291,8 +291,9 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
                              : contour::PoseFromShape(s, camera, *form);
   };
   io.out << "pose model: "
-         << (perspective ? "perspective (weak-perspective bias removed, principal point given)"
-                         : "weak perspective (the seed's; give --principal-point for perspective)")
+         << (perspective
+                 ? "perspective (weak-perspective bias removed, principal point given)"
+                 : "weak perspective (the contour paper's; give --principal-point for perspective)")
          << "\n";
   const std::vector<fs::path> files = ListImageFiles(options.images, "the image sequence");
 
@@ -553,7 +554,7 @@ void AddContourTrackCommand(CLI::App& contour, const Io& io) {
       ->required();
   track->add_option("--pose-model", options->pose_model,
                     "auto (default: perspective with --principal-point, else weak), weak (the "
-                    "seed's weak perspective) or perspective (its bias removed)");
+                    "contour paper's weak perspective) or perspective (its bias removed)");
   track->add_option("--principal-point", options->principal_point,
                     "CX,CY (px; default: centroid of the init control points)");
   track->add_option("--init-points", options->init_points,

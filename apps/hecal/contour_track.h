@@ -1,4 +1,4 @@
-// `hecal contour track` and `hecal contour render` (seed 000 §II, SPEC.md C.1, C.6): follow a
+// `hecal contour track` and `hecal contour render` (docs/contour.md): follow a
 // planar contour through an image sequence with the shape-space Kalman filter
 // (contour/shape_tracker.h) and turn every shape vector into the camera motion with its UT
 // covariance (contour/pose_uncertainty.h); and render synthetic sequences with known motion to
@@ -24,7 +24,7 @@
 //   M entries dimensionless; translation in the unit of --z0; angles in degrees in the CSV and
 //   in the JSON's *_deg fields, radians in the JSON's covariance (stated in "units").
 //   status: tracked | lost (too few edges: the prediction is kept) | singular (det M ≤ 0: no
-//   pose). bias: the SPEC C.5 check (UT mean vs the pose of the mean shape) flagged a
+//   pose). bias: the bias check (UT mean vs the pose of the mean shape) flagged a
 //   parameter — expected while the tilt is small (Necker fold).
 //
 // hecal contour render --output DIR --frames N --from TX,TY,TZ,RX,RY,RZ --to TX,TY,TZ,RX,RY,RZ

@@ -75,7 +75,7 @@ TEST_F(CliTest, ContourRenderThenTrackRecoversTheMotion) {
     EXPECT_NEAR(track.Number(t, "Ty"), expected(1), 1.5) << t;
     EXPECT_NEAR(track.Number(t, "Tz"), expected(2), 15.0) << t;  // σ(Tz) ≈ 2 mm + model error
     EXPECT_NEAR(track.Number(t, "Rz_deg"), expected(5) / kDeg, 0.5) << t;
-    if (std::acos(R(2, 2)) > 10.0 * kDeg) {  // below 10° the tilt is not recoverable (SPEC C.6)
+    if (std::acos(R(2, 2)) > 10.0 * kDeg) {  // tilt below 10° is not recoverable (docs/contour.md)
       EXPECT_NEAR(track.Number(t, "Rx_deg"), expected(3) / kDeg, 2.0) << t;
       EXPECT_NEAR(track.Number(t, "Ry_deg"), expected(4) / kDeg, 2.0) << t;
     }
@@ -91,8 +91,9 @@ TEST_F(CliTest, ContourRenderThenTrackRecoversTheMotion) {
 
 // With the principal point (the render's image centre) the pose model is perspective
 // (perspective_pose.h): the weak-perspective bias is gone, and every pose component is within
-// 3.5 of its own UT σ of the true motion (Rx, Ry and Tz, which the seed shows is correlated with
-// them, from 10° of tilt on: below, the tilt's sign fold biases all three, SPEC C.5).
+// 3.5 of its own UT σ of the true motion (Rx, Ry and Tz, which the paper shows is correlated with
+// them, from 10° of tilt on: below, the tilt's sign fold biases all three,
+// docs/contour.md#the-bias-check).
 TEST_F(CliTest, ContourTrackWithThePrincipalPointRecoversTheMotionWithinItsSigma) {
   ASSERT_EQ(Render(Path("seq")).code, 0);
   const Outcome tracked = Hecal({"contour", "track", "--images", Path("seq"), "--init",

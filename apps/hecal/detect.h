@@ -1,5 +1,6 @@
 // `hecal detect --images DIR --target target.yaml [--intrinsics camera.yaml] --output camera.csv
-//               [--threads N]`                                              (DESIGN.md §4, §4.1)
+//               [--threads N]`                                              (docs/cli.md,
+//               docs/targets.md)
 // Camera poses T_camera_target from images of a calibration target, for `hecal calibrate`.
 //
 // Steps 1–5 (images, detection, intrinsics, poses, per-image report) are the image front end of

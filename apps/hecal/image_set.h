@@ -1,4 +1,4 @@
-// The image front end shared by `hecal detect` and `hecal calibrate --images` (DESIGN.md §4,
+// The image front end shared by `hecal detect` and `hecal calibrate --images` (docs/cli.md,
 // §4.1): from a folder of target images to camera poses T_camera_target with covariances.
 //
 // Steps (DetectImageSet)

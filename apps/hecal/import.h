@@ -1,4 +1,4 @@
-// `hecal import` (DESIGN.md §4): another tool's calibration samples → the canonical pose tables
+// `hecal import` (docs/cli.md): another tool's calibration samples → the canonical pose tables
 //   robot.csv   T_base_gripper_i  (id, [stamp,] x, y, z, qw, qx, qy, qz)
 //   camera.csv  T_camera_target_i
 // with '#' header lines naming the source file, the format, the convention applied (which poses

@@ -1,7 +1,7 @@
 // The real rwhe-kuka2 images (28 views, 1920×1200, chessboard 24×17 inner corners, 15 mm;
 // data/rwhe-kuka2/SOURCE.md) end to end through the CLI: `hecal detect` then `hecal calibrate
 // --camera`, with the reference intrinsics and with intrinsics estimated from the images; and
-// `hecal calibrate --images` in one step (issue 4's "done when"). Truth:
+// `hecal calibrate --images` in one step. Truth:
 // SOURCE.md's reference X = T_gripper_camera (OpenCV PARK, confirmed by TSAI/HORAUD/DANIILIDIS/
 // SHAH to 1 mm): rvec (−1.20742, 1.28362, −1.18276), t = (0.01439, −0.10790, −0.08187) m, with its
 // suggested tolerance of 0.1° / 2 mm; and its calibrateCamera reference
@@ -88,7 +88,7 @@ TEST_F(Kuka2Images, WithTheReferenceIntrinsics) {
 // corners; hecal detects with findChessboardCorners and its own edge refinement, so the two
 // differ by the detectors' small systematic differences: measured 0.008 / 0.038 / 0.015 /
 // 0.093 px for fx / fy / cx / cy, within 3 of the estimate's own 1σ (0.069 / 0.068 / 0.052 /
-// 0.040 px), which is what is asserted. RMS reprojection error ≤ 0.1 px (issue 4).
+// 0.040 px), which is what is asserted. RMS reprojection error ≤ 0.1 px.
 TEST_F(Kuka2Images, WithIntrinsicsEstimatedFromTheImages) {
   DetectAndCalibrate("");
   const std::string yaml = Read("camera.camera.yaml");

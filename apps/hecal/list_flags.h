@@ -17,7 +17,7 @@ std::vector<std::string> SplitList(const std::string& flag, const std::string& t
 std::vector<int> ParseIntList(const std::string& flag, const std::string& text, int minimum,
                               int maximum);
 
-// Method names (DESIGN.md §4) or "all" (every method in handeye::AllMethods() order).
+// Method names (docs/cli.md) or "all" (every method in handeye::AllMethods() order).
 std::vector<handeye::Method> ParseMethodList(const std::string& flag, const std::string& text);
 
 // Every method name, comma separated, for error messages and --help.

@@ -97,7 +97,7 @@ pose::CameraModel Camera(const PoseCommandOptions& options, const Io& io) {
   if (options.intrinsics.empty() == options.focal.empty()) {
     throw InputError("--focal", 0, "give exactly one of --focal and --intrinsics",
                      "--intrinsics camera.yaml for a calibrated camera, or --focal F (px) for "
-                     "the seed's pinhole without distortion");
+                     "the linear pose paper's pinhole without distortion");
   }
   if (!options.intrinsics.empty()) {
     if (!options.principal_point.empty()) {
@@ -302,8 +302,9 @@ void RegisterPoseCommand(CLI::App& app, const Io& io) {
       ->required();
   command->add_option("--image-points", options->image_points, "Image points: CSV id,u,v (px)")
       ->required();
-  command->add_option("--focal", options->focal,
-                      "Focal length F (px) of a distortion-free pinhole (seed 004's model)");
+  command->add_option(
+      "--focal", options->focal,
+      "Focal length F (px) of a distortion-free pinhole (docs/pose-from-points.md)");
   command->add_option("--principal-point", options->principal_point,
                       "CX,CY (px) with --focal (default 0,0)");
   command->add_option(

@@ -1,4 +1,4 @@
-// `hecal poses convert` (DESIGN.md §4): reads a pose table (any rotation group, units from header
+// `hecal poses convert` (docs/cli.md): reads a pose table (any rotation group, units from header
 // suffixes or flags, or 12/16-number matrix lines), optionally inverts every pose, and writes it
 // with the rotation form given by --to. id and stamp columns are kept.
 //

@@ -22,7 +22,7 @@ namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
 constexpr const char* kFooter =
-    R"(The thesis study (SPEC.md A.4): thesis-protocol data sets (random hand-eye
+    R"(The thesis study (docs/thesis-study.md): thesis-protocol data sets (random hand-eye
 transform, camera 1 m from the target, stations in a 1 m cube, +-45 deg tilt, free spin about
 the optical axis), noise on the robot and/or camera poses, every method on the same data per
 trial. Errors: angle of R_true^-1 R_est (deg) and translation distance (mm) of X.

@@ -1,4 +1,4 @@
-// `hecal simulate`: the thesis study (SPEC.md A.4, issue 3) on hecal's solvers, side by side.
+// `hecal simulate`: the thesis study (docs/thesis-study.md) on hecal's solvers, side by side.
 //
 //   hecal simulate [--setup eye-in-hand|eye-to-hand[,...]]      default eye-in-hand
 //                  [--stations N[,N...]]                        default 3,5,10,15,20
@@ -18,7 +18,7 @@
 // values (e.g. 0.2/0.05). For uniform noise the level is the half-width (±n); for systematic
 // noise it is the constant offset per component.
 // Stations count poses (the thesis' k motions are k + 1 stations); at least 3.
-// --covariance (issue 5): each trial also predicts the covariance of X that way (default: each
+// --covariance: each trial also predicts the covariance of X that way (default: each
 // method's own default, estimation::DefaultCovarianceMethod) with the setting's noise model,
 // and the table and summary gain consistency columns: mean NEES with its 95% χ² band, 1σ/2σ
 // coverage, predicted/empirical standard deviation per axis (study.h).

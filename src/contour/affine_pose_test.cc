@@ -1,5 +1,6 @@
-// Pose from affinity (SPEC.md C.2–C.3): exact inversion of the weak-perspective model on every
-// axis and combined, both rotation forms, their ranges and the Necker rule, singular input.
+// Pose from affinity (docs/contour.md#motion-from-an-affinity): exact inversion of the
+// weak-perspective model on every axis and combined, both rotation forms, their ranges and the
+// Necker rule, singular input.
 #include "hecal/contour/affine_pose.h"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace hecal::contour {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-const ContourCamera kCamera{6024.0, 5000.0};  // the seed's setting in px and mm
+const ContourCamera kCamera{6024.0, 5000.0};  // the paper's setting in px and mm
 
 Eigen::Matrix3d Zxz(double phi, double theta, double psi) {
   return MatrixFromEuler(Eigen::Vector3d(phi, theta, psi), *EulerSequence::Parse("ZXZ"));

@@ -1,4 +1,4 @@
-// The seed's contour experiments: see contour_study.h.
+// The contour paper's experiments: see contour_study.h.
 #include "hecal/contour/contour_study.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// The seed's experiments (SPEC.md C.6) reproduced: 5000-sample Monte Carlo against the true
-// motion, the UT against the Monte Carlo. Bounds are the seed's findings with margin; each
-// sweep takes well under a second.
+// The contour paper's experiments (docs/contour.md#the-experiments) reproduced: 5000-sample Monte
+// Carlo against the true motion, the UT against the Monte Carlo. Bounds are the paper's findings
+// with margin; each sweep takes well under a second.
 #include "hecal/contour/contour_study.h"
 
 #include <gtest/gtest.h>
@@ -86,7 +86,7 @@ TEST(ContourStudy, InPlaneRotationIsNegligiblyInError) {
 }
 
 TEST(ContourStudy, CorrelationsOfTheSeed) {
-  // Tilted 10° about x (the seed's Fig. 4b): Rx–Tz correlated, negatively; the lateral
+  // Tilted 10° about x (the paper's Fig. 4b): Rx–Tz correlated, negatively; the lateral
   // translations and Rz with nothing. A rotation about x gives a small spurious Ty (Fig. 4c).
   const StudyStep tilted = Sweep(StudyMotion::kRx, 10, 10, 1).front();
   EXPECT_LT(Correlation(tilted.mc_covariance, kRx, kTz), -0.3);

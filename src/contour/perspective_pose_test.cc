@@ -17,7 +17,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 TEST(PerspectivePose, RecoversTheMotionOfAPerspectiveViewExactly) {
-  // The seed's camera and target (at 5 m the perspective bias of the weak pose is tens of σ).
+  // The paper's camera and target (at 5 m the perspective bias of the weak pose is tens of σ).
   const ContourCamera camera{6024.0, 5000.0};
   const Eigen::Matrix2Xd template_points = TemplateImage(DefaultTarget(), camera);
   const PerspectivePoseModel model(template_points, camera);

@@ -1,4 +1,5 @@
-// UT vs Monte Carlo on the contour pose (SPEC.md C.4–C.5), and the bias flag near zero tilt.
+// UT vs Monte Carlo on the contour pose (docs/contour.md#uncertainty-of-the-motion), and the bias
+// flag near zero tilt.
 #include "hecal/contour/pose_uncertainty.h"
 
 #include <gtest/gtest.h>
@@ -47,7 +48,8 @@ TEST(PoseUncertainty, ThirteenSigmaPointsAndMonteCarloAgreeAwayFromZeroTilt) {
 }
 
 TEST(PoseUncertainty, BiasFlagNearZeroTiltOnly) {
-  // No tilt: the mirrored sigma points of Rx/Ry fold onto one sign (SPEC C.5).
+  // No tilt: the mirrored sigma points of Rx/Ry fold onto one sign
+  // (docs/contour.md#the-bias-check).
   const Input zero = WeakPerspectiveInput(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
   const ContourPoseUncertainty folded =
       UnscentedPose(zero.shape, zero.covariance, kCamera, RotationForm::kZyx);

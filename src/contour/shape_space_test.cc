@@ -1,5 +1,5 @@
-// Shape space (SPEC.md C.1): W S reproduces an affinity exactly, the fit inverts it, the fit
-// covariance matches a sampled one, reduced spaces, degenerate contours.
+// Shape space (docs/contour.md#shape-space): W S reproduces an affinity exactly, the fit inverts
+// it, the fit covariance matches a sampled one, reduced spaces, degenerate contours.
 #include "hecal/contour/shape_space.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ TEST(ShapeSpace, WOfTheSeedEncodesTheAffinity) {
   M << 1.1, -0.2, 0.05, 0.9;
   const Eigen::Vector2d t(3.0, -4.0);
   const Vector6d S = ShapeFromAffinity(M, t);
-  EXPECT_EQ(S(2), 1.1 - 1.0);  // the seed's order (tx, ty, M11−1, M22−1, M21, M12)
+  EXPECT_EQ(S(2), 1.1 - 1.0);  // the paper's order (tx, ty, M11−1, M22−1, M21, M12)
   EXPECT_EQ(S(4), 0.05);
   EXPECT_EQ(S(5), -0.2);
   EXPECT_LT((space.Apply(S) - Affine(Q0, M, t)).norm(), 1e-12);

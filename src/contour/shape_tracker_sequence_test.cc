@@ -1,5 +1,5 @@
-// The shape-space tracker on a rendered sequence with known motion (seed 000's setting: Z0 =
-// 5000 mm, f = 50 mm with 8.3 µm pixels, i.e. f ≈ 6024 px; the 12-point irregular target of
+// The shape-space tracker on a rendered sequence with known motion (the contour paper's setting: Z0
+// = 5000 mm, f = 50 mm with 8.3 µm pixels, i.e. f ≈ 6024 px; the 12-point irregular target of
 // contour_study.h, ~250 × 180 mm): is the covariance it reports honest?
 #include <gtest/gtest.h>
 
@@ -152,8 +152,8 @@ struct SequenceCheck {
 
 // The checks of both tests: S against ShapeFromPose (truth) and against the normal-fit reference,
 // and the pose of PoseFromShape against CanonicalPose within the UT covariance, leaving out Rx and
-// Ry while the true tilt is below 10° (SPEC C.5: there their sign is not observable and the UT is
-// biased).
+// Ry while the true tilt is below 10° (docs/contour.md#the-bias-check: there their sign is not
+// observable and the UT is biased).
 SequenceCheck Check(const Sequence& sequence) {
   SequenceCheck check;
   int frames = 0;
@@ -220,7 +220,7 @@ TEST(ShapeTrackerSequence, CovarianceIsHonestWhenTheAffineModelHolds) {
 
 // On true perspective images the tracker is still honest about what it measures — the affinity
 // that best fits the image (NormalFitReference) — but that affinity is not weak perspective's
-// ShapeFromPose of the motion: with the seed's target (≈ 250 × 180 mm at 5 m) the perspective
+// ShapeFromPose of the motion: with the paper's target (≈ 250 × 180 mm at 5 m) the perspective
 // term f·sin(tilt)·X²/Z0² reaches ~0.8 px at the target's edge at 20° of tilt, and shifts the
 // fitted translation by about f·sin(tilt)·mean(X²)/Z0², tens of the tracker's σ. This test pins
 // both facts down (figures in the report printed above).

@@ -17,7 +17,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Independent check: the Cramér–Rao bound of the FULL measurement model, with the true camera
 // poses T_i = T_camera_target_i as nuisance parameters, built by numeric differentiation and
-// reduced to (X, Z) by inverting the whole information matrix. Measurements (DESIGN.md §2):
+// reduced to (X, Z) by inverting the whole information matrix. Measurements (docs/conventions.md):
 //   camera  B̃_i = T_i · Exp(n_c)                     e_c = Log(T_i⁻¹ B̃_i)
 //   robot   G̃_i = G_i(X, Z, T_i) · Exp(n_g)          e_g = Log(G_i⁻¹ G̃_i)
 //   eye-in-hand  G_i = Z T_i⁻¹ X⁻¹,   eye-to-hand  G_i = X T_i Z⁻¹.

@@ -69,10 +69,10 @@ TEST(PropagateCovariance, NumericLinearThroughMlEqualsTheInformationMatrix) {
 }
 
 // UT vs Monte Carlo through the solver, per axis of X and Z, for ml and a closed-form method,
-// both setups: within 10% (the criterion for n ≥ 10) plus 3 standard errors of the MC
-// standard deviation (2000 samples: ~1.6%). The information covariance (no solves) matches the
-// MC as closely for ml, which attains it, and is a lower bound for the closed form: no axis
-// above the MC by more than the 3 standard errors.
+// both setups: within 10% (the criterion of docs/uncertainty.md for n ≥ 10) plus 3 standard errors
+// of the MC standard deviation (2000 samples: ~1.6%). The information covariance (no solves)
+// matches the MC as closely for ml, which attains it, and is a lower bound for the closed form: no
+// axis above the MC by more than the 3 standard errors.
 TEST(PropagateCovariance, UnscentedMatchesMonteCarloAndTheInformationBoundsIt) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     for (handeye::Method method : {handeye::Method::kMl, handeye::Method::kParkMartin}) {

@@ -85,7 +85,7 @@ TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
   EXPECT_NEAR(at_target(result.result.robot_sigma) / at_target({0.02 * kDeg, 0.1e-3}), 1.0, 0.3);
 }
 
-// Issue 4: the reprojection refinement is at least as accurate as the pose-level ml it starts
+// The reprojection refinement is at least as accurate as the pose-level ml it starts
 // from. 100 data sets of 10 images, 0.5 px pixel noise, robot noise 0.01° / 0.05 mm, both
 // estimated: RMS X error over the data sets, rotation and translation. Measured: eye-in-hand
 // 0.117° / 2.10 mm → 0.045° / 0.81 mm, eye-to-hand 0.108° / 1.95 mm → 0.027° / 0.47 mm.

@@ -1,5 +1,5 @@
-// The statistical acceptance study of issue 3 ("Done when"), label "slow": the thesis protocol
-// (SPEC.md A.4), σ = 1 mm / 1° per component on robot AND camera, 200 trials per setting.
+// The statistical acceptance study of docs/thesis-study.md, label "slow": the thesis protocol
+// (docs/thesis-study.md), σ = 1 mm / 1° per component on robot AND camera, 200 trials per setting.
 //  - n = 15: ml's rotation and translation RMSE of X within 10% of the first-order bound
 //    (bound.h; RMSE_bound = sqrt(mean over trials of each trial's bound²)), with the true
 //    sigmas given and with the sigmas estimated from the residuals;

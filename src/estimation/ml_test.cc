@@ -136,9 +136,9 @@ StudyFigures Study(handeye::Setup setup, int stations, int trials, double sigma_
 // Statistical acceptance, short version (the 200-trial study is ml_slow_test.cc). Over T trials
 // the squared error per trial is a sum of 3 squared near-Gaussian components, whose relative
 // spread is ≈ √(2/3) ≈ 0.82, so the RMSE / bound ratio has a relative standard error of about
-// 0.82 / (2√T): 6.5% for T = 40. The band ±20% is 3σ; a systematic 10% excess over the bound
-// (what the issue allows) stays inside it, while e.g. Park–Martin (1.6× the bound on these data,
-// issue 3) or a wrong noise model falls out. No single trial may exceed 10× its own bound.
+// 0.82 / (2√T): 6.5% for T = 40. The band ±20% is 3σ; a systematic 10% excess over the bound stays
+// inside it, while e.g. Park–Martin (1.6× the bound on these data) or a wrong noise model falls
+// out. No single trial may exceed 10× its own bound.
 TEST_P(MlTest, AttainsTheFirstOrderBoundShortStudy) {
   const StudyFigures f = Study(GetParam(), 15, 40, 1.0, 1000);
   std::printf(
@@ -154,7 +154,7 @@ TEST_P(MlTest, AttainsTheFirstOrderBoundShortStudy) {
 }
 
 // Multi-start: at n = 5, σ = 1 mm / 1° a single start can land in a wrong local minimum
-// (issue 3: ~10% of trials for a Park–Martin start; here the start is made deliberately bad —
+// (~10% of trials for a Park–Martin start; here the start is made deliberately bad —
 // X rotated by 150° — which does so in ~40% of trials). From that bad start together with all
 // closed-form starts, ml must always reach the global minimum, checked against a refinement
 // started at the truth.

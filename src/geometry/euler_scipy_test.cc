@@ -177,7 +177,7 @@ std::vector<EulerTarget> AllEulerTargets() {
     stem.append(seq);
     targets.push_back({stem, seq, false, {"a1", "a2", "a3"}});
   }
-  // DESIGN.md §2 presets.
+  // docs/conventions.md presets.
   targets.push_back({"rpy", "xyz", false, {"roll", "pitch", "yaw"}});
   targets.push_back({"kuka", "ZYX", true, {"a_deg", "b_deg", "c_deg"}});
   targets.push_back({"fanuc", "xyz", true, {"w_deg", "p_deg", "r_deg"}});

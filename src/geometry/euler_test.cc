@@ -1,8 +1,8 @@
-// Euler angles checked against an independent definition written out here (DESIGN.md §2,
-// issue 2): elementary rotations as explicit matrices, and the two conventions built from their
-// geometric meaning — extrinsic: rotate about the fixed world axes, one after the other;
-// intrinsic: rotate about the current (moving) body axes, one after the other. Neither uses the
-// code under test.
+// Euler angles checked against an independent definition written out here
+// (docs/conventions.md#euler-angles): elementary rotations as explicit matrices, and the two
+// conventions built from their geometric meaning — extrinsic: rotate about the fixed world axes,
+// one after the other; intrinsic: rotate about the current (moving) body axes, one after the other.
+// Neither uses the code under test.
 #include "hecal/geometry/euler.h"
 
 #include <gtest/gtest.h>
@@ -493,7 +493,8 @@ TEST(EulerSequence, ExtrinsicAndIntrinsicDifferForTheSameLetters) {
   EXPECT_GT(MaxAbs(MatrixFromEuler(a, Seq("xyz")) - MatrixFromEuler(a, Seq("XYZ"))), 0.1);
 }
 
-// --- the contour paper's ZXZ form (SPEC.md C.2) ------------------------------------------------
+// --- the contour paper's ZXZ form (docs/contour.md#motion-from-an-affinity)
+// ------------------------------------------------
 
 TEST(Euler, ContourPaperZxzForm) {
   // R = Rz(φ) Rx(θ) Rz(ψ) — intrinsic ZXZ. The paper's affinity M = s · R[0:2, 0:2] satisfies

@@ -3,10 +3,10 @@
 // SVD form: for M = U Σ Vᵀ (σ1 ≥ σ2 ≥ σ3), argmax_R tr(Rᵀ M) over SO(3) is
 // U diag(1, 1, det(U Vᵀ)) Vᵀ (Umeyama 1991, lemma; Horn, Hilden & Negahdaripour 1988).
 //
-// Quaternion form, seed 004 ("A simple algorithm for determining the position and the orientation
-// of rigid bodies basing on visual information", Silesian Univ. of Technology; SPEC.md B.4;
-// section 5, eqs. 27–32, after Horn 1987 / Faugeras): for a unit quaternion q, R(q) e = q * e * q̄,
-// so
+// Quaternion form, the linear pose paper ("A simple algorithm for determining the position and the
+// orientation of rigid bodies basing on visual information", Silesian Univ. of Technology;
+// docs/pose-from-points.md; section 5, eqs. 27–32, after Horn 1987 / Faugeras): for a unit
+// quaternion q, R(q) e = q * e * q̄, so
 //   ‖m_i − R(q) e_i‖ = ‖m_i * q − q * e_i‖ = ‖D_i q‖,
 //   D_i = Q(m_i) − W(e_i) = [ 0          (e_i − m_i)ᵀ ]
 //                           [ m_i − e_i  [m_i + e_i]×  ]                      (eq. 31, 32)

@@ -1,4 +1,4 @@
-// The nearest rotation in the Frobenius norm: the SVD polar projection and seed 004's
+// The nearest rotation in the Frobenius norm: the SVD polar projection and the linear pose paper's
 // quaternion-eigenvector form (eqs. 28–32) must agree, return rotations, and be optimal.
 #include "hecal/geometry/nearest_rotation.h"
 
@@ -164,7 +164,7 @@ TEST(NearestRotation, IsNoFartherThanOtherRotations) {
 }
 
 TEST(NearestRotation, QuaternionFormMinimisesTheSeedObjective) {
-  // The seed's objective Σ_i ‖m_i * q − q * e_i‖² over the columns equals ‖M − R(q)‖_F², so the
+  // The paper's objective Σ_i ‖m_i * q − q * e_i‖² over the columns equals ‖M − R(q)‖_F², so the
   // quaternion answer's objective must not exceed that of nearby unit quaternions.
   std::mt19937_64 rng(19);
   std::normal_distribution<double> normal;

@@ -2,7 +2,7 @@
 // unsupported MatrixFunctions, Padé with scaling and squaring), screw motions constructed from an
 // axis line, the adjoint identities, and finite differences of Exp/Log for the Jacobians —
 // including both sides of se3.cc's series threshold (θ = 0.1), so3.cc's (θ = 1e-2), and near π.
-// Tangent order is (ω, v), rotation first (DESIGN.md §2).
+// Tangent order is (ω, v), rotation first (docs/conventions.md).
 #include "hecal/geometry/se3.h"
 
 #include <gtest/gtest.h>

@@ -21,7 +21,7 @@
 namespace hecal::handeye {
 namespace {
 
-// Order of `--method all`: the enum order (DESIGN.md §4): the motion-based closed forms, the
+// Order of `--method all`: the enum order (docs/cli.md): the motion-based closed forms, the
 // absolute-pose closed forms, then the refinements.
 constexpr MethodInfo kMethods[] = {
     {Method::kTsaiLenz, "tsai-lenz",

@@ -1,4 +1,4 @@
-// The checks every rotation-then-translation solver must pass (issue 3), run on each of them:
+// The checks every rotation-then-translation solver must pass, run on each of them:
 // Tsai–Lenz, Park–Martin, Horaud–Dornaika (R then t), Chou–Kamel, Shiu–Ahmad. Solver-specific
 // behaviour is tested in each solver's own <name>_test.cc.
 #include <gtest/gtest.h>
@@ -76,7 +76,7 @@ TEST_P(RotationThenTranslation, ExactWhenEveryMotionIsAHalfTurn) {
 }
 
 // 200 seeded thesis-protocol data sets, n = 5…15, σ = 0.3 mm / 0.3° on robot and camera: no
-// catastrophic trial (> 10°, the acceptance criterion of issue 3).
+// catastrophic trial (> 10°, the acceptance criterion of docs/thesis-study.md).
 TEST_P(RotationThenTranslation, NoCatastrophicTrialWithNoise) {
   const testing::NoisyStudy study = testing::RunNoisyStudy(ProblemSolver(), 200, GetParam().seed);
   EXPECT_LT(study.worst_rotation_deg, 10.0);

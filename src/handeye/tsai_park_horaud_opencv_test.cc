@@ -81,11 +81,11 @@ TEST(TsaiParkHoraudOpenCvPeer, AtLeastAsAccurateOnNoisyBenignData) {
   }
 }
 
-// The thesis protocol (SPEC.md A.4: ±45° tilt, free spin about the optical axis, so relative
-// rotations reach 180°; X a uniformly random rotation), noise-free: hecal's three solvers are
-// exact on every data set. For the record, OpenCV 4.6's TSAI (tan(θ_X/2) blows up for X near π;
+// The thesis protocol (docs/thesis-study.md: ±45° tilt, free spin about the optical axis, so
+// relative rotations reach 180°; X a uniformly random rotation), noise-free: hecal's three solvers
+// are exact on every data set. For the record, OpenCV 4.6's TSAI (tan(θ_X/2) blows up for X near π;
 // canonical Rodrigues signs near π) and HORAUD (w ≥ 0 quaternion signs near π) fail on a large
-// share of the data sets (issue 3 reports 80–180° errors; here about 2/3 for TSAI and 40% for
+// share of the data sets (80–180° errors; here about 2/3 for TSAI and 40% for
 // HORAUD at n = 10); its PARK works.
 TEST(TsaiParkHoraudOpenCvPeer, ThesisProtocolBreaksOpenCvTsaiAndHoraudNotHecal) {
   constexpr int kDataSets = 40;

@@ -1,4 +1,4 @@
-// Seed 004's linear pose (see linear_pose.h for the method, its equations and edge cases).
+// the linear pose paper's method (see linear_pose.h for the method, its equations and edge cases).
 #include "hecal/pose/linear_pose.h"
 
 #include <Eigen/Eigenvalues>
@@ -130,7 +130,7 @@ LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object
   const std::size_t n = object_points.size();
   if (n < kMinPoints) {
     throw DegenerateError(
-        "the camera pose with seed 004 (linear): it needs at least 6 "
+        "the camera pose with the linear method (linear): it needs at least 6 "
         "non-coplanar points, got " +
             std::to_string(n),
         "give 6 or more points off one plane, or use --method sqpnp (3 or "
@@ -139,7 +139,7 @@ LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object
   const PointSpread spread = AnalyseSpread(object_points);
   if (spread.Coplanar(options.planarity_tolerance)) {
     throw DegenerateError(
-        "the camera pose with seed 004 (linear): it needs non-coplanar object "
+        "the camera pose with the linear method (linear): it needs non-coplanar object "
         "points, but these lie on one plane (thickness/extent " +
             Number(spread.singular_values(2) / spread.singular_values(0)) + ")",
         "for a planar target use --method ippe or dlt (homography)");
@@ -147,16 +147,16 @@ LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object
 
   if (const std::optional<std::size_t> lone =
           LonePointOffAPlane(object_points, spread, options.planarity_tolerance)) {
-    throw DegenerateError("the camera pose with seed 004 (linear): all object points but point " +
-                              std::to_string(*lone + 1) +
-                              " lie on one plane, which leaves its system singular",
-                          "add at least one more point off that plane, or use --method ippe or "
-                          "dlt on the planar points alone");
+    throw DegenerateError(
+        "the camera pose with the linear method (linear): all object points but point " +
+            std::to_string(*lone + 1) + " lie on one plane, which leaves its system singular",
+        "add at least one more point off that plane, or use --method ippe or "
+        "dlt on the planar points alone");
   }
   const SeedSystem system = SolveSeedSystem(object_points, normalized);
   if (system.reciprocal_condition < kSingular) {
     throw DegenerateError(
-        "the camera pose with seed 004 (linear): its system U is numerically "
+        "the camera pose with the linear method (linear): its system U is numerically "
         "singular (reciprocal condition " +
             Number(system.reciprocal_condition) +
             "): the points and the camera are in a critical configuration",
@@ -167,7 +167,7 @@ LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object
   const double a = std::sqrt(3.0) / g_norm;
   if (!(g_norm > 0.0) || !std::isfinite(a)) {
     throw DegenerateError(
-        "the camera pose with seed 004 (linear): the depth of the first point "
+        "the camera pose with the linear method (linear): the depth of the first point "
         "(all image points coincide with it)",
         "check the image points; the object must have an extent in the image");
   }

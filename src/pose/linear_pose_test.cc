@@ -1,6 +1,6 @@
-// Seed 004's linear pose: exact on noise-free data, literally the paper's estimator on noisy data
-// (a transcription of eqs. 18–26 in pixels with F ≠ 1), invariant to the length unit, and the
-// refusals with their advice (coplanar, a plane plus one point, too few points).
+// the linear pose paper's method: exact on noise-free data, literally the paper's estimator on
+// noisy data (a transcription of eqs. 18–26 in pixels with F ≠ 1), invariant to the length unit,
+// and the refusals with their advice (coplanar, a plane plus one point, too few points).
 #include "hecal/pose/linear_pose.h"
 
 #include <gtest/gtest.h>
@@ -51,9 +51,9 @@ TEST(LinearPose, ExactOnNoiseFreeData) {
   }
 }
 
-// Seed 004 transcribed literally in pixels (X = F x/z, P1 at the object origin, normal equations,
-// eq. 23 for the scale), orthogonalised by SVD: the estimate the paper defines, here on noisy data
-// where different linear estimators differ.
+// The linear pose paper transcribed literally in pixels (X = F x/z, P1 at the object origin, normal
+// equations, eq. 23 for the scale), orthogonalised by SVD: the estimate the paper defines, here on
+// noisy data where different linear estimators differ.
 Pose PaperEstimate(const std::vector<Eigen::Vector3d>& object,
                    const std::vector<Eigen::Vector2d>& XY, double F) {
   const std::size_t n = object.size();
@@ -144,7 +144,7 @@ TEST(LinearPose, RefusesCoplanarPointsAndSuggestsOtherMethods) {
   testing::PoseScene scene = RandomScene(rng, 20, SceneShape::kPlane);
   const std::string planar =
       DegenerateMessage([&] { LinearPose(scene.object_points, scene.pixels, scene.camera); });
-  EXPECT_NE(planar.find("seed 004"), std::string::npos) << planar;
+  EXPECT_NE(planar.find("the linear method"), std::string::npos) << planar;
   EXPECT_NE(planar.find("non-coplanar"), std::string::npos) << planar;
   EXPECT_NE(planar.find("--method ippe"), std::string::npos) << planar;
   EXPECT_NE(planar.find("dlt"), std::string::npos) << planar;

@@ -10,11 +10,13 @@ namespace {
 
 constexpr std::array<PoseMethodInfo, 3> kMethods = {{
     {PoseMethod::kLinear, "linear",
-     "seed 004 linear pose, then Levenberg-Marquardt on the reprojection error (6+ non-coplanar "
+     "the linear method of docs/pose-from-points.md, then Levenberg-Marquardt on the reprojection "
+     "error (6+ non-coplanar "
      "points)",
      true},
     {PoseMethod::kLinearRaw, "linear-raw",
-     "seed 004 linear pose alone, the paper's estimate (6+ non-coplanar points, no covariance)",
+     "the linear method of docs/pose-from-points.md alone, the paper's estimate (6+ non-coplanar "
+     "points, no covariance)",
      false},
     {PoseMethod::kDlt, "dlt",
      "normalised DLT (6+ non-coplanar points) or homography (4+ coplanar), then "
@@ -57,7 +59,7 @@ PoseEstimate EstimatePose(PoseMethod method, const std::vector<Eigen::Vector3d>&
   if (seed.rotation_residual > kUnreliableRotationResidual) {
     std::ostringstream warning;
     warning.precision(2);
-    warning << "seed 004's rotation estimate is far from a rotation (residual "
+    warning << "the linear rotation estimate is far from a rotation (residual "
             << seed.rotation_residual << " > " << kUnreliableRotationResidual
             << "): its pose may be tens of degrees off"
             << (info.refined ? " and the refinement may have stopped in a local minimum" : "")

@@ -1,6 +1,6 @@
-// Pose methods by name: the names, what each method returns (linear-raw = seed 004 alone, no
-// covariance; linear and dlt = refined, with covariance), agreement of the refined methods at the
-// same maximum-likelihood pose, and the advice when a method refuses the data.
+// Pose methods by name: the names, what each method returns (linear-raw = the linear pose paper
+// alone, no covariance; linear and dlt = refined, with covariance), agreement of the refined
+// methods at the same maximum-likelihood pose, and the advice when a method refuses the data.
 #include "hecal/pose/pose_method.h"
 
 #include <gtest/gtest.h>
@@ -73,7 +73,7 @@ TEST(PoseMethod, RefinedMethodsReachTheSameMaximumLikelihoodPose) {
     EXPECT_LT(RotationError(linear.T_camera_target, dlt.T_camera_target), 1e-8);
     EXPECT_LT((linear.T_camera_target.translation() - dlt.T_camera_target.translation()).norm(),
               1e-8);
-    // Refinement only lowers the reprojection error of the seed's estimate.
+    // Refinement only lowers the reprojection error of the paper's estimate.
     EXPECT_LE(linear.rms_px, raw.rms_px + 1e-12);
   }
 }
@@ -102,7 +102,8 @@ TEST(PoseMethod, WarnsWhenTheSeedEstimateIsUnreliable) {
     EXPECT_TRUE(
         EstimatePose(method, scene.object_points, scene.pixels, scene.camera).warnings.empty());
   }
-  // Two image points swapped: seed 004's step 3 is far from a rotation (residual ≈ 0.8).
+  // Two image points swapped: the linear pose paper's step 3 is far from a rotation (residual ≈
+  // 0.8).
   std::vector<Eigen::Vector2d> swapped = scene.pixels;
   std::swap(swapped[0], swapped[5]);
   EXPECT_GT(LinearPose(scene.object_points, swapped, scene.camera).rotation_residual,

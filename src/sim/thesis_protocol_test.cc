@@ -31,7 +31,7 @@ TEST(ThesisProtocol, NoiseFreeDataSatisfyTheModelInBothSetups) {
     const SimulatedData data = SimulateThesisProtocol(options, {}, {}, rng);
     ASSERT_EQ(data.T_base_gripper.size(), 20u);
     EXPECT_LT(MaxModelError(data, /*measured=*/true), 1e-12);
-    // Explicit model of DESIGN.md §2, written without handeye::MakeProblem.
+    // Explicit model of docs/conventions.md, written without handeye::MakeProblem.
     for (int i = 0; i < 20; ++i) {
       const Pose& G = data.T_base_gripper[i];
       const Pose& C = data.T_camera_target[i];

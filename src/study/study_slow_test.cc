@@ -1,6 +1,6 @@
-// Issue 3's "Done when" figures on the thesis protocol, as a slow test (label "slow"; a
+// The figures of docs/thesis-study.md on the thesis protocol, as a slow test (label "slow"; a
 // few seconds on 2 cores in Release, much longer under sanitizers). `hecal simulate` produces
-// the same numbers for the issue note.
+// the same numbers for the README's tables.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -76,9 +76,10 @@ TEST(ThesisStudy, NoCatastrophicClosedFormTrialAtLowNoise) {
   }
 }
 
-// Issue 5's "Done when" on 200 thesis-protocol trials (n = 15, σ = 1 mm / 1° on both), ml
-// with the UT through the solver, both setups (the linear covariance is checked in the unit
-// test): mean NEES in the 95% χ² band, 1σ/2σ coverage within 5 points (sampling sd 3.3 / 1.5).
+// The covariance consistency check of docs/uncertainty.md on 200 thesis-protocol trials (n = 15, σ
+// = 1 mm / 1° on both), ml with the UT through the solver, both setups (the linear covariance is
+// checked in the unit test): mean NEES in the 95% χ² band, 1σ/2σ coverage within 5 points (sampling
+// sd 3.3 / 1.5).
 TEST(ThesisStudy, MlUnscentedCovarianceIsConsistent) {
   StudyOptions options;
   options.settings = Sweep({15}, 1.0, 1.0);

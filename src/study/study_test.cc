@@ -204,9 +204,9 @@ TEST(StudyCsv, HeaderAndOneRowPerTrialAndMethod) {
   EXPECT_EQ(FormatNumber(1.0 / 3.0), "0.333333333");
 }
 
-// Issue 5's consistency criterion on the thesis protocol (n = 15, σ = 1 mm / 1° on both,
-// 200 trials, the default seed), for ml with its linear covariance in both setups: the mean
-// NEES lies in the 95% χ² band for 6 dof × 200 trials, and the 1σ/2σ ellipsoid coverage is
+// The covariance consistency criterion of docs/uncertainty.md on the thesis protocol (n = 15, σ = 1
+// mm / 1° on both, 200 trials, the default seed), for ml with its linear covariance in both setups:
+// the mean NEES lies in the 95% χ² band for 6 dof × 200 trials, and the 1σ/2σ ellipsoid coverage is
 // within 5 points of 68.3/95.4% (the sampling standard deviation of a 200-trial coverage is
 // 3.3 / 1.5 points; the README reports the exact figures and larger runs).
 StudyOptions MlLinearStudy(std::vector<Setting> settings, int trials) {

@@ -1,4 +1,4 @@
-// Test support (not installed): the checks every closed-form hand–eye solver must pass (issue 3),
+// Test support (not installed): the checks every closed-form hand–eye solver must pass,
 // shared by the per-solver tests so each test file only names its solver.
 //  - NoiseFreeCases: thesis protocol n = 3, 5, 15, 50 and WideRotationCase (170°–179.9°
 //    relative rotations; random X, X rotated by exactly π, by 179.999°), both setups.

@@ -45,7 +45,7 @@ constexpr std::array<FamilyFunctions, 9> kFamilies = {{
 // p[0] bottom-left, p[1] bottom-right, p[2] top-right, p[3] top-left. hecal's corner k (aruco
 // order: top-left, top-right, bottom-right, bottom-left) is p[3 − k].
 constexpr int kAprilTagCornerOf[4] = {3, 2, 1, 0};
-// libapriltag puts pixel centres at (x + 0.5, y + 0.5) (AprilRobotics/apriltag issue 121);
+// libapriltag puts pixel centres at (x + 0.5, y + 0.5) (AprilRobotics/apriltag GitHub #121);
 // OpenCV and hecal at (x, y).
 constexpr double kPixelCentreOffset = 0.5;
 

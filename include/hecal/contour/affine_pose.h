@@ -1,4 +1,5 @@
-// Camera motion from the affinity of a planar contour (SPEC.md C.2–C.3; seed 000 eqs. 5–16).
+// Camera motion from the affinity of a planar contour (docs/contour.md#motion-from-an-affinity; the
+// contour paper eqs. 5–16).
 //
 // Frame and model (object-centred, weak perspective). In the initial view the target plane is
 // fronto-parallel at distance Z0 on the optical axis. After the motion a target point p (plane
@@ -6,7 +7,7 @@
 // point with the depth of the target origin, Z0 + Tz, so the image d = f (x, y)/Z0 of the
 // initial view becomes d' = M d + t with
 //   M = Z0/(Z0 + Tz) [R11 R12; R21 R22],   t = f/(Z0 + Tz) (Tx, Ty)            (eqs. 5–6)
-// (the seed's eq. 6 leaves f out; eqs. 14–15 put it back). Image coordinates are measured from
+// (the paper's eq. 6 leaves f out; eqs. 14–15 put it back). Image coordinates are measured from
 // the principal point in the unit of f; Tx, Ty, Tz are in the unit of Z0.
 //
 // Inverse (eqs. 9–15): λ1 ≥ λ2 the eigenvalues of M Mᵀ = Rz(φ) diag(L, L cos²θ) Rz(φ)ᵀ,
@@ -18,14 +19,14 @@
 // λ2 is det(M)²/λ1 and λ1 − λ2 = √(((MMᵀ)11 − (MMᵀ)22)² + 4 (MMᵀ)12²), both free of
 // cancellation, so the inverse is exact to rounding for every θ in [0, π/2).
 //
-// The Necker ambiguity (SPEC C.3). Weak perspective sees R and its mirror N R N, N = diag(1, 1,
-// −1) (the plane tilted the other way), identically: both have the same 2×2 block. Each
-// rotation form returns one of the two, deterministically:
+// The Necker ambiguity (docs/contour.md#rotation-representation). Weak perspective sees R and its
+// mirror N R N, N = diag(1, 1, −1) (the plane tilted the other way), identically: both have the
+// same 2×2 block. Each rotation form returns one of the two, deterministically:
 //   zxz (R = Rz(φ) Rx(θ) Rz(ψ)):  θ ∈ [0, π/2), φ ∈ [0, π), ψ ∈ [0, 2π). θ = 0 (λ1 = λ2, the
 //       gimbal lock of this form): φ = 0 and ψ is the whole in-plane rotation.
-//   zyx (roll–pitch–yaw, R = Rz(c) Ry(b) Rx(a), the seed's eq. 16; euler = (c, b, a), i.e.
+//   zyx (roll–pitch–yaw, R = Rz(c) Ry(b) Rx(a), the paper's eq. 16; euler = (c, b, a), i.e.
 //       (Rz, Ry, Rx)): Rz ∈ [0, 2π), |Rx|, |Ry| < π/2, and of the mirror pair the member with
-//       Rx + Ry ≥ 0 (at Rx + Ry = 0: Rx ≥ 0). The seed restricts both to [0, π/2); that rule
+//       Rx + Ry ≥ 0 (at Rx + Ry = 0: Rx ≥ 0). The paper restricts both to [0, π/2); that rule
 //       picks the same member whenever Rx and Ry share a sign, and for opposite signs (where no
 //       member has both ≥ 0) it keeps the larger one positive, so it is defined everywhere.
 // Singular input (DegenerateError): det M ≤ 0 — a singular M (λ2 = 0: the plane seen edge-on,

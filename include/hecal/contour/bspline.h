@@ -1,6 +1,6 @@
 // Closed uniform cubic B-spline contours (Blake and Isard, "Active Contours", 1998, ch. 3;
-// SPEC.md C.1): the curve r(s) = Σ_i B(s − i) Q_i over N control points Q_i, periodic in s with
-// period N (one unit of s per span), so the curve is C² and closed.
+// docs/contour.md#shape-space): the curve r(s) = Σ_i B(s − i) Q_i over N control points Q_i,
+// periodic in s with period N (one unit of s per span), so the curve is C² and closed.
 //
 // On span k (s = k + u, u ∈ [0, 1)) the four weights of Q_{k−1}, Q_k, Q_{k+1}, Q_{k+2} are
 //   b0 = (1 − u)³/6,  b1 = (3u³ − 6u² + 4)/6,  b2 = (−3u³ + 3u² + 3u + 1)/6,  b3 = u³/6

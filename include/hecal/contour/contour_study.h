@@ -1,8 +1,8 @@
-// The seed's experiments (SPEC.md C.6; seed 000 §V, Figs. 2–4): how precisely the camera motion
-// is recovered from a contour, and whether the Unscented Transform's 13 points predict the
-// uncertainty a 5000-sample Monte Carlo measures.
+// The contour paper's experiments (docs/contour.md#the-experiments; the contour paper §V, Figs.
+// 2–4): how precisely the camera motion is recovered from a contour, and whether the Unscented
+// Transform's 13 points predict the uncertainty a 5000-sample Monte Carlo measures.
 //
-// Setting (the seed's, by default): a planar target 5000 mm in front of a camera with f = 50 mm;
+// Setting (the paper's, by default): a planar target 5000 mm in front of a camera with f = 50 mm;
 // pure motions along one axis of the target-centred frame (affine_pose.h), swept from `from` to
 // `to` in `steps` values; Gaussian noise of σ = 0.5 px on each coordinate of the perspective
 // projection of the control points (perspective_view.h, so weak perspective's model error is in
@@ -11,13 +11,13 @@
 //    turned into a pose (affine_pose.h, zyx); their mean error against the true motion, standard
 //    deviation and covariance;
 //  - UT: the 13 sigma points of S ~ (S̄, Σ_S), S̄ the fit of the noise-free projection and
-//    Σ_S = σ²(WᵀW)⁻¹. The seed estimated Σ_S by Monte Carlo; because the fit is linear in the
+//    Σ_S = σ²(WᵀW)⁻¹. The paper estimated Σ_S by Monte Carlo; because the fit is linear in the
 //    points this is its exact value, so the UT's input does not share the Monte Carlo's sampling
 //    error (the test checks the two agree);
 //  - the bias flag of pose_uncertainty.h.
-// The sensor is not given in the seed; the default pixel is 8.3 µm (a 768 × 576, 1/2-inch CCD of
+// The sensor is not given in the paper; the default pixel is 8.3 µm (a 768 × 576, 1/2-inch CCD of
 // the period: 6.4 × 4.8 mm, so a 250 mm lateral motion at 5 m moves the target's image 2.5 mm, from
-// the centre to near the edge, as the seed describes). The default target (DefaultTarget) is an
+// the centre to near the edge, as the paper describes). The default target (DefaultTarget) is an
 // irregular closed contour of 12 control points; its curve spans 222 × 125 mm (268 × 151 px at
 // 5 m).
 #pragma once

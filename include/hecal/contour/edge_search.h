@@ -1,6 +1,6 @@
 // One-dimensional edge search along a curve normal — the measurement process of the active
 // contour (Blake and Isard, "Active Contours", 1998, ch. 5 "Image processing techniques for
-// feature location", §5.1–5.3; seed 000 §II: the contour is attracted to the image edges).
+// feature location", §5.1–5.3; the contour paper §II: the contour is attracted to the image edges).
 //
 // From a curve point r and its unit normal n, the intensity profile p(t) = I(r + t n) is sampled
 // by bilinear interpolation (gray_image.h) at t_k = k · step, |t_k| ≤ range. Its derivative g is

@@ -1,14 +1,15 @@
-// The camera motion of a contour without weak perspective's bias (an extension of SPEC.md C.2).
+// The camera motion of a contour without weak perspective's bias (an extension of
+// docs/contour.md#motion-from-an-affinity).
 //
 // PoseFromShape inverts the weak-perspective model exactly, so on a true pinhole image it is
 // biased: the best affine fit of a perspective image is not the weak-perspective affinity of the
-// motion (the seed's "spurious Ty" under a rotation about x is one face of this). The bias
+// motion (the paper's "spurious Ty" under a rotation about x is one face of this). The bias
 // grows with the target's size over its distance and with the tilt, and for a well-tracked
-// contour it is many standard deviations (docs: with the seed's target at 5 m and 20° of tilt,
+// contour it is many standard deviations (docs: with the paper's target at 5 m and 20° of tilt,
 // 0.8 px at the rim; Tx off by 30σ).
 //
 // PerspectivePoseModel::Pose removes it. The template (the first view, image coordinates
-// relative to the principal point) is taken, as in the seed, as the fronto-parallel view of the
+// relative to the principal point) is taken, as in the paper, as the fronto-parallel view of the
 // target at distance Z0, so the target's own curve is template · Z0/f. Let A(R, T) be the
 // affine fit the tracker (shape_tracker.h) converges to on the true perspective image of that
 // curve after the motion: the least-squares fit of the normal distances from the affine curve's

@@ -1,10 +1,11 @@
-// The uncertainty of the camera motion recovered from a contour (SPEC.md C.4–C.5; seed 000
-// §IV): the shape vector S ~ (S̄, Σ_S) (from the Kalman tracker, or σ²(WᵀW)⁻¹ for a fit of
-// noisy control points) is propagated through PoseFromShape to the six pose parameters
-// (Tx, Ty, Tz and the Euler angles of the rotation form, PoseParameters order):
-//  - UnscentedPose: the Unscented Transform with the seed's symmetric set, 2·6 + 1 = 13 sigma
-//    points (uncertainty/unscented.h). Default centre weight w0 = 0: the twelve outer points
-//    at ±√6 σ along the Cholesky columns carry the weight, 1/12 each. The seed leaves w0 free;
+// The uncertainty of the camera motion recovered from a contour
+// (docs/contour.md#uncertainty-of-the-motion; the contour paper §IV): the shape vector S ~ (S̄,
+// Σ_S) (from the Kalman tracker, or σ²(WᵀW)⁻¹ for a fit of noisy control points) is propagated
+// through PoseFromShape to the six pose parameters (Tx, Ty, Tz and the Euler angles of the rotation
+// form, PoseParameters order):
+//  - UnscentedPose: the Unscented Transform with the contour paper's symmetric set, 2·6 + 1 = 13
+//    sigma points (uncertainty/unscented.h). Default centre weight w0 = 0: the twelve outer points
+//    at ±√6 σ along the Cholesky columns carry the weight, 1/12 each. The paper leaves w0 free;
 //    the general default of unscented.h, 1 − n/3 = −1 (points at ±√3 σ, covariance about f(S̄)),
 //    matches Monte Carlo as well (within 3%) once the tilt is 10° or more, but at zero tilt —
 //    where λ1 of M Mᵀ has a kink, so Tz, Rx and Ry are not differentiable — it reports the
@@ -14,12 +15,12 @@
 // Angles with a full-circle range (Rz; φ and ψ of zxz) are unwrapped to within π of f(S̄)
 // before any average, so a distribution straddling 0 / 2π is not torn apart.
 //
-// The bias check (SPEC C.5). With Rx, Ry restricted to one Necker member, a pair of mirrored
-// sigma points near zero tilt map to the same sign: the UT mean then departs from the pose of
-// the mean shape f(S̄), which is unbiased there. hecal flags parameter j as biased when
+// The bias check (docs/contour.md#the-bias-check). With Rx, Ry restricted to one Necker member, a
+// pair of mirrored sigma points near zero tilt map to the same sign: the UT mean then departs from
+// the pose of the mean shape f(S̄), which is unbiased there. hecal flags parameter j as biased when
 //   |ȳ_j − f(S̄)_j| > bias_threshold · σ_j        (σ_j the UT standard deviation; default 0.25)
 // — for a smooth f the difference is second order (a small fraction of σ), while the fold gives
-// about 0.8 σ. The seed reports the two coinciding everywhere except near zero Rx/Ry.
+// about 0.8 σ. The paper reports the two coinciding everywhere except near zero Rx/Ry.
 #pragma once
 
 #include <Eigen/Core>
@@ -51,7 +52,7 @@ struct UnscentedPoseOptions {
   double bias_threshold = 0.25;
 };
 
-// The map from a shape vector to a pose: PoseFromShape (weak perspective, the seed's), or
+// The map from a shape vector to a pose: PoseFromShape (weak perspective, the contour paper's), or
 // PerspectivePose (perspective_pose.h).
 using PoseOfShape = std::function<ContourPose(const Vector6d&)>;
 

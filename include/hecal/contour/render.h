@@ -1,6 +1,6 @@
 // Synthetic images of a planar contour target for the tracker's tests and `hecal contour render`
-// (the forward model of SPEC.md C.6 made into pixels): a filled closed polygon, anti-aliased by
-// area coverage, plus additive Gaussian pixel noise.
+// (the forward model of docs/contour.md#the-experiments made into pixels): a filled closed polygon,
+// anti-aliased by area coverage, plus additive Gaussian pixel noise.
 //
 // Coverage. Pixel (x, y) covers the unit square centred on (x, y) (OpenCV's convention, as in
 // gray_image.h). Its value is background + (foreground − background) · c, c ∈ [0, 1] the

@@ -1,16 +1,17 @@
-// The shape space of a planar contour (SPEC.md C.1; Blake and Isard, "Active Contours", 1998,
-// ch. 4; seed 000 eqs. 1–4): under weak perspective a rigid motion of a plane deforms its image
-// by an affinity d' = M d + t, so the control points of the deformed contour are
+// The shape space of a planar contour (docs/contour.md#shape-space; Blake and Isard, "Active
+// Contours", 1998, ch. 4; the contour paper eqs. 1–4): under weak perspective a rigid motion of a
+// plane deforms its image by an affinity d' = M d + t, so the control points of the deformed
+// contour are
 //   Q' = Q0 + W S,    W = ( [1;0], [0;1], [Q0x;0], [0;Q0y], [0;Q0x], [Q0y;0] )     (2N × 6)
-// with the shape vector in the seed's order
+// with the shape vector in the paper's order
 //   S = (tx, ty, M11 − 1, M22 − 1, M21, M12).
 // Q is stacked as (x of every control point, then y of every control point), Blake and Isard's
 // layout. S is fitted from observed control points by least squares, S = (WᵀW)⁻¹ Wᵀ (Q' − Q0),
 // which is linear in the points, so for independent noise σ on every coordinate its covariance
 // is exactly σ² (WᵀW)⁻¹ (FitCovariance).
 //
-// Reduced shape spaces (seed 000 §II, refs. [2], [3]: when the motion is constrained, S lives in
-// a subspace S = B x of dimension k < 6, and fitting x is better conditioned):
+// Reduced shape spaces (the contour paper §II, refs. [2], [3]: when the motion is constrained, S
+// lives in a subspace S = B x of dimension k < 6, and fitting x is better conditioned):
 //   full               k = 6  any motion
 //   similarity         k = 4  (tx, ty, a, b): M = [1+a −b; b 1+a] — the camera translates and
 //                             turns about its optical axis in front of a fronto-parallel plane

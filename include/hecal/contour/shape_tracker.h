@@ -1,7 +1,8 @@
 // The shape-space Kalman filter that tracks a planar contour through an image sequence (Blake and
 // Isard, "Active Contours", 1998: shape space ch. 4, measurement ch. 5–6, the recursive
-// estimator ch. 8–10; seed 000 §II: "a Kalman filter follows the contour through the images of
-// the sequence, updating the shape vector and estimating its covariance"; SPEC.md C.1).
+// estimator ch. 8–10; the contour paper §II: "a Kalman filter follows the contour through the
+// images of the sequence, updating the shape vector and estimating its covariance";
+// docs/contour.md#shape-space).
 //
 // Shape space. The template is the initial contour: control points Q0 in image coordinates
 // relative to an origin (the principal point), a ShapeSpace (shape_space.h) of dimension k
@@ -41,7 +42,7 @@
 // perspective's departure from an affinity (perspective_view.h) — so σ̂ grows with the tilt
 // instead of the covariance claiming a precision the model cannot reach. Neighbouring
 // measurements are taken to be independent: keep points_per_span such that they are several
-// pixels apart (the default 8 per span is ~10 px on the seed's target).
+// pixels apart (the default 8 per span is ~10 px on the paper's target).
 //
 // Template refinement (refine_template, default on). The first image is the template view: its
 // edges are fitted from the given initial contour (a wide prior, initial_sigma), and the fitted

@@ -1,5 +1,5 @@
 // Errors a user can act on. Everything hecal rejects because of its input is reported with one of
-// these; the CLI prints `what()` as one line on stderr and exits with code 2 (DESIGN.md §4).
+// these; the CLI prints `what()` as one line on stderr and exits with code 2 (docs/cli.md).
 //
 //   InputError      — a file or flag is malformed: names the source, the line (0 when not
 //                     line-bound), what is wrong and how to fix it.

@@ -1,6 +1,6 @@
 // The first-order (Cramér–Rao-type) bound on the accuracy of any unbiased estimate of (X, Z)
-// from a data set, given the robot and camera noise (issue 3: "the data allow about 0.54° /
-// 2.8 mm" — this is how that is computed).
+// from a data set, given the robot and camera noise (the thesis study's bound figures, e.g. 0.54° /
+// 2.8 mm, come from here).
 //
 // Linearised at the truth, every station gives r_i ≈ J_i δ + n_i with J_i = ∂r_i/∂(δX, δZ)
 // (loop_residual.h) and n_i ~ N(0, Σ_i) (station_covariance.h); the true station poses are
@@ -9,8 +9,8 @@
 //        I = Σ_i J_iᵀ Σ_i⁻¹ J_i        (12 × 12, right perturbations, (ω, v) order each),
 // and any unbiased estimator has Cov(δ̂) ⪰ I⁻¹ to first order. The ml method attains it
 // asymptotically.
-// Errors are measured as in the thesis (SPEC.md A.4): rotation angle of X⁻¹X̂ and translation
-// distance |t̂ − t|. With X̂ = X·Exp(δ), δ = (ω, v): the angle is |ω| exactly and
+// Errors are measured as in the thesis (docs/thesis-study.md): rotation angle of X⁻¹X̂ and
+// translation distance |t̂ − t|. With X̂ = X·Exp(δ), δ = (ω, v): the angle is |ω| exactly and
 // t̂ − t = R·Jl(ω)·v = R·v + O(|ω||v|), so |t̂ − t| = |v| to first order. Hence
 //        rotation RMSE bound    = sqrt(trace of the ω block of I⁻¹)
 //        translation RMSE bound = sqrt(trace of the v block of I⁻¹).

@@ -1,5 +1,5 @@
 // hecal's top-level hand–eye calibration: any method by name, residuals, outlier flags,
-// warnings. This is what `hecal calibrate` calls (DESIGN.md §4–5).
+// warnings. This is what `hecal calibrate` calls (docs/result-file.md).
 //
 // Methods: the closed-form solvers through handeye::SolveClosedForm; `strobl` (strobl.h) and
 // `ml` (ml.h, the default) refined from every closed-form solution that succeeds

@@ -1,13 +1,13 @@
 // The covariance of a calibration's (X, Z) from the noise of its stations, for every method
-// (issue 5; the seed's approach, SPEC.md C.4–C.6, applied to the hand–eye estimators).
+// (the approach of the contour paper, docs/uncertainty.md, applied to the hand–eye estimators).
 //
 // The estimator is a function of the measurements: (X̂, Ẑ) = g(G_1…G_n, B_1…B_n) with
 // G_i = T_base_gripper_i and B_i = T_camera_target_i as the devices report them (eye-to-hand,
 // A_i = G_i⁻¹: problem.h). The input noise is G_i = Ĝ_i · Exp(δG_i), B_i = B̂_i · Exp(δB_i)
-// (right perturbations, DESIGN.md §2, pose_sigma.h) with δG_i ~ N(0, ΣG_i), δB_i ~ N(0, ΣB_i)
-// independent: a 12n-dimensional input with block-diagonal covariance (StationNoise). The output is
-// (X, Z) ∈ SE(3)², its covariance 12 × 12 over (δX, δZ), right perturbations, (ω, v) order each.
-// Three ways:
+// (right perturbations, docs/conventions.md, pose_sigma.h) with δG_i ~ N(0, ΣG_i), δB_i ~ N(0,
+// ΣB_i) independent: a 12n-dimensional input with block-diagonal covariance (StationNoise). The
+// output is (X, Z) ∈ SE(3)², its covariance 12 × 12 over (δX, δZ), right perturbations, (ω, v)
+// order each. Three ways:
 //  - kLinear: first order. For `ml` the inverse Gauss–Newton information at the optimum (ml.h;
 //    free, and the first-order covariance of the ML estimate). For every other method the
 //    first-order propagation through the solver itself, J Σ Jᵀ with J by central differences

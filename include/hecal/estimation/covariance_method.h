@@ -33,7 +33,7 @@ inline constexpr size_t kMaxUnscentedStations = 100;
 inline constexpr size_t kMaxPropagatedStations = 500;
 
 // kLinear for ml (its analytic Gauss–Newton information: free and validated). For every other
-// method kUnscented up to kMaxUnscentedStations stations (the seed's approach; a numeric
+// method kUnscented up to kMaxUnscentedStations stations (the contour paper's approach; a numeric
 // linearisation costs the same solves), kInformation above.
 CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations);
 

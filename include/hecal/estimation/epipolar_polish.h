@@ -8,7 +8,7 @@
 // P_x = I − x xᵀ: the epipolar triple product over its first-order standard deviation when each
 // ray is perturbed isotropically in its tangent plane by one radian — so r has the ray noise's
 // standard deviation σ_ray (radians; ≈ pixel σ / focal length) whatever the geometry.
-// Unknowns: X = X̂ · Exp(δ), δ = (ω, v) right perturbation (DESIGN.md §2), solved by Ceres.
+// Unknowns: X = X̂ · Exp(δ), δ = (ω, v) right perturbation (docs/conventions.md), solved by Ceres.
 // Covariance: σ̂² (JᵀJ)⁻¹ in δ, with σ̂² = Σr²/(N − 6) (or the given σ_ray²); metres, radians.
 #pragma once
 

@@ -1,5 +1,6 @@
-// Hand–eye calibration from images (issue 4, "End to end"; the thesis pipeline of SPEC.md A.3):
-// the camera poses measured by PnP in every image, the robot poses, and the detected pixels.
+// Hand–eye calibration from images (the thesis pipeline,
+// docs/handeye-methods.md#the-thesis-pipeline): the camera poses measured by PnP in every image,
+// the robot poses, and the detected pixels.
 //
 //   1. Pose level: estimation::Calibrate (calibrate.h) on the problem of the PnP poses
 //      T_camera_target_i and the robot poses, with the method of options.calibrate (ml by

@@ -1,14 +1,14 @@
 // Starting points for the iterative refinements (ml, strobl): every closed-form solver of
-// handeye/methods.h run on the data. Initialisation must never be the weak point (issue 3: at
-// n = 5, σ = 1 mm / 1° a single Park–Martin start lands in a wrong local minimum in ~10% of
-// trials), so the refinements start from all of them and keep the lowest final cost. A solver
-// that throws (e.g. Daniilidis rejecting every motion pair) is skipped; degenerate data are
-// rejected before (CheckObservability) by the caller.
-// Above kMaxStartStations stations the closed forms run on kMaxStartStations evenly spaced ones
-// (station ⌊k·n/kMaxStartStations⌋, k = 0, 1, …): a start only has to lie in the right basin
-// (wrong minima are tens of degrees away: multi_start.h), which 500 stations give to ~0.1° at
-// σ = 1 mm / 1°, and the refinement then uses every station. Measured at n = 10⁵: the eight
-// motion-based closed forms take 1.7–2.1 s each on every station, all ten 0.6 s on 500.
+// handeye/methods.h run on the data. Initialisation must never be the weak point (at n = 5, σ = 1
+// mm / 1° a single Park–Martin start lands in a wrong local minimum in ~10% of trials), so the
+// refinements start from all of them and keep the lowest final cost. A solver that throws (e.g.
+// Daniilidis rejecting every motion pair) is skipped; degenerate data are rejected before
+// (CheckObservability) by the caller. Above kMaxStartStations stations the closed forms run on
+// kMaxStartStations evenly spaced ones (station ⌊k·n/kMaxStartStations⌋, k = 0, 1, …): a start only
+// has to lie in the right basin (wrong minima are tens of degrees away: multi_start.h), which 500
+// stations give to ~0.1° at σ = 1 mm / 1°, and the refinement then uses every station. Measured at
+// n = 10⁵: the eight motion-based closed forms take 1.7–2.1 s each on every station, all ten 0.6 s
+// on 500.
 #pragma once
 
 #include <cstddef>

@@ -1,8 +1,10 @@
-// The residual of one station's pose loop and its analytic Jacobians (issue 3, "Refinement").
+// The residual of one station's pose loop and its analytic Jacobians
+// (docs/handeye-methods.md#maximum-likelihood).
 //
 // Station i measures A_i and B_i with Z = A_i · X · B_i (handeye/problem.h). Its residual is
 //        E_i = Z⁻¹ · A_i · X · B_i,        r_i = Log(E_i) ∈ R⁶,  (ω, v) order,
-// zero for a perfect fit. With right perturbations X → X·Exp(δX), Z → Z·Exp(δZ) (DESIGN.md §2):
+// zero for a perfect fit. With right perturbations X → X·Exp(δX), Z → Z·Exp(δZ)
+// (docs/conventions.md):
 //   X:  E_i → Z⁻¹ A_i X Exp(δX) B_i = E_i · Exp(Ad(B_i⁻¹) δX)
 //   Z:  E_i → Exp(−δZ) E_i          = E_i · Exp(−Ad(E_i⁻¹) δZ)
 // and Log(E · Exp(ε)) = r + Jr⁻¹(r) ε + O(ε²), so

@@ -1,5 +1,5 @@
 // Method `ml` (hecal's default): the maximum-likelihood estimate of X and Z jointly from the
-// ABSOLUTE station poses (issue 3, "Refinement").
+// ABSOLUTE station poses (docs/handeye-methods.md#maximum-likelihood).
 //
 // Why absolute poses: the AX = XB motions A_ij = A_j⁻¹ A_i share measurements, so their noise is
 // correlated and no per-motion weighting is correct; the n loops Z = A_i X B_i have independent

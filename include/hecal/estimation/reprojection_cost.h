@@ -1,6 +1,6 @@
 // The reprojection error of one target point seen at one station, as a function of the hand–eye
-// unknowns X, Z and the station's robot pose G = T_base_gripper (issue 4, "joint refinement of
-// the reprojection error"; the image-level counterpart of loop_residual.h).
+// unknowns X, Z and the station's robot pose G = T_base_gripper (the image-level counterpart of
+// loop_residual.h).
 //
 // The camera pose of station i follows from the model Z = A_i · X · B_i (handeye/problem.h):
 //        T_camera_target_i = B_i = X⁻¹ · A_i⁻¹ · Z,
@@ -9,7 +9,7 @@
 // and a target point P (target frame, metres) projects to u = π(B_i · P) with the camera model π
 // (pose/camera_model.h). Residual: r = (π(B_i P) − u_measured) / σ_px  (2 rows, whitened).
 //
-// Analytic Jacobians, right perturbations T → T·Exp(ε), ε = (ω, v) (DESIGN.md §2), with
+// Analytic Jacobians, right perturbations T → T·Exp(ε), ε = (ω, v) (docs/conventions.md), with
 // p = B_i P the point in the camera frame and J_π = ∂π/∂p (2 × 3):
 //   X:  B → Exp(−ε) B                       ∂p/∂ε = [ [p]×   −I ]
 //   Z:  B → B Exp(ε)                         ∂p/∂ε = R_B [ −[P]×  I ]

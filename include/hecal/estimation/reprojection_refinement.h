@@ -1,6 +1,6 @@
-// Joint refinement of the reprojection error over X, Z and the robot poses (issue 4, "End to
-// end"): the image-level maximum-likelihood estimate, which `hecal calibrate --images` runs after
-// the pose-level `ml` (ml.h) has given X and Z.
+// Joint refinement of the reprojection error over X, Z and the robot poses: the image-level
+// maximum-likelihood estimate, which `hecal calibrate --images` runs after the pose-level `ml`
+// (ml.h) has given X and Z.
 //
 // Model (reprojection_cost.h): station i has a measured robot pose G̃_i = T_base_gripper_i and the
 // detected pixels u_ik of target points P_k. Unknowns: X, Z and the true robot poses G_i.

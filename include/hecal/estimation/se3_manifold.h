@@ -1,5 +1,5 @@
 // A pose as a Ceres parameter block, on the SE(3) manifold with the RIGHT perturbation of
-// DESIGN.md §2:   Plus(T, δ) = T · Exp(δ),   Minus(T₂, T₁) = Log(T₁⁻¹ · T₂),   δ = (ω, v).
+// docs/conventions.md:   Plus(T, δ) = T · Exp(δ),   Minus(T₂, T₁) = Log(T₁⁻¹ · T₂),   δ = (ω, v).
 //
 // Ambient storage (7 doubles): [qx, qy, qz, qw, tx, ty, tz] — the unit quaternion of the rotation
 // in Eigen's coefficient order, then the translation in metres.

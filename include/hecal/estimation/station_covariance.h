@@ -2,7 +2,7 @@
 // the robot and camera measurement noise (pose_sigma.h), and the whitening that turns r_i into
 // a vector of independent unit-variance components.
 //
-// Noise (DESIGN.md §2, right perturbations): the robot reports G̃_i = G_i · Exp(δg),
+// Noise (docs/conventions.md, right perturbations): the robot reports G̃_i = G_i · Exp(δg),
 // G = T_base_gripper, δg ~ N(0, Σ_g); the camera reports B̃_i = B_i · Exp(δc), δc ~ N(0, Σ_c).
 //  - camera:  E_i → E_i · Exp(δc)                                  ⇒ ∂r/∂δc = Jr⁻¹(r_i)
 //  - robot, eye-in-hand (A_i = G_i):

@@ -1,6 +1,7 @@
 // Method `strobl`: Strobl & Hirzinger's optimal hand–eye calibration (K. H. Strobl,
-// G. Hirzinger, "Optimal Hand-Eye Calibration", IEEE/RSJ IROS 2006; SPEC.md A.2.4), on the
-// absolute-pose loops Z = A_i X B_i with their SE(3) metric and automatic weighting.
+// G. Hirzinger, "Optimal Hand-Eye Calibration", IEEE/RSJ IROS 2006;
+// docs/handeye-methods.md#strobl-and-hirzinger), on the absolute-pose loops Z = A_i X B_i with
+// their SE(3) metric and automatic weighting.
 //
 // What hecal implements, precisely:
 //  - per station the rotation error rot_i = angle of Z⁻¹ A_i X B_i and the translation error

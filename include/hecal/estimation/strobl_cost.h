@@ -1,6 +1,7 @@
 // The per-station error of Strobl & Hirzinger's SE(3) metric (K. H. Strobl, G. Hirzinger,
-// "Optimal Hand-Eye Calibration", IEEE/RSJ IROS 2006, §III; SPEC.md A.2.4) on the absolute-pose
-// loop of station i, M_i = A_i · X · B_i, which should equal Z (handeye/problem.h).
+// "Optimal Hand-Eye Calibration", IEEE/RSJ IROS 2006, §III;
+// docs/handeye-methods.md#strobl-and-hirzinger) on the absolute-pose loop of station i, M_i = A_i ·
+// X · B_i, which should equal Z (handeye/problem.h).
 //
 // The discrepancy between M_i and Z can be seen from either end of the loop:
 //   target end:  E_i = Z⁻¹ · M_i   (translation t_E: displacement of the target origin)

@@ -1,6 +1,6 @@
 // Dual quaternions q̌ = q + ε q' (ε² = 0) for rigid motions, with the API of the thesis'
-// DualQuaternion.h (SPEC.md A.3) and Daniilidis (1999), "Hand-eye calibration using dual
-// quaternions", IJRR 18(3), §3.
+// DualQuaternion.h (docs/handeye-methods.md#the-thesis-pipeline) and Daniilidis (1999), "Hand-eye
+// calibration using dual quaternions", IJRR 18(3), §3.
 //
 // A pose (R, t) is the unit dual quaternion q̌ = q + ε ½ t q (q the Hamilton quaternion of R);
 // composition of poses is the dual-quaternion product: DQ(T_a_b · T_b_c) = DQ(T_a_b) * DQ(T_b_c).

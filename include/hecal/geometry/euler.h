@@ -1,4 +1,4 @@
-// Euler angles in all 12 axis sequences, intrinsic and extrinsic (DESIGN.md §2).
+// Euler angles in all 12 axis sequences, intrinsic and extrinsic (docs/conventions.md).
 //
 // A sequence is written as three axis letters: lowercase = extrinsic (fixed axes), uppercase =
 // intrinsic (moving axes). Angles (a1, a2, a3) are applied in the written order:
@@ -7,7 +7,8 @@
 // so "xyz" with (a, b, c) equals "ZYX" with (c, b, a). This is scipy.spatial.transform's
 // convention (scipy ≥ 1.4, `Rotation.from_euler`), which the tests check against.
 // Tait–Bryan sequences (three distinct axes, e.g. xyz, ZYX) and proper Euler sequences (first ==
-// third, e.g. ZXZ — the form of the contour paper, SPEC.md C.2: R = Rz(φ) Rx(θ) Rz(ψ)).
+// third, e.g. ZXZ — the form of the contour paper, docs/contour.md#motion-from-an-affinity: R =
+// Rz(φ) Rx(θ) Rz(ψ)).
 //
 // EulerFromMatrix returns a1, a3 ∈ (−π, π] and a2 ∈ [−π/2, π/2] (Tait–Bryan) or [0, π] (proper).
 // Gimbal lock — a2 within kGimbalLockTolerance of ±π/2 (Tait–Bryan) or of 0 / π (proper): only

@@ -2,12 +2,13 @@
 //
 // Two forms that must agree (tested):
 //  - NearestRotationSvd: polar projection U · diag(1, 1, det(U Vᵀ)) · Vᵀ from M = U Σ Vᵀ.
-//  - NearestRotationQuaternion: seed 004 (SPEC.md B.4, after Horn / Faugeras): the unit
-//    quaternion q minimising Σ_i ‖m_i * q − q * e_i‖² over the columns m_i of M and e_i of I is
-//    the eigenvector of the smallest eigenvalue of D = Σ_i D_iᵀ D_i, with
+//  - NearestRotationQuaternion: the linear pose paper (docs/pose-from-points.md#the-linear-method,
+//    after Horn / Faugeras): the unit quaternion q minimising Σ_i ‖m_i * q − q * e_i‖² over the
+//    columns m_i of M and e_i of I is the eigenvector of the smallest eigenvalue of D = Σ_i D_iᵀ
+//    D_i, with
 //      D_i = [ 0          (e_i − m_i)ᵀ   ]
 //            [ m_i − e_i  [m_i + e_i]×   ]        (4×4, quaternion order w, x, y, z)
-//    and R is the rotation of q (seed 004 eq. 28).
+//    and R is the rotation of q (the linear pose paper eq. 28).
 // Both are defined for every M; for rank-deficient M the answer is not unique and either form
 // returns one of the minimisers.
 #pragma once

@@ -5,7 +5,8 @@
 //          [ rx  r0 −rz  ry ]             [ rx  r0  rz −ry ]
 //          [ ry  rz  r0 −rx ]             [ ry −rz  r0  rx ]
 //          [ rz −ry  rx  r0 ]             [ rz  ry −rx  r0 ]
-// Used by Horaud–Dornaika (f1(q) = Σ‖Q(v'_i) q − W(v_i) q‖²) and by seed 004's orthogonalisation.
+// Used by Horaud–Dornaika (f1(q) = Σ‖Q(v'_i) q − W(v_i) q‖²) and by the linear pose paper's
+// orthogonalisation.
 #pragma once
 
 #include <Eigen/Core>

@@ -6,8 +6,9 @@
 //   rotvec       ω = θ n, θ ∈ [0, π]  (so3::Exp / so3::Log)
 //   axis–angle   (n, θ), θ ∈ [0, π], |n| = 1; at θ = 0 the axis is (1, 0, 0) by convention
 //   Tsai's modified Rodrigues vector  P = 2 sin(θ/2) n, |P| ≤ 2 (Tsai & Lenz 1989, eq. 5; the
-//                thesis SPEC.md A.2.1). Note: "modified Rodrigues parameters" elsewhere usually
-//                means tan(θ/4) n; hecal uses Tsai's form under the name TsaiRodrigues.
+//                the thesis; docs/handeye-methods.md#tsai-and-lenz). Note: "modified Rodrigues
+//                parameters" elsewhere usually means tan(θ/4) n; hecal uses Tsai's form under the
+//                name TsaiRodrigues.
 // Euler angles are in euler.h. Matrix → quaternion uses Shepperd's method (largest diagonal
 // pivot), so it is accurate for every rotation.
 #pragma once

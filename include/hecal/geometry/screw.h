@@ -1,7 +1,8 @@
 // Screw (Plücker) parameters of a rigid motion (Chasles): rotation θ about the line with unit
 // direction l and moment m = p × l (p any point on the line), and translation d along it.
-// The thesis' "angle-axis + translation → screw (l, m, θ, d)" helper (SPEC.md A.3), and the
-// parameters of Daniilidis' dual quaternion q̌ = (cos(θ̌/2), sin(θ̌/2) ľ), θ̌ = θ + εd, ľ = l + εm.
+// The thesis' "angle-axis + translation → screw (l, m, θ, d)" helper
+// (docs/handeye-methods.md#the-thesis-pipeline), and the parameters of Daniilidis' dual quaternion
+// q̌ = (cos(θ̌/2), sin(θ̌/2) ľ), θ̌ = θ + εd, ľ = l + εm.
 //
 // From (R, t) with θ ∈ (0, π]: l = rotation axis, d = l·t, m = ½ (t × l + cot(θ/2) (t − d l)).
 // Pure translation (θ = 0, t ≠ 0): l = t/|t|, d = |t|, m = 0 (the line through the origin).

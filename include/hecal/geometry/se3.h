@@ -1,6 +1,6 @@
 // The rigid-motion group SE(3) on Eigen::Isometry3d: exp, log, adjoint, Jacobians, interpolation.
 //
-// Tangent vectors are ξ = (ω, v): ROTATION FIRST (DESIGN.md §2), ω in radians, v in metres.
+// Tangent vectors are ξ = (ω, v): ROTATION FIRST (docs/conventions.md), ω in radians, v in metres.
 // Right perturbation T = T̂ · Exp(δ); every 6×6 covariance in hecal uses this order and meaning.
 //   Exp(ξ) = [ so3::Exp(ω)   Jl(ω)·v ]        Log is its inverse, |ω| ∈ [0, π]
 //            [ 0             1        ]

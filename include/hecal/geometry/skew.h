@@ -1,5 +1,5 @@
 // Skew-symmetric ("hat") matrix of a 3-vector and its inverse ("vee").
-// Skew(a) · b = a × b. The thesis' EigenUtils `skew` (SPEC.md A.3).
+// Skew(a) · b = a × b. The thesis' EigenUtils `skew` (docs/handeye-methods.md#the-thesis-pipeline).
 #pragma once
 
 #include <Eigen/Core>

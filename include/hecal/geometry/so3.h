@@ -1,6 +1,7 @@
 // The rotation group SO(3): exponential and logarithm maps, Jacobians, adjoint, interpolation.
 //
-// Conventions (DESIGN.md §2): rotation vectors ω in radians; right perturbation R = R̂ · Exp(δ).
+// Conventions (docs/conventions.md): rotation vectors ω in radians; right perturbation R = R̂ ·
+// Exp(δ).
 //   Exp(ω)           Rodrigues: I + sinθ/θ [ω]× + (1−cosθ)/θ² [ω]×², θ = |ω|
 //   Log(R)           ω with |ω| ∈ [0, π], computed through the quaternion with atan2 so that it is
 //                    accurate near 0 and near π (the trace formula loses all digits near π).

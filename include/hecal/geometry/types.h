@@ -1,5 +1,6 @@
-// Fixed-size Eigen types used across hecal. Poses are Eigen::Isometry3d named T_a_b (DESIGN.md §2):
-// the pose of frame b in frame a, x_a = T_a_b · x_b. Lengths are metres, angles radians.
+// Fixed-size Eigen types used across hecal. Poses are Eigen::Isometry3d named T_a_b
+// (docs/conventions.md): the pose of frame b in frame a, x_a = T_a_b · x_b. Lengths are metres,
+// angles radians.
 #pragma once
 
 #include <Eigen/Core>

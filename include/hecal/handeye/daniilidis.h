@@ -1,6 +1,6 @@
 // Daniilidis (1999), "Hand-eye calibration using dual quaternions", IJRR 18(3):286–298 — the
-// method the thesis implemented (SPEC.md A.2.3). Solves A_ij X = X B_ij (motion.h) for rotation
-// and translation together, from station-pair motions.
+// method the thesis implemented (docs/handeye-methods.md#daniilidis). Solves A_ij X = X B_ij
+// (motion.h) for rotation and translation together, from station-pair motions.
 //
 // Equations. With the unit dual quaternions ǎ = a + εa' of A_ij, b̌ = b + εb' of B_ij and
 // x̌ = q + εq' of X (dual_quaternion.h: q' = ½ t q), A X = X B is ǎ x̌ = x̌ b̌. When the scalar
@@ -8,10 +8,10 @@
 // translation d along the screw axis — true for conjugate motions), its vector part is
 //        [ a_v − b_v     [a_v + b_v]×   0            0           ] [ q  ]
 //        [ a'_v − b'_v   [a'_v + b'_v]× a_v − b_v    [a_v + b_v]× ] [ q' ] = 0,     (D1)
-// one 6×8 block S_ij per motion (the paper's S; SPEC.md A.2.3). Stacking all blocks into T
-// (6N×8), x̌ lies in the null space of T, which is 2-D when two motions have non-parallel
-// rotation axes: x̌ = λ₁ v₇ + λ₂ v₈ with v₇, v₈ the right singular vectors of the two smallest
-// singular values, v_k = (u_k, w_k). The unit constraints qᵀq = 1 and qᵀq' = 0 give
+// one 6×8 block S_ij per motion (the paper's S; docs/handeye-methods.md#daniilidis). Stacking all
+// blocks into T (6N×8), x̌ lies in the null space of T, which is 2-D when two motions have
+// non-parallel rotation axes: x̌ = λ₁ v₇ + λ₂ v₈ with v₇, v₈ the right singular vectors of the two
+// smallest singular values, v_k = (u_k, w_k). The unit constraints qᵀq = 1 and qᵀq' = 0 give
 //        λᵀ C λ = 0,   C = [ u₁ᵀw₁  ½(u₁ᵀw₂ + u₂ᵀw₁) ; ·  u₂ᵀw₂ ],                   (D2)
 //        λᵀ U λ = 1,   U = [ u₁ᵀu₁  u₁ᵀu₂ ; ·  u₂ᵀu₂ ],                                (D3)
 // the paper's quadratic in s = λ₁/λ₂ written homogeneously. Of the two roots of (D2) the paper
@@ -40,9 +40,9 @@
 //  - Units: the dual rows scale with the length unit, so translations are divided by their RMS
 //    magnitude before forming ǎ, b̌ (and t_X scaled back): the balance between the rotation and
 //    translation rows of T does not depend on metres vs millimetres.
-//  - Singular-value check (SPEC.md A.2.3): noise-free σ₇ ≈ σ₈ ≈ 0 (reported, tested; taken as
-//    square roots of eigenvalues of TᵀT they resolve down to ~1e-8 σ₁). If σ₆ is also ≈ 0
-//    (σ₆ < kDaniilidisRankTolerance · σ₁: rank 5, all rotation axes parallel, or pure
+//  - Singular-value check (docs/handeye-methods.md#daniilidis): noise-free σ₇ ≈ σ₈ ≈ 0 (reported,
+//    tested; taken as square roots of eigenvalues of TᵀT they resolve down to ~1e-8 σ₁). If σ₆ is
+//    also ≈ 0 (σ₆ < kDaniilidisRankTolerance · σ₁: rank 5, all rotation axes parallel, or pure
 //    translations) the null space is 3-D and the translation along the common axis is not
 //    observable: DegenerateError.
 //  - The root choice uses λᵀUλ / |λ|² (independent of how λ is parameterised, so λ₂ → 0 is no

@@ -1,12 +1,13 @@
 // Horaud & Dornaika (1995), "Hand-eye calibration", IJRR 14(3):195–210, §5 — the closed-form
-// "R then t" variant (SPEC.md A.2.2): rotation of X as a unit-quaternion eigenproblem, then the
-// translation by linear least squares, from A_ij X = X B_ij (motion.h), station-pair motions.
-// (The simultaneous nonlinear "R and t" variant is horaud_nonlinear.h.)
+// "R then t" variant (docs/handeye-methods.md#horaud-and-dornaika): rotation of X as a
+// unit-quaternion eigenproblem, then the translation by linear least squares, from A_ij X = X B_ij
+// (motion.h), station-pair motions. (The simultaneous nonlinear "R and t" variant is
+// horaud_nonlinear.h.)
 //
 // Equations. Each motion gives v'_i = R_X v_i for its rotation axes (v'_i of A_ij, v_i of
 // B_ij). With R_X v = q v q̄ and ‖r q‖ = ‖r‖ ‖q‖ for quaternions,
 //        f₁(q) = Σ ‖v'_i − q v_i q̄‖² = Σ ‖v'_i q − q v_i‖² = qᵀ A q,
-//        A = Σ (Q(v'_i) − W(v_i))ᵀ (Q(v'_i) − W(v_i))                      (SPEC A.2.2, 2.8)
+//        A = Σ (Q(v'_i) − W(v_i))ᵀ (Q(v'_i) − W(v_i))                      (thesis eq. 2.8)
 // with Q, W the left/right quaternion-product matrices (quaternion_matrices.h); the unit q
 // minimising f₁ is the eigenvector of the smallest eigenvalue of the 4×4 symmetric A. Then t_X
 // minimises f₂ = Σ ‖R_X p_i − (K_i − I) t − p'_i‖² (K_i = R_Aij, p'_i = t_Aij, p_i = t_Bij),

@@ -1,6 +1,7 @@
 // Horaud & Dornaika (1995), "Hand-eye calibration", IJRR 14(3):195–210, §5 — the simultaneous
-// nonlinear variant (SPEC.md A.2.2, "R and t together"): rotation and translation of X from
-// A_ij X = X B_ij (motion.h) by minimising over the 7 unknowns (q ∈ ℝ⁴, t ∈ ℝ³)
+// nonlinear variant (docs/handeye-methods.md#horaud-and-dornaika, "R and t together"): rotation and
+// translation of X from A_ij X = X B_ij (motion.h) by minimising over the 7 unknowns (q ∈ ℝ⁴, t ∈
+// ℝ³)
 //        F(q, t) = λ₁ f₁(q) + λ₂ f₂(q, t) + λ (1 − qᵀq)²,                               (H1)
 //        f₁(q)    = Σ ‖v'_i q − q v_i‖²           = qᵀ A q,  A = Σ (Q(v'_i) − W(v_i))ᵀ(…)  (H2)
 //        f₂(q, t) = Σ ‖q p_i q̄ − (K_i − I) t − p'_i‖²                                     (H3)

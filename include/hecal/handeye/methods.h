@@ -1,4 +1,4 @@
-// The hand–eye methods by name (DESIGN.md §4 method names) and the dispatcher for the
+// The hand–eye methods by name (docs/cli.md#methods) and the dispatcher for the
 // closed-form ones. The refinements `strobl` and `ml` need Ceres and live in the estimation
 // layer (hecal/estimation/calibrate.h), which dispatches every method.
 #pragma once

@@ -1,5 +1,5 @@
-// Degeneracy checks run before any solver (issue 3: "Degenerate input ... gives a clear error
-// naming the unobservable part, exit 2 — never a silent number").
+// Degeneracy checks run before any solver: degenerate input gives a clear error naming the
+// unobservable part (exit 2), never a silent number.
 //
 // From motions A_ij X = X B_ij:
 //  - fewer than 3 stations                         → nothing can be estimated reliably

@@ -1,4 +1,4 @@
-// The hand–eye problem in one form for both setups (DESIGN.md §2).
+// The hand–eye problem in one form for both setups (docs/conventions.md).
 //
 // Every station i gives a robot pose T_base_gripper_i and a camera pose T_camera_target_i. Both
 // setups are the same equation on absolute poses

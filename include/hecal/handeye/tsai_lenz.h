@@ -1,6 +1,7 @@
 // Tsai & Lenz (1989), "A new technique for fully autonomous and efficient 3D robotics hand/eye
-// calibration", IEEE Trans. Robotics and Automation 5(3):345–358 (SPEC.md A.2.1) — rotation
-// then translation of X from A_ij X = X B_ij (motion.h), station-pair motions.
+// calibration", IEEE Trans. Robotics and Automation 5(3):345–358
+// (docs/handeye-methods.md#tsai-and-lenz) — rotation then translation of X from A_ij X = X B_ij
+// (motion.h), station-pair motions.
 //
 // Frames: A_ij is the robot motion (Tsai's gripper motion H_gij), B_ij the camera motion (Tsai's
 // H_cij), X as in problem.h (eye-in-hand T_gripper_camera — Tsai's H_cg). So hecal's equation

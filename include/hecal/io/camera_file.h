@@ -1,4 +1,4 @@
-// camera.yaml (or ViSP camera XML) ↔ pose::CameraModel (DESIGN.md §4.1; examples in
+// camera.yaml (or ViSP camera XML) ↔ pose::CameraModel (docs/targets.md; examples in
 // docs/targets.md).
 //
 // Four layouts are read. A file whose first non-blank character is '<' (<?xml ...?> or <root>)

@@ -1,5 +1,6 @@
-// Low-level reading of delimited text (the pose tables of DESIGN.md §3): lines, fields, numbers.
-// Allocation-free on the hot path so that a 100k-row table parses in a few tens of milliseconds.
+// Low-level reading of delimited text (the pose tables of docs/pose-files.md): lines, fields,
+// numbers. Allocation-free on the hot path so that a 100k-row table parses in a few tens of
+// milliseconds.
 //
 // Lines: split at '\n'; a trailing '\r' is dropped (CRLF files), a leading UTF-8 byte-order mark
 // is skipped, lines are numbered from 1.

@@ -1,6 +1,6 @@
 // `hecal import`: other tools' calibration-sample files → hecal's canonical robot/camera pose
-// tables (DESIGN.md §2–4). One reader per format, each in its own header (conventions there and in
-// docs/import-formats.md):
+// tables (docs/conventions.md). One reader per format, each in its own header (conventions there
+// and in docs/import-formats.md):
 //
 //   format        INPUT...                              conventions applied
 //   moveit        pose_samples.json                     none (T_base_eef, T_camera_target), m

@@ -1,5 +1,6 @@
-// What the `hecal import` readers return: the canonical robot and camera pose tables (DESIGN.md
-// §2–3) plus the header notes that say where they came from and which conventions were applied.
+// What the `hecal import` readers return: the canonical robot and camera pose tables
+// (docs/conventions.md) plus the header notes that say where they came from and which conventions
+// were applied.
 //
 //   robot   T_base_gripper_i: the gripper (flange/tool) pose in the robot base frame
 //   camera  T_camera_target_i: the target pose in the camera frame (what PnP returns)
@@ -49,7 +50,7 @@ struct ImportedPoses {
   std::vector<std::string> sources;
 };
 
-// camera.yaml text (DESIGN.md §4.1: fx, fy, cx, cy, distortion {model, coefficients}) preceded by
+// camera.yaml text (docs/targets.md: fx, fy, cx, cy, distortion {model, coefficients}) preceded by
 // '#' comment lines. width and height are written only when known (> 0).
 std::string FormatIntrinsicsYaml(const ImportedIntrinsics& intrinsics,
                                  const std::vector<std::string>& comments, int width = 0,

@@ -1,4 +1,4 @@
-// Pose tables: the CSV files hecal reads and writes (DESIGN.md §3, the contract; the full rules,
+// Pose tables: the CSV files hecal reads and writes (the contract; the full rules,
 // with examples, are in docs/pose-files.md).
 //
 // Reading

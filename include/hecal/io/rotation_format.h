@@ -1,4 +1,4 @@
-// How the rotation of a pose is written in a table (DESIGN.md §2–4).
+// How the rotation of a pose is written in a table (docs/conventions.md).
 //   quaternion   columns qw,qx,qy,qz (Hamilton)
 //   rotvec       columns rx,ry,rz (rotation vector; radians unless --degrees or rx_deg)
 //   matrix       columns r11,r12,...,r33 (row-major)

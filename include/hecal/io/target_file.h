@@ -1,4 +1,4 @@
-// target.yaml → pose::TargetSpec (DESIGN.md §4.1; every key and type in docs/targets.md).
+// target.yaml → pose::TargetSpec (every key and type in docs/targets.md).
 //
 //   type: charuco          # chessboard | charuco | aruco_grid | apriltag_grid | circles | acircles
 //                          # | aruco | apriltag (one tag)

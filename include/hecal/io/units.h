@@ -1,5 +1,6 @@
-// Length units of files (DESIGN.md §2–3). The core works in metres; files say their unit in the
-// header suffix (x_mm) or by the --units flag, and results are written back in the input's unit.
+// Length units of files (docs/conventions.md). The core works in metres; files say their unit in
+// the header suffix (x_mm) or by the --units flag, and results are written back in the input's
+// unit.
 #pragma once
 
 #include <optional>

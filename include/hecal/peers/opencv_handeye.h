@@ -1,8 +1,8 @@
 // OpenCV 4.6's hand–eye functions as PEERS of hecal's solvers, on hecal's Problem data (for the
 // bench, `hecal bench` and comparison tests only — the core libraries never link OpenCV,
-// DESIGN.md §1). Nothing here fixes OpenCV; it calls it exactly as a user would.
+// docs/README.md#layers). Nothing here fixes OpenCV; it calls it exactly as a user would.
 //
-// Method mapping (DESIGN.md §4.2):
+// Method mapping (docs/bench.md):
 //   cv::calibrateHandEye            CALIB_HAND_EYE_TSAI → tsai-lenz, _PARK → park-martin,
 //                                   _HORAUD → horaud, _ANDREFF → andreff,
 //                                   _DANIILIDIS → daniilidis

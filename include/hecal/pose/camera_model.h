@@ -1,5 +1,5 @@
 // The pinhole camera with OpenCV's plumb_bob distortion (Brown–Conrady: k1, k2, p1, p2, k3),
-// DESIGN.md §4.1. Pixel coordinates (u, v) with the origin at the centre of the top-left pixel,
+// docs/targets.md. Pixel coordinates (u, v) with the origin at the centre of the top-left pixel,
 // as OpenCV. A point x_c in the camera frame (z forward, x right, y down) projects to
 //   (x, y) = (x_c / z_c, y_c / z_c),  r² = x² + y²,
 //   radial = 1 + k1 r² + k2 r⁴ + k3 r⁶,
@@ -37,7 +37,7 @@ struct CameraModel {
   std::array<double, 5> distortion = {0.0, 0.0, 0.0, 0.0, 0.0};  // k1, k2, p1, p2, k3
 
   // A camera with focal length f (pixels), principal point at the origin, no distortion — the
-  // seed-004 model X = F x/z, Y = F y/z.
+  // linear-pose model X = F x/z, Y = F y/z.
   static CameraModel Pinhole(double focal);
   bool HasDistortion() const;
 };

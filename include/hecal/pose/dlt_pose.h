@@ -1,5 +1,6 @@
 // The normalised direct linear transform (DLT): the classical linear baseline for pose from known
-// points, next to seed 004's method (linear_pose.h). Two paths, chosen by the object's shape:
+// points, next to the linear pose paper's method (linear_pose.h). Two paths, chosen by the object's
+// shape:
 //
 // Projective path (object points not coplanar, N ≥ 6) — Hartley & Zisserman, "Multiple View
 // Geometry", 2nd ed., §7.1 (algorithm 7.1) with the normalisation of §4.4.4:

@@ -1,11 +1,11 @@
-// Seed 004's linear pose from known points (SPEC.md B; "A simple algorithm for determining the
-// position and the orientation of rigid bodies basing on visual information", Silesian Univ. of
-// Technology, eqs. 8–32).
+// The linear pose from known points (docs/pose-from-points.md#the-linear-method; "A simple
+// algorithm for determining the position and the orientation of rigid bodies basing on visual
+// information", Silesian Univ. of Technology, eqs. 8–32).
 //
 // Given object points P_k (target frame) and their normalised image coordinates (x_k, y_k) —
-// pixels undistorted by the camera model, so the seed's pinhole X = F x/z holds with F = 1 —
+// pixels undistorted by the camera model, so the paper's pinhole X = F x/z holds with F = 1 —
 // find T_camera_target = [R | T], x_c = R P + T:
-//   0. Re-origin the object at a reference point P_ref, the first point (the seed's P1; "the
+//   0. Re-origin the object at a reference point P_ref, the first point (the paper's P1; "the
 //      number of the point does not matter", section 4): P'_k = P_k − P_ref. Its pose [R | T']
 //      has T' = T + R P_ref.
 //   1. T' lies on the ray of P_ref: T' = a (x_ref, y_ref, 1), a > 0 its depth (eq. 11).
@@ -16,16 +16,16 @@
 //   3. Least squares R_vec = a (UᵀU)⁻¹ Uᵀ B = a g (eq. 20), computed as g = U⁺ B by an SVD of U
 //      (the same estimate, without squaring U's condition number); the scale from ‖R‖_F² = 3:
 //      a = √3 / ‖g‖ (eqs. 21–23), so R_vec = a g and T' = a (x_ref, y_ref, 1) (eqs. 24–26).
-//   4. Orthogonalise: R = the rotation nearest to the estimate, by the seed's quaternion
+//   4. Orthogonalise: R = the rotation nearest to the estimate, by the paper's quaternion
 //      eigenvector (eqs. 27–32; NearestRotationQuaternion). Then T = T' − R P_ref.
-// The translation is not re-estimated after step 4 (the seed's method); pose_refinement.h
+// The translation is not re-estimated after step 4 (the paper's method); pose_refinement.h
 // improves both.
 //
 // Preconditions, checked: as many image points as object points, all finite; N ≥ 6 (U needs
 // 2(N−1) ≥ 9 rows); object points not coplanar (a coplanar set makes U rank deficient: the
 // components of R_vec along the plane normal are unobservable). Coplanar means σ3 ≤
 // options.planarity_tolerance · σ1 for the singular values σ1 ≥ σ2 ≥ σ3 of the centred object
-// points. Violations throw hecal::DegenerateError saying that seed 004 needs at least 6
+// points. Violations throw hecal::DegenerateError saying that the linear method needs at least 6
 // non-coplanar points and naming the methods that accept the data (ippe / dlt for planar
 // targets, dlt / sqpnp for fewer points).
 //
@@ -44,8 +44,8 @@
 // cubic through P_ref), the choice of P_ref matters little (measured over 2000 random 0.3 m
 // objects at 1 m, 0.5 px, N = 10 and 20: RMS rotation errors within −15% … +35% of the first
 // point's for the farthest-from-centroid and the nearest-to-centroid point), so the first point
-// is P_ref, as in the seed. Its ray carries the whole translation direction, so P_ref's pixel noise
-// goes straight into T (the seed's "translation cannot be improved"; the refinement removes
+// is P_ref, as in the paper. Its ray carries the whole translation direction, so P_ref's pixel
+// noise goes straight into T (the paper's "translation cannot be improved"; the refinement removes
 // it). U's reciprocal condition number σ_min/σ_max is reported; below 1e-12 (numerically
 // singular: another critical configuration) DegenerateError. So is a scale a that is not positive
 // and finite (all image points on P_ref's ray: the object has no extent in the image). U scales
@@ -97,7 +97,7 @@ LinearPoseResult LinearPose(const std::vector<Eigen::Vector3d>& object_points,
 
 // The shape of a point set: singular values σ1 ≥ σ2 ≥ σ3 of the centred points (object units),
 // their centroid, scatter Σ (p − c)(p − c)ᵀ and principal axes (columns, a right-handed rotation;
-// the last one is the normal of the least-squares plane). Shared by the seed-004 and DLT
+// the last one is the normal of the least-squares plane). Shared by the linear-pose and DLT
 // preconditions.
 struct PointSpread {
   Eigen::Vector3d singular_values = Eigen::Vector3d::Zero();

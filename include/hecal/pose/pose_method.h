@@ -2,9 +2,11 @@
 // this module, with one result type that the OpenCV methods (vision/opencv_pnp.h, built with
 // the vision layer) fill through FinishPose.
 //
-//   linear      seed 004 (linear_pose.h), then the reprojection refinement (pose_refinement.h).
-//               The default: the seed's method made maximum-likelihood, with a covariance.
-//   linear-raw  seed 004 alone, exactly the paper's estimate (no refinement, no covariance:
+//   linear      the linear pose paper (linear_pose.h), then the reprojection refinement
+//   (pose_refinement.h).
+//               The default: the paper's method made maximum-likelihood, with a covariance.
+//   linear-raw  the linear pose paper alone, exactly the paper's estimate (no refinement, no
+//   covariance:
 //               the first-order covariance describes the ML estimate, not this one).
 //   dlt         the normalised DLT, or the homography for a planar target (dlt_pose.h), then
 //               the refinement.
@@ -14,9 +16,9 @@
 // Result: T_camera_target (x_camera = T · P, the object points' length unit), the per-point
 // residuals and their RMS (px) at that pose, and — for refined methods — the 6×6 right-
 // perturbation covariance (rx, ry, rz, tx, ty, tz) with the σ it uses (given or estimated, see
-// pose_refinement.h). Warnings: linear and linear-raw add one when seed 004's rotation estimate
+// pose_refinement.h). Warnings: linear and linear-raw add one when the linear rotation estimate
 // is far from a rotation (LinearPoseResult::rotation_residual > kUnreliableRotationResidual):
-// the seed's pose may then be tens of degrees off, and the refinement may stop in a local
+// the paper's pose may then be tens of degrees off, and the refinement may stop in a local
 // minimum (seen in 1 of 200 six-point problems at 0.1 px: a 101° start, 47 px RMS after
 // refinement); the warning says to check the RMS and to compare with dlt.
 #pragma once

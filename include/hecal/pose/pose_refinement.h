@@ -1,11 +1,12 @@
 // Maximum-likelihood refinement of a camera pose from known points: Levenberg–Marquardt on the
 // reprojection error over SE(3), and the pose's first-order covariance. The "natural extension"
-// of seed 004 (SPEC.md B: its translation cannot be improved after its step 3).
+// of the linear pose paper (docs/pose-from-points.md: its translation cannot be improved after its
+// step 3).
 //
 // Model: pixel u_k = π(T · P_k) + e_k, e_k ~ N(0, σ² I₂), π = Project (camera_model.h), object
 // points P_k exact. Minimise C(T) = ½ Σ ‖π(T P_k) − u_k‖² over T = T_camera_target.
-// Parameterisation (DESIGN.md §2): right perturbation T = T̂ · Exp(δ), δ = (ω, v) (se3::Exp),
-// re-linearised at every accepted step. With p = T̂ P_k the point in the camera frame,
+// Parameterisation (docs/conventions.md): right perturbation T = T̂ · Exp(δ), δ = (ω, v)
+// (se3::Exp), re-linearised at every accepted step. With p = T̂ P_k the point in the camera frame,
 //   ∂p/∂δ = R̂ [ −[P_k]×  I ],    ∂r_k/∂δ = J_π(p) R̂ [ −[P_k]×  I ]      (2 × 6, analytic).
 // Steps: (JᵀJ + μ diag(JᵀJ)) δ = −Jᵀr (Marquardt's scaling: ω in radians and v in metres differ in
 // scale). A step is accepted when it lowers the cost, with every point staying in front of the
@@ -28,7 +29,7 @@
 // Why Eigen and not Ceres (used by the estimation layer): speed and footprint. With 6 unknowns
 // the 6×6 normal equations are solved directly; a plain loop has no problem set-up, no
 // allocation per residual block and no sparse machinery, and keeps this module Eigen-only
-// (DESIGN.md §1, small machines): measured 10–20 µs for 6–20 points and 20–50 µs for 50
+// (small machines: docs/README.md#layers): measured 10–20 µs for 6–20 points and 20–50 µs for 50
 // points (4–5 iterations from a closed-form start; one core of the shared development machine).
 //
 // Errors: InputError for mismatched or non-finite inputs, fewer than 3 points, invalid options;

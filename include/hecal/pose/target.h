@@ -1,4 +1,4 @@
-// Calibration targets: their description (target.yaml, DESIGN.md §4.1; docs/targets.md) and the
+// Calibration targets: their description (target.yaml, docs/targets.md) and the
 // 3-D positions of their points in the target frame. Lengths in metres; every point has z = 0.
 //
 // The target frame of a board is OpenCV 4.6's frame for that board, so poses compare with

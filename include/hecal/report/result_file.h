@@ -1,6 +1,6 @@
-// The calibration result file (DESIGN.md §5, the contract): JSON, or YAML when the output path
-// ends in .yaml / .yml. One object per method; `--method all` writes {"results": [ ... ]}, where
-// a method that refused the data (e.g. Daniilidis' consistency check) appears as
+// The calibration result file (docs/result-file.md, the contract): JSON, or YAML when the output
+// path ends in .yaml / .yml. One object per method; `--method all` writes {"results": [ ... ]},
+// where a method that refused the data (e.g. Daniilidis' consistency check) appears as
 // {"hecal_version", "setup", "method", "error": "<why>"} so that every method is accounted for.
 //
 // Units: lengths in the input's unit (`units.length`), angles in radians, except fields whose

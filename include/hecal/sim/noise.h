@@ -1,7 +1,7 @@
-// Measurement noise models for simulated poses (thesis SPEC.md A.4: Gaussian with σ = n mm and
-// n° per component, uniform, and systematic errors).
+// Measurement noise models for simulated poses (thesis docs/thesis-study.md: Gaussian with σ = n mm
+// and n° per component, uniform, and systematic errors).
 //
-// A noisy pose is T̃ = T · Exp(δ) (right perturbation, DESIGN.md §2), δ = (ω, v), with per
+// A noisy pose is T̃ = T · Exp(δ) (right perturbation, docs/conventions.md), δ = (ω, v), with per
 // component:
 //   kGaussian    ω_k ~ N(0, σ_r²), v_k ~ N(0, σ_t²)
 //   kUniform     ω_k ~ U(−σ_r, σ_r), v_k ~ U(−σ_t, σ_t)   ("±n": std is σ/√3)

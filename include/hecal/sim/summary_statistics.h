@@ -1,5 +1,5 @@
-// Summary statistics of Monte-Carlo trial errors (the thesis study, SPEC.md A.4): median, RMSE,
-// 10th and 90th percentiles, maximum, and the number of failed trials.
+// Summary statistics of Monte-Carlo trial errors (the thesis study, docs/thesis-study.md): median,
+// RMSE, 10th and 90th percentiles, maximum, and the number of failed trials.
 //
 //  - Non-finite values (a solver threw or returned NaN/inf) are failures: counted, and left out
 //    of every statistic.

@@ -1,4 +1,4 @@
-// Synthetic hand–eye data sets following the thesis protocol (SPEC.md A.4):
+// Synthetic hand–eye data sets following the thesis protocol (docs/thesis-study.md):
 //  - ground-truth hand–eye transform: uniformly random rotation, translation U(−50, 50) mm per
 //    axis (the camera's offset from the flange for eye-in-hand, the target's from the flange for
 //    eye-to-hand);
@@ -12,7 +12,7 @@
 //  - robot poses follow from the model Z = A_i X B_i (problem.h), then noise is added to the
 //    robot poses T_base_gripper and the camera poses T_camera_target independently.
 // Relative rotations between stations reach 180°, which is what breaks OpenCV 4.6's TSAI,
-// HORAUD and DANIILIDIS (issue 3).
+// HORAUD and DANIILIDIS.
 #pragma once
 
 #include <random>

@@ -1,7 +1,7 @@
 // Outlier removal among Monte-Carlo trial results with the triangle threshold, as in the thesis
-// (SPEC.md A.4; seed 002 §5.2): build a histogram of the errors, smooth it with a moving average,
-// draw a line from the histogram's peak to its far end, and put the threshold at the bin of
-// maximum distance below that line (Zack, Rogers & Latt, "Automatic measurement of sister
+// (docs/thesis-study.md; the thesis §5.2): build a histogram of the errors, smooth it with a moving
+// average, draw a line from the histogram's peak to its far end, and put the threshold at the bin
+// of maximum distance below that line (Zack, Rogers & Latt, "Automatic measurement of sister
 // chromatid exchange frequency", J. Histochem. Cytochem. 25(7), 1977). Values in bins beyond the
 // threshold bin are outliers.
 //

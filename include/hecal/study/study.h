@@ -1,4 +1,4 @@
-// The thesis study (SPEC.md A.4), extended to every hecal method side by side: Monte-Carlo
+// The thesis study (docs/thesis-study.md), extended to every hecal method side by side: Monte-Carlo
 // trials on the thesis protocol (sim/thesis_protocol.h) for a list of settings (setup, number
 // of stations, which device is noisy, noise kind, noise level), every requested method solving
 // the IDENTICAL data set in each trial, errors against the truth, triangle-threshold outliers
@@ -15,7 +15,7 @@
 //    results go to fixed slots);
 //  - settings that differ only in the noise share the same ground truth and station poses per
 //    trial (common random numbers: noise sweeps compare like with like).
-// Covariance (issue 5, optional): with StudyOptions::covariance other than kNone every method
+// Covariance (optional): with StudyOptions::covariance other than kNone every method
 // goes through estimation::Calibrate with the setting's noise model (the sigmas below, for
 // the closed-form methods too) and that covariance method, and each trial records the error of
 // X in the tangent space, e = Log(X̂⁻¹ X̃) (right perturbation, (ω, v)), with its predicted

@@ -1,4 +1,4 @@
-// The study's files (issue 3, `hecal simulate --output / --summary`): CSV with a header line,
+// The study's files (`hecal simulate --output / --summary`): CSV with a header line,
 // errors in degrees and millimetres, numbers with 9 significant digits ("nan" for a failed
 // trial), so the same seed gives byte-identical files.
 //

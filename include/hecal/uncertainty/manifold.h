@@ -6,7 +6,7 @@
 //   Pose                SE(3):   Plus(T, δ) = T · Exp(δ),   Minus(U, T) = Log(T⁻¹ U),  δ = (ω, v)
 //   std::vector<Pose>   SE(3)^k: each pose in turn, δ = (δ_0, …, δ_{k−1}) (e.g. (X, Z): 12-D)
 //
-// These are the right-perturbation retractions of DESIGN.md §2, so a covariance on T means
+// These are the right-perturbation retractions of docs/conventions.md, so a covariance on T means
 // T = T̂ · Exp(δ), δ ~ N(0, Σ), rotation first — the meaning of every 6×6 covariance in hecal.
 //
 // WeightedMean finds the mean on the manifold iteratively (the weighted Karcher/Fréchet mean

@@ -1,6 +1,6 @@
 // Monte Carlo transform: the mean and covariance of y = f(x), x = x̄ ⊞ δ, δ ~ N(0, Σx), from N
-// random samples — the ground truth the seed checks the Unscented Transform against (SPEC.md
-// C.6: 5000 samples).
+// random samples — the ground truth the contour paper checks the Unscented Transform against
+// (docs/contour.md#the-experiments: 5000 samples).
 //
 // Sample k draws δ_k = S z_k, z_k ~ N(0, I) (S the square root of unscented.h), from a
 // std::mt19937_64 seeded with SplitMix64(seed, k): the same seed gives the same samples and

@@ -1,18 +1,18 @@
 // The Unscented Transform (Julier and Uhlmann, "A new extension of the Kalman filter to
-// nonlinear systems", 1997; SPEC.md C.4): the mean and covariance of y = f(x) for x with mean x̄
-// and covariance Σx, from f at 2n + 1 deterministic sigma points.
+// nonlinear systems", 1997; docs/uncertainty.md#the-unscented-transform): the mean and covariance
+// of y = f(x) for x with mean x̄ and covariance Σx, from f at 2n + 1 deterministic sigma points.
 //
 // Sigma points (n = dim x; S a square root of Σx, Σx = S Sᵀ; S_i its i-th COLUMN):
 //   x_0 = x̄,   x_i = x̄ ⊞ (+c S_i),   x_{n+i} = x̄ ⊞ (−c S_i),   i = 1..n
 //   ȳ = Σ w_i^m y_i (on a manifold: the iterative weighted mean of manifold.h, from y_0),
 //   Σy = Σ w_i^c (y_i ⊟ ȳ)(y_i ⊟ ȳ)ᵀ.
 // Two parameter forms:
-//  - kSymmetric, the seed's own (SPEC C.4): c = sqrt(n / (1 − w0)), w_0 = w0 and
-//    w_i = (1 − w0)/(2n) for both mean and covariance. w0 < 1. Default w0 = 1 − n/3, Julier and
-//    Uhlmann's choice for Gaussian inputs: c = √3, the points sit at ±√3 σ along each column,
-//    which matches the fourth moment of each axis (so the transform is exact for quadratics of a
-//    single axis). For n > 3 the centre weight is negative; the mean and covariance stay
-//    correct, and the points stay near the data (c = √3 whatever n), which is what nonlinear
+//  - kSymmetric, the contour paper's own (docs/uncertainty.md#the-unscented-transform): c = sqrt(n
+//    / (1 − w0)), w_0 = w0 and w_i = (1 − w0)/(2n) for both mean and covariance. w0 < 1. Default w0
+//    = 1 − n/3, Julier and Uhlmann's choice for Gaussian inputs: c = √3, the points sit at ±√3 σ
+//    along each column, which matches the fourth moment of each axis (so the transform is exact for
+//    quadratics of a single axis). For n > 3 the centre weight is negative; the mean and covariance
+//    stay correct, and the points stay near the data (c = √3 whatever n), which is what nonlinear
 //    estimators such as hand–eye solvers need when n is in the hundreds.
 //  - kScaled (Julier, "The scaled unscented transformation", ACC 2002): λ = α²(n + κ) − n,
 //    c = sqrt(n + λ), w_0^m = λ/(n + λ), w_0^c = w_0^m + 1 − α² + β, w_i = 1/(2(n + λ)).
@@ -28,9 +28,9 @@
 // (the squared second-order bias; zero for linear maps, so exactness for them is kept). For an
 // estimator, y_0 = f(x̄) is the estimate itself, so this is the mean squared error about it.
 //
-// Square root: Cholesky (Σx = L Lᵀ, L lower triangular; its columns are the S_i — the seed's
-// remark that rows or columns depend on the factorisation). Cholesky is the default because it
-// is the cheapest and, for the block-diagonal input covariances of a calibration, each column
+// Square root: Cholesky (Σx = L Lᵀ, L lower triangular; its columns are the S_i — the contour
+// paper's remark that rows or columns depend on the factorisation). Cholesky is the default because
+// it is the cheapest and, for the block-diagonal input covariances of a calibration, each column
 // perturbs one measurement only. A semidefinite Σx (e.g. a noise-free device) has no Cholesky
 // factor: then the symmetric root V D^½ Vᵀ is used (kSymmetric asks for it always). Zero columns
 // (directions without noise) give y_i = y_0 and f is not evaluated for them.

@@ -1,4 +1,4 @@
-// Target detection in one image (DESIGN.md §4.1; issue 4 "Targets and detection").
+// Target detection in one image (docs/targets.md).
 //
 // DetectTarget finds the points of a pose::TargetSpec in an 8-bit image and labels each pixel
 // with its pose::ObjectPoints id, so that solvePnP(ObjectPoints[id].position, pixel) gives

@@ -1,6 +1,6 @@
-// Camera pose from known points with OpenCV 4.6's solvePnP (SPEC.md B, the OpenCV side; the
-// Eigen solvers are in hecal/pose). Given object points P_k in the target frame and their pixels
-// (u_k, v_k) in a camera with the plumb_bob model of pose/camera_model.h, returns
+// Camera pose from known points with OpenCV 4.6's solvePnP (docs/pose-from-points.md, the OpenCV
+// side; the Eigen solvers are in hecal/pose). Given object points P_k in the target frame and their
+// pixels (u_k, v_k) in a camera with the plumb_bob model of pose/camera_model.h, returns
 //   T_camera_target = [R | t],  R = Rodrigues(rvec), t = tvec  (solvePnP's outputs),
 // so x_camera = T_camera_target · P_k. Lengths: the object points' unit (metres in hecal), and
 // t comes out in the same unit; pixels as OpenCV (origin at the centre of the top-left pixel).
