@@ -5,7 +5,7 @@
 //        F(X, Z) = Σ_i ρ(s_i),   s_i = |W_i r_i|²,   r_i = Log(Z⁻¹ A_i X B_i)  (loop_residual.h)
 // with W_i the whitening of station i (station_covariance.h) and ρ the robust loss (robust_loss.h;
 // ρ(s) = s without one). Normal equations at (X, Z) over the right perturbations δ = (δX, δZ)
-// (ω, v order each; DESIGN.md §2), with J_i = ∂r_i/∂δ (loop_residual.h) and w_i = ρ'(s_i):
+// (ω, v order each; docs/conventions.md), with J_i = ∂r_i/∂δ (loop_residual.h) and w_i = ρ'(s_i):
 //        H = Σ_i w_i (W_i J_i)ᵀ (W_i J_i),        g = Σ_i w_i (W_i J_i)ᵀ W_i r_i.
 // g is exactly the gradient of F/2; H is the Gauss–Newton Hessian with the robust weights frozen
 // at the current point (iteratively reweighted least squares). Without a robust loss this is
