@@ -421,6 +421,15 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                    "With --method global: requested certificate gap, radians")
       ->capture_default_str();
   command
+      ->add_option("--matches-per-motion", flags->matches_per_motion,
+                   "With --method global and --images: target corners used per motion, spread "
+                   "over the target")
+      ->capture_default_str();
+  command
+      ->add_option("--relative-gap", flags->relative_gap,
+                   "With --method global: or this fraction of the optimum, when larger")
+      ->capture_default_str();
+  command
       ->add_option("--reach", flags->reach,
                    "With --method global: search X's translation up to this length, metres")
       ->capture_default_str();

@@ -19,6 +19,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "cli.h"
 #include "hecal/estimation/calibrate.h"
@@ -53,8 +54,10 @@ struct CalibrateFlags {
   std::string covariance_samples = "5000";  // --covariance-samples (montecarlo)
   std::string seed = "1";                   // --seed (montecarlo, and the outlier consensus)
   std::string correspondences;              // --correspondences FILE (--method global)
-  double epsilon = 2e-4;  // --epsilon RAD: the certificate's requested gap (global)
-  double reach = 2.0;     // --reach M: |t| of X is searched up to this (global)
+  double epsilon = 2e-4;        // --epsilon RAD: the certificate's requested gap (global)
+  double relative_gap = 0.1;    // --relative-gap: or this fraction of the optimum (global)
+  int matches_per_motion = 40;  // --matches-per-motion: target corners used per motion (global)
+  double reach = 2.0;           // --reach M: |t| of X is searched up to this (global)
 };
 
 // The flags every form shares, checked.
@@ -102,10 +105,22 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
 
+struct ImageSet;  // image_set.h (built with the vision layer only)
+
+// Step 2 above: the robot row of every image of `set`, by id = file stem when the rows have ids
+// and they name the images, else by sorted file name. Ids that name no image at all (e.g. the
+// row numbers `hecal import` writes) do not pair by id: then the rows pair by order, with a note
+// on io.err. Returns one pose per image of `set`, in its order. Defined with the vision layer.
+std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& set,
+                                    const std::string& images_dir, const Io& io);
+
 // `hecal calibrate --method global --correspondences FILE --intrinsics camera.yaml --robot
 // robot.csv --setup eye-in-hand|eye-to-hand [--pixel-sigma PX] [--epsilon RAD] [--reach M]`
 // (docs/global.md): reads the robot poses and the point matches (io/correspondence_file.h;
-// pixels are undistorted through the intrinsics, bearings are taken as they are), removes
+// pixels are undistorted through the intrinsics, bearings are taken as they are) — or, with
+// `--images DIR --target target.yaml --intrinsics camera.yaml` instead of the file, the target
+// corners detected in the images (image_set.h), matched by their ids between consecutive usable
+// stations (the target's geometry is not used); then removes
 // wrong matches (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel
 // sigma 0.5 px unless given), certifies the L∞ optimum (global/branch_and_bound.h), polishes
 // it in L2 with a covariance (estimation/epipolar_polish.h), prints a summary and writes the
@@ -113,8 +128,9 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
 // the inliers, the removed matches with their ids, `covariance` of X (ω, v right perturbation).
 // Errors (InputError, exit 2, nothing written): a missing or unreadable file, a station the
 // robot file does not have, pixels without --intrinsics, a pixel that cannot be undistorted,
-// --setup auto, --camera or --images (not used by this form), a non-positive --epsilon or
-// --reach, too few matches.
+// --setup auto, --camera, --images with --correspondences, --images without --intrinsics or
+// with --target none (generic feature matching is not built), the image front end's errors, a
+// non-positive --epsilon or --reach, too few matches.
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io);
 
 }  // namespace hecal::cli

@@ -1,4 +1,5 @@
 // `hecal calibrate --method global` (calibrate.h: RunCalibrateGlobal).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
@@ -18,6 +19,10 @@
 #include "hecal/io/units.h"
 #include "json_matrix.h"
 
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+#include "image_set.h"
+#endif
+
 namespace hecal::cli {
 namespace {
 
@@ -27,24 +32,31 @@ struct GlobalInput {
   double focal = 1.0;  // pixels (1 for bearings)
 };
 
-GlobalInput ReadGlobalInput(const CalibrateFlags& flags, handeye::Setup setup) {
-  if (!flags.camera.empty() || !flags.images.empty()) {
-    throw InputError(flags.camera.empty() ? "--images" : "--camera", 0,
-                     "--method global reads point matches, not camera poses or images",
-                     "give the matches with --correspondences FILE (docs/global.md)");
+// The unit ray of a pixel through the camera (undistorted with its plumb_bob model).
+Eigen::Vector3d PixelRay(const pose::CameraModel& camera, const Eigen::Vector2d& pixel,
+                         const std::string& source, int line) {
+  const auto normalised = pose::Undistort(camera, pixel);
+  if (!normalised) {
+    throw InputError(source, line,
+                     "pixel (" + std::to_string(pixel.x()) + ", " + std::to_string(pixel.y()) +
+                         ") cannot be undistorted",
+                     "check the pixel against the image size and the intrinsics");
   }
-  if (flags.correspondences.empty()) {
-    throw InputError("--correspondences", 0, "--method global needs point matches",
-                     "give --correspondences FILE (CSV: first,second,u1,v1,u2,v2; "
-                     "docs/global.md)");
-  }
+  return Eigen::Vector3d(normalised->x(), normalised->y(), 1.0).normalized();
+}
+
+io::PoseTable ReadRobot(const CalibrateFlags& flags) {
   const auto units = io::ParseLengthUnit(flags.units);
   if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
   io::PoseReadOptions read;
   read.units = *units;
   read.degrees = flags.degrees;
   read.invert = flags.robot_inverse;
-  const io::PoseTable robot = io::ReadPoseTable(flags.robot, read);
+  return io::ReadPoseTable(flags.robot, read);
+}
+
+GlobalInput MatchesFromFile(const CalibrateFlags& flags, handeye::Setup setup) {
+  const io::PoseTable robot = ReadRobot(flags);
   const io::CorrespondenceFile matches = io::ReadCorrespondenceFile(flags.correspondences);
   std::optional<pose::CameraModel> camera;
   if (matches.pixels) {
@@ -83,14 +95,7 @@ GlobalInput ReadGlobalInput(const CalibrateFlags& flags, handeye::Setup setup) {
       Eigen::Vector3d rays[2] = {motion.first_points[k], motion.second_points[k]};
       if (camera) {
         for (Eigen::Vector3d& ray : rays) {
-          const auto normalised = pose::Undistort(*camera, ray.head<2>());
-          if (!normalised) {
-            throw InputError(flags.correspondences, motion.lines[k],
-                             "pixel (" + std::to_string(ray.x()) + ", " + std::to_string(ray.y()) +
-                                 ") cannot be undistorted",
-                             "check the pixel against the image size and the intrinsics");
-          }
-          ray = Eigen::Vector3d(normalised->x(), normalised->y(), 1.0).normalized();
+          ray = PixelRay(*camera, ray.head<2>(), flags.correspondences, motion.lines[k]);
         }
       }
       out.pairs.push_back({rays[0], rays[1], motion.ids[k]});
@@ -99,6 +104,104 @@ GlobalInput ReadGlobalInput(const CalibrateFlags& flags, handeye::Setup setup) {
     input.motion_names.emplace_back(motion.first, motion.second);
   }
   return input;
+}
+
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+// Target corners as anonymous matches: the corners the detector finds in the images of two
+// consecutive usable stations (sorted by file name) with the same id are one match of that
+// motion. Only the ids and pixels are used; the target's size and square never enter X. At
+// most `per_motion` matches per motion, evenly spaced in id order (spread over the target).
+GlobalInput MatchesFromTargetImages(const CalibrateFlags& flags, handeye::Setup setup, int threads,
+                                    int per_motion, const Io& io) {
+  if (flags.target.empty() || flags.target == "none") {
+    throw InputError("--target", 0,
+                     "--method global with --images matches the corners of a target; matching "
+                     "generic image features (--target none) is not available",
+                     "give --target target.yaml, or bring your own matches with "
+                     "--correspondences FILE (docs/global.md)");
+  }
+  if (flags.intrinsics.empty()) {
+    throw InputError("--intrinsics", 0,
+                     "--method global with --images needs the camera's intrinsics (estimating "
+                     "them would use the target's geometry)",
+                     "give --intrinsics camera.yaml (e.g. calibrated with hecal detect)");
+  }
+  const io::PoseTable robot = ReadRobot(flags);
+  const ImageSet set =
+      DetectImageSet({flags.images, flags.target, flags.intrinsics, threads, ImageUse::kHandEye},
+                     "hecal calibrate --method global", io);
+  const std::vector<Pose> robot_poses = RobotPosePerImage(robot, set, flags.images, io);
+  std::vector<int> used;
+  for (std::size_t i = 0; i < set.images.size(); ++i) {
+    if (set.images[i].used()) used.push_back(int(i));
+  }
+  GlobalInput input;
+  input.problem.setup = setup;
+  input.focal = 0.5 * (set.camera.fx + set.camera.fy);
+  for (std::size_t k = 0; k + 1 < used.size(); ++k) {
+    const ImageRecord& first = set.images[used[k]];
+    const ImageRecord& second = set.images[used[k + 1]];
+    // Both point lists are sorted by id.
+    std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> common;
+    std::vector<int> ids;
+    auto a = first.detection.points.begin(), b = second.detection.points.begin();
+    while (a != first.detection.points.end() && b != second.detection.points.end()) {
+      if (a->id < b->id) {
+        ++a;
+      } else if (b->id < a->id) {
+        ++b;
+      } else {
+        common.emplace_back(a->pixel, b->pixel);
+        ids.push_back(a->id);
+        ++a;
+        ++b;
+      }
+    }
+    global::EpipolarMotion motion;
+    motion.first_station = used[k];
+    motion.second_station = used[k + 1];
+    motion.hand = global::HandPose(setup, robot_poses[used[k]]).inverse() *
+                  global::HandPose(setup, robot_poses[used[k + 1]]);
+    const int n = int(common.size());
+    const int take = std::min(n, per_motion);
+    for (int j = 0; j < take; ++j) {
+      const int index = int((long(j) * n) / take);
+      motion.pairs.push_back({PixelRay(set.camera, common[index].first, first.name, 0),
+                              PixelRay(set.camera, common[index].second, second.name, 0),
+                              ids[index]});
+    }
+    input.problem.motions.push_back(std::move(motion));
+    input.motion_names.emplace_back(first.id(), second.id());
+  }
+  return input;
+}
+#endif
+
+GlobalInput ReadGlobalInput(const CalibrateFlags& flags, handeye::Setup setup,
+                            [[maybe_unused]] int threads, [[maybe_unused]] const Io& io) {
+  if (!flags.camera.empty()) {
+    throw InputError("--camera", 0, "--method global reads point matches, not camera poses",
+                     "give the matches with --correspondences FILE, or the images with --images "
+                     "DIR --target target.yaml (docs/global.md)");
+  }
+  if (!flags.images.empty()) {
+    if (!flags.correspondences.empty()) {
+      throw InputError("--correspondences", 0, "--images and --correspondences were both given",
+                       "give the matches from one source: the images' target corners or the file");
+    }
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+    return MatchesFromTargetImages(flags, setup, threads, flags.matches_per_motion, io);
+#else
+    throw InputError("--images", 0, "this hecal was built without the vision layer (OpenCV)",
+                     "rebuild with -DHECAL_BUILD_VISION=ON, or give --correspondences FILE");
+#endif
+  }
+  if (flags.correspondences.empty()) {
+    throw InputError("--correspondences", 0, "--method global needs point matches",
+                     "give --correspondences FILE (CSV: first,second,u1,v1,u2,v2; "
+                     "docs/global.md), or target images with --images DIR --target target.yaml");
+  }
+  return MatchesFromFile(flags, setup);
 }
 
 }  // namespace
@@ -112,6 +215,15 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   if (!(flags.epsilon > 0.0 && flags.epsilon <= 1.0)) {
     throw InputError("--epsilon", 0, "must be above 0 and at most 1 rad",
                      "give the certificate's gap in radians, e.g. 2e-4");
+  }
+  if (!(flags.matches_per_motion >= 8 && flags.matches_per_motion <= 100000)) {
+    throw InputError("--matches-per-motion", 0, "must be at least 8 and at most 100000",
+                     "give how many target corners per motion the search uses, e.g. 40");
+  }
+  if (!(flags.relative_gap >= 0.0 && flags.relative_gap < 1.0)) {
+    throw InputError("--relative-gap", 0, "must be at least 0 and below 1",
+                     "give the certificate's gap as a fraction of the optimum, e.g. 0.1 (0: "
+                     "only --epsilon)");
   }
   if (!(flags.reach > 0.0 && flags.reach <= 1000.0)) {
     throw InputError("--reach", 0, "must be above 0 and at most 1000 m",
@@ -128,9 +240,10 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
     }
     CheckPixelSigma("--pixel-sigma", pixel_sigma);
   }
-  const GlobalInput input = ReadGlobalInput(flags, *setup);
+  const GlobalInput input = ReadGlobalInput(flags, *setup, threads, io);
   global::SearchOptions search;
   search.epsilon = flags.epsilon;
+  search.relative_gap = flags.relative_gap;
   search.translation_bound = flags.reach;
   search.threads = threads;
   global::OutlierOptions outliers;
@@ -166,10 +279,15 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   x["rotation"] = JsonRows(X.linear());
   x["translation_m"] = JsonVector(X.translation());
   doc["X"] = x;
-  doc["certificate"] = {{"lower", c.lower},         {"upper", c.upper},
-                        {"cubes", c.cubes},         {"lps", c.lps},
-                        {"seconds", c.seconds},     {"certified", c.certified},
-                        {"epsilon", flags.epsilon}, {"error", "max cheiral ray error, radians"},
+  doc["certificate"] = {{"lower", c.lower},
+                        {"upper", c.upper},
+                        {"cubes", c.cubes},
+                        {"lps", c.lps},
+                        {"seconds", c.seconds},
+                        {"certified", c.certified},
+                        {"epsilon", flags.epsilon},
+                        {"relative_gap", flags.relative_gap},
+                        {"error", "max cheiral ray error, radians"},
                         {"reach_m", flags.reach}};
   doc["l_infinity_X"] = {{"rotation", JsonRows(robust.solution.X.linear())},
                          {"translation_m", JsonVector(robust.solution.X.translation())}};

@@ -123,6 +123,26 @@ TEST_F(CalibrateGlobal, RefusesBadInputWithOneLineAndNoFile) {
   ExpectRefusal(
       run({"--setup", "eye-in-hand", "--correspondences", Path("bearings.csv"), "--epsilon", "0"}),
       "--epsilon");
+  ExpectRefusal(run({"--setup", "eye-in-hand", "--correspondences", Path("bearings.csv"),
+                     "--relative-gap", "1"}),
+                "--relative-gap");
+  // Target images: corners need the intrinsics and a target; one source of matches.
+  const std::vector<std::string> images = {"--setup",  "eye-in-hand",
+                                           "--images", Path("."),
+                                           "--target", Write("target.yaml", "type: chessboard\n")};
+  auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), images.begin(), images.end());
+    return run(extra);
+  };
+  ExpectRefusal(
+      with({"--intrinsics", Path("camera.yaml"), "--correspondences", Path("bearings.csv")}),
+      "--images and --correspondences were both given");
+  ExpectRefusal(with({}), "needs the camera's intrinsics");
+  ExpectRefusal(with({"--intrinsics", Path("camera.yaml"), "--matches-per-motion", "3"}),
+                "--matches-per-motion");
+  std::vector<std::string> none = {"--setup",  "eye-in-hand", "--images",     Path("."),
+                                   "--target", "none",        "--intrinsics", Path("camera.yaml")};
+  ExpectRefusal(run(none), "--target none");
   EXPECT_FALSE(std::filesystem::exists(Path("out.json")));
 }
 

@@ -40,10 +40,37 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
   return value;
 }
 
-// The robot row of every image (docs/targets.md): by id = file stem when the rows have ids and
-// they name the images, else by sorted file name. Ids that name no image at all (e.g. the row
-// numbers `hecal import` writes) do not pair by id: then the rows pair by order, with a note.
-// Returns one pose per image of `set`, in its order.
+void PrintRefinedIntrinsics(std::ostream& out, const pose::CameraModel& before,
+                            const report::ImageReport& report) {
+  constexpr std::array<const char*, pose::kNumIntrinsics> kNames = {"fx", "fy", "cx", "cy", "k1",
+                                                                    "k2", "p1", "p2", "k3"};
+  const pose::IntrinsicParameters start = pose::IntrinsicsOf(before);
+  const pose::IntrinsicParameters refined = pose::IntrinsicsOf(report.camera);
+  out << "intrinsics refined with X and Z (before → after ± 1σ):\n";
+  for (int k = 0; k < pose::kNumIntrinsics; ++k) {
+    out << "  " << kNames[static_cast<size_t>(k)] << " " << std::setprecision(k < 4 ? 7 : 5)
+        << start(k) << " → " << refined(k) << " ± " << std::setprecision(2)
+        << (*report.intrinsics_sigma)[static_cast<size_t>(k)] << "\n";
+  }
+  out << std::setprecision(6);
+}
+
+void PrintImageTable(std::ostream& out, const report::ResultDocument& document,
+                     const report::ImageReport& report) {
+  out << std::fixed << std::setprecision(3) << "reprojection: RMS " << report.rms_px
+      << " px over every point; pixel sigma " << report.pixel_sigma << " px ("
+      << (report.pixel_sigma_estimated ? "estimated" : "given") << ")\n  image          rms_px\n";
+  const std::vector<std::string> used = report::UsedStationIds(document);
+  for (size_t k = 0; k < used.size(); ++k) {
+    out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(7)
+        << report.image_rms_px[k] << (report.image_outlier[k] ? "   > 3σ, check this image" : "")
+        << "\n";
+  }
+  out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace
+
 std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& set,
                                     const std::string& images_dir, const Io& io) {
   const bool have_ids =
@@ -98,37 +125,6 @@ std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& 
   }
   return poses;
 }
-
-void PrintRefinedIntrinsics(std::ostream& out, const pose::CameraModel& before,
-                            const report::ImageReport& report) {
-  constexpr std::array<const char*, pose::kNumIntrinsics> kNames = {"fx", "fy", "cx", "cy", "k1",
-                                                                    "k2", "p1", "p2", "k3"};
-  const pose::IntrinsicParameters start = pose::IntrinsicsOf(before);
-  const pose::IntrinsicParameters refined = pose::IntrinsicsOf(report.camera);
-  out << "intrinsics refined with X and Z (before → after ± 1σ):\n";
-  for (int k = 0; k < pose::kNumIntrinsics; ++k) {
-    out << "  " << kNames[static_cast<size_t>(k)] << " " << std::setprecision(k < 4 ? 7 : 5)
-        << start(k) << " → " << refined(k) << " ± " << std::setprecision(2)
-        << (*report.intrinsics_sigma)[static_cast<size_t>(k)] << "\n";
-  }
-  out << std::setprecision(6);
-}
-
-void PrintImageTable(std::ostream& out, const report::ResultDocument& document,
-                     const report::ImageReport& report) {
-  out << std::fixed << std::setprecision(3) << "reprojection: RMS " << report.rms_px
-      << " px over every point; pixel sigma " << report.pixel_sigma << " px ("
-      << (report.pixel_sigma_estimated ? "estimated" : "given") << ")\n  image          rms_px\n";
-  const std::vector<std::string> used = report::UsedStationIds(document);
-  for (size_t k = 0; k < used.size(); ++k) {
-    out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(7)
-        << report.image_rms_px[k] << (report.image_outlier[k] ? "   > 3σ, check this image" : "")
-        << "\n";
-  }
-  out.unsetf(std::ios::floatfield);
-}
-
-}  // namespace
 
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io) {

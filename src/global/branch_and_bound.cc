@@ -53,7 +53,7 @@ class Search {
     const auto begin = std::chrono::steady_clock::now();
     double lower = 0.0;
     bool stuck = false;
-    while (best_error_ - lower > options_.epsilon && best_error_ > options_.stop_below && !stuck) {
+    while (best_error_ - lower > Gap() && best_error_ > options_.stop_below && !stuck) {
       const double level = std::isfinite(best_error_) ? 0.5 * (lower + best_error_) : M_PI / 4;
       switch (Decide(level)) {
         case Answer::kYes:
@@ -72,7 +72,7 @@ class Search {
     solution.certificate.upper = best_error_;
     solution.certificate.cubes = cubes_;
     solution.certificate.lps = lps_;
-    solution.certificate.certified = best_error_ - lower <= options_.epsilon;
+    solution.certificate.certified = best_error_ - lower <= Gap();
     solution.certificate.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     return solution;
@@ -80,6 +80,13 @@ class Search {
 
  private:
   enum class Answer { kYes, kNo, kUnknown };
+
+  // The requested gap at the current upper bound.
+  double Gap() const {
+    return std::isfinite(best_error_)
+               ? std::max(options_.epsilon, options_.relative_gap * best_error_)
+               : options_.epsilon;
+  }
 
   void Offer(const Pose& X, double error) {
     if (error < best_error_) {
@@ -124,17 +131,22 @@ class Search {
     for (Cube& cube : leaves_) (cube.infeasible_at >= level ? kept : work).push_back(cube);
     bool found = false, unresolved = false;
     constexpr int batch_size = 128;  // independent of the threads: the same search on any count
+    // A heap with the lowest score on top: best first without re-sorting the whole front.
+    const auto later = [](const Cube& a, const Cube& b) { return a.score > b.score; };
+    std::make_heap(work.begin(), work.end(), later);
     while (!work.empty() && !found) {
       if (cubes_ >= options_.max_cubes) {
         unresolved = true;
         break;
       }
-      // Best first: the lowest scores go into this batch.
       const int count = std::min<int>(batch_size, int(work.size()));
-      std::nth_element(work.begin(), work.end() - count, work.end(),
-                       [](const Cube& a, const Cube& b) { return a.score > b.score; });
-      std::vector<Cube> batch(work.end() - count, work.end());
-      work.resize(work.size() - count);
+      std::vector<Cube> batch;
+      batch.reserve(count);
+      for (int i = 0; i < count; ++i) {
+        std::pop_heap(work.begin(), work.end(), later);
+        batch.push_back(std::move(work.back()));
+        work.pop_back();
+      }
       std::vector<Outcome> outcomes(batch.size());
       const int chunks = std::min<int>(count, 4 * threads_);
       uncertainty::ParallelFor(chunks, threads_, [&](int chunk) {
@@ -167,7 +179,10 @@ class Search {
           for (int axis = 0; axis < 3; ++axis) {
             child.centre[axis] += ((k >> axis) & 1) ? half : -half;
           }
-          if (MeetsBall(child)) work.push_back(child);
+          if (MeetsBall(child)) {
+            work.push_back(child);
+            std::push_heap(work.begin(), work.end(), later);
+          }
         }
       }
     }

@@ -87,8 +87,7 @@ TEST(SolveGlobal, CertifiesTenMotionsByHundredMatchesWithinAMinute) {
     EXPECT_TRUE(solution.certificate.certified);
     seconds[threads - 1] = solution.certificate.seconds;
     std::printf("threads %d: %.2f s, %ld cubes, %ld LPs, gap %.3g\n", threads,
-                solution.certificate.seconds, solution.certificate.cubes,
-                solution.certificate.lps,
+                solution.certificate.seconds, solution.certificate.cubes, solution.certificate.lps,
                 solution.certificate.upper - solution.certificate.lower);
   }
   EXPECT_LT(seconds[1], 60.0);

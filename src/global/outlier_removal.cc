@@ -111,7 +111,8 @@ RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const Sea
     }
     round_options.start = result.solution.X;
   }
-  if (result.solution.certificate.upper - result.solution.certificate.lower > search.epsilon) {
+  const Certificate& last = result.solution.certificate;
+  if (last.upper - last.lower > std::max(search.epsilon, search.relative_gap * last.upper)) {
     SearchOptions final_options = search;
     final_options.start = result.solution.X;
     result.solution = SolveGlobal(result.inliers, final_options);

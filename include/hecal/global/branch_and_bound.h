@@ -14,9 +14,14 @@
 // candidate lowers `upper` when better; one within a quarter of the way from ε to the old upper
 // bound ends the level (LP points lie on the relaxation's boundary, so demanding ≤ ε exactly
 // would split cubes forever); all cubes pruned sets lower = ε. It stops when
-// upper − lower ≤ options.epsilon (the certificate), or when a budget runs out (cubes, or cube
-// size below options.min_half_width): then `certified` is false and the bounds are what was
-// proved. Results do not depend on the thread count.
+// upper − lower ≤ max(options.epsilon, options.relative_gap · upper) (the certificate), or when a
+// budget runs out (cubes, or cube size below options.min_half_width): then `certified` is false
+// and the bounds are what was proved. Results do not depend on the thread count.
+//
+// The relative gap is for noisy data: there the optimum is of the order of the ray noise, and
+// closing an absolute gap far below it needs cubes far smaller than the noise (their number
+// grows as the cube of 1/gap near the optimum); a gap of a fraction of the optimum proves the
+// same thing to the precision the noise allows, and the L2 polish takes X the rest of the way.
 //
 // The certificate: no X with |t| ≤ T has max E below `lower`; `X` has max E = `upper`.
 #pragma once
@@ -29,6 +34,7 @@ namespace hecal::global {
 
 struct SearchOptions {
   double epsilon = 1e-4;           // requested gap upper − lower (radians)
+  double relative_gap = 0.0;       // or this fraction of upper, when larger
   double translation_bound = 2.0;  // T (metres): the camera lies within T of the hand origin
   double min_half_width = 1e-9;    // smallest cube (radians)
   long max_cubes = 20'000'000;     // budget of cube tests
@@ -45,7 +51,7 @@ struct Certificate {
   long cubes = 0;      // cubes tested
   long lps = 0;        // linear programmes solved
   double seconds = 0.0;
-  bool certified = false;  // upper − lower ≤ the requested epsilon
+  bool certified = false;  // upper − lower ≤ max(epsilon, relative_gap · upper)
 };
 
 struct GlobalSolution {
