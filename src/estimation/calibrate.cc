@@ -41,6 +41,31 @@ std::string SigmaText(const PoseSigma& sigma) {
   return Format("%.3g deg, %.3g mm", sigma.rotation * kRadToDeg, sigma.translation * 1e3);
 }
 
+// The anisotropic camera noise of the result, for the noise warning; empty when isotropic.
+std::string AnisotropicText(const PoseSigma& excess, double likelihood_ratio) {
+  if (excess.rotation == 0.0 && excess.translation == 0.0) return {};
+  return "; the camera noise is anisotropic (likelihood ratio " +
+         Format("%.3g", likelihood_ratio, 0) + " against the isotropic model): an excess of " +
+         SigmaText(excess) +
+         " in tilt (about the camera's x, y) and depth (along its z) on top of it";
+}
+
+// The per-station noise of `result`'s model: the robot's and the camera's isotropic sigmas, and
+// the camera's tilt / depth excess turned into each camera pose's frame (station_covariance.h).
+StationNoise ResultStationNoise(const handeye::Problem& problem, const CalibrationResult& result) {
+  StationNoise noise =
+      StationNoise::Uniform(problem.A.size(), result.robot_sigma, result.camera_sigma);
+  const NoiseVariances excess = Variances({}, {}, result.camera_excess);
+  if (excess[kCameraTiltExcess] == 0.0 && excess[kCameraDepthExcess] == 0.0) return noise;
+  for (size_t i = 0; i < problem.A.size(); ++i) {
+    const NoiseComponents Q =
+        StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], result.X);
+    noise.camera[i] += excess[kCameraTiltExcess] * Q[kCameraTiltExcess] +
+                       excess[kCameraDepthExcess] * Q[kCameraDepthExcess];
+  }
+  return noise;
+}
+
 // Station names for messages: options.station_ids when given, else numbers from 1.
 std::string StationList(const std::vector<int>& stations, const CalibrateOptions& options) {
   std::string text;
@@ -200,6 +225,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   for (int& i : flagged) i = used_index[i];
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
+  result.camera_excess = noise.camera_excess();
   result.sigmas_estimated = spec.AnyEstimated();
   // The covariance of (X, Z) under that noise model: ml's analytic information when linear,
   // else propagated through the solver (calibration_covariance.h).
@@ -211,8 +237,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     result.covariance = covariance;
   } else {
     result.covariance = PropagateCovariance(
-        problem, result, options, StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma),
-        options.covariance);
+        problem, result, options, ResultStationNoise(problem, result), options.covariance);
   }
   if (result.covariance && options.model_check) ApplyModelCheck(problem, options, &result);
   if (result.covariance && result.covariance->method == CovarianceMethod::kMonteCarlo)
@@ -236,12 +261,14 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
         "noise not given (--robot-sigma, --camera-sigma): estimated from the residuals as " +
         SigmaText(result.robot_sigma) +
         " per component for the robot and the same for the camera (from poses alone only "
-        "their combined effect is identifiable, so it is split equally)");
+        "their combined effect is identifiable, so it is split equally)" +
+        AnisotropicText(result.camera_excess, noise.likelihood_ratio));
   } else if (!options.camera_sigma) {
     result.warnings.push_back(
         "camera noise not given (--camera-sigma): estimated from the "
         "residuals as " +
-        SigmaText(result.camera_sigma) + " per component");
+        SigmaText(result.camera_sigma) + " per component" +
+        AnisotropicText(result.camera_excess, noise.likelihood_ratio));
   } else if (!options.robot_sigma) {
     result.warnings.push_back(
         "robot noise not given (--robot-sigma): estimated from the "

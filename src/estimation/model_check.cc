@@ -197,7 +197,8 @@ void ApplyModelCheck(const handeye::Problem& problem, const CalibrateOptions& op
   const std::vector<std::vector<bool>> groups = JackknifeGroups(n);
   const std::vector<StationLinearization> linearized =
       LinearizeStations(problem, result->X, result->Z);
-  const NoiseVariances variances = Variances(result->robot_sigma, result->camera_sigma);
+  const NoiseVariances variances =
+      Variances(result->robot_sigma, result->camera_sigma, result->camera_excess);
   std::vector<handeye::Solution> without_group;
   if (n > kModelCheckSolvedStations) {
     without_group = LinearizedWithoutGroups(linearized, variances, groups, result->X, result->Z);

@@ -215,6 +215,10 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
                       {{"rotation_deg", result.camera_sigma.rotation * kDegrees},
                        {"translation", result.camera_sigma.translation * scale}}},
                      {"estimated", result.sigmas_estimated}};
+  if (result.camera_excess.rotation > 0.0 || result.camera_excess.translation > 0.0) {
+    object["noise"]["camera_excess"] = {{"tilt_deg", result.camera_excess.rotation * kDegrees},
+                                        {"depth", result.camera_excess.translation * scale}};
+  }
   object["stations"] = {
       {"used", used}, {"rejected", rejected}, {"outlier_rejection", result.outlier_rejection}};
   if (result.seed) object["seed"] = *result.seed;

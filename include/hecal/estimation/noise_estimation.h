@@ -21,10 +21,10 @@
 //        Σ_h tr(P Q_g P Q_h) θ_h = r̂ᵀ W Q_g W r̂ − tr(P Q_g P Q_known)       (one row per group)
 // for the group variances; each row states that the residual energy of a component equals its
 // expectation under the model (unbiased at the current weights). All traces are accumulated
-// per station with 12 × 12 matrices, O(n). (Should the 2 × 2 system be singular, Förstner's
-// ratio update θ_g ← θ_g · r̂ᵀ W Q_g W r̂ / tr(P Q_g) is used.) On a flat likelihood (few stations)
-// this iteration can cycle, so every step is safeguarded: it may not decrease the restricted
-// log-likelihood
+// per station with 12 × 12 matrices, O(n). (Should the G × G system, G ≤ 4 groups, be singular,
+// Förstner's ratio update θ_g ← θ_g · r̂ᵀ W Q_g W r̂ / tr(P Q_g) is used.) On a flat likelihood (few
+// stations) this iteration can cycle, so every step is safeguarded: it may not decrease the
+// restricted log-likelihood
 //        ℓ_R(θ) = −½ (Σ_i log det Σ_i + log det N + Σ_i r_iᵀ Σ_i⁻¹ r_i − bᵀ N⁻¹ b)
 // and is halved (geometrically) until it does not; a step to a non-positive variance (the
 // maximum is on the boundary θ_g = 0) is limited to a factor 10 decrease. Converged when the
@@ -60,6 +60,31 @@
 // grids cost 16² + 24² likelihood evaluations of O(n) each per estimate (`hecal calibrate` on
 // the 50-station MoveIt set: 0.30 s in all with the model check).
 //
+// Anisotropic camera noise (when the camera noise is estimated and n ≥
+// kAnisotropicMinStations). A camera pose from PnP has a shape the isotropic model cannot take
+// (tilt 20× its spin, depth 10× its lateral position; station_covariance.h): the isotropic
+// σ_cr then overstates the spin and understates the tilt. So EstimateNoise also fits the model
+// with two more camera variances in the camera frame, the tilt excess (rotation about x, y) and
+// the depth excess (translation along z), on top of the isotropic part, and keeps it when the
+// restricted likelihood-ratio test rejects the isotropic model: 2 (ℓ_R(rich) − ℓ_R(isotropic))
+// > 5.99, the χ²(2) quantile at 95% (with the excesses on their boundary 0 under the isotropic
+// model the null distribution is the mixture ¼χ²₀ + ½χ²₁ + ¼χ²₂, so the test's level is about
+// 2%; the richer model is chosen on correct data about one time in 50). What is identifiable
+// from poses: the camera's own shape is, because the tilt and depth axes turn with the camera
+// pose B_i from station to station while the isotropic parts do not; the robot/camera split of
+// the isotropic part is not (both enter every residual; for eye-in-hand rotation only their sum
+// does), so it stays the equal split of the isotropic model, and all of the anisotropy is given
+// to the camera (the prior: a robot's joint encoders give a nearly isotropic flange pose, a PnP
+// pose is anisotropic). The minimum of kAnisotropicMinStations: the rich model has four
+// variances from 6n − 12 residual degrees of freedom; at n = 8 that is 36, 9 per variance, the
+// fewest at which the REML estimates of the excesses are bounded away from "anything" (their
+// relative σ error √(2/ν) ≈ 0.5) and the LR statistic is near its χ² limit. Both estimated
+// excesses are posterior means like the other groups: with four groups a joint grid is too
+// costly (16⁴ points), so each group's posterior mean is taken with the others held at their
+// REML values (a conditional posterior mean; for the two isotropic groups of a rich fit this
+// ignores their correlation with the excesses, which errs upward as the marginal would).
+// The anisotropic model is not used when the camera noise is given (--camera-sigma).
+//
 // Outlier test (Baarda's data snooping, multivariate form). Station i's statistic is
 //   included:  T_i = r̂_iᵀ C_i⁺ r̂_i,  C_i = Σ_i − J_i N⁻¹ J_iᵀ  (its residual covariance)
 //   excluded:  T_i = r̂_iᵀ (Σ_i + J_i N⁻¹ J_iᵀ)⁻¹ r̂_i   (prediction from the other stations)
@@ -85,6 +110,9 @@
 namespace hecal::estimation {
 
 inline constexpr double kStableFlagsFraction = 1e-3;
+// The anisotropic model above: fewest stations, and the likelihood-ratio threshold.
+inline constexpr size_t kAnisotropicMinStations = 8;
+inline constexpr double kAnisotropicLikelihoodRatio = 5.991;
 
 // One station linearised at (X, Z).
 struct StationLinearization {
@@ -100,14 +128,18 @@ std::vector<StationLinearization> LinearizeStations(const handeye::Problem& prob
 struct NoiseSpec {
   // Known variances; for estimated ones the starting value (≤ 0: derived from the residuals).
   NoiseVariances variances{};
-  // −1: known; g ≥ 0: estimated, one shared value per group g (groups 0 and 1 at most).
-  std::array<int, kNumNoiseComponents> group{-1, -1, -1, -1};
+  // −1: known; g ≥ 0: estimated, one shared value per group g (groups 0–3 at most).
+  std::array<int, kNumNoiseComponents> group{-1, -1, -1, -1, -1, -1};
   // Report the posterior mean σ² of the estimated groups (above) instead of the REML point.
   bool posterior_mean = false;
+  // Also try the anisotropic camera model (above; the camera excesses are then estimated as
+  // groups of their own when the likelihood-ratio test chooses it).
+  bool anisotropic = false;
 
   // The rule above: both given → all known; one given → the other side's rotation and
   // translation estimated; none → equal split (rotation group, translation group); estimated
-  // groups reported as posterior means (above).
+  // groups reported as posterior means (above); the anisotropic model tried when the camera
+  // noise is estimated.
   static NoiseSpec FromSigmas(const std::optional<PoseSigma>& robot,
                               const std::optional<PoseSigma>& camera);
   bool AnyEstimated() const;
@@ -125,11 +157,15 @@ struct NoiseEstimate {
   NoiseVariances variances{};       // known or estimated, indexed by NoiseComponent
   NoiseVariances reml_variances{};  // the REML point estimate (= variances without posterior)
   std::vector<StationTest> stations;
-  bool converged = true;  // the variance iteration converged (always, if none estimated)
-  int iterations = 0;     // variance iterations (0 if none estimated)
+  bool converged = true;          // the variance iteration converged (always, if none estimated)
+  int iterations = 0;             // variance iterations (0 if none estimated)
+  bool anisotropic = false;       // the anisotropic camera model was chosen
+  double likelihood_ratio = 0.0;  // 2 (ℓ_R(rich) − ℓ_R(isotropic)), when it was fitted
 
   PoseSigma robot() const;
   PoseSigma camera() const;
+  // The camera's tilt (rotation) and depth (translation) excess σ; zero unless anisotropic.
+  PoseSigma camera_excess() const;
 };
 
 // Estimates the unknown variances of `spec` and tests every station. `length_scale`: see
