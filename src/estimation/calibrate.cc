@@ -41,13 +41,18 @@ std::string SigmaText(const PoseSigma& sigma) {
   return Format("%.3g deg, %.3g mm", sigma.rotation * kRadToDeg, sigma.translation * 1e3);
 }
 
-// The anisotropic camera noise of the result, for the noise warning; empty when isotropic.
-std::string AnisotropicText(const PoseSigma& excess, double likelihood_ratio) {
-  if (excess.rotation == 0.0 && excess.translation == 0.0) return {};
-  return "; the camera noise is anisotropic (likelihood ratio " +
-         Format("%.3g", likelihood_ratio, 0) + " against the isotropic model): an excess of " +
-         SigmaText(excess) +
-         " in tilt (about the camera's x, y) and depth (along its z) on top of it";
+// The richer noise model of the result (noise_estimation.h), for the noise warning; empty when
+// the isotropic model was kept.
+std::string RicherModelText(const NoiseEstimate& noise) {
+  if (!noise.richer) return {};
+  std::string text =
+      "; the residuals chose a richer model than isotropic noise (likelihood ratio " +
+      Format("%.3g", noise.likelihood_ratio, 0.0) + ")";
+  const PoseSigma excess = noise.camera_excess();
+  if (excess.rotation > 0.0 || excess.translation > 0.0)
+    text += ": the camera has an excess of " + SigmaText(excess) +
+            " in tilt (about its x, y) and depth (along its z)";
+  return text;
 }
 
 // The per-station noise of `result`'s model: the robot's and the camera's isotropic sigmas, and
@@ -259,16 +264,17 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   if (!options.robot_sigma && !options.camera_sigma) {
     result.warnings.push_back(
         "noise not given (--robot-sigma, --camera-sigma): estimated from the residuals as " +
-        SigmaText(result.robot_sigma) +
-        " per component for the robot and the same for the camera (from poses alone only "
-        "their combined effect is identifiable, so it is split equally)" +
-        AnisotropicText(result.camera_excess, noise.likelihood_ratio));
+        SigmaText(result.robot_sigma) + " per component for the robot and " +
+        SigmaText(result.camera_sigma) +
+        " for the camera (from poses alone the split of the translation noise is not "
+        "identifiable, so it is equal; the rotation noise is split equally unless the residuals "
+        "tell the two apart)" +
+        RicherModelText(noise));
   } else if (!options.camera_sigma) {
     result.warnings.push_back(
         "camera noise not given (--camera-sigma): estimated from the "
         "residuals as " +
-        SigmaText(result.camera_sigma) + " per component" +
-        AnisotropicText(result.camera_excess, noise.likelihood_ratio));
+        SigmaText(result.camera_sigma) + " per component" + RicherModelText(noise));
   } else if (!options.robot_sigma) {
     result.warnings.push_back(
         "robot noise not given (--robot-sigma): estimated from the "

@@ -14,7 +14,7 @@ namespace {
 using Matrix12d = Eigen::Matrix<double, 12, 12>;
 using Vector12d = Eigen::Matrix<double, 12, 1>;
 
-constexpr int kMaxGroups = 4;
+constexpr int kMaxGroups = 5;
 constexpr int kMaxJointGroups = 2;        // the posterior mean's joint grid (header)
 constexpr double kAbsoluteFloor = 1e-30;  // variance floor (σ = 1e-15)
 constexpr double kRelativeFloor = 1e-6;   // variance ratio rotation·L² : translation, both ways
@@ -178,13 +178,15 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
     const int a = std::min(g, h), b = std::max(g, h);
     return trace_WQWQ[a][b] - 2.0 * (Ni * cross[a][b]).trace() + (Ni * H[g] * Ni * H[h]).trace();
   };
-  Eigen::Matrix4d S = Eigen::Matrix4d::Identity();
-  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+  using GroupMatrix = Eigen::Matrix<double, kMaxGroups, kMaxGroups>;
+  using GroupVector = Eigen::Matrix<double, kMaxGroups, 1>;
+  GroupMatrix S = GroupMatrix::Identity();
+  GroupVector rhs = GroupVector::Zero();
   for (int g = 0; g < G; ++g) {
     rhs(g) = q[g] - trace_PQPQ(g, G);
     for (int h = 0; h < G; ++h) S(g, h) = trace_PQPQ(g, h);
   }
-  Eigen::Vector4d solution = Eigen::Vector4d::Zero();
+  GroupVector solution = GroupVector::Zero();
   solution.head(G) = S.topLeftCorner(G, G).colPivHouseholderQr().solve(rhs.head(G));
   NoiseVariances next = theta;
   for (int g = 0; g < G; ++g) {
@@ -413,7 +415,7 @@ NoiseSpec NoiseSpec::FromSigmas(const std::optional<PoseSigma>& robot,
     spec.variances = {};
   }
   spec.posterior_mean = true;
-  spec.anisotropic = !camera;
+  spec.richer = !camera;
   return spec;
 }
 
@@ -457,6 +459,9 @@ double ThreeSigmaChiSquare(int dof) {
 }
 
 namespace {
+
+// χ²(k) quantiles at 95% for k = 0..3 extra variances.
+constexpr double kChiSquare95[4] = {0.0, 3.841, 5.991, 7.815};
 
 // EstimateNoise for one model (no choice between models); *final_included: the stations the
 // last variance estimate used.
@@ -531,35 +536,77 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
     throw std::invalid_argument("EstimateNoise supports at most four variance groups");
   }
   NoiseSpec isotropic = spec;
-  isotropic.anisotropic = false;
-  if (spec.anisotropic) {
+  isotropic.richer = false;
+  if (spec.richer) {
     for (int k : {kCameraTiltExcess, kCameraDepthExcess}) {
       isotropic.group[k] = -1;
       isotropic.variances[k] = 0.0;
     }
   }
+  // A starting value from a richer model (ml alternates noise and pose estimates) may differ
+  // within a group; start each group at its first member's value.
+  for (int g = 0; g < isotropic.NumGroups(); ++g) {
+    int first = -1;
+    for (int k = 0; k < kNumNoiseComponents; ++k) {
+      if (isotropic.group[k] != g) continue;
+      if (first < 0) first = k;
+      isotropic.variances[k] = isotropic.variances[first];
+    }
+  }
   std::vector<bool> included;
   NoiseEstimate estimate = EstimateOneModel(stations, isotropic, length_scale, &included);
-  if (!spec.anisotropic || n < kAnisotropicMinStations || isotropic.NumGroups() + 2 > kMaxGroups)
-    return estimate;
-  // The anisotropic camera model (header), started from the isotropic REML point.
-  NoiseSpec rich = isotropic;
-  rich.variances = estimate.reml_variances;
-  rich.group[kCameraTiltExcess] = isotropic.NumGroups();
-  rich.group[kCameraDepthExcess] = isotropic.NumGroups() + 1;
-  rich.variances[kCameraTiltExcess] = 0.1 * rich.variances[kCameraRotation];
-  rich.variances[kCameraDepthExcess] = 0.1 * rich.variances[kCameraTranslation];
-  std::vector<bool> rich_included;
-  NoiseEstimate candidate = EstimateOneModel(stations, rich, length_scale, &rich_included);
-  // Both maxima compared on the stations the isotropic model kept.
-  const double ratio =
-      2.0 * (LinearRefit(stations, included, candidate.reml_variances).log_likelihood -
-             LinearRefit(stations, included, estimate.reml_variances).log_likelihood);
-  estimate.likelihood_ratio = candidate.likelihood_ratio = std::isfinite(ratio) ? ratio : 0.0;
-  if (!(ratio > kAnisotropicLikelihoodRatio)) return estimate;
-  candidate.anisotropic = true;
-  candidate.iterations += estimate.iterations;
-  return candidate;
+  if (!spec.richer || n < kAnisotropicMinStations) return estimate;
+  // The richer models (header), started from the isotropic REML point: the camera's tilt and
+  // depth excess; with both sides estimated also the robot's rotation variance apart from the
+  // camera's, alone and with the excess.
+  struct Candidate {
+    NoiseSpec spec;
+    double threshold = 0.0;  // χ²(extra variances) at 95%
+  };
+  std::vector<Candidate> candidates;
+  const int G = isotropic.NumGroups();
+  const bool split = isotropic.group[kRobotRotation] >= 0 &&
+                     isotropic.group[kRobotRotation] == isotropic.group[kCameraRotation];
+  for (int shape = 0; shape < 3; ++shape) {
+    const bool excess = shape != 1, separate = shape != 0;
+    if (separate && !split) continue;
+    NoiseSpec rich = isotropic;
+    rich.variances = estimate.reml_variances;
+    int groups = G;
+    if (separate) rich.group[kRobotRotation] = groups++;
+    if (excess) {
+      rich.group[kCameraTiltExcess] = groups++;
+      rich.group[kCameraDepthExcess] = groups++;
+      rich.variances[kCameraTiltExcess] = 0.1 * rich.variances[kCameraRotation];
+      rich.variances[kCameraDepthExcess] = 0.1 * rich.variances[kCameraTranslation];
+    }
+    if (groups > kMaxGroups) continue;
+    candidates.push_back({rich, kChiSquare95[groups - G]});
+  }
+  // Each compared with the isotropic maximum on the stations the isotropic model kept; of those
+  // the test prefers, the one of largest ℓ_R − (extra variances) (Akaike).
+  const double isotropic_likelihood =
+      LinearRefit(stations, included, estimate.reml_variances).log_likelihood;
+  NoiseEstimate best = estimate;
+  double best_score = isotropic_likelihood;
+  for (const Candidate& candidate : candidates) {
+    std::vector<bool> rich_included;
+    NoiseEstimate fit = EstimateOneModel(stations, candidate.spec, length_scale, &rich_included);
+    const double likelihood = LinearRefit(stations, included, fit.reml_variances).log_likelihood;
+    const double ratio = 2.0 * (likelihood - isotropic_likelihood);
+    if (!std::isfinite(ratio)) continue;
+    estimate.likelihood_ratio = std::max(estimate.likelihood_ratio, ratio);
+    const double score = likelihood - (candidate.spec.NumGroups() - G);
+    if (ratio > candidate.threshold && score > best_score) {
+      best = fit;
+      best.richer = true;
+      best.likelihood_ratio = ratio;
+      best.iterations += estimate.iterations;
+      best_score = score;
+    }
+  }
+  if (!best.richer) best.likelihood_ratio = estimate.likelihood_ratio;
+  return best;
 }
 
 }  // namespace hecal::estimation

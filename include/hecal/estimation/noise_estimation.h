@@ -60,30 +60,43 @@
 // grids cost 16² + 24² likelihood evaluations of O(n) each per estimate (`hecal calibrate` on
 // the 50-station MoveIt set: 0.30 s in all with the model check).
 //
-// Anisotropic camera noise (when the camera noise is estimated and n ≥
-// kAnisotropicMinStations). A camera pose from PnP has a shape the isotropic model cannot take
-// (tilt 20× its spin, depth 10× its lateral position; station_covariance.h): the isotropic
-// σ_cr then overstates the spin and understates the tilt. So EstimateNoise also fits the model
-// with two more camera variances in the camera frame, the tilt excess (rotation about x, y) and
-// the depth excess (translation along z), on top of the isotropic part, and keeps it when the
-// restricted likelihood-ratio test rejects the isotropic model: 2 (ℓ_R(rich) − ℓ_R(isotropic))
-// > 5.99, the χ²(2) quantile at 95% (with the excesses on their boundary 0 under the isotropic
-// model the null distribution is the mixture ¼χ²₀ + ½χ²₁ + ¼χ²₂, so the test's level is about
-// 2%; the richer model is chosen on correct data about one time in 50). What is identifiable
-// from poses: the camera's own shape is, because the tilt and depth axes turn with the camera
-// pose B_i from station to station while the isotropic parts do not; the robot/camera split of
-// the isotropic part is not (both enter every residual; for eye-in-hand rotation only their sum
-// does), so it stays the equal split of the isotropic model, and all of the anisotropy is given
-// to the camera (the prior: a robot's joint encoders give a nearly isotropic flange pose, a PnP
-// pose is anisotropic). The minimum of kAnisotropicMinStations: the rich model has four
-// variances from 6n − 12 residual degrees of freedom; at n = 8 that is 36, 9 per variance, the
-// fewest at which the REML estimates of the excesses are bounded away from "anything" (their
-// relative σ error √(2/ν) ≈ 0.5) and the LR statistic is near its χ² limit. Both estimated
-// excesses are posterior means like the other groups: with four groups a joint grid is too
-// costly (16⁴ points), so each group's posterior mean is taken with the others held at their
-// REML values (a conditional posterior mean; for the two isotropic groups of a rich fit this
-// ignores their correlation with the excesses, which errs upward as the marginal would).
-// The anisotropic model is not used when the camera noise is given (--camera-sigma).
+// Richer noise models (when the camera noise is estimated and n ≥ kAnisotropicMinStations).
+// Two ways real noise departs from the isotropic, equally split model matter for the covariance
+// of X, and both are identifiable from poses:
+//  - Anisotropic camera noise. A PnP pose has a shape the isotropic model cannot take (tilt 20×
+//    its spin, depth 10× its lateral position; station_covariance.h): the isotropic σ_cr then
+//    overstates the spin and understates the tilt. Two more camera variances in the camera
+//    frame, the tilt excess (rotation about x, y) and the depth excess (translation along z), on
+//    top of the isotropic part, are identifiable because those axes turn with the camera pose
+//    B_i from station to station while the isotropic parts do not.
+//  - Unequal rotation noise of robot and camera (both estimated). A robot rotation error turns
+//    the target about the flange, so it moves the target by the lever arm (|t| of X·B_i,
+//    eye-in-hand: ~0.5 m) and shows in the translation residual, correlated with the rotation
+//    residual; a camera rotation error (the target's orientation) does not. So the robot's and the
+//    camera's rotation variances are identifiable apart (eye-in-hand clearly; eye-to-hand only
+//    through the target's offset on the flange, weakly). Measured: robot 1°, camera 0.2°,
+//    n = 15, REML gives 1.03° / 0.23°.
+// What is not identifiable: the robot/camera split of the TRANSLATION noise (both isotropic,
+// both enter every translation residual alike), which stays tied (equal split), and the split of
+// the anisotropy (given to the camera: a robot's encoders give a nearly isotropic flange pose,
+// a PnP pose is anisotropic).
+// Choice. After the isotropic fit, EstimateNoise fits each richer model (camera excess: 2 more
+// variances; robot rotation apart: 1; both: 3; the last two only when neither side is given),
+// started from the isotropic REML point, and compares restricted likelihoods on the stations the
+// isotropic fit kept: a model is eligible when 2 (ℓ_R(rich) − ℓ_R(isotropic)) exceeds the χ²
+// quantile at 95% for its extra variances (3.84, 5.99, 7.81; with variances on their boundary
+// under the isotropic model the null distribution is a χ̄² mixture and the real level is lower,
+// about 2% for the excess), and of the eligible ones the largest ℓ_R − (extra variances) wins
+// (Akaike). On isotropic, equally split data a richer model is chosen about one time in 20–50.
+// The minimum of kAnisotropicMinStations: up to five variances from 6n − 12 residual degrees of
+// freedom; at n = 8 that is 36, 7–9 per variance, the fewest at which the REML estimates are
+// bounded away from "anything" (relative σ error √(1/(2ν)) ≈ 0.25) and the likelihood-ratio
+// statistic is near its χ² limit. Every estimated group is a posterior mean like the isotropic
+// ones: with more than two groups a joint grid is too costly (16⁵ points), so each group's
+// posterior mean is taken with the others held at their REML values (a conditional posterior
+// mean, narrower than the marginal). NoiseEstimate::richer says a richer model was chosen;
+// robot() and camera() then report the separate rotation sigmas, camera_excess() the excess.
+// Not used when the camera noise is given (--camera-sigma).
 //
 // Outlier test (Baarda's data snooping, multivariate form). Station i's statistic is
 //   included:  T_i = r̂_iᵀ C_i⁺ r̂_i,  C_i = Σ_i − J_i N⁻¹ J_iᵀ  (its residual covariance)
@@ -110,9 +123,8 @@
 namespace hecal::estimation {
 
 inline constexpr double kStableFlagsFraction = 1e-3;
-// The anisotropic model above: fewest stations, and the likelihood-ratio threshold.
+// The richer models above: fewest stations.
 inline constexpr size_t kAnisotropicMinStations = 8;
-inline constexpr double kAnisotropicLikelihoodRatio = 5.991;
 
 // One station linearised at (X, Z).
 struct StationLinearization {
@@ -132,14 +144,13 @@ struct NoiseSpec {
   std::array<int, kNumNoiseComponents> group{-1, -1, -1, -1, -1, -1};
   // Report the posterior mean σ² of the estimated groups (above) instead of the REML point.
   bool posterior_mean = false;
-  // Also try the anisotropic camera model (above; the camera excesses are then estimated as
-  // groups of their own when the likelihood-ratio test chooses it).
-  bool anisotropic = false;
+  // Also try the richer models (above), chosen by the likelihood-ratio test.
+  bool richer = false;
 
   // The rule above: both given → all known; one given → the other side's rotation and
   // translation estimated; none → equal split (rotation group, translation group); estimated
-  // groups reported as posterior means (above); the anisotropic model tried when the camera
-  // noise is estimated.
+  // groups reported as posterior means (above); the richer models tried when the camera noise
+  // is estimated.
   static NoiseSpec FromSigmas(const std::optional<PoseSigma>& robot,
                               const std::optional<PoseSigma>& camera);
   bool AnyEstimated() const;
@@ -159,12 +170,13 @@ struct NoiseEstimate {
   std::vector<StationTest> stations;
   bool converged = true;          // the variance iteration converged (always, if none estimated)
   int iterations = 0;             // variance iterations (0 if none estimated)
-  bool anisotropic = false;       // the anisotropic camera model was chosen
-  double likelihood_ratio = 0.0;  // 2 (ℓ_R(rich) − ℓ_R(isotropic)), when it was fitted
+  bool richer = false;            // a richer model (above) was chosen
+  double likelihood_ratio = 0.0;  // 2 (ℓ_R(rich) − ℓ_R(isotropic)): the chosen or the largest
 
   PoseSigma robot() const;
   PoseSigma camera() const;
-  // The camera's tilt (rotation) and depth (translation) excess σ; zero unless anisotropic.
+  // The camera's tilt (rotation) and depth (translation) excess σ; zero unless a richer model with
+  // it was chosen.
   PoseSigma camera_excess() const;
 };
 
