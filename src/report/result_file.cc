@@ -78,8 +78,8 @@ json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double sc
 }
 
 // covariance.model_check (estimation/model_check.h): both sigmas per axis, their ratio, the
-// check's relative sampling error, the flagged axes and whether the reported covariance is the
-// inflated one.
+// check's relative sampling error, the factor on each σ when used, the flagged axes and whether
+// the reported covariance is the inflated one.
 json ModelCheckJson(const estimation::ModelCheck& check, double scale) {
   if (!check.possible)
     return {{"method", "jackknife"}, {"possible", false}, {"reason", check.reason}};
@@ -106,6 +106,9 @@ json ModelCheckJson(const estimation::ModelCheck& check, double scale) {
           {"relative_error",
            {{"X", per_axis(check.relative_error.head<6>())},
             {"Z", per_axis(check.relative_error.tail<6>())}}},
+          {"inflation",
+           {{"X", per_axis(check.Inflation().head<6>())},
+            {"Z", per_axis(check.Inflation().tail<6>())}}},
           {"flagged", flagged},
           {"used", check.used}};
 }
