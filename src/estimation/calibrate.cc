@@ -41,6 +41,36 @@ std::string SigmaText(const PoseSigma& sigma) {
   return Format("%.3g deg, %.3g mm", sigma.rotation * kRadToDeg, sigma.translation * 1e3);
 }
 
+// The richer noise model of the result (noise_estimation.h), for the noise warning; empty when
+// the isotropic model was kept.
+std::string RicherModelText(const NoiseEstimate& noise) {
+  if (!noise.richer) return {};
+  std::string text =
+      "; the residuals chose a richer model than isotropic noise (likelihood ratio " +
+      Format("%.3g", noise.likelihood_ratio, 0.0) + ")";
+  const PoseSigma excess = noise.camera_excess();
+  if (excess.rotation > 0.0 || excess.translation > 0.0)
+    text += ": the camera has an excess of " + SigmaText(excess) +
+            " in tilt (about its x, y) and depth (along its z)";
+  return text;
+}
+
+// The per-station noise of `result`'s model: the robot's and the camera's isotropic sigmas, and
+// the camera's tilt / depth excess turned into each camera pose's frame (station_covariance.h).
+StationNoise ResultStationNoise(const handeye::Problem& problem, const CalibrationResult& result) {
+  StationNoise noise =
+      StationNoise::Uniform(problem.A.size(), result.robot_sigma, result.camera_sigma);
+  const NoiseVariances excess = Variances({}, {}, result.camera_excess);
+  if (excess[kCameraTiltExcess] == 0.0 && excess[kCameraDepthExcess] == 0.0) return noise;
+  for (size_t i = 0; i < problem.A.size(); ++i) {
+    const NoiseComponents Q =
+        StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], result.X);
+    noise.camera[i] += excess[kCameraTiltExcess] * Q[kCameraTiltExcess] +
+                       excess[kCameraDepthExcess] * Q[kCameraDepthExcess];
+  }
+  return noise;
+}
+
 // Station names for messages: options.station_ids when given, else numbers from 1.
 std::string StationList(const std::vector<int>& stations, const CalibrateOptions& options) {
   std::string text;
@@ -200,6 +230,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   for (int& i : flagged) i = used_index[i];
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
+  result.camera_excess = noise.camera_excess();
   result.sigmas_estimated = spec.AnyEstimated();
   // The covariance of (X, Z) under that noise model: ml's analytic information when linear,
   // else propagated through the solver (calibration_covariance.h).
@@ -211,8 +242,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     result.covariance = covariance;
   } else {
     result.covariance = PropagateCovariance(
-        problem, result, options, StationNoise::Uniform(n, result.robot_sigma, result.camera_sigma),
-        options.covariance);
+        problem, result, options, ResultStationNoise(problem, result), options.covariance);
   }
   if (result.covariance && options.model_check) ApplyModelCheck(problem, options, &result);
   if (result.covariance && result.covariance->method == CovarianceMethod::kMonteCarlo)
@@ -234,14 +264,17 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   if (!options.robot_sigma && !options.camera_sigma) {
     result.warnings.push_back(
         "noise not given (--robot-sigma, --camera-sigma): estimated from the residuals as " +
-        SigmaText(result.robot_sigma) +
-        " per component for the robot and the same for the camera (from poses alone only "
-        "their combined effect is identifiable, so it is split equally)");
+        SigmaText(result.robot_sigma) + " per component for the robot and " +
+        SigmaText(result.camera_sigma) +
+        " for the camera (from poses alone the split of the translation noise is not "
+        "identifiable, so it is equal; the rotation noise is split equally unless the residuals "
+        "tell the two apart)" +
+        RicherModelText(noise));
   } else if (!options.camera_sigma) {
     result.warnings.push_back(
         "camera noise not given (--camera-sigma): estimated from the "
         "residuals as " +
-        SigmaText(result.camera_sigma) + " per component");
+        SigmaText(result.camera_sigma) + " per component" + RicherModelText(noise));
   } else if (!options.robot_sigma) {
     result.warnings.push_back(
         "robot noise not given (--robot-sigma): estimated from the "

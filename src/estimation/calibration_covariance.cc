@@ -144,6 +144,7 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
       MlOptions ml;
       ml.robot_sigma = result.robot_sigma;
       ml.camera_sigma = result.camera_sigma;
+      ml.camera_excess = result.camera_excess;
       ml.robust_loss = ParseRobustLoss(options.robust_loss).value_or(RobustLoss::kNone);
       ml.robust_scale = options.robust_scale;
       return RefineMlFromGoodStart(problem, start.front(), ml);

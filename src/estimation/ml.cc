@@ -154,7 +154,9 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
   CheckStations(problem);
   MlSolver solver(problem, options);
   const double L = solver.length_scale();
-  const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
+  NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
+  if (!spec.AnyEstimated())
+    spec.variances = Variances(*options.robot_sigma, *options.camera_sigma, options.camera_excess);
 
   // Initial noise model: the known values, and for the unknown ones the smallest residual-based
   // guess over the starts (a wrong start has large residuals and would overstate the noise).

@@ -49,6 +49,18 @@ Vector12d ModelCheck::Ratio() const {
   return ratio;
 }
 
+Vector12d ModelCheck::Inflation() const {
+  const Vector12d ratio = Ratio();
+  Vector12d inflation = Vector12d::Ones();
+  for (int k = 0; k < 12; ++k) {
+    if (!(ratio(k) > 1.0)) continue;
+    const double log_ratio = std::log(ratio(k));
+    const double e = relative_error(k);
+    inflation(k) = std::exp(std::max(0.0, log_ratio - e * e / log_ratio));
+  }
+  return inflation;
+}
+
 std::vector<std::vector<bool>> JackknifeGroups(size_t stations) {
   const size_t groups = std::min(stations, kModelCheckMaxGroups);
   std::vector<std::vector<bool>> kept(groups, std::vector<bool>(stations, true));
@@ -176,7 +188,7 @@ ModelCheck CompareWithJackknife(const Pose& X, const Pose& Z,
 
 Matrix12d ReportedCovariance(const ModelCheck& check) {
   if (!check.used) return check.model_covariance;
-  const Vector12d scale = check.Ratio().cwiseMax(1.0);
+  const Vector12d scale = check.Inflation();
   return scale.asDiagonal() * check.model_covariance * scale.asDiagonal();
 }
 
@@ -197,7 +209,8 @@ void ApplyModelCheck(const handeye::Problem& problem, const CalibrateOptions& op
   const std::vector<std::vector<bool>> groups = JackknifeGroups(n);
   const std::vector<StationLinearization> linearized =
       LinearizeStations(problem, result->X, result->Z);
-  const NoiseVariances variances = Variances(result->robot_sigma, result->camera_sigma);
+  const NoiseVariances variances =
+      Variances(result->robot_sigma, result->camera_sigma, result->camera_excess);
   std::vector<handeye::Solution> without_group;
   if (n > kModelCheckSolvedStations) {
     without_group = LinearizedWithoutGroups(linearized, variances, groups, result->X, result->Z);
@@ -271,8 +284,8 @@ void ApplyModelCheck(const handeye::Problem& problem, const CalibrateOptions& op
   result->warnings.push_back(
       "the noise model understates the uncertainty: a jackknife over " +
       std::to_string(check.groups) + " station groups gives larger sigmas on " + axes +
-      " (beyond its own sampling error); the reported covariance uses the larger sigma per "
-      "axis (covariance.model_check). Likely cause: " +
+      " (beyond its own sampling error); the reported covariance takes them per axis, shrunk "
+      "towards the model's by that error (covariance.model_check). Likely cause: " +
       cause +
       (n < 12 ? "; with only " + std::to_string(n) +
                     " stations the check itself is uncertain to about " +

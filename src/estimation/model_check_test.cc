@@ -56,10 +56,18 @@ TEST(CompareWithJackknife, KnownSpreadAgainstTheModel) {
   EXPECT_TRUE(check.flagged[1]);
   EXPECT_FALSE(check.flagged[0]);
   EXPECT_TRUE(check.used);
-  // The reported covariance: ry's σ doubled, its correlations kept, the rest unchanged.
+  // The reported covariance: ry's σ twice the model's shrunk by the check's error e (log factor
+  // log 2 − e²/log 2 = 0.613, factor 1.846), the rest unchanged.
+  const double e = 0.5 * std::sqrt(2.0 / 9.0);
   const Matrix12d reported = ReportedCovariance(check);
-  EXPECT_NEAR(std::sqrt(reported(1, 1)), 4e-3, 1e-12);
+  EXPECT_NEAR(std::sqrt(reported(1, 1)), 2e-3 * std::exp(std::log(2.0) - e * e / std::log(2.0)),
+              1e-12);
+  EXPECT_NEAR(std::sqrt(reported(1, 1)), 3.692e-3, 1e-6);
   EXPECT_NEAR(reported(0, 0), 4e-6, 1e-18);
+  // A ratio within its sampling error of 1 (ρ = 1.2 < exp(e)) is not inflated at all.
+  ModelCheck weak = check;
+  weak.sigma_check(1) = 1.2 * weak.sigma_model(1);
+  EXPECT_DOUBLE_EQ(weak.Inflation()(1), 1.0);
   // A spread the model explains (a = b) is no flag, and the model's covariance is reported.
   const ModelCheck agrees =
       CompareWithJackknife(X, Z, solutions, model, 9.0 * a * a * Matrix12d::Identity());

@@ -14,7 +14,8 @@ namespace {
 using Matrix12d = Eigen::Matrix<double, 12, 12>;
 using Vector12d = Eigen::Matrix<double, 12, 1>;
 
-constexpr int kMaxGroups = 2;
+constexpr int kMaxGroups = 5;
+constexpr int kMaxJointGroups = 2;        // the posterior mean's joint grid (header)
 constexpr double kAbsoluteFloor = 1e-30;  // variance floor (σ = 1e-15)
 constexpr double kRelativeFloor = 1e-6;   // variance ratio rotation·L² : translation, both ways
 constexpr double kMaxDecrease = 0.1;      // per step, towards a boundary optimum
@@ -31,7 +32,7 @@ constexpr double kPosteriorGridHigh = 4.0;
 constexpr size_t kPosteriorMaxStations = 100;
 
 bool IsRotation(int k) {
-  return k == kRobotRotation || k == kCameraRotation;
+  return k == kRobotRotation || k == kCameraRotation || k == kCameraTiltExcess;
 }
 
 // Weighted linear re-fit over the included stations: N⁻¹, δ = N⁻¹ Σ Jᵀ Σ⁻¹ r, and the
@@ -177,13 +178,15 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
     const int a = std::min(g, h), b = std::max(g, h);
     return trace_WQWQ[a][b] - 2.0 * (Ni * cross[a][b]).trace() + (Ni * H[g] * Ni * H[h]).trace();
   };
-  Eigen::Matrix2d S = Eigen::Matrix2d::Identity();
-  Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
+  using GroupMatrix = Eigen::Matrix<double, kMaxGroups, kMaxGroups>;
+  using GroupVector = Eigen::Matrix<double, kMaxGroups, 1>;
+  GroupMatrix S = GroupMatrix::Identity();
+  GroupVector rhs = GroupVector::Zero();
   for (int g = 0; g < G; ++g) {
     rhs(g) = q[g] - trace_PQPQ(g, G);
     for (int h = 0; h < G; ++h) S(g, h) = trace_PQPQ(g, h);
   }
-  Eigen::Vector2d solution = Eigen::Vector2d::Zero();
+  GroupVector solution = GroupVector::Zero();
   solution.head(G) = S.topLeftCorner(G, G).colPivHouseholderQr().solve(rhs.head(G));
   NoiseVariances next = theta;
   for (int g = 0; g < G; ++g) {
@@ -276,11 +279,23 @@ GridIntegral IntegrateOnGrid(const std::vector<StationLinearization>& stations,
   return integral;
 }
 
-// The estimated group variances as posterior mean σ, squared (header: "Posterior mean").
+// The estimated group variances as posterior mean σ, squared (header: "Posterior mean"); with
+// more than kMaxJointGroups groups each one's conditional on the others at the REML point.
 NoiseVariances PosteriorMean(const std::vector<StationLinearization>& stations,
                              const std::vector<bool>& included, const NoiseSpec& spec,
                              const NoiseVariances& reml) {
   const int G = spec.NumGroups();
+  if (G > kMaxJointGroups) {
+    NoiseVariances posterior = reml;
+    for (int g = 0; g < G; ++g) {
+      NoiseSpec one = spec;
+      for (int k = 0; k < kNumNoiseComponents; ++k) one.group[k] = spec.group[k] == g ? 0 : -1;
+      const NoiseVariances conditional = PosteriorMean(stations, included, one, reml);
+      for (int k = 0; k < kNumNoiseComponents; ++k)
+        if (spec.group[k] == g) posterior[k] = conditional[k];
+    }
+    return posterior;
+  }
   // Coarse grid per group: up to 4 times the variance that alone would explain all the residual
   // energy of its block (an upper scale: other components explain part of it; at least the
   // REML estimate), down to 10⁻⁶ of it.
@@ -390,16 +405,17 @@ NoiseSpec NoiseSpec::FromSigmas(const std::optional<PoseSigma>& robot,
   spec.variances = Variances(robot.value_or(zero), camera.value_or(zero));
   if (robot && camera) return spec;
   if (robot) {
-    spec.group = {-1, -1, 0, 1};
+    spec.group = {-1, -1, 0, 1, -1, -1};
     spec.variances[kCameraRotation] = spec.variances[kCameraTranslation] = 0.0;
   } else if (camera) {
-    spec.group = {0, 1, -1, -1};
+    spec.group = {0, 1, -1, -1, -1, -1};
     spec.variances[kRobotRotation] = spec.variances[kRobotTranslation] = 0.0;
   } else {
-    spec.group = {0, 1, 0, 1};
+    spec.group = {0, 1, 0, 1, -1, -1};
     spec.variances = {};
   }
   spec.posterior_mean = true;
+  spec.richer = !camera;
   return spec;
 }
 
@@ -421,6 +437,10 @@ PoseSigma NoiseEstimate::camera() const {
   return {std::sqrt(variances[kCameraRotation]), std::sqrt(variances[kCameraTranslation])};
 }
 
+PoseSigma NoiseEstimate::camera_excess() const {
+  return {std::sqrt(variances[kCameraTiltExcess]), std::sqrt(variances[kCameraDepthExcess])};
+}
+
 NoiseVariances InitialNoiseGuess(const std::vector<StationLinearization>& stations,
                                  const NoiseSpec& spec, double length_scale) {
   NoiseVariances theta = spec.variances;
@@ -438,13 +458,17 @@ double ThreeSigmaChiSquare(int dof) {
   return kQuantile[dof];
 }
 
-NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
-                            const NoiseSpec& spec, double length_scale) {
+namespace {
+
+// χ²(k) quantiles at 95% for k = 0..3 extra variances.
+constexpr double kChiSquare95[4] = {0.0, 3.841, 5.991, 7.815};
+
+// EstimateNoise for one model (no choice between models); *final_included: the stations the
+// last variance estimate used.
+NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations,
+                               const NoiseSpec& spec, double length_scale,
+                               std::vector<bool>* final_included) {
   const size_t n = stations.size();
-  if (n < 3) throw std::invalid_argument("EstimateNoise needs at least 3 stations");
-  if (spec.NumGroups() > kMaxGroups) {
-    throw std::invalid_argument("EstimateNoise supports at most two variance groups");
-  }
   NoiseEstimate estimate;
   estimate.variances = estimate.reml_variances = spec.variances;
   std::vector<bool> included(n, true);
@@ -498,7 +522,91 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
     if (static_cast<double>(changed) < kStableFlagsFraction * static_cast<double>(n)) break;
     included = next_included;
   }
+  *final_included = included;
   return estimate;
+}
+
+}  // namespace
+
+NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
+                            const NoiseSpec& spec, double length_scale) {
+  const size_t n = stations.size();
+  if (n < 3) throw std::invalid_argument("EstimateNoise needs at least 3 stations");
+  if (spec.NumGroups() > kMaxGroups) {
+    throw std::invalid_argument("EstimateNoise supports at most four variance groups");
+  }
+  NoiseSpec isotropic = spec;
+  isotropic.richer = false;
+  if (spec.richer) {
+    for (int k : {kCameraTiltExcess, kCameraDepthExcess}) {
+      isotropic.group[k] = -1;
+      isotropic.variances[k] = 0.0;
+    }
+  }
+  // A starting value from a richer model (ml alternates noise and pose estimates) may differ
+  // within a group; start each group at its first member's value.
+  for (int g = 0; g < isotropic.NumGroups(); ++g) {
+    int first = -1;
+    for (int k = 0; k < kNumNoiseComponents; ++k) {
+      if (isotropic.group[k] != g) continue;
+      if (first < 0) first = k;
+      isotropic.variances[k] = isotropic.variances[first];
+    }
+  }
+  std::vector<bool> included;
+  NoiseEstimate estimate = EstimateOneModel(stations, isotropic, length_scale, &included);
+  if (!spec.richer || n < kAnisotropicMinStations) return estimate;
+  // The richer models (header), started from the isotropic REML point: the camera's tilt and
+  // depth excess; with both sides estimated also the robot's rotation variance apart from the
+  // camera's, alone and with the excess.
+  struct Candidate {
+    NoiseSpec spec;
+    double threshold = 0.0;  // χ²(extra variances) at 95%
+  };
+  std::vector<Candidate> candidates;
+  const int G = isotropic.NumGroups();
+  const bool split = isotropic.group[kRobotRotation] >= 0 &&
+                     isotropic.group[kRobotRotation] == isotropic.group[kCameraRotation];
+  for (int shape = 0; shape < 3; ++shape) {
+    const bool excess = shape != 1, separate = shape != 0;
+    if (separate && !split) continue;
+    NoiseSpec rich = isotropic;
+    rich.variances = estimate.reml_variances;
+    int groups = G;
+    if (separate) rich.group[kRobotRotation] = groups++;
+    if (excess) {
+      rich.group[kCameraTiltExcess] = groups++;
+      rich.group[kCameraDepthExcess] = groups++;
+      rich.variances[kCameraTiltExcess] = 0.1 * rich.variances[kCameraRotation];
+      rich.variances[kCameraDepthExcess] = 0.1 * rich.variances[kCameraTranslation];
+    }
+    if (groups > kMaxGroups) continue;
+    candidates.push_back({rich, kChiSquare95[groups - G]});
+  }
+  // Each compared with the isotropic maximum on the stations the isotropic model kept; of those
+  // the test prefers, the one of largest ℓ_R − (extra variances) (Akaike).
+  const double isotropic_likelihood =
+      LinearRefit(stations, included, estimate.reml_variances).log_likelihood;
+  NoiseEstimate best = estimate;
+  double best_score = isotropic_likelihood;
+  for (const Candidate& candidate : candidates) {
+    std::vector<bool> rich_included;
+    NoiseEstimate fit = EstimateOneModel(stations, candidate.spec, length_scale, &rich_included);
+    const double likelihood = LinearRefit(stations, included, fit.reml_variances).log_likelihood;
+    const double ratio = 2.0 * (likelihood - isotropic_likelihood);
+    if (!std::isfinite(ratio)) continue;
+    estimate.likelihood_ratio = std::max(estimate.likelihood_ratio, ratio);
+    const double score = likelihood - (candidate.spec.NumGroups() - G);
+    if (ratio > candidate.threshold && score > best_score) {
+      best = fit;
+      best.richer = true;
+      best.likelihood_ratio = ratio;
+      best.iterations += estimate.iterations;
+      best_score = score;
+    }
+  }
+  if (!best.richer) best.likelihood_ratio = estimate.likelihood_ratio;
+  return best;
 }
 
 }  // namespace hecal::estimation

@@ -35,6 +35,12 @@ NoiseComponents StationNoiseComponents(handeye::Setup setup, const Pose& A, cons
   Q[kRobotTranslation] = Sandwich(J, 1);
   Q[kCameraRotation] = DiagonalBlock(0);
   Q[kCameraTranslation] = DiagonalBlock(1);
+  const Eigen::Matrix3d R = B.linear();
+  Q[kCameraTiltExcess].setZero();
+  Q[kCameraTiltExcess].topLeftCorner<3, 3>() =
+      R.transpose() * Eigen::Vector3d(1.0, 1.0, 0.0).asDiagonal() * R;
+  Q[kCameraDepthExcess].setZero();
+  Q[kCameraDepthExcess].bottomRightCorner<3, 3>() = R.row(2).transpose() * R.row(2);
   return Q;
 }
 
@@ -44,9 +50,14 @@ Matrix6d CombineComponents(const NoiseComponents& components, const NoiseVarianc
   return sigma;
 }
 
-NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera) {
-  return {robot.rotation * robot.rotation, robot.translation * robot.translation,
-          camera.rotation * camera.rotation, camera.translation * camera.translation};
+NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera,
+                         const PoseSigma& camera_excess) {
+  return {robot.rotation * robot.rotation,
+          robot.translation * robot.translation,
+          camera.rotation * camera.rotation,
+          camera.translation * camera.translation,
+          camera_excess.rotation * camera_excess.rotation,
+          camera_excess.translation * camera_excess.translation};
 }
 
 Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,

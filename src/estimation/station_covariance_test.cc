@@ -76,6 +76,37 @@ INSTANTIATE_TEST_SUITE_P(BothSetups, StationCovarianceTest,
 
 // Negative control: the eye-in-hand propagation applied to eye-to-hand data (noise on the wrong
 // side of A_i) is detectably wrong — so the test above can fail.
+// PnP-shaped camera noise (sim/noise.h: in the camera frame, tilt 2σ, spin 0.1σ, lateral 0.5σ,
+// depth 5σ) is the isotropic camera components at the spin / lateral variance plus the tilt and
+// depth excess at the rest: the whitened Monte Carlo covariance is the identity (as above).
+TEST(StationCovariance, TiltAndDepthExcessMatchPnpShapedNoise) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const sim::SimulatedData data = testing::ThesisCase(setup, 4, 5, 0.0, 0.0);
+    const double sr = 0.5 * kDeg, st = 1e-3;
+    const sim::NoiseModel pnp{sim::NoiseModel::Kind::kPnp, sr, st};
+    std::mt19937_64 rng(7);
+    for (int station = 0; station < 4; ++station) {
+      const handeye::Problem truth = handeye::MakeProblem(
+          setup, {data.T_base_gripper_true[station]}, {data.T_camera_target_true[station]});
+      Matrix6d sum = Matrix6d::Zero();
+      const int samples = 10000;
+      for (int s = 0; s < samples; ++s) {
+        const Pose B = sim::AddNoise(data.T_camera_target_true[station], pnp, rng);
+        const Vector6d r = LoopResidual(truth.A[0], B, data.X, data.Z);
+        sum += r * r.transpose();
+      }
+      const NoiseComponents Q = StationNoiseComponents(setup, truth.A[0], truth.B[0], data.X);
+      const NoiseVariances variances = {0.0,
+                                        0.0,
+                                        std::pow(0.1 * sr, 2),
+                                        std::pow(0.5 * st, 2),
+                                        std::pow(2.0 * sr, 2) - std::pow(0.1 * sr, 2),
+                                        std::pow(5.0 * st, 2) - std::pow(0.5 * st, 2)};
+      ExpectWhitenedIdentity(CombineComponents(Q, variances), sum / samples, 0.06);
+    }
+  }
+}
+
 TEST(StationCovariance, WrongSideOfTheRobotPoseIsDetected) {
   const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeToHand, 2, 12);
   const handeye::Problem truth = data.MeasuredProblem();

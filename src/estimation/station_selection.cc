@@ -37,7 +37,7 @@ NoiseVariances WithCameraCovariances(const StationSelectionOptions& options,
         options.robot_sigma->translation * options.robot_sigma->translation;
     return spec.variances;
   }
-  spec.group = {0, 1, -1, -1};
+  spec.group = {0, 1, -1, -1, -1, -1};
   return EstimateNoise(set, spec, length_scale).variances;
 }
 

@@ -78,8 +78,8 @@ json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double sc
 }
 
 // covariance.model_check (estimation/model_check.h): both sigmas per axis, their ratio, the
-// check's relative sampling error, the flagged axes and whether the reported covariance is the
-// inflated one.
+// check's relative sampling error, the factor on each σ when used, the flagged axes and whether
+// the reported covariance is the inflated one.
 json ModelCheckJson(const estimation::ModelCheck& check, double scale) {
   if (!check.possible)
     return {{"method", "jackknife"}, {"possible", false}, {"reason", check.reason}};
@@ -106,6 +106,9 @@ json ModelCheckJson(const estimation::ModelCheck& check, double scale) {
           {"relative_error",
            {{"X", per_axis(check.relative_error.head<6>())},
             {"Z", per_axis(check.relative_error.tail<6>())}}},
+          {"inflation",
+           {{"X", per_axis(check.Inflation().head<6>())},
+            {"Z", per_axis(check.Inflation().tail<6>())}}},
           {"flagged", flagged},
           {"used", check.used}};
 }
@@ -215,6 +218,10 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
                       {{"rotation_deg", result.camera_sigma.rotation * kDegrees},
                        {"translation", result.camera_sigma.translation * scale}}},
                      {"estimated", result.sigmas_estimated}};
+  if (result.camera_excess.rotation > 0.0 || result.camera_excess.translation > 0.0) {
+    object["noise"]["camera_excess"] = {{"tilt_deg", result.camera_excess.rotation * kDegrees},
+                                        {"depth", result.camera_excess.translation * scale}};
+  }
   object["stations"] = {
       {"used", used}, {"rejected", rejected}, {"outlier_rejection", result.outlier_rejection}};
   if (result.seed) object["seed"] = *result.seed;

@@ -250,16 +250,18 @@ TEST(RunStudy, MlLinearCovarianceIsConsistent) {
   EXPECT_NE(SummaryCsv(result).find("mean_nees,nees_band_low"), std::string::npos);
 }
 
-// The model check (estimation/model_check.h) with the noise estimated (no sigmas given) on
-// data that break the noise model, 100 trials each, n = 15: PnP-shaped camera noise
-// (eye-to-hand), Student-t(3) noise and a robot five times noisier than the camera
-// (eye-in-hand). The model-only covariance (with the noise estimate's posterior mean,
-// noise_estimation.h) undercovers (2σ coverage ≤ 92%, or its smallest predicted/empirical σ
-// ratio ≤ 0.75); the reported one covers more (2σ at least 3 points higher and ≥ 85%; 1σ at least
-// 6 points higher) and its σ ratios are ≥ 0.85 on every axis. Measured (1σ / 2σ / smallest
-// ratio): 70 / 92 / 0.70 → 79 / 97 / 0.89, 58 / 87 / 0.85 → 69 / 94 / 0.95, 53 / 79 / 0.75 →
-// 61 / 88 / 0.94; the README has the 200-trial table.
-TEST(RunStudy, ModelCheckCoversWhenTheNoiseModelIsWrong) {
+// The noise estimated (no sigmas given) on data that break the isotropic, equally split noise
+// model, 100 trials each, n = 15. PnP-shaped camera noise (eye-to-hand) and a robot five times
+// noisier than the camera (eye-in-hand) are taken by the richer noise models
+// (noise_estimation.h): the model-only covariance is consistent (1σ coverage within 10 points
+// of 68% — 100 trials give a binomial sd of 4.7 points — 2σ ≥ 90%, every σ ratio ≥ 0.85) and the
+// check rarely needs to inflate (≤ 20 of 100). Student-t(3) noise no Gaussian model takes: the
+// model-only covariance undercovers (2σ ≤ 92% or its smallest predicted/empirical σ ratio ≤
+// 0.75), and the model check makes the reported one cover more (2σ at least 3 points higher and
+// ≥ 85%, 1σ at least 6 points higher, σ ratios ≥ 0.85). Measured (1σ / 2σ / smallest σ ratio):
+// PnP 75 / 92 / 0.99 and robot 5× 69 / 95 / 1.00 (model only; the check used 5 and 1 times);
+// Student-t 56 / 87 / 0.84 → 64 / 93 / 0.91 (25 inflated); the README has the 200-trial table.
+TEST(RunStudy, RicherNoiseModelsAndTheModelCheckCoverWhenTheIsotropicModelIsWrong) {
   Setting pnp = MakeSetting(handeye::Setup::kEyeToHand, 15, 1.0, 1.0, NoiseOn::kBoth,
                             sim::NoiseModel::Kind::kPnp);
   Setting heavy = MakeSetting(handeye::Setup::kEyeInHand, 15, 1.0, 1.0, NoiseOn::kBoth,
@@ -277,6 +279,13 @@ TEST(RunStudy, ModelCheckCoversWhenTheNoiseModelIsWrong) {
     ASSERT_TRUE(s.consistency && s.consistency_model);
     const uncertainty::Consistency& model = *s.consistency_model;
     const uncertainty::Consistency& reported = *s.consistency;
+    if (setting.noise_kind != sim::NoiseModel::Kind::kStudentT3) {
+      EXPECT_NEAR(model.coverage_1sigma, 0.68, 0.10);
+      EXPECT_GE(model.coverage_2sigma, 0.90);
+      EXPECT_GE(model.sd_ratio.minCoeff(), 0.85);
+      EXPECT_LE(s.check_used, 20);
+      continue;
+    }
     EXPECT_TRUE(model.coverage_2sigma <= 0.92 || model.sd_ratio.minCoeff() <= 0.75);
     EXPECT_GE(reported.coverage_2sigma, model.coverage_2sigma + 0.03);
     EXPECT_GE(reported.coverage_2sigma, 0.85);

@@ -91,6 +91,9 @@ struct CalibrationResult {
   double translation_rms = 0.0;            // metres
   PoseSigma robot_sigma;                   // used (given or estimated)
   PoseSigma camera_sigma;                  // used (given or estimated)
+  // The camera's tilt (rotation) / depth (translation) excess σ of the anisotropic noise model
+  // (noise_estimation.h), in the camera frame; zero when the isotropic model was used.
+  PoseSigma camera_excess;
   bool sigmas_estimated = false;
   // Stations left out by the outlier rejection (indices into the problem, ascending) and their
   // residuals at (X, Z), whitened by the noise model of the result.

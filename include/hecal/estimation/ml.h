@@ -52,6 +52,9 @@ namespace hecal::estimation {
 struct MlOptions {
   std::optional<PoseSigma> robot_sigma;   // estimated when absent (see above)
   std::optional<PoseSigma> camera_sigma;  // estimated when absent
+  // With both sigmas given: the camera's tilt / depth excess of the anisotropic noise model
+  // (noise_estimation.h), e.g. to refit at a result's noise model; zero: isotropic.
+  PoseSigma camera_excess;
   RobustLoss robust_loss = RobustLoss::kNone;
   double robust_scale = kOutlierLevelScale;  // whitened units per component (robust_loss.h)
   int max_noise_iterations = 10;             // pose / variance alternations

@@ -23,6 +23,17 @@
 //        Σ_i = σ_gr² Q_i[kRobotRotation] + σ_gt² Q_i[kRobotTranslation]
 //            + σ_cr² Q_i[kCameraRotation] + σ_ct² Q_i[kCameraTranslation],
 // which is the form the variance-component estimator (noise_estimation.h) works with.
+//
+// Anisotropic camera noise. A camera pose from PnP on a planar target is least precise in the
+// target's tilt (rotation about the camera's x and y axes) and in its depth (translation along
+// the optical axis z); its spin about z and its lateral position are precise. Two more
+// components describe an excess of the camera noise along those axes, in the camera frame, on
+// top of the isotropic part: the camera reports R̃ = Exp(ω) R_B, t̃ = t_B + v with
+// ω ~ N(0, σ_tilt² diag(1, 1, 0)) and v ~ N(0, σ_depth² diag(0, 0, 1)) (the shape sim/noise.h
+// draws for "pnp"), so in the right perturbation of B (rotation R_Bᵀ ω, translation R_Bᵀ v):
+//        Q_i[kCameraTiltExcess]  = blockdiag(R_Bᵀ diag(1, 1, 0) R_B, 0)
+//        Q_i[kCameraDepthExcess] = blockdiag(0, R_Bᵀ diag(0, 0, 1) R_B).
+// Their variances are zero unless the anisotropic noise model is chosen (noise_estimation.h).
 #pragma once
 
 #include <array>
@@ -38,8 +49,10 @@ enum NoiseComponent {
   kRobotTranslation = 1,
   kCameraRotation = 2,
   kCameraTranslation = 3,
+  kCameraTiltExcess = 4,   // rotation about the camera's x and y axes (see above)
+  kCameraDepthExcess = 5,  // translation along the camera's z axis
 };
-inline constexpr int kNumNoiseComponents = 4;
+inline constexpr int kNumNoiseComponents = 6;
 
 using NoiseComponents = std::array<Matrix6d, kNumNoiseComponents>;
 using NoiseVariances = std::array<double, kNumNoiseComponents>;  // σ², indexed by NoiseComponent
@@ -54,7 +67,10 @@ NoiseComponents StationNoiseComponents(handeye::Setup setup, const Pose& A, cons
 // Σ_i = Σ_k variances[k] · components[k].
 Matrix6d CombineComponents(const NoiseComponents& components, const NoiseVariances& variances);
 
-NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera);
+// The variances of robot and camera noise and the camera's tilt / depth excess (rotation /
+// translation fields; zero: the isotropic model).
+NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera,
+                         const PoseSigma& camera_excess = {});
 
 // Σ_i for the given noise model.
 Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
