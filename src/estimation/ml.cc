@@ -203,7 +203,8 @@ handeye::Solution RefineMlFromGoodStart(const handeye::Problem& problem,
     throw std::invalid_argument("RefineMlFromGoodStart: needs both the robot and the camera sigma");
   }
   MlSolver solver(problem, options);
-  return RefineStarts(solver, {start}, Variances(*options.robot_sigma, *options.camera_sigma),
+  return RefineStarts(solver, {start},
+                      Variances(*options.robot_sigma, *options.camera_sigma, options.camera_excess),
                       nullptr);
 }
 

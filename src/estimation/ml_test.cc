@@ -77,15 +77,21 @@ TEST_P(MlTest, GoodStartIsRefineMlFromThatStart) {
   const sim::SimulatedData noisy =
       testing::ThesisCase(GetParam(), 12, 55, sigma.rotation, sigma.translation);
   const handeye::Solution start{noisy.X * se3::Exp(offset), noisy.Z * se3::Exp(-offset)};
-  for (RobustLoss loss : {RobustLoss::kNone, RobustLoss::kHuber}) {
-    options.robust_loss = loss;
-    const MlResult full = RefineMl(noisy.MeasuredProblem(), {start}, options);
-    const handeye::Solution fast = RefineMlFromGoodStart(noisy.MeasuredProblem(), start, options);
-    EXPECT_LT(testing::Error(fast.X, full.X).rotation, 1e-12);
-    EXPECT_LT(testing::Error(fast.X, full.X).translation, 1e-12);
-    EXPECT_LT(testing::Error(fast.Z, full.Z).rotation, 1e-12);
-    EXPECT_LT(testing::Error(fast.Z, full.Z).translation, 1e-12);
+  // Isotropic, and with the anisotropic camera excess (tilt / depth) of a richer noise model.
+  for (const PoseSigma excess : {PoseSigma{}, PoseSigma{1.0 * kDeg, 5e-3}}) {
+    options.camera_excess = excess;
+    for (RobustLoss loss : {RobustLoss::kNone, RobustLoss::kHuber}) {
+      options.robust_loss = loss;
+      const MlResult full = RefineMl(noisy.MeasuredProblem(), {start}, options);
+      const handeye::Solution fast = RefineMlFromGoodStart(noisy.MeasuredProblem(), start, options);
+      EXPECT_LT(testing::Error(fast.X, full.X).rotation, 1e-12);
+      EXPECT_LT(testing::Error(fast.X, full.X).translation, 1e-12);
+      EXPECT_LT(testing::Error(fast.Z, full.Z).rotation, 1e-12);
+      EXPECT_LT(testing::Error(fast.Z, full.Z).translation, 1e-12);
+    }
   }
+  options.camera_excess = {};
+  options.robust_loss = RobustLoss::kNone;
   const sim::SimulatedData clean = testing::ThesisCase(GetParam(), 8, 56);
   const handeye::Solution fast = RefineMlFromGoodStart(
       clean.MeasuredProblem(), {clean.X * se3::Exp(offset), clean.Z * se3::Exp(-offset)}, options);

@@ -16,9 +16,12 @@
 // CPU time of the same minimisation through Ceres, to the same optimum).
 //
 // Noise levels: from --robot-sigma / --camera-sigma when given; otherwise estimated from the
-// residuals by REML variance components (noise_estimation.h: equal split between robot and
-// camera, one rotation and one translation scale, 6n − 12 degrees of freedom), alternating
-// with the pose estimate until the variances change by less than 1e-3 (relative).
+// residuals by REML variance components (noise_estimation.h: one rotation and one translation
+// scale split equally between robot and camera, or from 8 stations a richer model when the
+// likelihood ratio asks for it — the camera's tilt / depth excess, the robot's rotation apart
+// from the camera's; 6n − 12 degrees of freedom), alternating with the pose estimate until the
+// variances change by less than 1e-3 (relative). With both sigmas given, `camera_excess` adds
+// the anisotropic camera part (zero: isotropic).
 //
 // Multi-start: every start (normally all closed-form solutions, initialization.h) is refined
 // with the same initial noise model and one common whitening (Σ_i evaluated at the start of
