@@ -90,12 +90,27 @@ double Median(std::vector<double>& values) {
   return 0.5 * (lower + upper);
 }
 
+// The hypothesis score of one station: the chordal form of e² (header, "Score"),
+// (2 sin(a/2))² + (d / L)² with (2 sin(a/2))² = 3 − tr R — no angle, no square root.
+double ChordalSquaredError(const Problem& problem, int i, const Solution& solution,
+                           double length_scale) {
+  const Eigen::Matrix3d& R_X = solution.X.linear();
+  const Eigen::Matrix3d& R_Z = solution.Z.linear();
+  const Eigen::Matrix3d& R_A = problem.A[i].linear();
+  const Eigen::Matrix3d predicted = R_A * (R_X * problem.B[i].linear());  // R_Z · R_E
+  const Eigen::Vector3d t =
+      R_Z.transpose() * (R_A * (R_X * problem.B[i].translation() + solution.X.translation()) +
+                         problem.A[i].translation() - solution.Z.translation());
+  return (3.0 - R_Z.cwiseProduct(predicted).sum()) +
+         t.squaredNorm() / (length_scale * length_scale);
+}
+
 double MedianSquaredError(const Problem& problem, const std::vector<int>& stations,
                           const Solution& solution, double length_scale,
                           std::vector<double>* scratch) {
   scratch->clear();
   for (int i : stations)
-    scratch->push_back(SquaredError(StationResidualSize(problem, i, solution), length_scale));
+    scratch->push_back(ChordalSquaredError(problem, i, solution, length_scale));
   return Median(*scratch);
 }
 

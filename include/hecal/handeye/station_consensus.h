@@ -25,6 +25,12 @@
 // length d_i, combined as e_i² = a_i² + (d_i / L)² with L = LengthScale (the camera-to-target
 // distance, which is how far a rotation error of the camera moves the target). The hypothesis of
 // least median e² wins: no noise level is needed and up to half the stations may be arbitrary.
+// The hypotheses are ranked by the chordal form, a_i² replaced by (2 sin(a_i/2))² = 3 − tr R_i
+// (no atan2, no square root: half the scoring cost, the consensus at n = 50 from 1.7 to
+// 1.35 ms): it is monotone in a_i and equal to a_i² to a relative 1 − a_i²/12 (0.25% at 10°),
+// and the median station of a hypothesis that can win is an inlier at the noise level, so the
+// ranking is that of e² to well below the noise.
+// The local refit and every reported residual use the angle itself.
 // Scores are computed on at most `max_scored_stations` stations (a fixed random subset for
 // larger n), so the cost is O(hypotheses · min(n, max_scored_stations)).
 //
