@@ -28,8 +28,8 @@
 // round's fit only, is not returned: the final solve keeps its multi-start.
 //
 // Cost: the consensus (RequiredHypotheses(n) Shah solves of 3 stations — 149 at n = 20, 197 at
-// n = 50 — scored on ≤ 2000 stations) and 1–5 `ml` solves; with the sigmas given about 1.8 ms at
-// n = 20 and 4.4 ms at n = 50 (thesis protocol, 0.1 mm / 0.1°), of which the reused `fit` is
+// n = 50 — scored on ≤ 2000 stations) and 1–5 `ml` solves; with the sigmas given about 1.6 ms at
+// n = 20 and 3.8 ms at n = 50 (thesis protocol, 0.1 mm / 0.1°), of which the reused `fit` is
 // 0.7 ms and 2.3 ms.
 #pragma once
 
