@@ -22,6 +22,11 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
+bool SameSigma(const std::optional<PoseSigma>& a, const std::optional<PoseSigma>& b) {
+  if (!a || !b) return !a && !b;
+  return a->rotation == b->rotation && a->translation == b->translation;
+}
+
 void ValidateSigma(const std::optional<PoseSigma>& sigma, const char* flag) {
   if (!sigma) return;
   if (!std::isfinite(sigma->rotation) || !std::isfinite(sigma->translation) ||
@@ -199,7 +204,13 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     ml_options.camera_sigma = options.camera_sigma;
     ml_options.robust_loss = loss;
     ml_options.robust_scale = options.robust_scale;
-    const MlResult ml = RefineMl(problem, StartingSolutions(problem), ml_options);
+    // The selection's own fit is this very solve when it was made on the same stations from
+    // the same starts with the same noise model (station_selection.h).
+    const bool reuse = selection.fit && loss == RobustLoss::kNone &&
+                       SameSigma(selection.fit_robot_sigma, options.robot_sigma) &&
+                       SameSigma(selection.fit_camera_sigma, options.camera_sigma);
+    const MlResult ml =
+        reuse ? *selection.fit : RefineMl(problem, StartingSolutions(problem), ml_options);
     result.X = ml.X;
     result.Z = ml.Z;
     ml_covariance = ml.covariance;

@@ -96,7 +96,14 @@ StationSelection SelectStations(const handeye::Problem& problem,
       selection.used.assign(n, true);
       return selection;
     }
-    if (next == candidate) break;
+    if (next == candidate) {
+      if (round == 0) {
+        selection.fit = fit;
+        selection.fit_robot_sigma = options.robot_sigma;
+        selection.fit_camera_sigma = options.camera_sigma;
+      }
+      break;
+    }
     candidate = next;
   }
   return selection;

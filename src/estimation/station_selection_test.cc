@@ -5,6 +5,8 @@
 #include <numbers>
 #include <random>
 
+#include "hecal/estimation/calibrate.h"
+#include "hecal/estimation/initialization.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/sim/gross_outliers.h"
 #include "testing/handeye_cases.h"
@@ -39,6 +41,40 @@ TEST(SelectStations, CleanDataLoseAlmostNothing) {
     rejected += static_cast<int>(SelectStations(data.MeasuredProblem(), {}).Rejected().size());
   }
   EXPECT_LE(rejected, 8);
+}
+
+// Two gross outliers, left out by the consensus: the first round's set is kept, and its fit is
+// returned — ml from every closed-form start on the stations kept, exactly — and Calibrate's result
+// is the same bit for bit as calibrating those stations alone without rejection.
+TEST(SelectStations, TheFirstRoundFitIsMlOnTheStationsKept) {
+  sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeToHand, 20, 45, kDeg, 1e-3);
+  std::mt19937_64 rng(5);
+  const std::vector<int> replaced = sim::InjectGrossOutliers(&data, 2, rng);
+  const handeye::Problem problem = data.MeasuredProblem();
+  StationSelectionOptions options;
+  options.robot_sigma = options.camera_sigma = PoseSigma{kDeg, 1e-3};
+  const StationSelection selection = SelectStations(problem, options);
+  ASSERT_EQ(selection.rounds, 1);
+  ASSERT_TRUE(selection.fit.has_value());
+  for (int i : replaced) EXPECT_FALSE(selection.used[static_cast<size_t>(i)]) << i;
+  const handeye::Problem kept = handeye::SubProblem(problem, selection.used);
+  MlOptions ml;
+  ml.robot_sigma = options.robot_sigma;
+  ml.camera_sigma = options.camera_sigma;
+  const MlResult direct = RefineMl(kept, StartingSolutions(kept), ml);
+  EXPECT_TRUE(selection.fit->X.isApprox(direct.X, 0.0));
+  EXPECT_TRUE(selection.fit->Z.isApprox(direct.Z, 0.0));
+
+  CalibrateOptions calibrate;
+  calibrate.robot_sigma = calibrate.camera_sigma = options.robot_sigma;
+  calibrate.covariance.method = CovarianceMethod::kNone;
+  calibrate.model_check = false;
+  const CalibrationResult with_rejection = Calibrate(problem, calibrate);
+  calibrate.reject_outliers = false;
+  const CalibrationResult alone = Calibrate(kept, calibrate);
+  EXPECT_TRUE(with_rejection.X.isApprox(alone.X, 0.0));
+  EXPECT_TRUE(with_rejection.Z.isApprox(alone.Z, 0.0));
+  EXPECT_EQ(with_rejection.rejected.size(), 2u);
 }
 
 // More stations fail the test than may be rejected — here the given sigmas are 20 times too

@@ -14,16 +14,32 @@ namespace {
 
 constexpr double kInlierFactor = 3.0;  // κ: consensus set e_i ≤ κ · median(e)
 constexpr int kMaxRefitRounds = 10;
+constexpr int kMinCleanTriples = 5;        // the floor on clean hypotheses (header)
+constexpr double kMissProbability = 1e-9;  // δ (header)
 
 struct Triple {
   int a, b, c;
 };
 
-// Every triple when there are few enough, else `count` random distinct-member triples.
+// P(fewer than kMinCleanTriples of `count` uniform random triples are clean) when `clean` is the
+// probability that one is: the binomial tail, summed term by term.
+double FewCleanProbability(int count, double clean) {
+  double term = std::pow(1.0 - clean, count);  // P(0 clean)
+  double sum = term;
+  for (int j = 1; j < kMinCleanTriples && j <= count; ++j) {
+    term *= static_cast<double>(count - j + 1) / j * clean / (1.0 - clean);
+    sum += term;
+  }
+  return sum;
+}
+
+// Every triple when there are no more than RequiredHypotheses(n) (capped by max_hypotheses),
+// else that many random distinct-member triples.
 std::vector<Triple> Triples(int n, const ConsensusOptions& options) {
   std::vector<Triple> triples;
+  const int count = std::min(RequiredHypotheses(n), options.max_hypotheses);
   const double all = static_cast<double>(n) * (n - 1) * (n - 2) / 6.0;
-  if (all <= options.max_hypotheses) {
+  if (all <= count) {
     for (int a = 0; a < n; ++a)
       for (int b = a + 1; b < n; ++b)
         for (int c = b + 1; c < n; ++c) triples.push_back({a, b, c});
@@ -34,8 +50,8 @@ std::vector<Triple> Triples(int n, const ConsensusOptions& options) {
     state = SplitMix64(state);
     return static_cast<int>(state % static_cast<std::uint64_t>(range));
   };
-  triples.reserve(options.max_hypotheses);
-  while (static_cast<int>(triples.size()) < options.max_hypotheses) {
+  triples.reserve(static_cast<size_t>(count));
+  while (static_cast<int>(triples.size()) < count) {
     const int a = draw(n), b = draw(n), c = draw(n);
     if (a != b && b != c && a != c) triples.push_back({a, b, c});
   }
@@ -74,16 +90,43 @@ double Median(std::vector<double>& values) {
   return 0.5 * (lower + upper);
 }
 
+// The hypothesis score of one station: the chordal form of e² (header, "Score"),
+// (2 sin(a/2))² + (d / L)² with (2 sin(a/2))² = 3 − tr R — no angle, no square root.
+double ChordalSquaredError(const Problem& problem, int i, const Solution& solution,
+                           double length_scale) {
+  const Eigen::Matrix3d& R_X = solution.X.linear();
+  const Eigen::Matrix3d& R_Z = solution.Z.linear();
+  const Eigen::Matrix3d& R_A = problem.A[i].linear();
+  const Eigen::Matrix3d predicted = R_A * (R_X * problem.B[i].linear());  // R_Z · R_E
+  const Eigen::Vector3d t =
+      R_Z.transpose() * (R_A * (R_X * problem.B[i].translation() + solution.X.translation()) +
+                         problem.A[i].translation() - solution.Z.translation());
+  return (3.0 - R_Z.cwiseProduct(predicted).sum()) +
+         t.squaredNorm() / (length_scale * length_scale);
+}
+
 double MedianSquaredError(const Problem& problem, const std::vector<int>& stations,
                           const Solution& solution, double length_scale,
                           std::vector<double>* scratch) {
   scratch->clear();
   for (int i : stations)
-    scratch->push_back(SquaredError(StationResidualSize(problem, i, solution), length_scale));
+    scratch->push_back(ChordalSquaredError(problem, i, solution, length_scale));
   return Median(*scratch);
 }
 
 }  // namespace
+
+int RequiredHypotheses(int n) {
+  if (n < 3) return 0;
+  const int outliers = std::max(0, (n - 3) / 2);
+  // C(n − m, 3) / C(n, 3): the three distinct members all among the n − m good stations.
+  double clean = 1.0;
+  for (int j = 0; j < 3; ++j) clean *= static_cast<double>(n - outliers - j) / (n - j);
+  if (clean >= 1.0) return kMinCleanTriples;
+  int count = kMinCleanTriples;
+  while (FewCleanProbability(count, clean) > kMissProbability) ++count;
+  return count;
+}
 
 StationError StationResidualSize(const Problem& problem, size_t station, const Solution& solution) {
   const Pose E = solution.Z.inverse() * problem.A[station] * solution.X * problem.B[station];

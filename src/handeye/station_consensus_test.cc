@@ -67,14 +67,32 @@ TEST(StationConsensus, RandomTriplesAreDeterministicAndStillFindTheConsensus) {
   std::mt19937_64 rng(3);
   const std::vector<int> replaced = sim::InjectGrossOutliers(&data, 12, rng);
   ConsensusOptions options;
-  options.max_hypotheses = 200;
+  options.max_hypotheses = 100;  // below RequiredHypotheses(60): the cap binds
   options.max_scored_stations = 30;
   const StationConsensus a = FindStationConsensus(data.MeasuredProblem(), options);
   const StationConsensus b = FindStationConsensus(data.MeasuredProblem(), options);
   EXPECT_EQ(a.inlier, b.inlier);
   EXPECT_TRUE(a.solution.X.isApprox(b.solution.X, 0.0));
-  EXPECT_EQ(a.hypotheses, 200);
+  EXPECT_EQ(a.hypotheses, 100);
   for (int i : replaced) EXPECT_FALSE(a.inlier[i]) << i;
+}
+
+// The number of random triples: the smallest N with P(Binomial(N, p) < 5) ≤ 1e-9, p the
+// probability that a triple avoids ⌊(n − 3)/2⌋ outliers, C(n − m, 3) / C(n, 3) — values computed
+// independently (exact binomial sums in Python). Small sets solve every triple instead.
+TEST(StationConsensus, HypothesisCountFollowsTheBreakdownBound) {
+  EXPECT_EQ(RequiredHypotheses(2), 0);
+  EXPECT_EQ(RequiredHypotheses(4), 5);  // m = 0: every triple is clean
+  EXPECT_EQ(RequiredHypotheses(10), 94);
+  EXPECT_EQ(RequiredHypotheses(20), 149);
+  EXPECT_EQ(RequiredHypotheses(50), 197);
+  EXPECT_EQ(RequiredHypotheses(1000), 236);
+  EXPECT_EQ(RequiredHypotheses(10000), 238);
+  // 9 stations: 84 triples, fewer than the bound, so all of them.
+  const sim::SimulatedData nine = testing::ThesisCase(Setup::kEyeInHand, 9, 21, kDeg, 1e-3);
+  EXPECT_EQ(FindStationConsensus(nine.MeasuredProblem(), {}).hypotheses, 84);
+  const sim::SimulatedData fifty = testing::ThesisCase(Setup::kEyeInHand, 50, 22, kDeg, 1e-3);
+  EXPECT_EQ(FindStationConsensus(fifty.MeasuredProblem(), {}).hypotheses, 197);
 }
 
 // Sizes of a residual: rotation angle accurate at tiny angles and near π.

@@ -22,7 +22,8 @@
 // error (Monte Carlo instead counts such samples and warns).
 // Outliers: by default gross outliers are rejected first (station_selection.h: consensus over
 // minimal station sets, then a χ² test of every station at the noise of the others) and the
-// method runs on the stations that remain; the rejected are listed with their residuals at the
+// method runs on the stations that remain (for ml the selection's own fit when it is that very
+// solve: station_selection.h, "Reuse"); the rejected are listed with their residuals at the
 // result. The degeneracy check runs on the stations used. With reject_outliers = false every
 // station is used. Among the used stations one is still flagged when its studentised residual
 // exceeds the 3σ level (the χ² quantile of p = 0.0027 for its degrees of freedom;
