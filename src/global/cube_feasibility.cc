@@ -12,7 +12,7 @@ namespace hecal::global {
 namespace {
 
 struct Row {
-  Eigen::Vector3d coefficients;  // of s
+  Eigen::Vector3d coefficients;  // of t
   double upper = 0.0;
 };
 
@@ -48,32 +48,25 @@ std::vector<Eigen::Vector3d> SupportingNormals(const Eigen::Vector3d& a, double 
 }
 
 std::vector<Row> Rows(const EpipolarProblem& problem, const CubeQuery& query) {
-  const double delta = std::sqrt(3.0) * query.half_width;
+  const double widened = query.epsilon + std::sqrt(3.0) * query.half_width;  // ε + δ
   const Eigen::Matrix3d R = so3::Exp(query.centre);
   std::vector<Row> rows;
   for (const EpipolarMotion& motion : problem.motions) {
     const Eigen::Matrix3d R_B = motion.hand.linear();
-    const Eigen::Matrix3d R_A = R.transpose() * R_B * R;
-    const double beta = Eigen::AngleAxisd(R_B).angle();
-    const double eta_A = std::min(2.0, 8.0 * std::sin(beta / 2) * std::sin(delta / 2));
-    const double gamma = 2.0 * std::asin(std::min(1.0, eta_A / 2));
-    const Eigen::Vector3d t_B = R.transpose() * motion.hand.translation();
-    const double slack =
-        eta_A * query.translation_bound + 2.0 * std::sin(std::min(delta, M_PI) / 2) * t_B.norm();
-    const Eigen::Matrix3d M = R_A - Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d& t_B = motion.hand.translation();
+    const Eigen::Matrix3d M = R_B - Eigen::Matrix3d::Identity();
     for (const BearingPair& pair : motion.pairs) {
-      const Eigen::Vector3d a = pair.first.normalized();
-      const Eigen::Vector3d c = -(R_A * pair.second).normalized();
-      for (const Eigen::Vector3d& q :
-           SupportingNormals(a, query.epsilon, c, query.epsilon + gamma)) {
-        rows.push_back({M.transpose() * q, slack - q.dot(t_B)});
+      const Eigen::Vector3d a = (R * pair.first).normalized();
+      const Eigen::Vector3d c = -(R_B * R * pair.second).normalized();
+      for (const Eigen::Vector3d& q : SupportingNormals(a, widened, c, widened)) {
+        rows.push_back({M.transpose() * q, -q.dot(t_B)});
       }
     }
   }
   return rows;
 }
 
-// GLPK on the rows `active`: the LP's point s, or nullopt when infeasible (proved by the solver;
+// GLPK on the rows `active`: the LP's point t, or nullopt when infeasible (proved by the solver;
 // a failure of the solver returns the hint, which keeps the cube).
 std::optional<Eigen::Vector3d> SolveSubset(const std::vector<Row>& rows,
                                            const std::vector<int>& active, double bound,
@@ -117,22 +110,20 @@ std::optional<Eigen::Vector3d> SolveSubset(const std::vector<Row>& rows,
 std::optional<Eigen::Vector3d> TestCube(const EpipolarProblem& problem, const CubeQuery& query,
                                         const Eigen::Vector3d& hint, int* lps) {
   const std::vector<Row> rows = Rows(problem, query);
-  const Eigen::Matrix3d R = so3::Exp(query.centre);
   // Cutting planes: solve on the most violated rows, add the rows the point violates, repeat.
   // An infeasible subset proves the whole programme infeasible.
   constexpr double kTolerance = 1e-10;  // metres
   constexpr int kRowsPerRound = 24;
   std::vector<char> in(rows.size(), 0);
   std::vector<int> active;
-  Eigen::Vector3d s =
-      (R.transpose() * hint).cwiseMax(-query.translation_bound).cwiseMin(query.translation_bound);
+  Eigen::Vector3d t = hint.cwiseMax(-query.translation_bound).cwiseMin(query.translation_bound);
   while (true) {
     std::vector<std::pair<double, int>> violated;
     for (std::size_t i = 0; i < rows.size(); ++i) {
-      const double excess = rows[i].coefficients.dot(s) - rows[i].upper;
+      const double excess = rows[i].coefficients.dot(t) - rows[i].upper;
       if (excess > kTolerance && !in[i]) violated.emplace_back(-excess, int(i));
     }
-    if (violated.empty()) return R * s;
+    if (violated.empty()) return t;
     const int take = std::min<int>(kRowsPerRound, int(violated.size()));
     std::partial_sort(violated.begin(), violated.begin() + take, violated.end());
     for (int k = 0; k < take; ++k) {
@@ -140,10 +131,10 @@ std::optional<Eigen::Vector3d> TestCube(const EpipolarProblem& problem, const Cu
       in[violated[k].second] = 1;
     }
     if (lps) ++*lps;
-    const auto next = SolveSubset(rows, active, query.translation_bound, s);
+    const auto next = SolveSubset(rows, active, query.translation_bound, t);
     if (!next) return std::nullopt;
-    if (*next == s) return R * s;  // the solver gave no answer: keep the cube
-    s = *next;
+    if (*next == t) return t;  // the solver gave no answer: keep the cube
+    t = *next;
   }
 }
 
