@@ -49,12 +49,7 @@ Pose TrueZ() {
 class CalibrateGlobalImages : public CliTest {
  protected:
   static void SetUpTestSuite() {
-    std::filesystem::create_directories(RenderDir());
-    const std::vector<Pose> views = rendered_views::Views(kViews);
-    for (int i = 0; i < kViews; ++i) {
-      rendered_views::RenderView(views[static_cast<size_t>(i)], 200 + i,
-                                 RenderDir() / ("view_0" + std::to_string(i) + ".png"));
-    }
+    rendered_views::RenderViewFolder(RenderDir(), rendered_views::Views(kViews), 200);
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
   static std::filesystem::path RenderDir() {

@@ -65,12 +65,7 @@ std::string ViewName(int i) {
 class CalibrateImagesTest : public CliTest {
  protected:
   static void SetUpTestSuite() {
-    std::filesystem::create_directories(RenderDir());
-    const std::vector<Pose> views = rendered_views::Views(kViews);
-    for (int i = 0; i < kViews; ++i) {
-      rendered_views::RenderView(views[static_cast<size_t>(i)], 100 + i,
-                                 RenderDir() / (ViewName(i) + ".png"));
-    }
+    rendered_views::RenderViewFolder(RenderDir(), rendered_views::Views(kViews), 100);
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
   static std::filesystem::path RenderDir() {
@@ -309,11 +304,7 @@ TEST_F(CalibrateImagesTest, StationsInSubFolders) {
 // these 150–200 px tags, a 0.15% scale of every camera pose, and X was 0.71 mm off.
 TEST_F(CalibrateImagesTest, SingleTagStations) {
   const std::vector<Pose> views = rendered_views::TagViews(kViews);
-  std::filesystem::create_directories(dir_ / "tags");
-  for (int i = 0; i < kViews; ++i) {
-    rendered_views::RenderView(views[static_cast<size_t>(i)], 200 + i,
-                               dir_ / "tags" / (ViewName(i) + ".png"), rendered_views::Tag());
-  }
+  rendered_views::RenderViewFolder(dir_ / "tags", views, 200, rendered_views::Tag());
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     std::vector<std::string> args = Args(setup, RobotFile(setup, views, AllViews(), false));
     args[2] = Path("tags");

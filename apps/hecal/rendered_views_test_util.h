@@ -105,8 +105,7 @@ inline std::vector<Pose> TagViews(int count) {
 // Renders `target` (the board by default) seen from T_camera_target into `path` (slight blur and
 // noise, as a real camera; `seed` for the noise), through `camera`.
 inline void RenderView(const Pose& T_camera_target, std::uint64_t seed,
-                       const std::filesystem::path& path,
-                       const pose::TargetSpec& target = Board(),
+                       const std::filesystem::path& path, const pose::TargetSpec& target = Board(),
                        const pose::CameraModel& camera = TrueCamera()) {
   vision::RenderOptions options;
   options.blur_sigma = 0.6;
@@ -114,6 +113,18 @@ inline void RenderView(const Pose& T_camera_target, std::uint64_t seed,
   options.supersampling = 4;
   options.seed = seed;
   cv::imwrite(path.string(), vision::RenderTarget(target, camera, T_camera_target, options));
+}
+
+// Renders every view into `dir` (created) as view_00.png, view_01.png, …, the noise of view i
+// seeded with first_seed + i.
+inline void RenderViewFolder(const std::filesystem::path& dir, const std::vector<Pose>& views,
+                             std::uint64_t first_seed, const pose::TargetSpec& target = Board(),
+                             const pose::CameraModel& camera = TrueCamera()) {
+  std::filesystem::create_directories(dir);
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    RenderView(views[i], first_seed + i, dir / ("view_0" + std::to_string(i) + ".png"), target,
+               camera);
+  }
 }
 
 // Rotation angle between two poses (deg) and translation distance (mm).
