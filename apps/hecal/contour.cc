@@ -17,8 +17,8 @@
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/core/error.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/io/point_file.h"
 #include "json_matrix.h"
-#include "point_file.h"
 
 namespace hecal::cli {
 namespace {
@@ -106,8 +106,8 @@ contour::ContourCamera ParseContourCamera(const std::string& focal, const std::s
 
 Eigen::Matrix2Xd ReadContourFile(const std::string& path) {
   constexpr std::array<std::string_view, 2> kColumns = {"x", "y"};
-  const PointFile file =
-      ReadPointFile(path, kColumns, /*lengths=*/false, io::LengthUnit::kMetre, "contour points");
+  const io::PointFile file = io::ReadPointFile(path, kColumns, /*lengths=*/false,
+                                               io::LengthUnit::kMetre, "contour points");
   if (file.rows.size() < 4) {
     throw InputError(path, 0,
                      "a closed contour needs at least 4 points, the file has " +

@@ -22,11 +22,11 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/io/point_file.h"
 #include "hecal/io/units.h"
 #include "hecal/pose/pose_method.h"
 #include "hecal/version.h"
 #include "json_matrix.h"
-#include "point_file.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "hecal/vision/opencv_pnp.h"
 #endif
@@ -41,20 +41,20 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 struct Correspondences {
   std::vector<Eigen::Vector3d> object;  // metres
   std::vector<Eigen::Vector2d> pixels;
-  std::vector<const PointRow*> image_rows;  // the image row of each pair (id, line)
+  std::vector<const io::PointRow*> image_rows;  // the image row of each pair (id, line)
 };
 
-Correspondences Pair(const PointFile& object, const PointFile& image) {
+Correspondences Pair(const io::PointFile& object, const io::PointFile& image) {
   Correspondences pairs;
-  const auto add = [&](const PointRow& o, const PointRow& i) {
+  const auto add = [&](const io::PointRow& o, const io::PointRow& i) {
     pairs.object.push_back(o.value);
     pairs.pixels.push_back(i.value.head<2>());
     pairs.image_rows.push_back(&i);
   };
   if (object.has_ids && image.has_ids) {
-    std::map<std::string, const PointRow*> by_id;
-    for (const PointRow& row : object.rows) by_id.emplace(*row.id, &row);
-    for (const PointRow& row : image.rows) {
+    std::map<std::string, const io::PointRow*> by_id;
+    for (const io::PointRow& row : object.rows) by_id.emplace(*row.id, &row);
+    for (const io::PointRow& row : image.rows) {
       const auto it = by_id.find(*row.id);
       if (it == by_id.end()) {
         throw InputError(image.source, row.line,
@@ -249,7 +249,7 @@ std::string ResultJson(const pose::PoseEstimate& estimate, const Correspondences
   }
   nlohmann::json points = nlohmann::json::array();
   for (std::size_t k = 0; k < estimate.residuals_px.size(); ++k) {
-    const PointRow& row = *pairs.image_rows[k];
+    const io::PointRow& row = *pairs.image_rows[k];
     const Eigen::Vector2d& e = estimate.residuals_px[k];
     points.push_back({{"id", row.id ? nlohmann::json(*row.id) : nlohmann::json(k + 1)},
                       {"residual_px", {e.x(), e.y()}}});
@@ -277,10 +277,10 @@ void RunPose(const PoseCommandOptions& options, const Io& io) {
 
   constexpr std::array<std::string_view, 3> kObjectColumns = {"x", "y", "z"};
   constexpr std::array<std::string_view, 2> kImageColumns = {"u", "v"};
-  const PointFile object =
-      ReadPointFile(options.points, kObjectColumns, true, *unit, "object points");
-  const PointFile image = ReadPointFile(options.image_points, kImageColumns, false,
-                                        io::LengthUnit::kMetre, "image points");
+  const io::PointFile object =
+      io::ReadPointFile(options.points, kObjectColumns, true, *unit, "object points");
+  const io::PointFile image = io::ReadPointFile(options.image_points, kImageColumns, false,
+                                                io::LengthUnit::kMetre, "image points");
   const Correspondences pairs = Pair(object, image);
   CheckRays(pairs, camera, image.source);
 

@@ -1,5 +1,5 @@
-// Point files of the CLI: see point_file.h.
-#include "point_file.h"
+// Point files: see point_file.h.
+#include "hecal/io/point_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -10,7 +10,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
 
-namespace hecal::cli {
+namespace hecal::io {
 
 namespace {
 
@@ -24,7 +24,7 @@ std::string Lower(std::string_view text) {
 }  // namespace
 
 PointFile ReadPointFile(const std::string& path, std::span<const std::string_view> names,
-                        bool lengths, io::LengthUnit unit, std::string_view what) {
+                        bool lengths, LengthUnit unit, std::string_view what) {
   std::string columns_help = "a header naming id (optional), ";
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (i > 0) columns_help += ',';  // piece by piece: GCC 12's -Wrestrict false positive (105329)
@@ -32,30 +32,30 @@ PointFile ReadPointFile(const std::string& path, std::span<const std::string_vie
   }
   if (lengths) columns_help += " (with a shared suffix _m or _mm, e.g. x_mm)";
 
-  const std::string text = io::ReadFile(path);
-  io::LineCursor cursor(text);
+  const std::string text = ReadFile(path);
+  LineCursor cursor(text);
   std::string_view line;
   PointFile file;
   file.source = path;
   file.unit = unit;
-  std::optional<io::Separator> separator;
+  std::optional<Separator> separator;
   int id_column = -1;
   std::vector<int> value_columns(names.size(), -1);
   std::size_t column_count = 0;
-  std::vector<io::Field> fields;
+  std::vector<Field> fields;
   std::string error;
   std::map<std::string, int> id_lines;
   while (cursor.Next(&line)) {
-    if (io::IsBlank(line) || io::IsComment(line)) continue;
+    if (IsBlank(line) || IsComment(line)) continue;
     const int number = cursor.line_number();
-    if (!separator) separator = io::DetectSeparator(line);
-    if (!io::SplitFields(line, *separator, &fields, &error)) {
+    if (!separator) separator = DetectSeparator(line);
+    if (!SplitFields(line, *separator, &fields, &error)) {
       throw InputError(path, number, error, "close the quote or remove the text after it");
     }
     if (column_count == 0) {  // the header
       std::optional<std::string> suffix;
       for (std::size_t c = 0; c < fields.size(); ++c) {
-        const std::string name = Lower(io::Trim(io::FieldValue(fields[c])));
+        const std::string name = Lower(Trim(FieldValue(fields[c])));
         int* slot = nullptr;
         std::string column_suffix;
         if (name == "id") {
@@ -97,7 +97,7 @@ PointFile ReadPointFile(const std::string& path, std::span<const std::string_vie
         }
       }
       if (suffix && !suffix->empty()) {
-        file.unit = *io::ParseLengthUnit(std::string_view(*suffix).substr(1));
+        file.unit = *ParseLengthUnit(std::string_view(*suffix).substr(1));
       }
       file.has_ids = id_column >= 0;
       column_count = fields.size();
@@ -112,19 +112,18 @@ PointFile ReadPointFile(const std::string& path, std::span<const std::string_vie
     PointRow row;
     row.line = number;
     for (std::size_t i = 0; i < names.size(); ++i) {
-      const io::Field& field = fields[static_cast<std::size_t>(value_columns[i])];
+      const Field& field = fields[static_cast<std::size_t>(value_columns[i])];
       double value = 0.0;
-      if (!io::ParseDouble(field.text, &value) || !std::isfinite(value)) {
+      if (!ParseDouble(field.text, &value) || !std::isfinite(value)) {
         throw InputError(
             path, number,
             std::string(names[i]) + " is not a finite number: '" + std::string(field.text) + "'",
             "write a plain decimal number (e.g. 0.125 or -3e-2)");
       }
-      row.value(static_cast<Eigen::Index>(i)) = lengths ? value * io::MetresPer(file.unit) : value;
+      row.value(static_cast<Eigen::Index>(i)) = lengths ? value * MetresPer(file.unit) : value;
     }
     if (id_column >= 0) {
-      std::string id =
-          std::string(io::Trim(io::FieldValue(fields[static_cast<std::size_t>(id_column)])));
+      std::string id = std::string(Trim(FieldValue(fields[static_cast<std::size_t>(id_column)])));
       if (id.empty()) throw InputError(path, number, "empty id", "give every row an id");
       const auto [previous, inserted] = id_lines.emplace(id, number);
       if (!inserted) {
@@ -143,4 +142,4 @@ PointFile ReadPointFile(const std::string& path, std::span<const std::string_vie
   return file;
 }
 
-}  // namespace hecal::cli
+}  // namespace hecal::io
