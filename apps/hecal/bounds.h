@@ -25,6 +25,7 @@
 //                                 --noise 0 … 255 grey levels
 //   images read                   at most 10^8 pixels (checked in the file header before
 //                                 decoding), at least 16 × 16 for detection
+//                                 (io/image_files.h, vision/image_read.h)
 #pragma once
 
 #include <cstdint>
@@ -51,9 +52,7 @@ constexpr std::int64_t kMaxContourSolves = 100000000;  // steps × samples
 constexpr int kMaxFrames = 10000;
 constexpr int kMinRenderSide = 8;
 constexpr int kMaxRenderSide = 20000;
-constexpr std::int64_t kMaxImagePixels = 100000000;
 constexpr std::int64_t kMaxSequencePixels = 2000000000;
-constexpr int kMinDetectionSide = 16;
 constexpr double kMaxGreyNoise = 255.0;
 
 // A whole number in [min, max] written in decimal ("12", "-3"); InputError with the range

@@ -27,6 +27,10 @@
 #include "hecal/io/pose_table.h"
 #include "hecal/report/result_file.h"
 
+namespace hecal::vision {
+struct ImageSet;  // hecal/vision/image_set.h (built with the vision layer only)
+}  // namespace hecal::vision
+
 namespace hecal::cli {
 
 struct CalibrateFlags {
@@ -83,7 +87,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
                   const estimation::CalibrationResult& result);
 
 // `hecal calibrate --images`:
-//   1. the image front end of image_set.h: detection, intrinsics (given or estimated), PnP poses
+//   1. the image front end of vision/image_set.h: detection, intrinsics (given or estimated), PnP
+//   poses
 //      with covariances, and the per-image report;
 //   2. pairing with the robot rows (docs/targets.md): when every robot row has an id and some id
 //      is an image's file stem, by id (each image needs a row; rows without an image are left
@@ -97,7 +102,7 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 //      "refinement": "reprojection" and an "images" section (intrinsics, pixel sigma, per-image
 //      RMS and flags, skipped images and why, the pose-level X and Z). Skipped images are the
 //      result's rejected stations.
-// Errors (InputError, exit 2, nothing written): those of image_set.h, of the robot file, the
+// Errors (InputError, exit 2, nothing written): those of vision/image_set.h, of the robot file, the
 // pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera,
 // --covariance unscented (its input would be every pixel's noise). The covariance is the linear
 // one of the reprojection problem (pixel and robot noise), or --covariance montecarlo's
@@ -105,13 +110,11 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
 
-struct ImageSet;  // image_set.h (built with the vision layer only)
-
 // Step 2 above: the robot row of every image of `set`, by id = file stem when the rows have ids
 // and they name the images, else by sorted file name. Ids that name no image at all (e.g. the
 // row numbers `hecal import` writes) do not pair by id: then the rows pair by order, with a note
 // on io.err. Returns one pose per image of `set`, in its order. Defined with the vision layer.
-std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& set,
+std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const vision::ImageSet& set,
                                     const std::string& images_dir, const Io& io);
 
 // `hecal calibrate --method global --correspondences FILE --intrinsics camera.yaml --robot
@@ -119,15 +122,15 @@ std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& 
 // (docs/global.md): reads the robot poses and the point matches (io/correspondence_file.h;
 // pixels are undistorted through the intrinsics, bearings are taken as they are) — or, with
 // `--images DIR --target target.yaml --intrinsics camera.yaml` instead of the file, the target
-// corners detected in the images (image_set.h), matched by their ids between consecutive usable
-// stations (the target's geometry is not used); then removes
-// wrong matches (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel
-// sigma 0.5 px unless given), certifies the L∞ optimum (global/branch_and_bound.h), polishes
-// it in L2 with a covariance (estimation/epipolar_polish.h), prints a summary and writes the
-// result file (JSON): X, `certificate` {lower, upper, cubes, lps, seconds, certified, epsilon},
-// the inliers, the removed matches with their ids, `covariance` of X (ω, v right perturbation).
-// Errors (InputError, exit 2, nothing written): a missing or unreadable file, a station the
-// robot file does not have, pixels without --intrinsics, a pixel that cannot be undistorted,
+// corners detected in the images (vision/image_set.h), matched by their ids between consecutive
+// usable stations (the target's geometry is not used); then removes wrong matches
+// (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel sigma 0.5 px unless
+// given), certifies the L∞ optimum (global/branch_and_bound.h), polishes it in L2 with a covariance
+// (estimation/epipolar_polish.h), prints a summary and writes the result file (JSON): X,
+// `certificate` {lower, upper, cubes, lps, seconds, certified, epsilon}, the inliers, the removed
+// matches with their ids, `covariance` of X (ω, v right perturbation). Errors (InputError, exit 2,
+// nothing written): a missing or unreadable file, a station the robot file does not have, pixels
+// without --intrinsics, a pixel that cannot be undistorted,
 // --setup auto, --camera, --images with --correspondences, --images without --intrinsics or
 // with --target none (generic feature matching is not built), the image front end's errors, a
 // non-positive --epsilon or --reach, too few matches.

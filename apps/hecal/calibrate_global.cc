@@ -20,7 +20,7 @@
 #include "json_matrix.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "image_set.h"
+#include "image_report.h"
 #endif
 
 namespace hecal::cli {

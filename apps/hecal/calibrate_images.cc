@@ -19,7 +19,7 @@
 #include "hecal/estimation/image_calibration.h"
 #include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
-#include "image_set.h"
+#include "image_report.h"
 #endif
 
 namespace hecal::cli {

@@ -371,7 +371,7 @@ TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
   std::vector<std::string> no_target = args;
   no_target.erase(no_target.begin() + 3, no_target.begin() + 5);
   refuses(no_target, "--images needs --target");
-  // The image front end's errors (image_set.h): a wrong board size (8 × 6 corners on a 9 × 6
+  // The image front end's errors (vision/image_set.h): a wrong board size (8 × 6 corners on a 9 × 6
   // board: the SB detector finds it in one image, in part of the board), a missing intrinsics
   // file.
   std::vector<std::string> wrong_board = args;

@@ -32,10 +32,10 @@
 #include "hecal/core/split_mix.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/io/image_files.h"
 #include "hecal/version.h"
-#include "image_files.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "image_read.h"
+#include "hecal/vision/image_read.h"
 #endif
 #include "json_matrix.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
@@ -76,7 +76,7 @@ std::string Lower(std::string text) {
 
 contour::GrayImage ReadGray(const fs::path& path) {
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-  const cv::Mat pixels = ReadGrayImage(path.string(), kMinRenderSide);
+  const cv::Mat pixels = vision::ReadGrayImage(path.string(), kMinRenderSide);
   contour::GrayImage image(pixels.cols, pixels.rows);
   for (int y = 0; y < pixels.rows; ++y) {
     const unsigned char* row = pixels.ptr<unsigned char>(y);
@@ -295,7 +295,7 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
                  ? "perspective (weak-perspective bias removed, principal point given)"
                  : "weak perspective (the contour paper's; give --principal-point for perspective)")
          << "\n";
-  const std::vector<fs::path> files = ListImageFiles(options.images, "the image sequence");
+  const std::vector<fs::path> files = io::ListImageFiles(options.images, "the image sequence");
 
   std::vector<FrameResult> frames;
   int width = -1, height = -1;
@@ -488,11 +488,11 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
   }
   const int width = static_cast<int>(size[0]), height = static_cast<int>(size[1]);
   const std::int64_t pixels = std::int64_t{width} * height;
-  if (pixels > kMaxImagePixels || pixels * frames > kMaxSequencePixels) {
+  if (pixels > io::kMaxImagePixels || pixels * frames > kMaxSequencePixels) {
     throw InputError("--size", 0,
                      std::to_string(frames) + " frames of " + std::to_string(width) + "×" +
                          std::to_string(height) + " px are more than " +
-                         std::to_string(kMaxImagePixels) + " pixels a frame or " +
+                         std::to_string(io::kMaxImagePixels) + " pixels a frame or " +
                          std::to_string(kMaxSequencePixels) + " in all",
                      "give a smaller --size or fewer --frames");
   }

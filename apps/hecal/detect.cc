@@ -16,7 +16,7 @@
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/pose_table.h"
-#include "image_set.h"
+#include "image_report.h"
 #endif
 
 namespace hecal::cli {
@@ -80,7 +80,8 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
   io::PoseWriteOptions write;
   write.comments = {
       "hecal detect: T_camera_target of each image (id = image file stem or sub-folder), metres",
-      "images: " + flags.images + "; target: " + flags.target + " (" + Describe(set.target) + ")",
+      "images: " + flags.images + "; target: " + flags.target + " (" +
+          vision::Describe(set.target) + ")",
       "intrinsics: " + (set.estimated ? "estimated from the images, " + stem + ".camera.yaml"
                                       : flags.intrinsics)};
   const std::string pose_text = io::FormatPoseTable(table, write);

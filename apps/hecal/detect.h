@@ -4,7 +4,7 @@
 // Camera poses T_camera_target from images of a calibration target, for `hecal calibrate`.
 //
 // Steps 1–5 (images, detection, intrinsics, poses, per-image report) are the image front end of
-// image_set.h, shared with `hecal calibrate --images`. With --intrinsics one usable image is
+// vision/image_set.h, shared with `hecal calibrate --images`. With --intrinsics one usable image is
 // enough (a pose needs no more); without, 3 (estimating the intrinsics needs them). Then
 //   6. Files (metres, written only when everything succeeded, all or none: io/atomic_file.h):
 //      <output>                  pose table (io/pose_table.h): id (= the station: the image's
@@ -15,10 +15,10 @@
 //      <output stem>.camera.yaml only when the intrinsics were estimated
 //   The output stem is <output> without its extension (camera.csv → camera).
 //
-// Errors (hecal::InputError, exit 2, nothing written): those of image_set.h, --threads outside
-// 0 … 256 (bounds.h), and any of the three output paths refused by io::CheckOutputs (checked
-// before the detection): in a directory that does not exist, a folder, a device or a FIFO, or
-// one of the inputs (--target, --intrinsics).
+// Errors (hecal::InputError, exit 2, nothing written): those of vision/image_set.h, --threads
+// outside 0 … 256 (bounds.h), and any of the three output paths refused by io::CheckOutputs
+// (checked before the detection): in a directory that does not exist, a folder, a device or a FIFO,
+// or one of the inputs (--target, --intrinsics).
 #pragma once
 
 #include <string>

@@ -1,6 +1,9 @@
 #include "hecal/io/delimited_text.h"
 
 #include <charconv>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <system_error>
 
 namespace hecal::io {
@@ -158,6 +161,13 @@ std::string FormatDouble(double value) {
   std::string text;
   AppendDouble(value, &text);
   return text;
+}
+
+std::string FormatFixed(double value, int decimals) {
+  if (!std::isfinite(value)) return "-";
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(decimals) << value;
+  return text.str();
 }
 
 std::string QuoteField(std::string_view value) {

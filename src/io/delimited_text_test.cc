@@ -125,6 +125,18 @@ TEST(ParseDoubleTest, NonFiniteParsesForTheCallerToReject) {
   EXPECT_TRUE(std::isinf(value));
 }
 
+// Fixed decimals, rounded to nearest (the binary value decides ties: 2.675 is 2.67499…), and a
+// dash for what is not a number.
+TEST(FormatFixedTest, DecimalsAndNonFinite) {
+  EXPECT_EQ(FormatFixed(1.23456, 2), "1.23");
+  EXPECT_EQ(FormatFixed(-0.5, 3), "-0.500");
+  EXPECT_EQ(FormatFixed(99.96, 1), "100.0");
+  EXPECT_EQ(FormatFixed(2.675, 2), "2.67");
+  EXPECT_EQ(FormatFixed(12.7, 0), "13");
+  EXPECT_EQ(FormatFixed(std::numeric_limits<double>::quiet_NaN(), 2), "-");
+  EXPECT_EQ(FormatFixed(-std::numeric_limits<double>::infinity(), 4), "-");
+}
+
 TEST(FormatDoubleTest, ShortestRoundTrip) {
   EXPECT_EQ(FormatDouble(0.1), "0.1");
   EXPECT_EQ(FormatDouble(-0.0), "0");

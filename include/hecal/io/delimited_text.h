@@ -67,6 +67,9 @@ bool ParseDouble(std::string_view text, double* value);
 
 // Shortest text that reads back as exactly `value` (std::to_chars); -0 is written as 0.
 std::string FormatDouble(double value);
+// `value` with `decimals` digits after the point (std::fixed), "-" when it is not finite: for
+// reports and messages, not for numbers read back.
+std::string FormatFixed(double value, int decimals);
 // Appends FormatDouble(value) to `out` without a temporary string.
 void AppendDouble(double value, std::string* out);
 

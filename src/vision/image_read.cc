@@ -1,7 +1,6 @@
 // Reading one image file, bounded: see image_read.h.
-#include "image_read.h"
+#include "hecal/vision/image_read.h"
 
-#if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,11 +12,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
-#include "bounds.h"
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/io/image_files.h"
 
-namespace hecal::cli {
+namespace hecal::vision {
 namespace {
 
 enum class Format { kPng, kJpeg, kBmp, kTiff };
@@ -189,11 +188,11 @@ cv::Mat ReadGrayImage(const std::string& path, int min_side) {
   const std::string bytes = io::ReadFile(path);
   const ImageSize size = ImageHeaderSize(path, bytes);
   const std::int64_t pixels = std::int64_t{size.width} * size.height;
-  if (pixels > kMaxImagePixels) {
+  if (pixels > io::kMaxImagePixels) {
     throw InputError(path, 0,
                      "the image is " + std::to_string(size.width) + "x" +
                          std::to_string(size.height) + ", more than " +
-                         std::to_string(kMaxImagePixels / 1000000) +
+                         std::to_string(io::kMaxImagePixels / 1000000) +
                          " megapixels, the most hecal reads",
                      "give images of at most 100 megapixels (scale them down)");
   }
@@ -239,6 +238,4 @@ cv::Mat ReadGrayImage(const std::string& path, int min_side) {
   return gray;
 }
 
-}  // namespace hecal::cli
-
-#endif  // HECAL_HAVE_OPENCV_PEERS
+}  // namespace hecal::vision

@@ -1,11 +1,11 @@
-// One image file read for a command (`detect`, `calibrate --images`, `contour track`), bounded
+// One image file read (the image front end, vision/image_set.h; `hecal contour track`), bounded
 // and with hecal's own reasons instead of the codecs' (README "Reliability"):
 //   1. the file is read whole with io::ReadFile (a regular file of at most 256 MiB);
 //   2. its size is taken from the file header before any pixel is decoded — PNG (IHDR, ISO/IEC
 //      15948 §11.2.2), JPEG (the first SOFn segment, ITU-T T.81 §B.2.2), BMP
 //      (BITMAPINFOHEADER) and TIFF (tags 256/257 of the first IFD, TIFF 6.0 §8) — and must be
-//      at most kMaxImagePixels (10^8) pixels and at least `min_side` pixels a side; a file
-//      whose header is not one of these formats, or is cut short, cannot be decoded;
+//      at most io::kMaxImagePixels (10^8, io/image_files.h) pixels and at least `min_side` pixels a
+//      side; a file whose header is not one of these formats, or is cut short, cannot be decoded;
 //   3. a JPEG must hold its end-of-image marker after the start of the scan (ITU-T T.81
 //      §B.2.1): libjpeg decodes a file cut short to grey without a word when it reads from
 //      memory;
@@ -15,15 +15,16 @@
 //      codec cannot decode, is refused with that complaint as the reason, so a truncated or
 //      corrupt image never passes as a picture without a target. (libpng's warnings on a PNG
 //      that decodes, e.g. an sRGB profile note, are dropped.)
-// Errors: hecal::InputError(path, 0, ...) for each refusal above.
-// Needs the vision layer (HECAL_HAVE_OPENCV_PEERS).
+// Sizes are in pixels. Errors: hecal::InputError(path, 0, ...) for each refusal above.
 #pragma once
 
-#if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <opencv2/core.hpp>
 #include <string>
 
-namespace hecal::cli {
+namespace hecal::vision {
+
+// The smallest side (pixels) of an image searched for a target.
+constexpr int kMinDetectionSide = 16;
 
 struct ImageSize {
   int width = 0;
@@ -38,6 +39,4 @@ ImageSize ImageHeaderSize(const std::string& path, const std::string& bytes);
 // accepted (kMinDetectionSide for target detection).
 cv::Mat ReadGrayImage(const std::string& path, int min_side);
 
-}  // namespace hecal::cli
-
-#endif  // HECAL_HAVE_OPENCV_PEERS
+}  // namespace hecal::vision

@@ -1,31 +1,25 @@
-// The image front end of `hecal detect` and `hecal calibrate --images`: see image_set.h.
-#include "hecal/core/error.h"
+// The image front end: see image_set.h.
+#include "hecal/vision/image_set.h"
 
-#if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <exception>
-#include <iomanip>
-#include <numbers>
 #include <opencv2/core/utility.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <sstream>
-#include <string_view>
 
-#include "bounds.h"
+#include "hecal/core/error.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/io/image_files.h"
 #include "hecal/io/target_file.h"
+#include "hecal/vision/image_read.h"
 #include "hecal/vision/intrinsics_fit.h"
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
-#include "image_files.h"
-#include "image_read.h"
-#include "image_set.h"
 
-namespace hecal::cli {
+namespace hecal::vision {
 namespace {
+
+using io::FormatFixed;
 
 // Hand–eye calibration needs 3 stations (2 motions); Zhang's intrinsics need 3 views; a pose
 // with known intrinsics needs 1.
@@ -38,9 +32,9 @@ struct ViewsNeeded {
   std::string rule;
 };
 
-ViewsNeeded Needed(const ImageSetFlags& flags) {
-  const bool estimate = flags.intrinsics.empty();
-  if (flags.use == ImageUse::kHandEye) {
+ViewsNeeded Needed(const ImageSetOptions& options) {
+  const bool estimate = options.intrinsics.empty();
+  if (options.use == ImageUse::kHandEye) {
     return {kHandEyeStations, estimate ? "hand-eye calibration needs at least 3 stations (2 robot "
                                          "motions), and estimating the intrinsics 3 views"
                                        : "hand-eye calibration needs at least 3 stations (2 "
@@ -54,9 +48,9 @@ ViewsNeeded Needed(const ImageSetFlags& flags) {
   return {1, "a pose needs the target in at least 1 view"};
 }
 
-std::vector<ImageRecord> Records(const StationImages& listed) {
+std::vector<ImageRecord> Records(const io::StationImages& listed) {
   std::vector<ImageRecord> images;
-  for (const StationImage& station : listed.stations) {
+  for (const io::StationImage& station : listed.stations) {
     ImageRecord record;
     record.path = station.path;
     record.station = station.id;
@@ -157,17 +151,18 @@ int CountUsed(const std::vector<ImageRecord>& images) {
 
 // Enough usable images for the use (Needed), with a message that says what to check.
 void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::TargetSpec& target,
-                      const ImageSetFlags& flags) {
+                      const ImageSetOptions& options) {
   const int used = CountUsed(images);
-  const ViewsNeeded needed = Needed(flags);
+  const ViewsNeeded needed = Needed(options);
   if (used >= needed.count) return;
   const bool none_seen = std::all_of(images.begin(), images.end(), [](const ImageRecord& i) {
     return i.detection.status == vision::DetectionStatus::kNotFound;
   });
-  const std::string count = std::to_string(images.size()) + " image(s) in " + flags.images;
+  const std::string count = std::to_string(images.size()) + " image(s) in " + options.images;
   if (none_seen) {
     throw InputError(
-        flags.target, 0, "the target (" + Describe(target) + ") was found in none of the " + count,
+        options.target, 0,
+        "the target (" + Describe(target) + ") was found in none of the " + count,
         target.type == pose::TargetType::kChessboard
             ? "check cols/rows in target.yaml: cols/rows are INNER corners for a chessboard "
               "(a board of 25x18 squares has 24x17 inner corners)"
@@ -175,19 +170,13 @@ void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::Target
               "target");
   }
   throw InputError(
-      flags.images, 0, "the target is usable in only " + std::to_string(used) + " of the " + count,
+      options.images, 0,
+      "the target is usable in only " + std::to_string(used) + " of the " + count,
       needed.rule + ": add images with the whole target visible and sharp, and check " +
           (pose::IsSingleTag(target.type)
-               ? "the tag's id and family/dictionary in " + flags.target
-               : "cols/rows in " + flags.target +
+               ? "the tag's id and family/dictionary in " + options.target
+               : "cols/rows in " + options.target +
                      " (a board of the wrong size may be found in part of some images)"));
-}
-
-std::string Fixed(double value, int decimals) {
-  if (!std::isfinite(value)) return "-";
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(decimals) << value;
-  return text.str();
 }
 
 std::string SizeText(int width, int height) {
@@ -211,12 +200,13 @@ void CheckIntrinsicsSize(const pose::CameraModel& camera, const std::string& pat
   if (std::abs(camera.height * s - size.height) <= 1.0) {
     const auto scaled = [s](double c) { return (c + 0.5) * s - 0.5; };
     throw InputError(
-        path, 0, sizes + ": the same aspect ratio, so the images look resized by " + Fixed(s, 4),
+        path, 0,
+        sizes + ": the same aspect ratio, so the images look resized by " + FormatFixed(s, 4),
         "give the intrinsics of this resolution: if the images are the camera's, scaled, they are "
         "fx " +
-            Fixed(camera.fx * s, 3) + ", fy " + Fixed(camera.fy * s, 3) + ", cx " +
-            Fixed(scaled(camera.cx), 3) + ", cy " + Fixed(scaled(camera.cy), 3) + ", width " +
-            std::to_string(size.width) + ", height " + std::to_string(size.height) +
+            FormatFixed(camera.fx * s, 3) + ", fy " + FormatFixed(camera.fy * s, 3) + ", cx " +
+            FormatFixed(scaled(camera.cx), 3) + ", cy " + FormatFixed(scaled(camera.cy), 3) +
+            ", width " + std::to_string(size.width) + ", height " + std::to_string(size.height) +
             " (distortion unchanged); a lower-resolution camera mode may crop as well, so "
             "calibrating at this resolution is safer");
   }
@@ -244,7 +234,7 @@ void CheckDistortionRange(const pose::CameraModel& camera, const std::string& pa
                    "the distortion (k1 " + io::FormatDouble(d[0]) + ", k2 " +
                        io::FormatDouble(d[1]) + ", p1 " + io::FormatDouble(d[2]) + ", p2 " +
                        io::FormatDouble(d[3]) + ", k3 " + io::FormatDouble(d[4]) +
-                       ") would move the image corner by " + Fixed(shift_px, 0) +
+                       ") would move the image corner by " + FormatFixed(shift_px, 0) +
                        " px, more than 10 image diagonals: no lens distorts like that",
                    "check the coefficients and their order (k1 k2 p1 p2 k3, OpenCV's "
                    "plumb_bob; a typo in an exponent?), or leave out --intrinsics to estimate "
@@ -264,7 +254,7 @@ std::vector<vision::CalibrationView> UsedViews(const std::vector<ImageRecord>& i
 
 vision::IntrinsicsResult EstimateIntrinsics(const std::vector<ImageRecord>& images,
                                             const std::vector<pose::ObjectPoint>& board,
-                                            cv::Size size, const Io& io) {
+                                            cv::Size size) {
   const std::vector<vision::CalibrationView> views = UsedViews(images, board);
   vision::IntrinsicsResult result;
   try {
@@ -283,28 +273,10 @@ vision::IntrinsicsResult EstimateIntrinsics(const std::vector<ImageRecord>& imag
     throw InputError("--intrinsics", 0,
                      "cannot estimate the intrinsics: the target is nearly parallel in all " +
                          std::to_string(views.size()) + " usable images (normals within " +
-                         Fixed(result.normal_spread_deg, 1) +
+                         FormatFixed(result.normal_spread_deg, 1) +
                          " deg), so focal length and distance are confounded",
                      "give --intrinsics camera.yaml, or add images with the target tilted by "
                      "20-45 deg in different directions");
-  }
-  const pose::CameraModel& c = result.camera;
-  const vision::IntrinsicsSigma& s = result.sigma;
-  io.out << "intrinsics: estimated from " << views.size() << " images (cv::calibrateCamera), RMS "
-         << Fixed(result.rms_px, 4) << " px; the points cover " << Fixed(100 * result.coverage, 0)
-         << "% of the image, board normals spread over " << Fixed(result.normal_spread_deg, 1)
-         << " deg\n"
-         << "  fx " << Fixed(c.fx, 3) << " ± " << Fixed(s.fx, 3) << "  fy " << Fixed(c.fy, 3)
-         << " ± " << Fixed(s.fy, 3) << "  cx " << Fixed(c.cx, 3) << " ± " << Fixed(s.cx, 3)
-         << "  cy " << Fixed(c.cy, 3) << " ± " << Fixed(s.cy, 3) << " px (1 sigma)\n  ";
-  constexpr std::array<std::string_view, 5> kNames = {"k1", "k2", "p1", "p2", "k3"};
-  for (std::size_t k = 0; k < kNames.size(); ++k) {
-    io.out << (k == 0 ? "" : "  ") << kNames[k] << " " << Fixed(c.distortion[k], 6) << " ± "
-           << Fixed(s.distortion[k], 6);
-  }
-  io.out << "\n";
-  for (const std::string& warning : result.warnings) {
-    io.err << "hecal: warning: intrinsics: " << warning << "\n";
   }
   return result;
 }
@@ -331,26 +303,27 @@ std::string CorrectionText(const vision::IntrinsicsCorrection& correction,
                            const pose::CameraModel& given, cv::Size size) {
   using Kind = vision::IntrinsicsCorrection::Kind;
   const pose::CameraModel& c = correction.camera;
-  const std::string fits = " the images fit to " + Fixed(correction.median_rms_px, 3) + " px";
+  const std::string fits = " the images fit to " + FormatFixed(correction.median_rms_px, 3) + " px";
   switch (correction.kind) {
     case Kind::kSwapPrincipalPoint:
-      return "cx and cy look swapped: with cx " + Fixed(c.cx, 2) + ", cy " + Fixed(c.cy, 2) + fits;
+      return "cx and cy look swapped: with cx " + FormatFixed(c.cx, 2) + ", cy " +
+             FormatFixed(c.cy, 2) + fits;
     case Kind::kScaleFocal:
-      return "fx, fy look " + Fixed(1.0 / correction.scale, 3) +
+      return "fx, fy look " + FormatFixed(1.0 / correction.scale, 3) +
              " times too large (a focal length of another lens, or in other units): with fx " +
-             Fixed(c.fx, 1) + ", fy " + Fixed(c.fy, 1) + fits;
+             FormatFixed(c.fx, 1) + ", fy " + FormatFixed(c.fy, 1) + fits;
     case Kind::kScaleResolution:
-      return "they look like the intrinsics of images " + Fixed(1.0 / correction.scale, 3) +
+      return "they look like the intrinsics of images " + FormatFixed(1.0 / correction.scale, 3) +
              " times this size (about " +
              SizeText(static_cast<int>(std::lround(size.width / correction.scale)),
                       static_cast<int>(std::lround(size.height / correction.scale))) +
              "): scaled to these " + SizeText(size.width, size.height) + " images (fx " +
-             Fixed(c.fx, 1) + ", fy " + Fixed(c.fy, 1) + ", cx " + Fixed(c.cx, 1) + ", cy " +
-             Fixed(c.cy, 1) + ")" + fits;
+             FormatFixed(c.fx, 1) + ", fy " + FormatFixed(c.fy, 1) + ", cx " +
+             FormatFixed(c.cx, 1) + ", cy " + FormatFixed(c.cy, 1) + ")" + fits;
     case Kind::kNoDistortion:
       return "the images look undistorted already (rectified), while the camera file has "
              "distortion k1 " +
-             Fixed(given.distortion[0], 4) + ": without it" + fits;
+             FormatFixed(given.distortion[0], 4) + ": without it" + fits;
   }
   return "";
 }
@@ -358,29 +331,30 @@ std::string CorrectionText(const vision::IntrinsicsCorrection& correction,
 // With given intrinsics: does the pose model fit the images (vision::CheckIntrinsicsFit)? A
 // median reprojection RMS of 2 px or more is refused, a clear excess over the free homography's
 // fit is a warning; both name the likely mistake.
-void CheckIntrinsicsFitImages(const ImageSet& set, const ImageSetFlags& flags, const Io& io) {
+void CheckIntrinsicsFitImages(const ImageSetOptions& options, ImageSet* set) {
   const vision::IntrinsicsFit fit =
-      vision::CheckIntrinsicsFit(UsedViews(set.images, set.board), set.camera);
+      vision::CheckIntrinsicsFit(UsedViews(set->images, set->board), set->camera);
   if (fit.verdict == vision::IntrinsicsVerdict::kFits) return;
-  std::string found = "median reprojection RMS " + Fixed(fit.median_rms_px, 2) + " px over " +
-                      std::to_string(CountUsed(set.images)) + " image(s) with these intrinsics";
+  std::string found = "median reprojection RMS " + FormatFixed(fit.median_rms_px, 2) + " px over " +
+                      std::to_string(CountUsed(set->images)) + " image(s) with these intrinsics";
   if (fit.median_free_rms_px) {
     found += ", where a free homography fits the same points to " +
-             Fixed(*fit.median_free_rms_px, 2) + " px";
+             FormatFixed(*fit.median_free_rms_px, 2) + " px";
   }
-  std::string source = flags.intrinsics;
+  std::string source = options.intrinsics;
   std::string fix;
   if (fit.correction) {
-    fix = CorrectionText(*fit.correction, set.camera, set.size) + "; correct " + flags.intrinsics;
+    fix =
+        CorrectionText(*fit.correction, set->camera, set->size) + "; correct " + options.intrinsics;
   } else if (fit.points_do_not_fit) {
-    source = flags.target;
+    source = options.target;
     found = "the detected points do not fit the target: " + found;
-    fix = "check " + flags.target +
+    fix = "check " + options.target +
           " against the print (cols/rows, lengths, first_id), that the target is flat, and the "
           "distortion coefficients in " +
-          flags.intrinsics;
+          options.intrinsics;
   } else {
-    fix = "check " + flags.intrinsics +
+    fix = "check " + options.intrinsics +
           ": the intrinsics of another camera or resolution, fx/fy scaled, cx/cy swapped, or "
           "images resized or cropped; or leave out --intrinsics to estimate them from the images "
           "(3 or more)";
@@ -391,37 +365,7 @@ void CheckIntrinsicsFitImages(const ImageSet& set, const ImageSetFlags& flags, c
                                  : "the intrinsics do not fit the images: " + found;
     throw InputError(source, 0, what, fix);
   }
-  io.err << "hecal: warning: " << source << ": the intrinsics fit the images poorly: " << found
-         << " (" << fix << ")\n";
-}
-
-void PrintReport(const std::vector<ImageRecord>& images, std::ostream& out) {
-  std::size_t width = 5;
-  for (const ImageRecord& image : images) width = std::max(width, image.name.size());
-  out << std::left << std::setw(static_cast<int>(width) + 2) << "image" << std::setw(11) << "status"
-      << std::setw(11) << "points" << std::setw(10) << "sharp_px" << std::setw(9) << "rms_px"
-      << std::setw(10) << "sigma_mm"
-      << "sigma_deg\n";
-  for (const ImageRecord& image : images) {
-    const vision::Detection& d = image.detection;
-    out << std::setw(static_cast<int>(width) + 2) << image.name << std::setw(11)
-        << vision::DetectionStatusName(d.status) << std::setw(11)
-        << (std::to_string(d.num_points()) + "/" + std::to_string(d.total_points)) << std::setw(10)
-        << Fixed(d.sharpness, 2);
-    if (image.pose.has_value() && image.used()) {
-      const Matrix6d& C = image.pose->covariance;
-      const double sigma_deg =
-          std::sqrt(C.topLeftCorner<3, 3>().trace() / 3.0) * 180.0 / std::numbers::pi;
-      const double sigma_mm = std::sqrt(C.bottomRightCorner<3, 3>().trace() / 3.0) * 1e3;
-      out << std::setw(9) << Fixed(image.pose->rms_px, 3) << std::setw(10) << Fixed(sigma_mm, 3)
-          << Fixed(sigma_deg, 4) << "\n";
-    } else if (!image.used()) {
-      out << "skipped: " << image.skipped << "\n";
-    } else {
-      out << "\n";
-    }
-  }
-  out << std::right;
+  set->fit_warning = source + ": the intrinsics fit the images poorly: " + found + " (" + fix + ")";
 }
 
 }  // namespace
@@ -451,13 +395,27 @@ std::vector<Eigen::Vector2d> PixelsOf(const vision::Detection& detection) {
   return pixels;
 }
 
-ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, const Io& io) {
-  ParseThreads("--threads", std::to_string(flags.threads));
+int ImageSet::CountUsed() const {
+  return vision::CountUsed(images);
+}
+
+int ImagesNeeded(const ImageSetOptions& options) {
+  return Needed(options).count;
+}
+
+ImageSet DetectImageSet(const ImageSetOptions& options, const ImageSetProgress& progress) {
+  if (options.threads < 0) {
+    throw InputError("threads", 0, "negative thread count " + std::to_string(options.threads),
+                     "give 0 (every core) or a positive count");
+  }
+  const auto report = [](const std::function<void(const ImageSet&)>& stage, const ImageSet& set) {
+    if (stage) stage(set);
+  };
   ImageSet set;
-  set.target = io::ReadTargetFile(flags.target);
+  set.target = io::ReadTargetFile(options.target);
   set.board = pose::ObjectPoints(set.target);
   std::optional<io::CameraFile> given;
-  if (!flags.intrinsics.empty()) given = io::ReadCameraFile(flags.intrinsics);
+  if (!options.intrinsics.empty()) given = io::ReadCameraFile(options.intrinsics);
   if (!given && pose::IsSingleTag(set.target.type)) {
     throw InputError("--intrinsics", 0,
                      "a single tag (" + Describe(set.target) +
@@ -466,44 +424,39 @@ ImageSet DetectImageSet(const ImageSetFlags& flags, const std::string& command, 
                      "give --intrinsics camera.yaml (calibrate the camera first, e.g. with "
                      "hecal detect on images of a chessboard or ChArUco board)");
   }
-  const StationImages listed = ListStationImages(flags.images, "the target images");
-  if (!listed.note.empty()) io.err << "hecal: note: " << listed.note << "\n";
+  const io::StationImages listed = io::ListStationImages(options.images, "the target images");
   set.images = Records(listed);
-  io.out << command << ": " << set.images.size()
-         << (listed.sub_folders ? " station sub-folder(s)" : " image(s)") << " in " << flags.images
-         << ", target " << Describe(set.target) << " (" << set.board.size() << " points)"
-         << std::endl;
+  set.sub_folders = listed.sub_folders;
+  set.listing_note = listed.note;
+  report(progress.listed, set);
   {
-    const OpenCvThreads threads(flags.threads);
-    DetectAll(set.target, flags.target,
+    const OpenCvThreads threads(options.threads);
+    DetectAll(set.target, options.target,
               given ? std::optional<pose::CameraModel>(given->camera) : std::nullopt, &set.images);
   }
   CheckSameSize(set.images);
   set.size = set.images.front().size;
   if (given) {
-    CheckIntrinsicsSize(given->camera, flags.intrinsics, set.size);
-    CheckDistortionRange(given->camera, flags.intrinsics, set.size);
+    CheckIntrinsicsSize(given->camera, options.intrinsics, set.size);
+    CheckDistortionRange(given->camera, options.intrinsics, set.size);
   }
   ResolveAndMarkUnusable(set.target, &set.images);
-  if (CountUsed(set.images) < Needed(flags).count) PrintReport(set.images, io.out);
-  CheckEnoughViews(set.images, set.target, flags);
+  report(progress.detected, set);
+  CheckEnoughViews(set.images, set.target, options);
 
   if (given) {
     set.camera = given->camera;
-    io.out << "intrinsics: " << flags.intrinsics << " (fx " << set.camera.fx << ", fy "
-           << set.camera.fy << ", cx " << set.camera.cx << ", cy " << set.camera.cy << " px)\n";
-    for (const std::string& note : given->notes) io.out << "note: " << note << "\n";
+    set.camera_notes = given->notes;
   } else {
-    set.estimated = EstimateIntrinsics(set.images, set.board, set.size, io);
+    set.estimated = EstimateIntrinsics(set.images, set.board, set.size);
     set.camera = set.estimated->camera;
   }
+  report(progress.intrinsics, set);
   EstimatePoses(set.board, set.camera, &set.images);
-  PrintReport(set.images, io.out);
-  CheckEnoughViews(set.images, set.target, flags);
-  if (given) CheckIntrinsicsFitImages(set, flags, io);
+  report(progress.posed, set);
+  CheckEnoughViews(set.images, set.target, options);
+  if (given) CheckIntrinsicsFitImages(options, &set);
   return set;
 }
 
-}  // namespace hecal::cli
-
-#endif  // HECAL_HAVE_OPENCV_PEERS
+}  // namespace hecal::vision

@@ -1,5 +1,5 @@
 // The image files of a folder, and its stations: see image_files.h.
-#include "image_files.h"
+#include "hecal/io/image_files.h"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 
 #include "hecal/core/error.h"
 
-namespace hecal::cli {
+namespace hecal::io {
 
 namespace fs = std::filesystem;
 
@@ -134,4 +134,4 @@ StationImages ListStationImages(const std::string& dir, const std::string& conte
   return result;
 }
 
-}  // namespace hecal::cli
+}  // namespace hecal::io

@@ -1,5 +1,5 @@
-// The image files of a folder, for every command that reads an image folder (`detect`,
-// `calibrate --images`, `contour track`): every *.png, *.jpg, *.jpeg, *.bmp, *.tif, *.tiff
+// The image files of a folder, for every job that reads an image folder (the image front end of
+// vision/image_set.h, `hecal contour track`): every *.png, *.jpg, *.jpeg, *.bmp, *.tif, *.tiff
 // (extension case-insensitive), sorted by file name. No OpenCV: listing is not reading.
 //
 // Stations (`detect`, `calibrate --images`; ListStationImages) come in one of two layouts:
@@ -15,11 +15,15 @@
 // id.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace hecal::cli {
+namespace hecal::io {
+
+// The largest image hecal reads or renders, in pixels (100 megapixels: 10^8 grey bytes).
+constexpr std::int64_t kMaxImagePixels = 100000000;
 
 bool IsImageFile(const std::filesystem::path& path);
 
@@ -46,4 +50,4 @@ struct StationImages {
 // sub-folder when one holds no image or more than one (the images listed).
 StationImages ListStationImages(const std::string& dir, const std::string& contents);
 
-}  // namespace hecal::cli
+}  // namespace hecal::io

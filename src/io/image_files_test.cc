@@ -1,31 +1,46 @@
 // ListStationImages on folders laid out both ways (image_files.h): one image per station, or one
 // sub-folder per station; which wins when both exist; the errors, each naming the folder at fault.
 // Files are empty: listing reads no image.
-#include "image_files.h"
+#include "hecal/io/image_files.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "cli_test_util.h"
 #include "hecal/core/error.h"
+#include "hecal/io/atomic_file.h"
 #include "testing/thrown.h"
 
-namespace hecal::cli {
+namespace hecal::io {
 namespace {
 
-class StationImagesTest : public cli_test::CliTest {
+// Each test in its own folder, removed afterwards.
+class StationImagesTest : public ::testing::Test {
  protected:
-  // Creates the named files (and their folders) under images/.
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("hecal_image_files_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Creates the named files (empty, and their folders) under images/.
   std::string Folder(const std::vector<std::string>& files) {
     for (const std::string& file : files) {
       std::filesystem::create_directories((dir_ / "images" / file).parent_path());
-      Write("images/" + file, "");
+      WriteFileAtomically(Path("images/" + file), "");
     }
     return Path("images");
   }
+
+  std::filesystem::path dir_;
 };
 
 std::vector<std::string> Ids(const StationImages& listed) {
@@ -101,4 +116,4 @@ TEST_F(StationImagesTest, MissingOrEmptyFoldersAreErrors) {
 }
 
 }  // namespace
-}  // namespace hecal::cli
+}  // namespace hecal::io

@@ -1,0 +1,103 @@
+// The image front end, printed: see image_report.h.
+#include "image_report.h"
+
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <numbers>
+#include <ostream>
+#include <string_view>
+
+#include "hecal/io/delimited_text.h"
+
+namespace hecal::cli {
+namespace {
+
+using io::FormatFixed;
+
+void PrintEstimatedIntrinsics(const vision::IntrinsicsResult& result, int views, const Io& io) {
+  const pose::CameraModel& c = result.camera;
+  const vision::IntrinsicsSigma& s = result.sigma;
+  io.out << "intrinsics: estimated from " << views << " images (cv::calibrateCamera), RMS "
+         << FormatFixed(result.rms_px, 4) << " px; the points cover "
+         << FormatFixed(100 * result.coverage, 0) << "% of the image, board normals spread over "
+         << FormatFixed(result.normal_spread_deg, 1) << " deg\n"
+         << "  fx " << FormatFixed(c.fx, 3) << " ± " << FormatFixed(s.fx, 3) << "  fy "
+         << FormatFixed(c.fy, 3) << " ± " << FormatFixed(s.fy, 3) << "  cx " << FormatFixed(c.cx, 3)
+         << " ± " << FormatFixed(s.cx, 3) << "  cy " << FormatFixed(c.cy, 3) << " ± "
+         << FormatFixed(s.cy, 3) << " px (1 sigma)\n  ";
+  constexpr std::array<std::string_view, 5> kNames = {"k1", "k2", "p1", "p2", "k3"};
+  for (std::size_t k = 0; k < kNames.size(); ++k) {
+    io.out << (k == 0 ? "" : "  ") << kNames[k] << " " << FormatFixed(c.distortion[k], 6) << " ± "
+           << FormatFixed(s.distortion[k], 6);
+  }
+  io.out << "\n";
+  for (const std::string& warning : result.warnings) {
+    io.err << "hecal: warning: intrinsics: " << warning << "\n";
+  }
+}
+
+void PrintReport(const std::vector<ImageRecord>& images, std::ostream& out) {
+  std::size_t width = 5;
+  for (const ImageRecord& image : images) width = std::max(width, image.name.size());
+  out << std::left << std::setw(static_cast<int>(width) + 2) << "image" << std::setw(11) << "status"
+      << std::setw(11) << "points" << std::setw(10) << "sharp_px" << std::setw(9) << "rms_px"
+      << std::setw(10) << "sigma_mm"
+      << "sigma_deg\n";
+  for (const ImageRecord& image : images) {
+    const vision::Detection& d = image.detection;
+    out << std::setw(static_cast<int>(width) + 2) << image.name << std::setw(11)
+        << vision::DetectionStatusName(d.status) << std::setw(11)
+        << (std::to_string(d.num_points()) + "/" + std::to_string(d.total_points)) << std::setw(10)
+        << FormatFixed(d.sharpness, 2);
+    if (image.pose.has_value() && image.used()) {
+      const Matrix6d& C = image.pose->covariance;
+      const double sigma_deg =
+          std::sqrt(C.topLeftCorner<3, 3>().trace() / 3.0) * 180.0 / std::numbers::pi;
+      const double sigma_mm = std::sqrt(C.bottomRightCorner<3, 3>().trace() / 3.0) * 1e3;
+      out << std::setw(9) << FormatFixed(image.pose->rms_px, 3) << std::setw(10)
+          << FormatFixed(sigma_mm, 3) << FormatFixed(sigma_deg, 4) << "\n";
+    } else if (!image.used()) {
+      out << "skipped: " << image.skipped << "\n";
+    } else {
+      out << "\n";
+    }
+  }
+  out << std::right;
+}
+
+}  // namespace
+
+ImageSet DetectImageSet(const vision::ImageSetOptions& options, const std::string& command,
+                        const Io& io) {
+  vision::ImageSetProgress progress;
+  progress.listed = [&](const ImageSet& set) {
+    if (!set.listing_note.empty()) io.err << "hecal: note: " << set.listing_note << "\n";
+    io.out << command << ": " << set.images.size()
+           << (set.sub_folders ? " station sub-folder(s)" : " image(s)") << " in " << options.images
+           << ", target " << vision::Describe(set.target) << " (" << set.board.size() << " points)"
+           << std::endl;
+  };
+  progress.detected = [&](const ImageSet& set) {
+    if (set.CountUsed() < vision::ImagesNeeded(options)) PrintReport(set.images, io.out);
+  };
+  progress.intrinsics = [&](const ImageSet& set) {
+    if (set.estimated) {
+      PrintEstimatedIntrinsics(*set.estimated, set.CountUsed(), io);
+      return;
+    }
+    io.out << "intrinsics: " << options.intrinsics << " (fx " << set.camera.fx << ", fy "
+           << set.camera.fy << ", cx " << set.camera.cx << ", cy " << set.camera.cy << " px)\n";
+    for (const std::string& note : set.camera_notes) io.out << "note: " << note << "\n";
+  };
+  progress.posed = [&](const ImageSet& set) { PrintReport(set.images, io.out); };
+  ImageSet set = vision::DetectImageSet(options, progress);
+  if (!set.fit_warning.empty()) io.err << "hecal: warning: " << set.fit_warning << "\n";
+  return set;
+}
+
+}  // namespace hecal::cli
+
+#endif  // HECAL_HAVE_OPENCV_PEERS
