@@ -50,7 +50,6 @@ constexpr int kMaxSteps = 10000;
 constexpr int kMaxContourSamples = 1000000;
 constexpr std::int64_t kMaxContourSolves = 100000000;  // steps × samples
 constexpr int kMaxFrames = 10000;
-constexpr int kMinRenderSide = 8;
 constexpr int kMaxRenderSide = 20000;
 constexpr std::int64_t kMaxSequencePixels = 2000000000;
 constexpr double kMaxGreyNoise = 255.0;

@@ -21,26 +21,19 @@
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/bspline.h"
 #include "hecal/contour/contour_study.h"
-#include "hecal/contour/gray_image.h"
-#include "hecal/contour/perspective_pose.h"
-#include "hecal/contour/perspective_view.h"
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/contour/render.h"
+#include "hecal/contour/sequence.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/contour/shape_tracker.h"
 #include "hecal/core/error.h"
-#include "hecal/core/split_mix.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/image_files.h"
 #include "hecal/version.h"
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "hecal/vision/image_read.h"
-#endif
 #include "json_matrix.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "hecal/vision/contour_images.h"
 #endif
 
 namespace hecal::cli {
@@ -65,8 +58,6 @@ std::string Lower(std::string text) {
   return text;
 }
 
-// ---- images ------------------------------------------------------------------------------------
-
 #if !defined(HECAL_HAVE_OPENCV_PEERS)
 [[noreturn]] void NeedsVision(const std::string& flag) {
   throw InputError(flag, 0, "reading and writing images needs the vision layer (OpenCV)",
@@ -74,29 +65,7 @@ std::string Lower(std::string text) {
 }
 #endif
 
-contour::GrayImage ReadGray(const fs::path& path) {
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-  const cv::Mat pixels = vision::ReadGrayImage(path.string(), kMinRenderSide);
-  contour::GrayImage image(pixels.cols, pixels.rows);
-  for (int y = 0; y < pixels.rows; ++y) {
-    const unsigned char* row = pixels.ptr<unsigned char>(y);
-    for (int x = 0; x < pixels.cols; ++x) image.at(x, y) = static_cast<float>(row[x]);
-  }
-  return image;
-#else
-  (void)path;
-  NeedsVision("--images");
-#endif
-}
-
 // ---- track -------------------------------------------------------------------------------------
-
-struct FrameResult {
-  std::string image;
-  contour::TrackedFrame tracked;
-  std::string status;  // tracked | lost | singular
-  std::optional<contour::ContourPoseUncertainty> pose;
-};
 
 enum class OutputKind { kNone, kCsv, kJson };
 
@@ -109,7 +78,8 @@ OutputKind ParseOutputKind(const std::string& output) {
                    "name the file *.csv (one row per frame) or *.json (full covariances)");
 }
 
-std::string TrackCsv(const std::vector<FrameResult>& frames, contour::RotationForm form,
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+std::string TrackCsv(const std::vector<vision::TrackedImage>& frames, contour::RotationForm form,
                      const std::string& unit_note) {
   const std::array<std::string_view, 6> names = contour::PoseParameterNames(form);
   std::string csv = "# hecal " + std::string(kVersion) +
@@ -125,10 +95,12 @@ std::string TrackCsv(const std::vector<FrameResult>& frames, contour::RotationFo
     csv += ",sd_" + std::string(names[i]) + (i < 3 ? "" : "_deg");
   }
   csv += ",bias\n";
-  for (const FrameResult& f : frames) {
+  for (const vision::TrackedImage& image : frames) {
+    const contour::SequenceFrame& f = image.frame;
     const contour::TrackedFrame& t = f.tracked;
-    csv += std::to_string(t.frame) + "," + io::QuoteField(f.image) + "," + f.status + "," +
-           std::to_string(t.edges_used) + "," + std::to_string(t.edges_searched) + ",";
+    csv += std::to_string(t.frame) + "," + io::QuoteField(image.image) + "," +
+           std::string(contour::FrameStatusName(f.status)) + "," + std::to_string(t.edges_used) +
+           "," + std::to_string(t.edges_searched) + ",";
     io::AppendDouble(t.sigma, &csv);
     csv += ",";
     io::AppendDouble(t.residual_rms, &csv);
@@ -165,9 +137,10 @@ bool UsesPerspectivePose(const ContourTrackOptions& options) {
          (options.pose_model == "auto" && !options.principal_point.empty());
 }
 
-std::string TrackJson(const std::vector<FrameResult>& frames, const ContourTrackOptions& options,
-                      const contour::ContourCamera& camera, const Eigen::Vector2d& principal,
-                      contour::RotationForm form, const contour::ShapeTracker& tracker) {
+std::string TrackJson(const std::vector<vision::TrackedImage>& frames,
+                      const ContourTrackOptions& options, const contour::ContourCamera& camera,
+                      const Eigen::Vector2d& principal, contour::RotationForm form,
+                      const contour::ShapeTracker& tracker) {
   const std::array<std::string_view, 6> names = contour::PoseParameterNames(form);
   nlohmann::json parameter_names = nlohmann::json::array();
   for (std::string_view n : names) parameter_names.push_back(n);
@@ -194,12 +167,13 @@ std::string TrackJson(const std::vector<FrameResult>& frames, const ContourTrack
       {"polarity", tracker.polarity()},
   };
   nlohmann::json list = nlohmann::json::array();
-  for (const FrameResult& f : frames) {
+  for (const vision::TrackedImage& image : frames) {
+    const contour::SequenceFrame& f = image.frame;
     const contour::TrackedFrame& t = f.tracked;
     nlohmann::json frame = {
         {"frame", t.frame},
-        {"image", f.image},
-        {"status", f.status},
+        {"image", image.image},
+        {"status", contour::FrameStatusName(f.status)},
         {"edges",
          {{"searched", t.edges_searched}, {"found", t.edges_found}, {"used", t.edges_used}}},
         {"measurement_sigma_px", t.sigma},
@@ -228,6 +202,7 @@ std::string TrackJson(const std::vector<FrameResult>& frames, const ContourTrack
   result["frames"] = std::move(list);
   return result.dump(2) + "\n";
 }
+#endif  // HECAL_HAVE_OPENCV_PEERS
 
 }  // namespace
 
@@ -274,7 +249,6 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
             ParseNumberList("--principal-point", options.principal_point, 2, "CX,CY (px)");
         return Eigen::Vector2d(p[0], p[1]);
       }();
-  contour::ShapeTracker tracker(control, principal, tracker_options);
   // The pose model: the contour paper's weak perspective, or the perspective correction
   // (contour/perspective_pose.h), which needs the true principal point; auto picks it when
   // --principal-point is given.
@@ -284,49 +258,22 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
                      "use auto, weak or perspective");
   }
   const bool perspective = UsesPerspectivePose(options);
-  std::optional<contour::PerspectivePoseModel> perspective_model;
-  if (perspective) perspective_model.emplace(control.colwise() - principal, camera);
-  const contour::PoseOfShape pose_of_shape = [&](const Vector6d& s) {
-    return perspective_model ? perspective_model->Pose(s, *form)
-                             : contour::PoseFromShape(s, camera, *form);
-  };
+  contour::SequenceTracker tracker(
+      {control, principal, camera, *form, perspective, tracker_options});
   io.out << "pose model: "
          << (perspective
                  ? "perspective (weak-perspective bias removed, principal point given)"
                  : "weak perspective (the contour paper's; give --principal-point for perspective)")
          << "\n";
-  const std::vector<fs::path> files = io::ListImageFiles(options.images, "the image sequence");
-
-  std::vector<FrameResult> frames;
-  int width = -1, height = -1;
+#if defined(HECAL_HAVE_OPENCV_PEERS)
   const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
-  for (const fs::path& file : files) {
-    const contour::GrayImage image = ReadGray(file);
-    if (width < 0) {
-      width = image.width();
-      height = image.height();
-    } else if (image.width() != width || image.height() != height) {
-      throw InputError(file.string(), 0,
-                       "the image is " + std::to_string(image.width()) + "×" +
-                           std::to_string(image.height()) + ", the first was " +
-                           std::to_string(width) + "×" + std::to_string(height),
-                       "give a sequence of images of one size");
-    }
-    FrameResult frame;
-    frame.image = file.filename().string();
-    frame.tracked = tracker.Track(image);
-    frame.status = frame.tracked.updated ? "tracked" : "lost";
-    try {
-      frame.pose = contour::UnscentedPose(frame.tracked.shape, frame.tracked.shape_covariance,
-                                          pose_of_shape, *form);
-    } catch (const DegenerateError&) {
-      frame.status = "singular";
-    }
-    // One line per frame on stdout.
+  // One line per frame on stdout, as it is tracked.
+  const auto print = [&](const vision::TrackedImage& image) {
+    const contour::SequenceFrame& frame = image.frame;
     char line[256];
     std::snprintf(line, sizeof line, "%4d %-24s %-8s edges %3d/%3d  σ %.3f px", frame.tracked.frame,
-                  frame.image.c_str(), frame.status.c_str(), frame.tracked.edges_used,
-                  frame.tracked.edges_searched, frame.tracked.sigma);
+                  image.image.c_str(), std::string(contour::FrameStatusName(frame.status)).c_str(),
+                  frame.tracked.edges_used, frame.tracked.edges_searched, frame.tracked.sigma);
     io.out << line;
     if (frame.pose) {
       const Vector6d& p = frame.pose->parameters;
@@ -337,17 +284,22 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
       io.out << line << (frame.pose->any_biased ? "  (bias)" : "");
     }
     io.out << "\n";
-    frames.push_back(std::move(frame));
-  }
+  };
+  const std::vector<vision::TrackedImage> frames =
+      vision::TrackImageSequence(options.images, &tracker, print);
   const std::string unit_note =
       "translation in the unit of --z0 (Z0 = " + io::FormatDouble(camera.z0) + "); pose model " +
       (perspective ? "perspective" : "weak perspective");
   if (output_kind == OutputKind::kCsv) {
     io::WriteFileAtomically(options.output, TrackCsv(frames, *form, unit_note));
   } else if (output_kind == OutputKind::kJson) {
-    io::WriteFileAtomically(options.output,
-                            TrackJson(frames, options, camera, principal, *form, tracker));
+    io::WriteFileAtomically(
+        options.output, TrackJson(frames, options, camera, principal, *form, tracker.tracker()));
   }
+#else
+  (void)output_kind;
+  NeedsVision("--images");
+#endif
 }
 
 // ---- render ------------------------------------------------------------------------------------
@@ -381,88 +333,77 @@ std::optional<fs::path> CreateFolder(const std::string& output) {
   return topmost;
 }
 
-void RenderFrames(const ContourRenderOptions& options, const contour::ContourCamera& camera,
-                  int frames, const std::vector<double>& from, const std::vector<double>& to,
-                  int width, int height, contour::RenderOptions render, std::uint64_t seed,
-                  const Eigen::Matrix2Xd& target_points, const contour::ClosedBSpline& target,
-                  const Io& io) {
-  io::StagedFiles staged;
-  const Eigen::Vector2d principal((width - 1) / 2.0, (height - 1) / 2.0);
+std::string FrameName(int t) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04d.png", t);
+  return name;
+}
+
+// truth.csv: the motion of every frame and the weak-perspective S of it.
+std::string TruthCsv(const contour::SequenceRenderOptions& options,
+                     const contour::RenderedSequence& rendered) {
   std::string truth =
       "# hecal " + std::string(kVersion) +
       " contour render: x_camera = R p + (Tx, Ty, Z0 + Tz), R = Rz(Rz) Ry(Ry) Rx(Rx); Z0 = " +
-      io::FormatDouble(camera.z0) + ", f = " + io::FormatDouble(camera.focal) +
-      " px, principal point " + io::FormatDouble(principal.x()) + "," +
-      io::FormatDouble(principal.y()) +
+      io::FormatDouble(options.camera.z0) + ", f = " + io::FormatDouble(options.camera.focal) +
+      " px, principal point " + io::FormatDouble(rendered.principal.x()) + "," +
+      io::FormatDouble(rendered.principal.y()) +
       "; tx..m12: the weak-perspective shape vector of the motion (tx, ty in px); noise seed " +
-      std::to_string(seed) +
+      std::to_string(options.seed) +
       "\n"
       "frame,image,Tx,Ty,Tz,Rx_deg,Ry_deg,Rz_deg,tx,ty,m11m1,m22m1,m21,m12\n";
-  std::string init;
-  int outside = 0;
-  for (int t = 0; t < frames; ++t) {
-    const double u = frames > 1 ? static_cast<double>(t) / (frames - 1) : 0.0;
-    Vector6d motion;
-    for (int i = 0; i < 6; ++i) {
-      motion(i) = from[static_cast<std::size_t>(i)] +
-                  u * (to[static_cast<std::size_t>(i)] - from[static_cast<std::size_t>(i)]);
-    }
-    const Eigen::Vector3d translation = motion.head<3>();
-    const Eigen::Matrix3d rotation =
-        contour::RotationZyx(motion(3) / kDegrees, motion(4) / kDegrees, motion(5) / kDegrees);
-    const Eigen::Matrix2Xd outline =
-        contour::PerspectiveOutline(target, rotation, translation, camera, principal);
-    if (outline.row(0).minCoeff() < 0.0 || outline.row(1).minCoeff() < 0.0 ||
-        outline.row(0).maxCoeff() > width - 1.0 || outline.row(1).maxCoeff() > height - 1.0) {
-      ++outside;
-    }
-    render.seed = SplitMix64(seed) + static_cast<std::uint64_t>(t);
-    const contour::GrayImage image = contour::RenderPolygon(outline, width, height, render);
-    cv::Mat pixels(height, width, CV_8UC1);
-    for (int y = 0; y < height; ++y) {
-      unsigned char* row = pixels.ptr<unsigned char>(y);
-      for (int x = 0; x < width; ++x) row[x] = static_cast<unsigned char>(image.at(x, y));
-    }
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%04d.png", t);
-    const std::string path = (fs::path(options.output) / name).string();
-    std::vector<unsigned char> png;
-    if (!cv::imencode(".png", pixels, png)) {
-      throw InputError(path, 0, "cannot encode the image", "check the OpenCV build (PNG support)");
-    }
-    staged.Stage("--output", path,
-                 std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
-    truth += std::to_string(t) + "," + name;
+  for (const contour::RenderedFrame& frame : rendered.frames) {
+    truth += std::to_string(frame.index) + "," + FrameName(frame.index);
     for (int i = 0; i < 6; ++i) {
       truth += ",";
-      io::AppendDouble(motion(i), &truth);
+      io::AppendDouble(frame.motion(i), &truth);
     }
-    const Vector6d shape = contour::ShapeFromPose(rotation, translation, camera);
     for (int i = 0; i < 6; ++i) {
       truth += ",";
-      io::AppendDouble(shape(i), &truth);
+      io::AppendDouble(frame.shape(i), &truth);
     }
     truth += "\n";
-    if (t == 0) {
-      const Eigen::Matrix2Xd first =
-          contour::ProjectPerspective(target_points, rotation, translation, camera).colwise() +
-          principal;
-      init = "# hecal contour render: control points of the first view (px)\nx,y\n";
-      for (Eigen::Index i = 0; i < first.cols(); ++i) {
-        io::AppendDouble(first(0, i), &init);
-        init += ",";
-        io::AppendDouble(first(1, i), &init);
-        init += "\n";
-      }
-    }
   }
-  staged.Stage("--output", (fs::path(options.output) / "init.csv").string(), init);
-  staged.Stage("--output", (fs::path(options.output) / "truth.csv").string(), truth);
+  return truth;
+}
+
+// init.csv: the control points of the first view, ready for `track --init`.
+std::string InitCsv(const contour::RenderedSequence& rendered) {
+  std::string init = "# hecal contour render: control points of the first view (px)\nx,y\n";
+  for (Eigen::Index i = 0; i < rendered.first_view.cols(); ++i) {
+    io::AppendDouble(rendered.first_view(0, i), &init);
+    init += ",";
+    io::AppendDouble(rendered.first_view(1, i), &init);
+    init += "\n";
+  }
+  return init;
+}
+
+// Renders the sequence into the output folder (created before the first frame is written):
+// every file is staged and renamed when all are rendered (io/atomic_file.h). `created` receives
+// the topmost folder created, to remove on failure.
+void RenderFrames(const ContourRenderOptions& options,
+                  const contour::SequenceRenderOptions& sequence, std::optional<fs::path>* created,
+                  const Io& io) {
+  io::StagedFiles staged;
+  bool folder_ready = false;
+  const contour::RenderedSequence rendered = contour::RenderSequence(
+      sequence, [&](const contour::RenderedFrame& frame, const contour::GrayImage& image) {
+        if (!folder_ready) {
+          *created = CreateFolder(options.output);
+          folder_ready = true;
+        }
+        const std::string path = (fs::path(options.output) / FrameName(frame.index)).string();
+        staged.Stage("--output", path, vision::EncodePng(image, path));
+      });
+  staged.Stage("--output", (fs::path(options.output) / "init.csv").string(), InitCsv(rendered));
+  staged.Stage("--output", (fs::path(options.output) / "truth.csv").string(),
+               TruthCsv(sequence, rendered));
   staged.Commit();
-  io.out << "rendered " << frames << " frames (" << width << "×" << height << ") to "
-         << options.output << "\n";
-  if (outside > 0) {
-    io.err << "hecal: warning: the target leaves the image in " << outside
+  io.out << "rendered " << sequence.frames << " frames (" << sequence.width << "×"
+         << sequence.height << ") to " << options.output << "\n";
+  if (rendered.outside > 0) {
+    io.err << "hecal: warning: the target leaves the image in " << rendered.outside
            << " frame(s); the tracker cannot follow it there (fix: a smaller motion or a larger "
               "--size)\n";
   }
@@ -479,9 +420,9 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
       ParseNumberList("--to", options.to, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
   const std::vector<double> size = ParseNumberList("--size", options.size, 2, "W,H (px)");
   for (double v : size) {
-    if (v != std::floor(v) || v < kMinRenderSide || v > kMaxRenderSide) {
+    if (v != std::floor(v) || v < io::kMinImageSide || v > kMaxRenderSide) {
       throw InputError("--size", 0,
-                       "W and H must be whole numbers from " + std::to_string(kMinRenderSide) +
+                       "W and H must be whole numbers from " + std::to_string(io::kMinImageSide) +
                            " to " + std::to_string(kMaxRenderSide),
                        "give the image size in pixels, e.g. 768,576");
     }
@@ -506,34 +447,32 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
   if (render.blur_sigma < 0.0 || render.blur_sigma > 20.0) {
     throw InputError("--blur", 0, "must be 0 … 20 px", "give the optics blur σ (e.g. 0.7)");
   }
-  const std::uint64_t seed = ParseSeed("--seed", options.seed);
+  contour::SequenceRenderOptions sequence;
+  sequence.seed = ParseSeed("--seed", options.seed);
   render.quantize = true;
-  const Eigen::Matrix2Xd target_points =
+  sequence.render = render;
+  sequence.target =
       options.contour.empty() ? contour::DefaultTarget() : ReadContourFile(options.contour);
-  const contour::ClosedBSpline target(target_points);
-  // The ShapeSpace check: a collinear target has no affine deformation to track.
-  const contour::ShapeSpace check(target_points);
-  (void)check;
+  sequence.camera = camera;
+  sequence.frames = frames;
+  sequence.from = Eigen::Map<const Vector6d>(from.data());
+  sequence.to = Eigen::Map<const Vector6d>(to.data());
+  sequence.width = width;
+  sequence.height = height;
 #if !defined(HECAL_HAVE_OPENCV_PEERS)
   (void)io;
-  (void)frames;
-  (void)width;
-  (void)height;
+  (void)sequence;
   NeedsVision("--output");
 #else
-  // Every file is staged in the folder and renamed when all are written (atomic_file.h); a
-  // folder created here is removed again when the command fails.
-  const std::optional<fs::path> created = CreateFolder(options.output);
-  const auto remove_created = [&created] {
-    if (!created) return;
-    std::error_code ignored;
-    fs::remove_all(*created, ignored);
-  };
+  // A folder created here is removed again when the command fails.
+  std::optional<fs::path> created;
   try {
-    RenderFrames(options, camera, frames, from, to, width, height, render, seed, target_points,
-                 target, io);
+    RenderFrames(options, sequence, &created, io);
   } catch (...) {
-    remove_created();
+    if (created) {
+      std::error_code ignored;
+      fs::remove_all(*created, ignored);
+    }
     throw;
   }
 #endif

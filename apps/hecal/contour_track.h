@@ -2,7 +2,9 @@
 // planar contour through an image sequence with the shape-space Kalman filter
 // (contour/shape_tracker.h) and turn every shape vector into the camera motion with its UT
 // covariance (contour/pose_uncertainty.h); and render synthetic sequences with known motion to
-// try it on (contour/render.h).
+// try it on (contour/render.h). The jobs are contour::SequenceTracker and
+// contour::RenderSequence (contour/sequence.h) with the images read and encoded by
+// vision/contour_images.h; these commands parse the flags, print and write the files.
 //
 // hecal contour track --images DIR --init contour.csv --focal F_PX --z0 Z0
 //                     [--principal-point CX,CY] [--init-points control|curve]
@@ -44,10 +46,10 @@
 //   none of them, and removes DIR when it was created. Bounds (bounds.h): 1 … 10000 frames,
 //   8 … 20000 px a side, ≤ 10^8 pixels a frame and 2·10^9 in all, --noise 0 … 255.
 // Errors: bad flags or files (with file:line), a missing or empty folder, an unreadable image
-// (image_read.h: larger than 10^8 pixels, smaller than 8 × 8, cut short or corrupt), an --output
-// that is --init or not a regular file (io/atomic_file.h),
-// images of different sizes, a collinear init contour (DegenerateError) → exit 2; no output
-// file is written then (track writes its output only when every frame is done).
+// (vision/image_read.h: larger than 10^8 pixels, smaller than 8 × 8, cut short or corrupt), an
+// --output that is --init or not a regular file (io/atomic_file.h), images of different sizes, a
+// collinear init contour (DegenerateError) → exit 2; no output file is written then (track writes
+// its output only when every frame is done).
 #pragma once
 
 #include <string>
