@@ -32,7 +32,7 @@
 #include "hecal/contour/contour_study.h"
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
-#include "svg_figure.h"
+#include "hecal/report/svg_figure.h"
 
 namespace hecal::cli {
 namespace {
@@ -85,25 +85,25 @@ std::string MotionLabel(contour::StudyMotion motion) {
 
 std::string Figure3(const contour::ContourStudyOptions& o,
                     const std::vector<contour::StudyStep>& steps) {
-  std::vector<svg::Panel> panels;
+  std::vector<report::svg::Panel> panels;
   for (int j = 0; j < 6; ++j) {
-    svg::Panel panel;
+    report::svg::Panel panel;
     panel.title = std::string(kComponents[j]) + " error";
     panel.x_label = MotionLabel(o.motion);
     panel.y_label = j < 3 ? "mm" : "deg";
     const auto add = [&](const std::string& label, bool dashed, const std::string& color,
                          const auto& mean, const auto& sd) {
-      svg::Line centre, upper, lower;
+      report::svg::Line centre, upper, lower;
       for (const contour::StudyStep& step : steps) {
         const double m = Display(j, mean(step)(j)), s = Display(j, sd(step)(j));
-        for (svg::Line* line : {&centre, &upper, &lower}) line->x.push_back(step.value);
+        for (report::svg::Line* line : {&centre, &upper, &lower}) line->x.push_back(step.value);
         centre.y.push_back(m);
         upper.y.push_back(m + 2 * s);
         lower.y.push_back(m - 2 * s);
       }
       centre.label = label + " mean";
       upper.label = label + " ±2σ";
-      for (svg::Line* line : {&centre, &upper, &lower}) {
+      for (report::svg::Line* line : {&centre, &upper, &lower}) {
         line->dashed = dashed;
         line->color = color;
       }
@@ -120,32 +120,33 @@ std::string Figure3(const contour::ContourStudyOptions& o,
         [](const contour::StudyStep& s) { return s.mc_sd; });
     panels.push_back(std::move(panel));
   }
-  svg::FigureOptions options;
+  report::svg::FigureOptions options;
   options.title = "Pose error (mean ± 2σ) for a motion along " +
                   std::string(contour::StudyMotionName(o.motion)) + ": UT solid, Monte Carlo (" +
                   std::to_string(o.samples) + " samples) dashed";
   options.columns = 3;
-  return svg::Figure(panels, options);
+  return report::svg::Figure(panels, options);
 }
 
 std::string Figure4(const contour::ContourStudyOptions& o, const contour::StudyStep& step) {
-  std::vector<svg::Panel> panels;
+  std::vector<report::svg::Panel> panels;
   const auto error = [&](const Vector6d& pose, int j) {
     return Display(j, contour::PoseDifference(pose, step.truth, contour::RotationForm::kZyx)(j));
   };
   for (int a = 0; a < 6; ++a) {
     for (int b = a + 1; b < 6; ++b) {
-      svg::Panel panel;
+      report::svg::Panel panel;
       panel.title = std::string(kComponents[a]) + " – " + kComponents[b];
       panel.x_label = std::string(kComponents[a]) + (a < 3 ? " (mm)" : " (deg)");
       panel.y_label = std::string(kComponents[b]) + (b < 3 ? " (mm)" : " (deg)");
       panel.legend = a == 0 && b == 1;
-      svg::Points samples{.label = "MC poses", .color = "#2ca02c", .size = 1.0, .opacity = 0.5};
+      report::svg::Points samples{
+          .label = "MC poses", .color = "#2ca02c", .size = 1.0, .opacity = 0.5};
       for (const Vector6d& p : step.mc_poses) samples.xy.emplace_back(error(p, a), error(p, b));
-      svg::Points sigma{.label = "sigma points",
-                        .color = "#1f77b4",
-                        .marker = svg::Points::Marker::kCross,
-                        .size = 4.0};
+      report::svg::Points sigma{.label = "sigma points",
+                                .color = "#1f77b4",
+                                .marker = report::svg::Points::Marker::kCross,
+                                .size = 4.0};
       for (const Vector6d& p : step.sigma_poses) sigma.xy.emplace_back(error(p, a), error(p, b));
       const auto block = [&](const Matrix6d& C) {
         Eigen::Matrix2d B;
@@ -153,7 +154,7 @@ std::string Figure4(const contour::ContourStudyOptions& o, const contour::StudyS
             Display(a, Display(b, C(b, a))), Display(b, Display(b, C(b, b)));
         return B;
       };
-      svg::Points mean{.label = "MC mean", .color = "#d62728", .size = 3.0};
+      report::svg::Points mean{.label = "MC mean", .color = "#d62728", .size = 3.0};
       mean.xy.emplace_back(Display(a, step.mc_mean_error(a)), Display(b, step.mc_mean_error(b)));
       panel.points = {samples, sigma, mean};
       panel.ellipses.push_back({.label = "MC 2σ",
@@ -173,12 +174,12 @@ std::string Figure4(const contour::ContourStudyOptions& o, const contour::StudyS
   title << "Pose covariance, " << contour::StudyMotionName(o.motion) << " = " << step.value
         << (contour::IsRotation(o.motion) ? "°" : " mm")
         << ": errors (mm, deg), Monte Carlo dashed, UT solid, 2σ";
-  svg::FigureOptions options;
+  report::svg::FigureOptions options;
   options.title = title.str();
   options.columns = 5;
   options.panel_width = 300;
   options.panel_height = 240;
-  return svg::Figure(panels, options);
+  return report::svg::Figure(panels, options);
 }
 
 void PrintTable(std::ostream& out, const contour::ContourStudyOptions& o,

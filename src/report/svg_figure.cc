@@ -1,4 +1,4 @@
-#include "svg_figure.h"
+#include "hecal/report/svg_figure.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <set>
 #include <system_error>
 
-namespace hecal::cli::svg {
+namespace hecal::report::svg {
 namespace {
 
 // Layout in pixels.
@@ -636,4 +636,4 @@ std::string Figure(const std::vector<Panel>& panels, const FigureOptions& option
   return out;
 }
 
-}  // namespace hecal::cli::svg
+}  // namespace hecal::report::svg

@@ -1,6 +1,6 @@
 // svg::Figure: well-formed XML, escaping, data → pixel mapping, covariance ellipses, broken
 // lines, nice ticks and the legend.
-#include "svg_figure.h"
+#include "hecal/report/svg_figure.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace hecal::cli::svg {
+namespace hecal::report::svg {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -580,4 +580,4 @@ TEST(SvgFigure, LegendListsEachNonEmptyLabelOnce) {
 }
 
 }  // namespace
-}  // namespace hecal::cli::svg
+}  // namespace hecal::report::svg

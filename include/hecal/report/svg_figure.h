@@ -1,6 +1,8 @@
-// A small, dependency-free SVG figure writer for the CLI: a grid of 2-D plot panels, each with
-// line plots (solid or dashed, e.g. mean error and ±2σ bands versus a motion value), scatter
-// points (dots, circles, crosses) and k-sigma covariance ellipses, drawn like a paper figure.
+// A small, dependency-free SVG figure writer for reports (`hecal contour study --plot` and
+// --covariance-plot, docs/contour.md#the-experiments): a grid of 2-D plot panels, each with line
+// plots (solid or dashed, e.g. mean error and ±2σ bands versus a motion value), scatter points
+// (dots, circles, crosses) and k-sigma covariance ellipses, drawn like a paper figure. Units are
+// the data's; the figure maps them to SVG user units (px). No errors: every input draws.
 //
 //   svg::Panel panel{.title = "rotation", .x_label = "motion (deg)", .y_label = "error (deg)"};
 //   panel.lines.push_back({.label = "mean", .x = motion, .y = mean});
@@ -30,7 +32,7 @@
 #include <string_view>
 #include <vector>
 
-namespace hecal::cli::svg {
+namespace hecal::report::svg {
 
 // A polyline through (x[i], y[i]); the longer of x and y is cut to the shorter.
 struct Line {
@@ -132,4 +134,4 @@ EllipseAxes AxesOf(const Eigen::Matrix2d& covariance, double scale);
 // newline) removed, so it can go into SVG text or attribute values.
 std::string EscapeXml(std::string_view text);
 
-}  // namespace hecal::cli::svg
+}  // namespace hecal::report::svg
