@@ -110,10 +110,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
 
-// Step 2 above: the robot row of every image of `set`, by id = file stem when the rows have ids
-// and they name the images, else by sorted file name. Ids that name no image at all (e.g. the
-// row numbers `hecal import` writes) do not pair by id: then the rows pair by order, with a note
-// on io.err. Returns one pose per image of `set`, in its order. Defined with the vision layer.
+// Step 2 above (io::PairRobotWithStations, io/image_pairing.h), its notes printed on io.err:
+// one robot pose per image of `set`, in its order. Defined with the vision layer.
 std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const vision::ImageSet& set,
                                     const std::string& images_dir, const Io& io);
 

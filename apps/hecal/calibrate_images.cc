@@ -19,6 +19,7 @@
 #include "hecal/estimation/image_calibration.h"
 #include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
+#include "hecal/io/image_pairing.h"
 #include "image_report.h"
 #endif
 
@@ -73,57 +74,13 @@ void PrintImageTable(std::ostream& out, const report::ResultDocument& document,
 
 std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& set,
                                     const std::string& images_dir, const Io& io) {
-  const bool have_ids =
-      !robot.rows.empty() && std::all_of(robot.rows.begin(), robot.rows.end(),
-                                         [](const io::PoseRow& row) { return row.id.has_value(); });
-  const bool by_id =
-      have_ids && std::any_of(robot.rows.begin(), robot.rows.end(), [&set](const io::PoseRow& row) {
-        return std::any_of(set.images.begin(), set.images.end(),
-                           [&row](const ImageRecord& image) { return image.id() == *row.id; });
-      });
-  if (have_ids && !by_id) {
-    io.err << "hecal: note: " << robot.source
-           << ": no id equals an image's file stem; pairing the rows with the images in sorted "
-              "file-name order\n";
-  }
-  std::vector<Pose> poses;
-  if (!by_id) {
-    if (robot.rows.size() != set.images.size()) {
-      throw InputError(robot.source, 0,
-                       "has " + std::to_string(robot.rows.size()) + " poses but " + images_dir +
-                           " has " + std::to_string(set.images.size()) + " images",
-                       "give one robot pose per image file, in sorted file-name order (images "
-                       "where the target is not found count too), or add an id column equal to "
-                       "each image's file stem");
-    }
-    for (const io::PoseRow& row : robot.rows) poses.push_back(row.pose);
-    return poses;
-  }
-  std::map<std::string, const io::PoseRow*> rows;
-  for (const io::PoseRow& row : robot.rows) {
-    if (const auto [it, inserted] = rows.emplace(*row.id, &row); !inserted) {
-      throw InputError(
-          robot.source, row.line,
-          "id '" + *row.id + "' repeats (first at line " + std::to_string(it->second->line) + ")",
-          "give every row its own id");
-    }
-  }
+  std::vector<io::StationImage> stations;
   for (const ImageRecord& image : set.images) {
-    const auto match = rows.find(image.id());
-    if (match == rows.end()) {
-      throw InputError(robot.source, 0,
-                       "no row with id '" + image.id() + "' for the image " + image.name,
-                       "add the robot pose of that image with id '" + image.id() +
-                           "', remove the image, or drop the id column to pair by sorted name");
-    }
-    poses.push_back(match->second->pose);
-    rows.erase(match);
+    stations.push_back({image.station, image.path, image.name});
   }
-  for (const auto& [id, row] : rows) {
-    io.err << "hecal: note: " << robot.source << ":" << row->line << ": id '" << id
-           << "' has no image in " << images_dir << "; left out\n";
-  }
-  return poses;
+  return io::PairRobotWithStations(robot, stations, images_dir, [&io](const std::string& note) {
+    io.err << "hecal: note: " << note << "\n";
+  });
 }
 
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
