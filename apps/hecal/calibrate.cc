@@ -20,6 +20,7 @@
 #include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/report/pose_calibration.h"
 
 namespace hecal::cli {
 namespace {
@@ -256,17 +257,6 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   return settings;
 }
 
-void CheckFiniteResult(const estimation::CalibrationResult& result) {
-  const bool finite = result.X.matrix().allFinite() && result.Z.matrix().allFinite() &&
-                      std::isfinite(result.rotation_rms) && std::isfinite(result.translation_rms) &&
-                      (!result.covariance || result.covariance->covariance.allFinite());
-  if (!finite) {
-    throw DegenerateError("X and Z: the solution is not finite",
-                          "check the poses' values and units (lengths far beyond a robot's "
-                          "reach overflow the solver)");
-  }
-}
-
 namespace {
 
 // The same poses as robot and camera (one file given twice, or a copy) cannot calibrate anything.
@@ -288,9 +278,10 @@ void RefuseSameFile(const CalibrateFlags& flags, const io::Stations& stations) {
   }
 }
 
-void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, const Io& io) {
+void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& settings,
+                       const Io& io) {
   const bool all = settings.all;
-  estimation::CalibrateOptions& options = settings.options;
+  const estimation::CalibrateOptions& options = settings.options;
   const io::PoseReadOptions& read = settings.read;
   io::PoseReadOptions robot_read = read;
   robot_read.invert = flags.robot_inverse;
@@ -316,43 +307,14 @@ void RunCalibratePoses(const CalibrateFlags& flags, CalibrateSettings settings, 
   const handeye::Setup setup = check.setup;
   const handeye::Problem problem = handeye::MakeProblem(setup, stations.robot, stations.camera);
 
-  report::ResultDocument document;
-  document.setup = setup;
-  document.unit = robot.unit;
-  document.station_ids = stations.ids;
-  document.all_methods = all;
-  options.station_ids = stations.ids;
-  // One selection of stations for every method.
-  const estimation::StationSelection selection = estimation::SelectStationsFor(problem, options);
-  document.rejected = selection.Rejected();
-  if (all) {
-    // Degenerate data stop every method: then the first error is the answer. A method that
-    // refuses data the others accept is reported and skipped.
-    std::exception_ptr first_error;
-    for (const handeye::MethodInfo& info : handeye::AllMethods()) {
-      options.method = info.method;
-      try {
-        document.results.push_back(estimation::Calibrate(problem, options, selection));
-      } catch (const DegenerateError& error) {
-        if (!first_error) first_error = std::current_exception();
-        document.failures.push_back({info.method, error.what()});
-      }
-    }
-    if (document.results.empty()) std::rethrow_exception(first_error);
-  } else {
-    document.results.push_back(estimation::Calibrate(problem, options, selection));
-  }
-  const estimation::PlausibilityInput plausibility{setup, stations.robot, stations.camera,
-                                                   robot.unit_named, camera.unit_named};
-  for (estimation::CalibrationResult& result : document.results) {
-    std::vector<std::string> notes = check.notes;
-    notes.insert(notes.end(), robot.warnings.begin(), robot.warnings.end());
-    notes.insert(notes.end(), camera.warnings.begin(), camera.warnings.end());
-    for (std::string& warning : estimation::PlausibilityWarnings(plausibility, result))
-      notes.push_back(std::move(warning));
-    result.warnings.insert(result.warnings.begin(), notes.begin(), notes.end());
-  }
-  for (const estimation::CalibrationResult& result : document.results) CheckFiniteResult(result);
+  report::PoseCalibrationInput input{
+      problem, robot.unit, stations.ids,
+      estimation::PlausibilityInput{setup, stations.robot, stations.camera, robot.unit_named,
+                                    camera.unit_named},
+      check.notes};
+  input.notes.insert(input.notes.end(), robot.warnings.begin(), robot.warnings.end());
+  input.notes.insert(input.notes.end(), camera.warnings.begin(), camera.warnings.end());
+  const report::ResultDocument document = report::CalibrateFromPoses(input, options, all);
   for (size_t k = 0; k < document.results.size(); ++k) {
     if (k > 0) io.out << "\n";
     PrintSummary(io.out, document, document.results[k]);

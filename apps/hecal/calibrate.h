@@ -78,10 +78,6 @@ struct CalibrateSettings {
 // --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 
-// A result about to be printed and written: X, Z, the residual RMS and the covariance must be
-// finite (README "Reliability"); DegenerateError otherwise.
-void CheckFiniteResult(const estimation::CalibrationResult& result);
-
 // The readable summary of one result: X, Z, their 1σ, the residuals of every station.
 void PrintSummary(std::ostream& out, const report::ResultDocument& document,
                   const estimation::CalibrationResult& result);

@@ -20,6 +20,7 @@
 #include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/image_pairing.h"
+#include "hecal/report/pose_calibration.h"
 #include "image_report.h"
 #endif
 
@@ -211,7 +212,7 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   report.image_rms_px = result.reprojection.image_rms_px;
   report.image_outlier = result.reprojection.image_outlier;
   report.pose_level = result.pose_level;
-  CheckFiniteResult(result.result);
+  report::CheckFiniteResult(result.result);
   document.results.push_back(result.result);
   document.images = report;
 
