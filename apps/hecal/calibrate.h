@@ -83,9 +83,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
                   const estimation::CalibrationResult& result);
 
 // `hecal calibrate --images`:
-//   1. the image front end of vision/image_set.h: detection, intrinsics (given or estimated), PnP
-//   poses
-//      with covariances, and the per-image report;
+//   1. the image front end of vision/image_set.h: detection, intrinsics (given or estimated),
+//      PnP poses with covariances, and the per-image report;
 //   2. pairing with the robot rows (docs/targets.md): when every robot row has an id and some id
 //      is an image's file stem, by id (each image needs a row; rows without an image are left
 //      out with a note); otherwise by sorted file name — one robot row per image file, in order,
@@ -98,8 +97,8 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 //      "refinement": "reprojection" and an "images" section (intrinsics, pixel sigma, per-image
 //      RMS and flags, skipped images and why, the pose-level X and Z). Skipped images are the
 //      result's rejected stations.
-// Errors (InputError, exit 2, nothing written): those of vision/image_set.h, of the robot file, the
-// pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera,
+// Errors (InputError, exit 2, nothing written): those of vision/image_set.h, of the robot file,
+// the pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera,
 // --covariance unscented (its input would be every pixel's noise). The covariance is the linear
 // one of the reprojection problem (pixel and robot noise), or --covariance montecarlo's
 // (estimation/image_monte_carlo.h).
@@ -117,14 +116,14 @@ std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const vision::Im
 // pixels are undistorted through the intrinsics, bearings are taken as they are) — or, with
 // `--images DIR --target target.yaml --intrinsics camera.yaml` instead of the file, the target
 // corners detected in the images (vision/image_set.h), matched by their ids between consecutive
-// usable stations (the target's geometry is not used); then removes wrong matches
-// (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel sigma 0.5 px unless
-// given), certifies the L∞ optimum (global/branch_and_bound.h), polishes it in L2 with a covariance
-// (estimation/epipolar_polish.h), prints a summary and writes the result file (JSON): X,
-// `certificate` {lower, upper, cubes, lps, seconds, certified, epsilon}, the inliers, the removed
-// matches with their ids, `covariance` of X (ω, v right perturbation). Errors (InputError, exit 2,
-// nothing written): a missing or unreadable file, a station the robot file does not have, pixels
-// without --intrinsics, a pixel that cannot be undistorted,
+// usable stations (the target's geometry is not used); then removes
+// wrong matches (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel
+// sigma 0.5 px unless given), certifies the L∞ optimum (global/branch_and_bound.h), polishes
+// it in L2 with a covariance (estimation/epipolar_polish.h), prints a summary and writes the
+// result file (JSON): X, `certificate` {lower, upper, cubes, lps, seconds, certified, epsilon},
+// the inliers, the removed matches with their ids, `covariance` of X (ω, v right perturbation).
+// Errors (InputError, exit 2, nothing written): a missing or unreadable file, a station the
+// robot file does not have, pixels without --intrinsics, a pixel that cannot be undistorted,
 // --setup auto, --camera, --images with --correspondences, --images without --intrinsics or
 // with --target none (generic feature matching is not built), the image front end's errors, a
 // non-positive --epsilon or --reach, too few matches.
