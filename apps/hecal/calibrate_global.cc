@@ -268,7 +268,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
          << "] rad" << (c.certified ? " (certified)" : " (gap not closed)") << ", " << c.cubes
          << " cubes, " << c.lps << " LPs, " << c.seconds << " s\n"
          << "matches: " << global::PairCount(robust.inliers) << " inliers, "
-         << robust.removed.size() << " removed\n";
+         << robust.removed.size() << " removed (threshold " << robust.threshold << " rad)\n";
 
   if (flags.output.empty()) return;
   nlohmann::json doc;
@@ -297,7 +297,9 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                        {"ray_sigma_rad", polish.ray_sigma}};
   doc["polish"] = {{"rms_rad", polish.rms}, {"pairs", polish.pairs}};
   doc["matches"] = {{"inliers", global::PairCount(robust.inliers)},
-                    {"threshold_rad", outliers.threshold},
+                    {"threshold_rad", robust.threshold},
+                    {"pixel_threshold_rad", outliers.threshold},
+                    {"error_scale_rad", robust.error_scale},
                     {"pixel_sigma", pixel_sigma}};
   nlohmann::json removed = nlohmann::json::array();
   for (const global::RemovedPair& r : robust.removed) {

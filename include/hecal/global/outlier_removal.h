@@ -23,7 +23,10 @@
 namespace hecal::global {
 
 struct OutlierOptions {
-  double threshold = 3e-3;  // radians of ray: the largest error an inlier may have
+  double threshold = 3e-3;  // radians of ray: the largest error an inlier may have (at least)
+  // The L∞ rounds use max(threshold, error_level_multiple · s), s the data's own error scale
+  // at the local start (see SolveGlobalRobust).
+  double error_level_multiple = 4.0;
   int ransac_iterations = 500;
   int max_rounds = 20;  // L∞ removal rounds
   std::uint64_t seed = 1;
@@ -39,7 +42,9 @@ struct RobustGlobalSolution {
   GlobalSolution solution;  // on the inliers (the certificate of the last solve)
   EpipolarProblem inliers;  // the problem without the removed pairs
   std::vector<RemovedPair> removed;
-  int rounds = 0;  // global solves
+  int rounds = 0;            // global solves
+  double error_scale = 0.0;  // s (radians; 0 without a local start)
+  double threshold = 0.0;    // the L∞ rounds' threshold (radians)
 };
 
 // The problem without the pairs the pre-filter rejects (step 1); appends them to `removed`.
