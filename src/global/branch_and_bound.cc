@@ -59,7 +59,11 @@ class Search {
     while (best_error_ - lower > Gap() && best_error_ > options_.stop_below &&
            cubes_ < options_.max_cubes) {
       const double top = std::min(best_error_, ceiling);
-      if (top - lower <= 0.5 * Gap()) break;  // only undecided levels are left
+      if (top - lower <= 0.5 * Gap()) {
+        // Only undecided levels are left: retry them (the allowance has grown with the search).
+        ceiling = std::numeric_limits<double>::infinity();
+        continue;
+      }
       const double level = std::isfinite(top) ? 0.5 * (lower + top) : M_PI / 4;
       switch (Decide(level)) {
         case Answer::kYes:

@@ -18,11 +18,12 @@
 // level may test as many cubes as the whole search before it (at least 20,000), and again as
 // many while that lowers `upper`; then it is left undecided and becomes a ceiling, and the next
 // levels bisect between `lower` and it (proofs there still raise `lower`). It stops when
-// upper − lower ≤ max(options.epsilon, options.relative_gap · upper) (the certificate), when only
-// undecided levels are left (ceiling − lower ≤ half that gap), or when a budget runs out (cubes,
-// or cube size below options.min_half_width): then `certified` is false and the bounds are what
-// was proved. The incumbent comes from options.start (SolveGlobalRobust passes the local start,
-// local_start.h). Results do not depend on the thread count.
+// upper − lower ≤ max(options.epsilon, options.relative_gap · upper) (the certificate), or when
+// a budget runs out (cubes, or cube size below options.min_half_width); when only undecided
+// levels are left (ceiling − lower ≤ half that gap) the ceiling is lifted and they are tried
+// again with the allowance the search has grown to. When a budget runs out `certified` is false
+// and the bounds are what was proved. The incumbent comes from options.start (SolveGlobalRobust
+// passes the local start, local_start.h). Results do not depend on the thread count.
 //
 // The relative gap is for noisy data: there the optimum is of the order of the ray noise, and
 // closing an absolute gap far below it needs cubes far smaller than the noise (their number
