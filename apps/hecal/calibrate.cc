@@ -392,6 +392,11 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                    "With --method global: or this fraction of the optimum, when larger")
       ->capture_default_str();
   command
+      ->add_option("--max-cubes", flags->max_cubes,
+                   "With --method global: stop after this many cube tests with the bounds "
+                   "proved so far")
+      ->capture_default_str();
+  command
       ->add_option("--reach", flags->reach,
                    "With --method global: search X's translation up to this length, metres")
       ->capture_default_str();

@@ -229,6 +229,10 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
     throw InputError("--reach", 0, "must be above 0 and at most 1000 m",
                      "give the largest camera offset from the hand in metres, e.g. 2");
   }
+  if (!(flags.max_cubes >= 1)) {
+    throw InputError("--max-cubes", 0, "must be at least 1",
+                     "give the search's budget of cube tests, e.g. 1000000");
+  }
   const int threads = ParseThreads("--threads", flags.threads);
   const std::uint64_t seed = ParseSeed("--seed", flags.seed);
   double pixel_sigma = 0.5;
@@ -245,14 +249,21 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   search.epsilon = flags.epsilon;
   search.relative_gap = flags.relative_gap;
   search.translation_bound = flags.reach;
+  search.max_cubes = flags.max_cubes;
   search.threads = threads;
   global::OutlierOptions outliers;
   outliers.threshold = 4.0 * std::sqrt(2.0) * pixel_sigma / input.focal;
   outliers.seed = seed;
   const global::RobustGlobalSolution robust =
       global::SolveGlobalRobust(input.problem, search, outliers);
-  const estimation::EpipolarPolish polish =
-      estimation::PolishEpipolar(robust.inliers, robust.solution.X);
+  const estimation::RecheckedPolish rechecked =
+      estimation::PolishAndRecheck(input.problem, robust.inliers, robust.solution.X);
+  const estimation::EpipolarPolish& polish = rechecked.polish;
+  // The stage that removed each pair the re-check leaves out (pairs it re-admits are not listed).
+  std::map<std::pair<int, int>, std::string> stage;
+  for (const global::RemovedPair& r : robust.removed) {
+    stage[{r.motion, r.id}] = r.by_prefilter ? "epipolar ransac" : "l-infinity support set";
+  }
   const global::Certificate& c = robust.solution.certificate;
 
   const double metres = io::MetresPer(*io::ParseLengthUnit(flags.units));
@@ -267,8 +278,9 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
          << std::setprecision(4) << "certificate: max ray error in [" << c.lower << ", " << c.upper
          << "] rad" << (c.certified ? " (certified)" : " (gap not closed)") << ", " << c.cubes
          << " cubes, " << c.lps << " LPs, " << c.seconds << " s\n"
-         << "matches: " << global::PairCount(robust.inliers) << " inliers, "
-         << robust.removed.size() << " removed\n";
+         << "matches: " << global::PairCount(rechecked.inliers) << " inliers, "
+         << rechecked.removed.size() << " removed (L∞ threshold " << robust.threshold
+         << " rad, then the re-check at the polished X)\n";
 
   if (flags.output.empty()) return;
   nlohmann::json doc;
@@ -296,15 +308,18 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                        {"convention", "right perturbation (rx, ry, rz, tx, ty, tz), rad and m"},
                        {"ray_sigma_rad", polish.ray_sigma}};
   doc["polish"] = {{"rms_rad", polish.rms}, {"pairs", polish.pairs}};
-  doc["matches"] = {{"inliers", global::PairCount(robust.inliers)},
-                    {"threshold_rad", outliers.threshold},
+  doc["matches"] = {{"inliers", global::PairCount(rechecked.inliers)},
+                    {"threshold_rad", robust.threshold},
+                    {"pixel_threshold_rad", outliers.threshold},
+                    {"error_scale_rad", robust.error_scale},
                     {"pixel_sigma", pixel_sigma}};
   nlohmann::json removed = nlohmann::json::array();
-  for (const global::RemovedPair& r : robust.removed) {
-    removed.push_back({{"first", input.motion_names[r.motion].first},
-                       {"second", input.motion_names[r.motion].second},
-                       {"id", r.id},
-                       {"by", r.by_prefilter ? "epipolar ransac" : "l-infinity support set"}});
+  for (const auto& [motion, id] : rechecked.removed) {
+    const auto by = stage.find({motion, id});
+    removed.push_back({{"first", input.motion_names[motion].first},
+                       {"second", input.motion_names[motion].second},
+                       {"id", id},
+                       {"by", by != stage.end() ? by->second : "re-check at the polished X"}});
   }
   doc["matches"]["removed"] = removed;
   io::WriteFileAtomically(flags.output, doc.dump(2) + "\n");

@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 #include <ceres/rotation.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "hecal/core/error.h"
@@ -120,6 +121,50 @@ EpipolarPolish PolishEpipolar(const global::EpipolarProblem& problem, const Pose
   const Matrix6d information = J.transpose() * J;
   polish.covariance = polish.ray_sigma * polish.ray_sigma * Matrix6d(information.inverse());
   return polish;
+}
+
+RecheckedPolish PolishAndRecheck(const global::EpipolarProblem& all,
+                                 const global::EpipolarProblem& inliers, const Pose& start,
+                                 std::optional<double> ray_sigma, double k) {
+  RecheckedPolish result;
+  result.inliers = inliers;
+  result.polish = PolishEpipolar(inliers, start, ray_sigma);
+  for (int round = 0; round < 5; ++round) {
+    double sigma = 0.0;
+    if (ray_sigma) {
+      sigma = *ray_sigma;
+    } else {
+      std::vector<double> kept;
+      for (const global::EpipolarMotion& motion : result.inliers.motions) {
+        for (const global::BearingPair& pair : motion.pairs) {
+          kept.push_back(std::abs(SampsonAngle(result.polish.X, motion.hand, pair)));
+        }
+      }
+      std::nth_element(kept.begin(), kept.begin() + kept.size() / 2, kept.end());
+      // At least 1e-8 rad (1e-5 px at f = 1000 px): below that the residuals of noise-free data
+      // are rounding in the ray geometry, not a scale to test against.
+      sigma = std::max(1e-8, 1.4826 * kept[kept.size() / 2]);
+    }
+    global::EpipolarProblem next = all;
+    std::vector<std::pair<int, int>> removed;
+    for (std::size_t m = 0; m < all.motions.size(); ++m) {
+      std::vector<global::BearingPair>& pairs = next.motions[m].pairs;
+      pairs.clear();
+      for (const global::BearingPair& pair : all.motions[m].pairs) {
+        if (std::abs(SampsonAngle(result.polish.X, all.motions[m].hand, pair)) <= k * sigma) {
+          pairs.push_back(pair);
+        } else {
+          removed.emplace_back(int(m), pair.id);
+        }
+      }
+    }
+    if (removed == result.removed && round > 0) break;
+    if (global::PairCount(next) < 7) break;  // keep the last usable set
+    result.inliers = std::move(next);
+    result.removed = std::move(removed);
+    result.polish = PolishEpipolar(result.inliers, result.polish.X, ray_sigma);
+  }
+  return result;
 }
 
 }  // namespace hecal::estimation

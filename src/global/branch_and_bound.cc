@@ -52,9 +52,19 @@ class Search {
   GlobalSolution Run() {
     const auto begin = std::chrono::steady_clock::now();
     double lower = 0.0;
-    bool stuck = false;
-    while (best_error_ - lower > Gap() && best_error_ > options_.stop_below && !stuck) {
-      const double level = std::isfinite(best_error_) ? 0.5 * (lower + best_error_) : M_PI / 4;
+    // A level just below the optimum needs cubes as small as its distance to the optimum, far
+    // more than its neighbours: one left undecided after its budget becomes a ceiling, and the
+    // next levels bisect below it (each proof still raises `lower`).
+    double ceiling = std::numeric_limits<double>::infinity();
+    while (best_error_ - lower > Gap() && best_error_ > options_.stop_below &&
+           cubes_ < options_.max_cubes) {
+      const double top = std::min(best_error_, ceiling);
+      if (top - lower <= 0.5 * Gap()) {
+        // Only undecided levels are left: retry them (the allowance has grown with the search).
+        ceiling = std::numeric_limits<double>::infinity();
+        continue;
+      }
+      const double level = std::isfinite(top) ? 0.5 * (lower + top) : M_PI / 4;
       switch (Decide(level)) {
         case Answer::kYes:
           break;  // best_error_ ≤ level + (old upper − level) / 4
@@ -62,7 +72,7 @@ class Search {
           lower = level;
           break;
         case Answer::kUnknown:
-          stuck = true;
+          ceiling = level;
           break;
       }
     }
@@ -134,8 +144,18 @@ class Search {
     // A heap with the lowest score on top: best first without re-sorting the whole front.
     const auto later = [](const Cube& a, const Cube& b) { return a.score > b.score; };
     std::make_heap(work.begin(), work.end(), later);
+    // A level may test as many cubes as the whole search before it (at least kMinLevelCubes),
+    // and again as many while that finds better candidates; then it is left undecided (Run).
+    constexpr long kMinLevelCubes = 20'000;
+    const long allowance = std::max(kMinLevelCubes, cubes_);
+    long budget = std::min(options_.max_cubes, cubes_ + allowance);
+    double error_at_budget = best_error_;
     while (!work.empty() && !found) {
-      if (cubes_ >= options_.max_cubes) {
+      if (cubes_ >= budget && best_error_ < error_at_budget && budget < options_.max_cubes) {
+        budget = std::min(options_.max_cubes, budget + allowance);
+        error_at_budget = best_error_;
+      }
+      if (cubes_ >= budget) {
         unresolved = true;
         break;
       }

@@ -1,38 +1,13 @@
 #include "hecal/global/outlier_removal.h"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <random>
 
+#include "hecal/global/essential_matrix.h"
+#include "hecal/global/local_start.h"
+
 namespace hecal::global {
-namespace {
-
-double SampsonError(const Eigen::Matrix3d& E, const BearingPair& pair) {
-  const Eigen::Vector3d v = pair.first.normalized(), u = pair.second.normalized();
-  const Eigen::Vector3d Eu = E * u, Etv = E.transpose() * v;
-  const double scale =
-      std::sqrt((Eu - v * v.dot(Eu)).squaredNorm() + (Etv - u * u.dot(Etv)).squaredNorm());
-  return scale > 0 ? std::abs(v.dot(Eu)) / scale : M_PI / 2;
-}
-
-// The least-squares E (unit Frobenius norm) from the pairs `sample`.
-Eigen::Matrix3d EightPoint(const std::vector<BearingPair>& pairs, const std::vector<int>& sample) {
-  Eigen::MatrixXd A(sample.size(), 9);
-  for (std::size_t k = 0; k < sample.size(); ++k) {
-    const Eigen::Vector3d v = pairs[sample[k]].first, u = pairs[sample[k]].second;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) A(k, 3 * i + j) = v[i] * u[j];
-    }
-  }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
-  const Eigen::VectorXd e = svd.matrixV().col(8);
-  Eigen::Matrix3d E;
-  E << e[0], e[1], e[2], e[3], e[4], e[5], e[6], e[7], e[8];
-  return E;
-}
-
-}  // namespace
 
 EpipolarProblem PrefilterPairs(const EpipolarProblem& problem, const OutlierOptions& options,
                                std::vector<RemovedPair>* removed) {
@@ -84,13 +59,28 @@ RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const Sea
   // The rounds only need to tell whether the optimum exceeds the threshold: they stop at an X
   // within it, or close the gap to a quarter of it; the last solve closes the requested gap.
   SearchOptions round_options = search;
-  round_options.epsilon = std::max(search.epsilon, 0.25 * options.threshold);
-  round_options.stop_below = options.threshold;
+  result.threshold = options.threshold;
+  if (const auto start = LocalStart(result.inliers, search.translation_bound)) {
+    std::vector<double> all;
+    for (const std::vector<double>& motion : RayErrors(result.inliers, *start)) {
+      all.insert(all.end(), motion.begin(), motion.end());
+    }
+    std::nth_element(all.begin(), all.begin() + all.size() / 2, all.end());
+    result.error_scale = all[all.size() / 2] / 0.6745;
+    result.threshold =
+        std::max(options.threshold, options.error_level_multiple * result.error_scale);
+    if (!search.start ||
+        MaxRayError(result.inliers, *start) < MaxRayError(result.inliers, *search.start)) {
+      round_options.start = start;
+    }
+  }
+  round_options.epsilon = std::max(search.epsilon, 0.25 * result.threshold);
+  round_options.stop_below = result.threshold;
   while (true) {
     result.solution = SolveGlobal(result.inliers, round_options);
     ++result.rounds;
     const double optimum = result.solution.certificate.upper;
-    if (optimum <= options.threshold || result.solution.certificate.lower <= options.threshold ||
+    if (optimum <= result.threshold || result.solution.certificate.lower <= result.threshold ||
         result.rounds >= options.max_rounds) {
       break;
     }

@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <set>
 
 #include "hecal/estimation/epipolar_polish.h"
 #include "hecal/geometry/se3.h"
+#include "hecal/geometry/so3.h"
 #include "testing/epipolar_scenes.h"
 
 namespace hecal::global {
@@ -52,6 +54,36 @@ TEST(SolveGlobalRobust, RemovesWrongMatchesWithHighPrecisionAndRecall) {
   std::printf("polish rotation error %.3g rad, nees %.2f\n",
               testing::RotationError(polish.X, scene.X), nees);
   EXPECT_LT(nees, 22.46);
+}
+
+TEST(SolveGlobalRobust, KeepsCorrectMatchesWhenTheRobotNoiseExceedsThePixelThreshold) {
+  // Clean 0.1 px rays, but each hand motion off by ~5e-3 rad and ~3 mm: the epipolar errors are
+  // set by the robot, several times the threshold derived from the pixels. The pre-filter (no
+  // robot data) keeps every pair, and the L∞ rounds, whose threshold follows the data's own
+  // error level at the local start, remove none (there is no wrong match to remove).
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 4;
+  spec.pairs = 30;
+  spec.pixel_sigma = 0.1;
+  testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 8);
+  std::mt19937_64 rng(17);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (EpipolarMotion& motion : scene.problem.motions) {
+    const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
+    const Eigen::Vector3d shift(normal(rng), normal(rng), normal(rng));
+    motion.hand = motion.hand * MakePose(so3::Exp(3e-3 * omega), 2e-3 * shift);
+  }
+  SearchOptions search;
+  search.epsilon = 1e-4;
+  search.relative_gap = 0.5;
+  search.max_cubes = 5'000;  // the removal's decisions, not the last solve's certificate
+  search.translation_bound = 1.0;
+  OutlierOptions options;
+  options.threshold = 4.0 * std::sqrt(2.0) * spec.pixel_sigma / spec.focal;
+  const RobustGlobalSolution robust = SolveGlobalRobust(scene.problem, search, options);
+  EXPECT_GT(MaxRayError(scene.problem, scene.X), options.threshold);  // the premise
+  EXPECT_GT(robust.threshold, options.threshold);
+  EXPECT_TRUE(robust.removed.empty()) << robust.removed.size() << " removed";
 }
 
 TEST(PrefilterPairs, KeepsEveryPairOfANoiseFreeScene) {

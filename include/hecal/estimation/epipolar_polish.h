@@ -13,6 +13,8 @@
 #pragma once
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "hecal/geometry/types.h"
 #include "hecal/global/epipolar_problem.h"
@@ -30,6 +32,24 @@ struct EpipolarPolish {
 // Precondition: at least 7 pairs. `ray_sigma` in radians (nullopt: estimated from the fit).
 EpipolarPolish PolishEpipolar(const global::EpipolarProblem& problem, const Pose& start,
                               std::optional<double> ray_sigma = std::nullopt);
+
+// The re-check of the matches at the polished X: the L∞ removal (global/outlier_removal.h)
+// decides on the L∞ optimum, which is set by a few extreme pairs — it removes correct matches
+// with the wrong one (the whole support set) and keeps wrong matches that the L∞ X happens to
+// fit. At the polished X every pair of `all` (the problem before any removal) is kept iff
+// |r| ≤ k σ (σ = ray_sigma, else 1.4826 · median |r| of the pairs kept so far, at least 1e-8),
+// and the polish
+// is repeated on the kept pairs until the set stops changing (at most 5 times).
+struct RecheckedPolish {
+  EpipolarPolish polish;
+  global::EpipolarProblem inliers;           // the kept pairs of `all`
+  std::vector<std::pair<int, int>> removed;  // (motion index, pair id) of the others
+};
+
+// Precondition: `inliers` (a subset of `all`, same motions in the same order) has ≥ 7 pairs.
+RecheckedPolish PolishAndRecheck(const global::EpipolarProblem& all,
+                                 const global::EpipolarProblem& inliers, const Pose& start,
+                                 std::optional<double> ray_sigma = std::nullopt, double k = 3.5);
 
 // The residual r above for one pair under X (radians of ray).
 double SampsonAngle(const Pose& X, const Pose& hand_motion, const global::BearingPair& pair);

@@ -13,10 +13,17 @@
 // rotation and the LP's translation) whose max E is evaluated, and is split into 8. Every
 // candidate lowers `upper` when better; one within a quarter of the way from ε to the old upper
 // bound ends the level (LP points lie on the relaxation's boundary, so demanding ≤ ε exactly
-// would split cubes forever); all cubes pruned sets lower = ε. It stops when
-// upper − lower ≤ max(options.epsilon, options.relative_gap · upper) (the certificate), or when a
-// budget runs out (cubes, or cube size below options.min_half_width): then `certified` is false
-// and the bounds are what was proved. Results do not depend on the thread count.
+// would split cubes forever); all cubes pruned sets lower = ε. A level that lands just below the
+// optimum needs cubes as small as its distance to the optimum, far more than its neighbours: a
+// level may test as many cubes as the whole search before it (at least 20,000), and again as
+// many while that lowers `upper`; then it is left undecided and becomes a ceiling, and the next
+// levels bisect between `lower` and it (proofs there still raise `lower`). It stops when
+// upper − lower ≤ max(options.epsilon, options.relative_gap · upper) (the certificate), or when
+// a budget runs out (cubes, or cube size below options.min_half_width); when only undecided
+// levels are left (ceiling − lower ≤ half that gap) the ceiling is lifted and they are tried
+// again with the allowance the search has grown to. When a budget runs out `certified` is false
+// and the bounds are what was proved. The incumbent comes from options.start (SolveGlobalRobust
+// passes the local start, local_start.h). Results do not depend on the thread count.
 //
 // The relative gap is for noisy data: there the optimum is of the order of the ray noise, and
 // closing an absolute gap far below it needs cubes far smaller than the noise (their number

@@ -5,6 +5,14 @@
 //     Geometry", 2nd ed., §11.2), scoring a pair by its angular Sampson error
 //     |vᵀ E u| / sqrt(|P_v E u|² + |P_u Eᵀ v|²), P_x = I − x xᵀ (radians of ray);
 //     pairs above options.threshold for the best model are removed. It uses no robot data.
+//  Between 1 and 2, the local start (local_start.h) on the kept pairs: the search's incumbent,
+//     and the data's own error level s = median(E)/0.6745 of the cheiral ray errors there (the
+//     scale of |N(0, s²)|; robust to the few wrong matches left). The threshold of step 2 is
+//     max(options.threshold, error_level_multiple · s): the pixel-derived threshold alone
+//     removes correct matches when other errors dominate — the robot's (on real arms 0.03° and
+//     0.25 mm over a few-cm baseline exceed the corners' ray noise several times) or an
+//     underestimated pixel σ. A correct match beyond 4 s has probability 6e-5 under Gaussian
+//     errors.
 //  2. L∞ outlier removal (Sim & Hartley, "Removing outliers using the L∞ norm", CVPR 2006, as
 //     used by Heller et al., TPAMI 2016 §5): solve globally; while the certified optimum exceeds
 //     the threshold, remove the support set — the pairs whose error equals the optimum (one of
@@ -23,7 +31,10 @@
 namespace hecal::global {
 
 struct OutlierOptions {
-  double threshold = 3e-3;  // radians of ray: the largest error an inlier may have
+  double threshold = 3e-3;  // radians of ray: the largest error an inlier may have (at least)
+  // The L∞ rounds use max(threshold, error_level_multiple · s), s the data's own error scale
+  // at the local start (see SolveGlobalRobust).
+  double error_level_multiple = 4.0;
   int ransac_iterations = 500;
   int max_rounds = 20;  // L∞ removal rounds
   std::uint64_t seed = 1;
@@ -39,7 +50,9 @@ struct RobustGlobalSolution {
   GlobalSolution solution;  // on the inliers (the certificate of the last solve)
   EpipolarProblem inliers;  // the problem without the removed pairs
   std::vector<RemovedPair> removed;
-  int rounds = 0;  // global solves
+  int rounds = 0;            // global solves
+  double error_scale = 0.0;  // s (radians; 0 without a local start)
+  double threshold = 0.0;    // the L∞ rounds' threshold (radians)
 };
 
 // The problem without the pairs the pre-filter rejects (step 1); appends them to `removed`.
