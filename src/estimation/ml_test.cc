@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "hecal/core/error.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/geometry/se3.h"
@@ -98,8 +99,7 @@ TEST_P(MlTest, GoodStartIsRefineMlFromThatStart) {
   EXPECT_LT(testing::Error(fast.X, clean.X).rotation, 1e-9);
   EXPECT_LT(testing::Error(fast.X, clean.X).translation, 1e-9);
   options.camera_sigma.reset();
-  EXPECT_THROW(RefineMlFromGoodStart(clean.MeasuredProblem(), start, options),
-               std::invalid_argument);
+  EXPECT_THROW(RefineMlFromGoodStart(clean.MeasuredProblem(), start, options), InputError);
 }
 
 struct StudyFigures {

@@ -129,7 +129,7 @@ TEST(OpenCvPnp, IppeRefusesNonPlanarPoints) {
     SolvePnPOpenCv(PnpMethod::kIppe, points, pixels, camera);
     FAIL() << "ippe accepted non-planar points";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "--method ippe");
+    EXPECT_EQ(e.source(), "PnpMethod ippe");
     EXPECT_NE(e.problem().find("coplanar"), std::string::npos) << e.what();
     EXPECT_NE(e.fix().find("sqpnp"), std::string::npos) << e.what();
   }
