@@ -117,9 +117,11 @@ TEST_F(InputErrors, CommandLineChecksNameTheFlag) {
 // A file that is missing or malformed is named by its path (and line).
 TEST_F(InputErrors, BadFilesNameTheFile) {
   WriteStations(6);
-  ExpectRefused(Calibrate({"--robot", Path("missing.csv")}), Path("missing.csv"), "");
+  std::vector<std::string> missing = Calibrate({});
+  missing[4] = Path("missing.csv");  // --robot's value
+  ExpectRefused(missing, Path("missing.csv"), "cannot read");
   Write("camera.csv", "id,x_mm,y_mm,z_mm,qw,qx,qy,qz\ns0,1,2,3,1,0,0,0\ns1,1,2,x,1,0,0,0\n");
-  ExpectRefused(Calibrate({}), Path("camera.csv") + ":3", "");
+  ExpectRefused(Calibrate({}), Path("camera.csv") + ":3", "is not a number");
 }
 
 // Data that cannot determine X: two stations are one motion.
