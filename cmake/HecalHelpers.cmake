@@ -69,10 +69,9 @@ endfunction()
 function(hecal_add_test name)
   cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
   add_executable(test_${name} ${ARG_UNPARSED_ARGUMENTS})
-  target_link_libraries(test_${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gmock
-    GTest::gtest_main hecal_compile_options)
+  target_link_libraries(test_${name} PRIVATE ${ARG_DEPENDS} hecal_testing GTest::gtest
+    GTest::gmock GTest::gtest_main hecal_compile_options)
   target_compile_definitions(test_${name} PRIVATE HECAL_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  target_include_directories(test_${name} PRIVATE ${PROJECT_SOURCE_DIR}/src)  # testing/*.h
   add_test(NAME ${name} COMMAND test_${name})
   if(name MATCHES "_slow_test$")
     set_tests_properties(${name} PROPERTIES LABELS slow)

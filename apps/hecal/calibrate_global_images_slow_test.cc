@@ -1,5 +1,5 @@
 // `hecal calibrate --method global --images DIR --target target.yaml` on rendered images
-// (rendered_views_test_util.h): the chessboard's corners are used as anonymous matches between
+// (testing/rendered_views.h): the chessboard's corners are used as anonymous matches between
 // consecutive stations, its size and square never. A camera on the robot (eye-in-hand) sees the
 // board from known views B = T_camera_target; the robot poses G follow from a known X and Z
 // (Z = G X B). Checks X against that truth and the result file's matches. Slow: the search takes
@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "rendered_views_test_util.h"
+#include "testing/rendered_views.h"
 #endif
 
 namespace hecal::cli {

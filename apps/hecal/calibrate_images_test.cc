@@ -1,4 +1,4 @@
-// `hecal calibrate --images` end to end on rendered images (rendered_views_test_util.h) of a
+// `hecal calibrate --images` end to end on rendered images (testing/rendered_views.h) of a
 // known scene: a chessboard seen by a camera on a robot (eye-in-hand) or by a fixed camera with
 // the board on the robot (eye-to-hand), the robot poses computed from the chosen views and a
 // known X and Z (Z = A_i X B_i, handeye/problem.h). Checks X and Z against that truth (also from
@@ -22,7 +22,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "rendered_views_test_util.h"
+#include "testing/rendered_views.h"
 #endif
 
 namespace hecal::cli {

@@ -1,5 +1,5 @@
 // Camera files through the image commands: `hecal detect` and `hecal calibrate --images` on
-// images rendered (rendered_views_test_util.h) by a camera with ViSP's one-coefficient radial
+// images rendered (testing/rendered_views.h) by a camera with ViSP's one-coefficient radial
 // model (plumb_bob with only k1), given as ViSP camera XML. The poses and X match the rendered
 // truth and the command prints how the file was read; a camera.yaml without distortion is read
 // as none, with a note.
@@ -19,8 +19,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "csv_test_util.h"
-#include "rendered_views_test_util.h"
+#include "testing/csv_reader.h"
+#include "testing/rendered_views.h"
 #endif
 
 namespace hecal::cli {

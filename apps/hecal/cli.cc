@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 
+#include "field_flags.h"
 #include "hecal/core/error.h"
 #include "hecal/version.h"
 #include "library_logs.h"
@@ -11,8 +12,8 @@ namespace hecal::cli {
 namespace {
 
 constexpr Registrar kRegistrars[] = {
-    &RegisterPosesCommand,     &RegisterImportCommand, &RegisterDetectCommand,
-    &RegisterCalibrateCommand, &RegisterPoseCommand,   &RegisterSimulateCommand,
+    &RegisterPosesCommand,     &RegisterImportCommand,  &RegisterDetectCommand,
+    &RegisterCalibrateCommand, &RegisterPoseCommand,    &RegisterSimulateCommand,
     &RegisterBenchCommand,     &RegisterContourCommand,
 };
 
@@ -37,8 +38,8 @@ int RunHecal(const std::vector<std::string>& argv, std::ostream& out, std::ostre
   } catch (const CLI::ParseError& e) {
     err << "hecal: " << e.what() << " (fix: see `hecal --help` and the command's --help)\n";
     return 2;
-  } catch (const InputError& e) {
-    err << "hecal: " << e.what() << "\n";
+  } catch (const InputError& e) {  // the library names options fields; the user typed flags
+    err << "hecal: " << WithFlag(e).what() << "\n";
     return 2;
   } catch (const DegenerateError& e) {
     err << "hecal: " << e.what() << "\n";

@@ -9,9 +9,9 @@
 #include <numbers>
 
 #include "cli_test_util.h"
-#include "csv_test_util.h"
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/perspective_view.h"
+#include "testing/csv_reader.h"
 
 namespace hecal::cli {
 namespace {

@@ -28,11 +28,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "csv_test_util.h"
 #include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
 #include "hecal/vision/render.h"
-#include "rendered_views_test_util.h"
+#include "testing/csv_reader.h"
+#include "testing/rendered_views.h"
 #endif
 
 namespace hecal::cli {

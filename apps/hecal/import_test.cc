@@ -13,11 +13,11 @@
 #include <sstream>
 
 #include "cli.h"
-#include "csv_test_util.h"
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/pose_table.h"
 #include "hecal/sim/thesis_protocol.h"
+#include "testing/csv_reader.h"
 #include "testing/pose_spread.h"
 
 namespace hecal::cli {

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "cli_test_util.h"
-#include "csv_test_util.h"
+#include "testing/csv_reader.h"
 
 namespace hecal::cli {
 namespace {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cli_test_util.h"
+#include "testing/camera_yaml.h"
 #include "testing/pose_scenes.h"
 
 namespace hecal::cli {
@@ -26,15 +27,7 @@ using cli_test::CliTest;
 using cli_test::Hecal;
 using nlohmann::json;
 
-std::string CameraYaml(const pose::CameraModel& c) {
-  std::ostringstream yaml;
-  yaml << std::setprecision(17) << "fx: " << c.fx << "\nfy: " << c.fy << "\ncx: " << c.cx
-       << "\ncy: " << c.cy << "\nwidth: " << c.width << "\nheight: " << c.height
-       << "\ndistortion:\n  model: plumb_bob\n  coefficients: [" << c.distortion[0] << ", "
-       << c.distortion[1] << ", " << c.distortion[2] << ", " << c.distortion[3] << ", "
-       << c.distortion[4] << "]\n";
-  return yaml.str();
-}
+using ::hecal::testing::CameraYaml;
 
 // object.csv with ids p0.. in millimetres; image.csv with the ids of `image_order` (a subset of
 // the points, in that order).

@@ -18,7 +18,7 @@
 #include <sstream>
 
 #include "cli.h"
-#include "csv_test_util.h"
+#include "testing/csv_reader.h"
 
 namespace hecal::cli {
 namespace {

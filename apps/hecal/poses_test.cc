@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "cli.h"
-#include "csv_test_util.h"
 #include "hecal/io/atomic_file.h"
+#include "testing/csv_reader.h"
 #include "testing/elementary_rotations.h"
 #include "testing/nearly_orthonormal.h"
 

@@ -119,7 +119,7 @@ TEST_F(Scale, EveryMethodCalibratesTenToTheFiveStations) {
   std::printf("%-17s %8s %9s %9s %9s %10s %12s %10s\n", "method", "stations", "wall s", "CPU s",
               "peak MB", "rot err/bd", "trans err/bd", "bound deg");
   for (int n : StationCounts()) {
-    const sim::SimulatedData data =
+    const testing::Scene data =
         testing::ThesisCase(handeye::Setup::kEyeInHand, n, 2026, sigma.rotation, sigma.translation);
     WritePoses(Path("robot.csv"), data.T_base_gripper);
     WritePoses(Path("camera.csv"), data.T_camera_target);

@@ -79,11 +79,11 @@ Eigen::Vector3d EulerAngles(const Eigen::Matrix3d& rotation, RotationForm form) 
 
 void ValidateContourCamera(const ContourCamera& camera) {
   if (!std::isfinite(camera.focal) || !(camera.focal > 0.0)) {
-    throw InputError("--focal", 0, "the focal length must be a positive number",
-                     "give f in the unit of the image coordinates (e.g. --focal 50 for mm)");
+    throw InputError("ContourCamera.focal", 0, "the focal length must be a positive number",
+                     "give f in the unit of the image coordinates (e.g. 50 for mm)");
   }
   if (!std::isfinite(camera.z0) || !(camera.z0 > 0.0)) {
-    throw InputError("--z0", 0, "the initial distance Z0 must be a positive number",
+    throw InputError("ContourCamera.z0", 0, "the initial distance Z0 must be a positive number",
                      "give the distance from the camera to the target in the first view");
   }
 }

@@ -67,46 +67,49 @@ Eigen::Matrix2Xd DefaultTarget() {
 }
 
 void ValidateStudyOptions(const ContourStudyOptions& o) {
-  const auto positive = [](double x, const char* flag, const char* what) {
+  const auto positive = [](double x, const char* field, const char* what) {
     if (!Finite(x) || !(x > 0.0)) {
-      throw InputError(flag, 0, std::string(what) + " must be a positive number",
+      throw InputError(field, 0, std::string(what) + " must be a positive number",
                        std::string("give ") + what);
     }
   };
-  positive(o.focal_mm, "--focal", "the focal length (mm)");
-  positive(o.z0_mm, "--z0", "the initial distance (mm)");
-  positive(o.pixel_size_mm, "--pixel-size", "the pixel size (mm)");
+  positive(o.focal_mm, "ContourStudyOptions.focal_mm", "the focal length (mm)");
+  positive(o.z0_mm, "ContourStudyOptions.z0_mm", "the initial distance (mm)");
+  positive(o.pixel_size_mm, "ContourStudyOptions.pixel_size_mm", "the pixel size (mm)");
   if (!Finite(o.pixel_noise) || o.pixel_noise < 0.0) {
-    throw InputError("--pixel-noise", 0, "the pixel noise must be ≥ 0",
+    throw InputError("ContourStudyOptions.pixel_noise", 0, "the pixel noise must be ≥ 0",
                      "give σ in pixels, e.g. 0.5");
   }
   if (!Finite(o.from) || !Finite(o.to)) {
-    throw InputError("--from", 0, "the motion range must be finite numbers",
-                     "give e.g. --from 0 --to 250");
+    throw InputError("ContourStudyOptions.from", 0, "the motion range must be finite numbers",
+                     "give e.g. from 0 to 250");
   }
   if (o.steps < 1 || (o.steps == 1 && o.from != o.to)) {
-    throw InputError("--steps", 0, "need at least 2 steps for a range (1 when --from = --to)",
+    throw InputError("ContourStudyOptions.steps", 0,
+                     "need at least 2 steps for a range (1 when from = to)",
                      "give e.g. --steps 11");
   }
   if (o.samples < 2) {
-    throw InputError("--samples", 0, "the Monte Carlo needs at least 2 samples",
-                     "give e.g. --samples 5000");
+    throw InputError("ContourStudyOptions.samples", 0, "the Monte Carlo needs at least 2 samples",
+                     "give e.g. 5000");
   }
-  if (o.threads < 0) throw InputError("--threads", 0, "must be ≥ 0", "0 uses every core");
+  if (o.threads < 0)
+    throw InputError("ContourStudyOptions.threads", 0, "must be ≥ 0", "0 uses every core");
   if (IsRotation(o.motion) && o.motion != StudyMotion::kRz &&
       (std::abs(o.from) >= 90.0 || std::abs(o.to) >= 90.0)) {
-    throw InputError("--to", 0,
+    throw InputError("ContourStudyOptions.to", 0,
                      "an out-of-plane rotation must stay below 90° (the plane is then "
                      "seen edge-on: the tilt θ is beyond its range [0°, 90°))",
                      "give angles in (−90°, 90°)");
   }
   if (o.motion == StudyMotion::kTz && (o.from <= -o.z0_mm || o.to <= -o.z0_mm)) {
-    throw InputError("--to", 0, "Tz must stay above −Z0 (the target would be behind the camera)",
+    throw InputError("ContourStudyOptions.to", 0,
+                     "Tz must stay above −Z0 (the target would be behind the camera)",
                      "give Tz > −" + std::to_string(o.z0_mm));
   }
   // The target itself: a closed contour whose control points span an area.
   if (o.target.cols() < 4) {
-    throw InputError("--contour", 0, "the target needs at least 4 control points",
+    throw InputError("ContourStudyOptions.target", 0, "the target needs at least 4 control points",
                      "give 4 or more x,y rows");
   }
   const ShapeSpace check(o.target);  // throws DegenerateError for collinear control points

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hecal/core/error.h"
+
 namespace hecal::contour {
 
 std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d& point,
@@ -13,7 +15,9 @@ std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d&
   if (!(options.range > 0.0) || !(options.step > 0.0) || !(options.step <= options.range) ||
       !(options.derivative_sigma > 0.0) || !std::isfinite(options.range) ||
       !std::isfinite(options.derivative_sigma) || (options.polarity < -1 || options.polarity > 1)) {
-    throw std::invalid_argument("SearchEdge: options out of range");
+    throw InputError("EdgeSearchOptions", 0, "options out of range",
+                     "give range > 0, 0 < step ≤ range, derivative_sigma > 0 and polarity −1, 0 "
+                     "or 1");
   }
   const double length = normal.norm();
   if (!std::isfinite(length) || !(length > 0.0)) {

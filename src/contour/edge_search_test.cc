@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "hecal/contour/render.h"
+#include "hecal/core/error.h"
 
 namespace hecal::contour {
 namespace {
@@ -165,10 +166,10 @@ TEST(SearchEdge, RejectsBadOptions) {
   EdgeSearchOptions options;
   EXPECT_THROW(SearchEdge(image, {5, 5}, {0, 0}, options), std::invalid_argument);
   options.step = 0.0;
-  EXPECT_THROW(SearchEdge(image, {5, 5}, {1, 0}, options), std::invalid_argument);
+  EXPECT_THROW(SearchEdge(image, {5, 5}, {1, 0}, options), InputError);
   options = {};
   options.polarity = 2;
-  EXPECT_THROW(SearchEdge(image, {5, 5}, {1, 0}, options), std::invalid_argument);
+  EXPECT_THROW(SearchEdge(image, {5, 5}, {1, 0}, options), InputError);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hecal/contour/perspective_view.h"
+#include "hecal/core/error.h"
 #include "hecal/core/split_mix.h"
 
 namespace hecal::contour {
@@ -127,7 +128,19 @@ void QuantizeGrey(GrayImage* image) {
 GrayImage RenderPolygon(const Eigen::Matrix2Xd& polygon, int width, int height,
                         const RenderOptions& options) {
   if (!std::isfinite(options.foreground) || !std::isfinite(options.background)) {
-    throw std::invalid_argument("render: the grey levels must be finite");
+    throw InputError("RenderOptions.foreground", 0, "the grey levels must be finite",
+                     "give finite foreground and background levels");
+  }
+  if (options.supersampling < 1) {
+    throw InputError("RenderOptions.supersampling", 0, "must be at least 1", "use e.g. 16");
+  }
+  if (!(options.blur_sigma >= 0.0) || !std::isfinite(options.blur_sigma)) {
+    throw InputError("RenderOptions.blur_sigma", 0, "the blur σ must be finite and ≥ 0",
+                     "give σ in pixels, 0 for none");
+  }
+  if (!(options.noise_sigma >= 0.0) || !std::isfinite(options.noise_sigma)) {
+    throw InputError("RenderOptions.noise_sigma", 0, "the noise σ must be finite and ≥ 0",
+                     "give σ in grey levels, 0 for none");
   }
   GrayImage image = PolygonCoverage(polygon, width, height, options.supersampling);
   GaussianBlur(&image, options.blur_sigma);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
 #include "hecal/estimation/loop_residual.h"
 #include "hecal/estimation/station_covariance.h"
 
@@ -24,9 +25,8 @@ AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, cons
   const Eigen::LDLT<Matrix12d> ldlt(information);
   const double smallest = ldlt.vectorD().minCoeff();
   if (ldlt.info() != Eigen::Success || !(smallest > 1e-12 * ldlt.vectorD().maxCoeff())) {
-    throw std::invalid_argument(
-        "FirstOrderBound: the information matrix is singular (degenerate "
-        "station set)");
+    throw DegenerateError("X and Z to first order (the information matrix is singular)",
+                          "use stations whose rotations turn about at least two axes");
   }
   AccuracyBound bound;
   bound.covariance = ldlt.solve(Matrix12d::Identity());

@@ -21,7 +21,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 //   camera  B̃_i = T_i · Exp(n_c)                     e_c = Log(T_i⁻¹ B̃_i)
 //   robot   G̃_i = G_i(X, Z, T_i) · Exp(n_g)          e_g = Log(G_i⁻¹ G̃_i)
 //   eye-in-hand  G_i = Z T_i⁻¹ X⁻¹,   eye-to-hand  G_i = X T_i Z⁻¹.
-Eigen::MatrixXd FullModelBound(const sim::SimulatedData& data, const PoseSigma& robot,
+Eigen::MatrixXd FullModelBound(const testing::Scene& data, const PoseSigma& robot,
                                const PoseSigma& camera) {
   const int n = static_cast<int>(data.T_camera_target_true.size());
   const int parameters = 12 + 6 * n;
@@ -66,7 +66,7 @@ Eigen::MatrixXd FullModelBound(const sim::SimulatedData& data, const PoseSigma& 
 class BoundTest : public ::testing::TestWithParam<handeye::Setup> {};
 
 TEST_P(BoundTest, EqualsTheFullModelBoundWithNuisanceStationPoses) {
-  const sim::SimulatedData data = testing::ThesisCase(GetParam(), 5, 31);
+  const testing::Scene data = testing::ThesisCase(GetParam(), 5, 31);
   const PoseSigma robot{1.0 * kDeg, 1e-3};
   const PoseSigma camera{0.5 * kDeg, 2e-3};
   const AccuracyBound bound =
@@ -82,7 +82,7 @@ INSTANTIATE_TEST_SUITE_P(BothSetups, BoundTest,
                          ::testing::Values(handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand));
 
 TEST(FirstOrderBound, ScalesWithTheNoiseAndShrinksWithMoreStations) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 20, 32);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 20, 32);
   const PoseSigma sigma{1.0 * kDeg, 1e-3};
   const PoseSigma twice{2.0 * kDeg, 2e-3};
   const handeye::Problem problem = data.MeasuredProblem();
@@ -99,7 +99,7 @@ TEST(FirstOrderBound, ScalesWithTheNoiseAndShrinksWithMoreStations) {
 }
 
 TEST(FirstOrderBound, RejectsAZeroNoiseModel) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 33);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 33);
   EXPECT_THROW(FirstOrderBound(data.MeasuredProblem(), data.X, data.Z, {}, {}),
                std::invalid_argument);
 }

@@ -27,12 +27,12 @@ bool SameSigma(const std::optional<PoseSigma>& a, const std::optional<PoseSigma>
   return a->rotation == b->rotation && a->translation == b->translation;
 }
 
-void ValidateSigma(const std::optional<PoseSigma>& sigma, const char* flag) {
+void ValidateSigma(const std::optional<PoseSigma>& sigma, const char* field) {
   if (!sigma) return;
   if (!std::isfinite(sigma->rotation) || !std::isfinite(sigma->translation) ||
       sigma->rotation < 0.0 || sigma->translation < 0.0) {
-    throw InputError(flag, 0, "sigmas must be finite and non-negative",
-                     "give MM,DEG with values >= 0, e.g. 0.5,0.1");
+    throw InputError(field, 0, "sigmas must be finite and non-negative",
+                     "give values >= 0 (radians, metres)");
   }
 }
 
@@ -96,25 +96,26 @@ std::vector<int> Indices(const std::vector<bool>& flags) {
 
 // Checks the options; returns the robust loss they name.
 RobustLoss ValidateOptions(const handeye::Problem& problem, const CalibrateOptions& options) {
-  ValidateSigma(options.robot_sigma, "--robot-sigma");
-  ValidateSigma(options.camera_sigma, "--camera-sigma");
+  ValidateSigma(options.robot_sigma, "CalibrateOptions.robot_sigma");
+  ValidateSigma(options.camera_sigma, "CalibrateOptions.camera_sigma");
   if (options.robot_sigma && options.camera_sigma) {
     const PoseSigma& r = *options.robot_sigma;
     const PoseSigma& c = *options.camera_sigma;
     if (r.rotation + c.rotation == 0.0 || r.translation + c.translation == 0.0) {
-      throw InputError("--robot-sigma", 0,
+      throw InputError("CalibrateOptions.robot_sigma", 0,
                        "the robot and camera sigmas are both zero in rotation or in translation, "
                        "so the noise model is singular",
-                       "give a non-zero value, or omit the sigma flags to estimate the noise");
+                       "give a non-zero value, or leave both sigmas unset to estimate the noise");
     }
   }
   const std::optional<RobustLoss> loss = ParseRobustLoss(options.robust_loss);
   if (!loss) {
-    throw InputError("--robust-loss", 0, "unknown robust loss '" + options.robust_loss + "'",
+    throw InputError("CalibrateOptions.robust_loss", 0,
+                     "unknown robust loss '" + options.robust_loss + "'",
                      "use none, huber or cauchy");
   }
   if (!(options.robust_scale > 0.0) || !std::isfinite(options.robust_scale)) {
-    throw InputError("--robust-scale", 0, "the robust loss scale must be positive",
+    throw InputError("CalibrateOptions.robust_scale", 0, "the robust loss scale must be positive",
                      "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
   }
   if (problem.A.size() != problem.B.size()) {

@@ -26,7 +26,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 TEST(CalibrateAtScale, TwentyThousandStationsAtTheAccuracyTheDataAllow) {
   const PoseSigma sigma{1.0 * kDeg, 1e-3};
   const int n = 20000;
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, n, 2026, sigma.rotation, sigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
   const AccuracyBound bound = FirstOrderBound(

@@ -27,7 +27,7 @@ bool AnyWarningContains(const CalibrationResult& result, const std::string& text
 // (their accuracy is tested in src/handeye), strobl and ml recover noise-free data to 1e-9.
 TEST(Calibrate, EveryMethodDispatchesAndTheRefinementsAreExact) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const sim::SimulatedData data = testing::ThesisCase(setup, 8, 81);
+    const testing::Scene data = testing::ThesisCase(setup, 8, 81);
     const handeye::Problem problem = data.MeasuredProblem();
     for (const handeye::MethodInfo& info : handeye::AllMethods()) {
       CalibrateOptions options;
@@ -56,7 +56,7 @@ TEST(Calibrate, EveryMethodDispatchesAndTheRefinementsAreExact) {
 
 TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
   const PoseSigma sigma{0.5 * kDeg, 1e-3};
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeToHand, 15, 82, sigma.rotation, sigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
   const CalibrationResult estimated = Calibrate(problem, {});
@@ -92,7 +92,7 @@ TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
 // estimate equals the one without it; with reject_outliers = false it is flagged and kept.
 TEST(Calibrate, RejectsACorruptedStationOrFlagsItWhenKept) {
   const PoseSigma sigma{0.5 * kDeg, 1e-3};
-  sim::SimulatedData data =
+  testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 83, sigma.rotation, sigma.translation);
   Vector6d gross;
   gross << 5.0 * kDeg, 0.0, 0.0, 0.0, 0.02, 0.0;
@@ -127,7 +127,7 @@ TEST(Calibrate, RejectsACorruptedStationOrFlagsItWhenKept) {
 }
 
 TEST(Calibrate, RejectsBadOptionsAndDegenerateData) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 84);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 84);
   const handeye::Problem problem = data.MeasuredProblem();
   CalibrateOptions bad_loss;
   bad_loss.robust_loss = "tukey";

@@ -86,11 +86,11 @@ CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations
 
 void ValidateCovarianceOptions(const CovarianceOptions& options) {
   if (options.samples < 2) {
-    throw InputError("--covariance-samples", 0, "Monte Carlo needs at least 2 samples",
+    throw InputError("CovarianceOptions.samples", 0, "Monte Carlo needs at least 2 samples",
                      "use e.g. 5000");
   }
   if (options.threads < 0) {
-    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+    throw InputError("CovarianceOptions.threads", 0, "cannot be negative", "0 uses every core");
   }
 }
 
@@ -104,10 +104,10 @@ void CheckCovarianceFits(CovarianceMethod method, handeye::Method solver, size_t
   problem += std::to_string(kMaxPropagatedStations);
   problem += " stations, got ";
   problem += std::to_string(stations);
-  std::string fix = "leave --covariance out (above ";
+  std::string fix = "leave the covariance method unset (above ";
   fix += std::to_string(kMaxUnscentedStations);
-  fix += " stations the default is information, O(n)) or use --covariance information";
-  throw InputError("--covariance", 0, problem, fix);
+  fix += " stations the default is information, O(n)) or choose information";
+  throw InputError("CovarianceOptions.method", 0, problem, fix);
 }
 
 CalibrationCovariance FromMonteCarlo(const uncertainty::MonteCarloMoments<Poses>& mc) {

@@ -26,7 +26,7 @@ TEST(UnscentedVsMonteCarlo, WithinTenPercentFromTenStations) {
     for (handeye::Method method : {handeye::Method::kMl, handeye::Method::kParkMartin}) {
       for (int n : {5, 10, 15, 20}) {
         for (uint64_t seed : {101u, 102u, 103u}) {
-          const sim::SimulatedData data =
+          const testing::Scene data =
               testing::ThesisCase(setup, n, seed, sigma.rotation, sigma.translation);
           const handeye::Problem problem = data.MeasuredProblem();
           CalibrateOptions options;

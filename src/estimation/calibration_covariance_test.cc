@@ -24,7 +24,7 @@ struct Case {
 };
 
 Case MakeCase(handeye::Setup setup, handeye::Method method, uint64_t seed, int n = 15) {
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(setup, n, seed, kSigma.rotation, kSigma.translation);
   Case c;
   c.problem = data.MeasuredProblem();
@@ -121,7 +121,7 @@ TEST(PropagateCovariance, NoneAndBadNoise) {
 // Calibrate attaches the default covariance: ml's analytic information (no solves), the UT for
 // other methods; --covariance overrides it, and every method accepts every kind.
 TEST(Calibrate, AttachesTheDefaultOrRequestedCovariance) {
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 10, 9, kSigma.rotation, kSigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
   CalibrateOptions options;
@@ -153,7 +153,7 @@ TEST(Calibrate, DefaultCovarianceByStationCount) {
   }
   EXPECT_EQ(DefaultCovarianceMethod(handeye::Method::kMl, 100000), CovarianceMethod::kLinear);
   const int n = static_cast<int>(kMaxUnscentedStations) + 1;
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, n, 10, kSigma.rotation, kSigma.translation);
   CalibrateOptions options;
   options.method = handeye::Method::kTsaiLenz;
@@ -173,7 +173,7 @@ TEST(Calibrate, DefaultCovarianceByStationCount) {
 // linear covariance and the information covariance have no such limit.
 TEST(Calibrate, PropagatedCovarianceRefusedAboveItsStationLimit) {
   const int n = static_cast<int>(kMaxPropagatedStations) + 1;
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, n, 11, kSigma.rotation, kSigma.translation);
   CalibrateOptions options;
   options.method = handeye::Method::kTsaiLenz;
@@ -187,7 +187,7 @@ TEST(Calibrate, PropagatedCovarianceRefusedAboveItsStationLimit) {
       ADD_FAILURE() << CovarianceMethodName(method) << " accepted at " << n << " stations";
     } catch (const InputError& error) {
       const std::string what = error.what();
-      EXPECT_NE(what.find("--covariance"), std::string::npos) << what;
+      EXPECT_EQ(error.source(), "CovarianceOptions.method") << what;  // a field, not a flag
       EXPECT_NE(what.find("at most 500 stations, got 501"), std::string::npos) << what;
     }
   }

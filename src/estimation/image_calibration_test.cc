@@ -40,7 +40,7 @@ ImageCalibrationOptions Options(handeye::Setup setup) {
 }
 
 TEST(CalibrateFromImages, NoiseFreeImagesGiveTheTruth) {
-  const sim::NoiseModel none{sim::NoiseModel::Kind::kGaussian, 0.0, 0.0};
+  const testing::PoseNoise none{0.0, 0.0};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::ImageStations s = testing::MakeImageStations(setup, 8, 5, none, 0.0);
     ImageCalibrationOptions options = Options(setup);
@@ -59,7 +59,7 @@ TEST(CalibrateFromImages, NoiseFreeImagesGiveTheTruth) {
 // The camera noise of the pose level comes from the PnP covariances (not estimated), so only the
 // robot noise is estimated and the warning says so; with the robot noise known, nothing is.
 TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.02 * kDeg, 0.1e-3};
+  const testing::PoseNoise robot{0.02 * kDeg, 0.1e-3};
   const testing::ImageStations s =
       testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 9, robot, 0.3);
   const std::vector<ImageStation> stations = Stations(s);
@@ -93,7 +93,7 @@ TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
 // distance of X 9.2 (eye-in-hand) and 7.9 (eye-to-hand) against 6, because the robot noise's
 // split between rotation and translation is weakly identifiable (see above); asserted below 10.
 TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kDeg, 0.05e-3};
+  const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     double pose_rotation = 0.0, pose_translation = 0.0;
     double image_rotation = 0.0, image_translation = 0.0, mahalanobis = 0.0;
@@ -127,7 +127,7 @@ TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
 // agrees with the linear covariance of the reprojection problem (300 samples: the standard error
 // of each σ is ~4%; 15% + 3 standard errors per axis), and the samples' count is reported.
 TEST(CalibrateFromImages, MonteCarloCovarianceMatchesTheLinearOne) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.02 * kDeg, 0.1e-3};
+  const testing::PoseNoise robot{0.02 * kDeg, 0.1e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::ImageStations s = testing::MakeImageStations(setup, 10, 31, robot, 0.5);
     ImageCalibrationOptions options = Options(setup);
@@ -161,7 +161,7 @@ namespace {
 // a station whose robot pose is wrong by 5° (a pairing slip) at the pose level; both are listed
 // with the stations' ids, and X is as good as without them.
 TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kDeg, 0.05e-3};
+  const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     testing::ImageStations s = testing::MakeImageStations(setup, 12, 31, robot, 0.2);
     std::mt19937_64 rng(9);
@@ -220,7 +220,7 @@ TEST(RobotNoiseAgreement, ToleranceFollowsTheSamplingErrorOfEightStations) {
 // with the pose level within the rule's tolerance or the result carries the warning, and X's
 // error is inside its reported 3σ ellipsoid (χ²₆ 99.7% = 20.1) in at least 4 of 5 sets.
 TEST(CalibrateFromImages, RobotNoiseAgreesWithThePoseLevelOrSaysWhyNot) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.5 * kDeg, 2e-3};
+  const testing::PoseNoise robot{0.5 * kDeg, 2e-3};
   int covered = 0;
   for (int set = 0; set < 5; ++set) {
     const testing::ImageStations s =

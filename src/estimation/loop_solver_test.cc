@@ -31,8 +31,7 @@ struct Case {
 
 // Camera noise of 0.2° / 0.5 mm per component on every station (one gross outlier at station 3
 // when asked), the whitening of a 0.2° / 0.5 mm model on both devices evaluated at the true X.
-Case MakeCase(const std::string& name, const sim::SimulatedData& data, uint64_t seed,
-              bool outlier) {
+Case MakeCase(const std::string& name, const testing::Scene& data, uint64_t seed, bool outlier) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
   const PoseSigma sigma{0.2 * kDeg, 0.5e-3};
@@ -170,7 +169,7 @@ TEST(LinearizeLoopCost, GradientAndHessianMatchFiniteDifferences) {
 // Noise-free data: the truth to 1e-9 from 5° / 5 cm off, both setups.
 TEST(MinimizeLoopCost, NoiseFreeRecoversTheTruth) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const sim::SimulatedData data = testing::ThesisCase(setup, 8, 75);
+    const testing::Scene data = testing::ThesisCase(setup, 8, 75);
     const handeye::Problem problem = data.MeasuredProblem();
     const std::vector<Matrix6d> identity(problem.A.size(), Matrix6d::Identity());
     Vector6d offset;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
 #include "hecal/estimation/station_covariance.h"
 #include "loop_solver.h"
 #include "multi_start.h"
@@ -141,8 +142,11 @@ handeye::Solution RefineStarts(MlSolver& solver, const std::vector<handeye::Solu
 }
 
 void CheckStations(const handeye::Problem& problem) {
-  if (problem.A.size() < 3 || problem.A.size() != problem.B.size()) {
-    throw std::invalid_argument("RefineMl: needs at least 3 stations with robot and camera poses");
+  if (problem.A.size() != problem.B.size()) {
+    throw std::invalid_argument("RefineMl: one camera pose per robot pose");
+  }
+  if (problem.A.size() < 3) {
+    throw DegenerateError("X and Z from fewer than 3 stations", "record at least 3 stations");
   }
 }
 
@@ -200,7 +204,9 @@ handeye::Solution RefineMlFromGoodStart(const handeye::Problem& problem,
                                         const handeye::Solution& start, const MlOptions& options) {
   CheckStations(problem);
   if (!options.robot_sigma || !options.camera_sigma) {
-    throw std::invalid_argument("RefineMlFromGoodStart: needs both the robot and the camera sigma");
+    throw InputError("MlOptions.robot_sigma", 0,
+                     "refining from a good start needs both the robot and the camera sigma",
+                     "set robot_sigma and camera_sigma");
   }
   MlSolver solver(problem, options);
   return RefineStarts(solver, {start},

@@ -36,7 +36,7 @@ Figures Study(handeye::Setup setup, int stations, bool sigmas_given, uint64_t se
   if (sigmas_given) options.robot_sigma = options.camera_sigma = sigma;
   Figures f;
   for (int trial = 0; trial < kTrials; ++trial) {
-    const sim::SimulatedData data =
+    const testing::Scene data =
         testing::ThesisCase(setup, stations, seed + trial, sigma.rotation, sigma.translation);
     const handeye::Problem problem = data.MeasuredProblem();
     const AccuracyBound bound = FirstOrderBound(

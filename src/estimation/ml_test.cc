@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "hecal/core/error.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/geometry/se3.h"
@@ -20,11 +21,11 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-handeye::Problem TrueProblem(const sim::SimulatedData& data) {
+handeye::Problem TrueProblem(const testing::Scene& data) {
   return handeye::MakeProblem(data.setup, data.T_base_gripper_true, data.T_camera_target_true);
 }
 
-void ExpectRecovers(const MlResult& result, const sim::SimulatedData& data, double tolerance) {
+void ExpectRecovers(const MlResult& result, const testing::Scene& data, double tolerance) {
   const testing::PoseError x = testing::Error(result.X, data.X);
   const testing::PoseError z = testing::Error(result.Z, data.Z);
   EXPECT_LT(x.rotation, tolerance);
@@ -40,7 +41,7 @@ class MlTest : public ::testing::TestWithParam<handeye::Setup> {};
 // of 170°–179.9° with a hand–eye rotation of exactly π.
 TEST_P(MlTest, NoiseFreeRecoversTheTruth) {
   const handeye::Setup setup = GetParam();
-  for (const sim::SimulatedData& data :
+  for (const testing::Scene& data :
        {testing::ThesisCase(setup, 10, 51), testing::WideRotationCase(setup, 8, 52),
         testing::WideRotationCase(setup, 6, 53, std::numbers::pi)}) {
     const handeye::Problem problem = data.MeasuredProblem();
@@ -56,7 +57,7 @@ TEST_P(MlTest, NoiseFreeRecoversTheTruth) {
 
 // Also from a single rough start (5°, 5 cm off), without the closed-form solvers.
 TEST_P(MlTest, NoiseFreeConvergesFromAPerturbedStart) {
-  const sim::SimulatedData data = testing::ThesisCase(GetParam(), 6, 54);
+  const testing::Scene data = testing::ThesisCase(GetParam(), 6, 54);
   Vector6d offset;
   offset << 0.05, -0.06, 0.04, 0.05, -0.03, 0.02;
   const handeye::Solution start{data.X * se3::Exp(offset), data.Z * se3::Exp(-offset)};
@@ -74,7 +75,7 @@ TEST_P(MlTest, GoodStartIsRefineMlFromThatStart) {
   options.camera_sigma = sigma;
   Vector6d offset;
   offset << 0.01, -0.02, 0.01, 0.01, -0.01, 0.02;
-  const sim::SimulatedData noisy =
+  const testing::Scene noisy =
       testing::ThesisCase(GetParam(), 12, 55, sigma.rotation, sigma.translation);
   const handeye::Solution start{noisy.X * se3::Exp(offset), noisy.Z * se3::Exp(-offset)};
   // Isotropic, and with the anisotropic camera excess (tilt / depth) of a richer noise model.
@@ -92,14 +93,13 @@ TEST_P(MlTest, GoodStartIsRefineMlFromThatStart) {
   }
   options.camera_excess = {};
   options.robust_loss = RobustLoss::kNone;
-  const sim::SimulatedData clean = testing::ThesisCase(GetParam(), 8, 56);
+  const testing::Scene clean = testing::ThesisCase(GetParam(), 8, 56);
   const handeye::Solution fast = RefineMlFromGoodStart(
       clean.MeasuredProblem(), {clean.X * se3::Exp(offset), clean.Z * se3::Exp(-offset)}, options);
   EXPECT_LT(testing::Error(fast.X, clean.X).rotation, 1e-9);
   EXPECT_LT(testing::Error(fast.X, clean.X).translation, 1e-9);
   options.camera_sigma.reset();
-  EXPECT_THROW(RefineMlFromGoodStart(clean.MeasuredProblem(), start, options),
-               std::invalid_argument);
+  EXPECT_THROW(RefineMlFromGoodStart(clean.MeasuredProblem(), start, options), InputError);
 }
 
 struct StudyFigures {
@@ -118,7 +118,7 @@ StudyFigures Study(handeye::Setup setup, int stations, int trials, double sigma_
   options.robot_sigma = sigma;
   options.camera_sigma = sigma;
   for (int trial = 0; trial < trials; ++trial) {
-    const sim::SimulatedData data =
+    const testing::Scene data =
         testing::ThesisCase(setup, stations, seed + trial, sigma.rotation, sigma.translation);
     const handeye::Problem problem = data.MeasuredProblem();
     const AccuracyBound bound = FirstOrderBound(TrueProblem(data), data.X, data.Z, sigma, sigma);
@@ -172,7 +172,7 @@ TEST_P(MlTest, MultiStartNeverEndsInAWrongMinimum) {
   options.camera_sigma = sigma;
   int wrong_multi = 0, wrong_single = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    const sim::SimulatedData data =
+    const testing::Scene data =
         testing::ThesisCase(setup, 5, 5000 + trial, sigma.rotation, sigma.translation);
     const handeye::Problem problem = data.MeasuredProblem();
     std::mt19937_64 rng(trial);
@@ -208,7 +208,7 @@ INSTANTIATE_TEST_SUITE_P(BothSetups, MlTest,
 // ≈ 2% on σ_r and ≈ 4% on σ_t (see noise_estimation_test.cc).
 TEST(Ml, EstimatesTheNoiseScale) {
   const PoseSigma sigma{0.5 * kDeg, 2e-3};
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 150, 61, sigma.rotation, sigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
   const MlResult result = RefineMl(problem, Solutions(InitialSolutions(problem)), {});
@@ -223,7 +223,7 @@ TEST(Ml, EstimatesTheNoiseScale) {
 // estimate near the clean data's, while plain least squares is pulled away.
 TEST(Ml, RobustLossReducesTheEffectOfAGrossOutlier) {
   const PoseSigma sigma{0.2 * kDeg, 0.5e-3};
-  sim::SimulatedData data =
+  testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 62, sigma.rotation, sigma.translation);
   const handeye::Problem clean = data.MeasuredProblem();
   Vector6d gross;
@@ -249,7 +249,7 @@ TEST(Ml, RobustLossReducesTheEffectOfAGrossOutlier) {
 }
 
 TEST(Ml, RejectsMissingStarts) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 63);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 63);
   EXPECT_THROW(RefineMl(data.MeasuredProblem(), {}, {}), std::invalid_argument);
 }
 

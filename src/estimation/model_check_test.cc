@@ -77,7 +77,7 @@ TEST(CompareWithJackknife, KnownSpreadAgainstTheModel) {
 
 // Too few stations: no check, and the result says so.
 TEST(ApplyModelCheck, SixStationsAreTooFewToCheck) {
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 3, 0.5 * kDeg, 0.5e-3);
   CalibrateOptions options;
   options.reject_outliers = false;
@@ -101,7 +101,7 @@ TEST(ApplyModelCheck, ExpectedJackknifeMatchesTheSpreadWhenTheModelIsRight) {
   int flagged = 0;
   const int data_sets = 40;
   for (int k = 0; k < data_sets; ++k) {
-    const sim::SimulatedData data =
+    const testing::Scene data =
         testing::ThesisCase(handeye::Setup::kEyeInHand, 12, 500 + k, 1.0 * kDeg, 1e-3);
     CalibrateOptions options;
     options.reject_outliers = false;
@@ -125,7 +125,7 @@ TEST(ApplyModelCheck, ExpectedJackknifeMatchesTheSpreadWhenTheModelIsRight) {
 // axis of X and Z; what it predicts is a displacement of ~1/20 of the spread, tested against the
 // solve.
 TEST(LinearizedWithoutGroups, MatchesTheDeleteGroupSolves) {
-  const sim::SimulatedData data =
+  const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeToHand, 300, 77, 1.0 * kDeg, 1e-3);
   CalibrateOptions options;
   options.reject_outliers = false;

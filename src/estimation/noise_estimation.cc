@@ -8,6 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
+
 namespace hecal::estimation {
 namespace {
 
@@ -531,7 +533,10 @@ NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations
 NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
                             const NoiseSpec& spec, double length_scale) {
   const size_t n = stations.size();
-  if (n < 3) throw std::invalid_argument("EstimateNoise needs at least 3 stations");
+  if (n < 3) {
+    throw DegenerateError("the noise model from fewer than 3 stations",
+                          "record at least 3 stations");
+  }
   if (spec.NumGroups() > kMaxGroups) {
     throw std::invalid_argument("EstimateNoise supports at most four variance groups");
   }

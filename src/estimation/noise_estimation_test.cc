@@ -190,7 +190,7 @@ TEST(EstimateNoise, PosteriorMeanIsTheRemlPointWhenWellDetermined) {
 }
 
 TEST(EstimateNoise, NoiseFreeDataGiveTinyPositiveSigmas) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeToHand, 8, 26);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 8, 26);
   const handeye::Problem problem = data.MeasuredProblem();
   const NoiseEstimate estimate = EstimateNoise(LinearizeStations(problem, data.X, data.Z),
                                                NoiseSpec::FromSigmas(std::nullopt, std::nullopt),

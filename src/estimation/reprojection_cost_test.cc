@@ -22,7 +22,7 @@ TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
   const pose::CameraModel camera = testing::TestCamera();
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::ImageStations stations =
-        testing::MakeImageStations(setup, 4, 11, {sim::NoiseModel::Kind::kGaussian, 0, 0}, 0.0);
+        testing::MakeImageStations(setup, 4, 11, testing::PoseNoise{}, 0.0);
     for (size_t i = 0; i < stations.images.size(); ++i) {
       const Eigen::Vector3d P = stations.images[i].target[7];
       const Eigen::Vector2d u(300.0, 200.0);
@@ -85,7 +85,7 @@ TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
 TEST(ReprojectionCost, CameraFromUnknownsFollowsTheModel) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::ImageStations stations =
-        testing::MakeImageStations(setup, 5, 12, {sim::NoiseModel::Kind::kGaussian, 0, 0}, 0.0);
+        testing::MakeImageStations(setup, 5, 12, testing::PoseNoise{}, 0.0);
     for (size_t i = 0; i < 5; ++i) {
       const Pose B = CameraFromUnknowns(setup, stations.data.X, stations.data.Z,
                                         stations.data.T_base_gripper_true[i]);

@@ -56,12 +56,12 @@ void Validate(const std::vector<Pose>& T_base_gripper, const std::vector<ImagePo
   const PoseSigma& robot = options.robot_sigma;
   if (!std::isfinite(robot.rotation) || !std::isfinite(robot.translation) || robot.rotation < 0.0 ||
       robot.translation < 0.0) {
-    throw InputError("--robot-sigma", 0, "sigmas must be finite and non-negative",
-                     "give e.g. --robot-sigma 0.1,0.05 (mm, deg)");
+    throw InputError("ReprojectionOptions.robot_sigma", 0, "sigmas must be finite and non-negative",
+                     "give values >= 0 (radians, metres)");
   }
   if (options.pixel_sigma && !(*options.pixel_sigma > 0.0 && std::isfinite(*options.pixel_sigma))) {
-    throw InputError("--pixel-sigma", 0, "the pixel sigma must be positive",
-                     "give e.g. --pixel-sigma 0.3, or omit it to estimate it");
+    throw InputError("ReprojectionOptions.pixel_sigma", 0, "the pixel sigma must be positive",
+                     "give e.g. 0.3 px, or leave it unset to estimate it");
   }
 }
 

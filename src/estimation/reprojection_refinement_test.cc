@@ -17,7 +17,7 @@ namespace hecal::estimation {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-const sim::NoiseModel kNoNoise{sim::NoiseModel::Kind::kGaussian, 0.0, 0.0};
+const testing::PoseNoise kNoNoise{0.0, 0.0};
 
 ReprojectionOptions Options(handeye::Setup setup, PoseSigma robot) {
   ReprojectionOptions options;
@@ -83,8 +83,7 @@ TEST(ReprojectionRefinement, CovarianceMatchesTheErrors) {
     double mahalanobis = 0.0, sigma_ratio = 0.0;
     constexpr int kTrials = 100;
     for (int trial = 0; trial < kTrials; ++trial) {
-      const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, robot.rotation,
-                                  robot.translation};
+      const testing::PoseNoise noise{robot.rotation, robot.translation};
       const testing::ImageStations s =
           testing::MakeImageStations(setup, 10, 1000 + trial, noise, pixel_sigma);
       const ReprojectionResult result = RefineReprojection(

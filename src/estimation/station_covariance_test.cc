@@ -18,7 +18,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Monte Carlo covariance of r = Log(Z⁻¹ Ã X B̃) at the truth, with Ã built from a noisy robot pose
 // the way MakeProblem does (so the eye-to-hand inverse is exercised), and B̃ a noisy camera pose.
-Matrix6d MonteCarloCovariance(const sim::SimulatedData& data, int station, const PoseSigma& robot,
+Matrix6d MonteCarloCovariance(const testing::Scene& data, int station, const PoseSigma& robot,
                               const PoseSigma& camera, int samples, uint64_t seed) {
   std::mt19937_64 rng(seed);
   const sim::NoiseModel robot_noise{sim::NoiseModel::Kind::kGaussian, robot.rotation,
@@ -49,7 +49,7 @@ class StationCovarianceTest : public ::testing::TestWithParam<handeye::Setup> {}
 
 TEST_P(StationCovarianceTest, MatchesMonteCarloForRobotCameraAndBothNoise) {
   const handeye::Setup setup = GetParam();
-  const sim::SimulatedData data = testing::ThesisCase(setup, 4, 11);
+  const testing::Scene data = testing::ThesisCase(setup, 4, 11);
   const handeye::Problem truth = data.MeasuredProblem();
   const PoseSigma zero;
   const PoseSigma robot{0.5 * kDeg, 1e-3};
@@ -81,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(BothSetups, StationCovarianceTest,
 // depth excess at the rest: the whitened Monte Carlo covariance is the identity (as above).
 TEST(StationCovariance, TiltAndDepthExcessMatchPnpShapedNoise) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const sim::SimulatedData data = testing::ThesisCase(setup, 4, 5, 0.0, 0.0);
+    const testing::Scene data = testing::ThesisCase(setup, 4, 5, 0.0, 0.0);
     const double sr = 0.5 * kDeg, st = 1e-3;
     const sim::NoiseModel pnp{sim::NoiseModel::Kind::kPnp, sr, st};
     std::mt19937_64 rng(7);
@@ -108,7 +108,7 @@ TEST(StationCovariance, TiltAndDepthExcessMatchPnpShapedNoise) {
 }
 
 TEST(StationCovariance, WrongSideOfTheRobotPoseIsDetected) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeToHand, 2, 12);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 2, 12);
   const handeye::Problem truth = data.MeasuredProblem();
   const PoseSigma robot{0.5 * kDeg, 1e-3};
   const PoseSigma camera{0.3 * kDeg, 2e-3};
@@ -121,7 +121,7 @@ TEST(StationCovariance, WrongSideOfTheRobotPoseIsDetected) {
 }
 
 TEST(StationCovariance, ComponentsAreLinearInTheVariances) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 3, 13);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 3, 13);
   const handeye::Problem truth = data.MeasuredProblem();
   const PoseSigma robot{0.01, 0.002};
   const PoseSigma camera{0.02, 0.001};

@@ -8,8 +8,8 @@
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/geometry/se3.h"
-#include "hecal/sim/gross_outliers.h"
 #include "testing/handeye_cases.h"
+#include "testing/scene.h"
 
 namespace hecal::estimation {
 namespace {
@@ -18,8 +18,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 // A moderate outlier (a 4° robot error against 0.5° noise per axis) is rejected, and it alone.
 TEST(SelectStations, AModerateOutlierIsRejected) {
-  sim::SimulatedData data =
-      testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 41, 0.5 * kDeg, 1e-3);
+  testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 41, 0.5 * kDeg, 1e-3);
   Vector6d offset;
   offset << 0.0, 4.0 * kDeg, 0.0, 0.0, 0.0, 0.0;
   data.T_base_gripper[4] = data.T_base_gripper[4] * se3::Exp(offset);
@@ -37,7 +36,7 @@ TEST(SelectStations, CleanDataLoseAlmostNothing) {
   for (int trial = 0; trial < 40; ++trial) {
     const handeye::Setup setup =
         trial % 2 == 0 ? handeye::Setup::kEyeInHand : handeye::Setup::kEyeToHand;
-    const sim::SimulatedData data = testing::ThesisCase(setup, 20, 600 + trial, kDeg, 1e-3);
+    const testing::Scene data = testing::ThesisCase(setup, 20, 600 + trial, kDeg, 1e-3);
     rejected += static_cast<int>(SelectStations(data.MeasuredProblem(), {}).Rejected().size());
   }
   EXPECT_LE(rejected, 8);
@@ -47,9 +46,9 @@ TEST(SelectStations, CleanDataLoseAlmostNothing) {
 // returned — ml from every closed-form start on the stations kept, exactly — and Calibrate's result
 // is the same bit for bit as calibrating those stations alone without rejection.
 TEST(SelectStations, TheFirstRoundFitIsMlOnTheStationsKept) {
-  sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeToHand, 20, 45, kDeg, 1e-3);
+  testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 20, 45, kDeg, 1e-3);
   std::mt19937_64 rng(5);
-  const std::vector<int> replaced = sim::InjectGrossOutliers(&data, 2, rng);
+  const std::vector<int> replaced = testing::ReplaceRobotPoses(&data, 2, rng);
   const handeye::Problem problem = data.MeasuredProblem();
   StationSelectionOptions options;
   options.robot_sigma = options.camera_sigma = PoseSigma{kDeg, 1e-3};
@@ -80,8 +79,7 @@ TEST(SelectStations, TheFirstRoundFitIsMlOnTheStationsKept) {
 // More stations fail the test than may be rejected — here the given sigmas are 20 times too
 // small: nothing is rejected and too_many says why.
 TEST(SelectStations, TooManyFlaggedRejectsNothing) {
-  const sim::SimulatedData data =
-      testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 42, kDeg, 1e-3);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 42, kDeg, 1e-3);
   StationSelectionOptions options;
   options.robot_sigma = options.camera_sigma = PoseSigma{0.05 * kDeg, 5e-5};
   const StationSelection selection = SelectStations(data.MeasuredProblem(), options);
@@ -92,9 +90,9 @@ TEST(SelectStations, TooManyFlaggedRejectsNothing) {
 
 // Four stations cannot spare one: nothing is tested, every station is used.
 TEST(SelectStations, FourStationsAreAllUsed) {
-  sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 4, 43, kDeg, 1e-3);
+  testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 4, 43, kDeg, 1e-3);
   std::mt19937_64 rng(1);
-  sim::InjectGrossOutliers(&data, 1, rng);
+  testing::ReplaceRobotPoses(&data, 1, rng);
   const StationSelection selection = SelectStations(data.MeasuredProblem(), {});
   EXPECT_TRUE(selection.Rejected().empty());
   EXPECT_EQ(selection.rounds, 0);
@@ -106,7 +104,7 @@ TEST(SelectStations, FourStationsAreAllUsed) {
 // would be rejected.
 TEST(SelectStations, PerStationCameraCovariancesKeepImpreciseViews) {
   std::mt19937_64 rng(44);
-  sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 12, 44);
+  testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 12, 44);
   std::vector<Matrix6d> covariances;
   std::normal_distribution<double> gaussian;
   for (size_t i = 0; i < data.T_camera_target.size(); ++i) {

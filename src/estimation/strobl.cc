@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/se3_manifold.h"
 #include "hecal/estimation/strobl_cost.h"
@@ -81,9 +82,11 @@ StroblResult RefineStrobl(const handeye::Problem& problem,
                           const std::vector<handeye::Solution>& starts,
                           const StroblOptions& options) {
   if (starts.empty()) throw std::invalid_argument("RefineStrobl: no starting solution");
-  if (problem.A.size() < 3 || problem.A.size() != problem.B.size()) {
-    throw std::invalid_argument(
-        "RefineStrobl: needs at least 3 stations with robot and camera poses");
+  if (problem.A.size() != problem.B.size()) {
+    throw std::invalid_argument("RefineStrobl: one camera pose per robot pose");
+  }
+  if (problem.A.size() < 3) {
+    throw DegenerateError("X and Z from fewer than 3 stations", "record at least 3 stations");
   }
   const double L = handeye::LengthScale(problem);
   Weights weights{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};

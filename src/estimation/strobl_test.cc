@@ -19,7 +19,7 @@ class StroblTest : public ::testing::TestWithParam<handeye::Setup> {};
 
 TEST_P(StroblTest, NoiseFreeRecoversTheTruth) {
   const handeye::Setup setup = GetParam();
-  for (const sim::SimulatedData& data :
+  for (const testing::Scene& data :
        {testing::ThesisCase(setup, 10, 71), testing::WideRotationCase(setup, 8, 72),
         testing::WideRotationCase(setup, 6, 73, std::numbers::pi)}) {
     const handeye::Problem problem = data.MeasuredProblem();
@@ -32,7 +32,7 @@ TEST_P(StroblTest, NoiseFreeRecoversTheTruth) {
 }
 
 TEST_P(StroblTest, NoiseFreeConvergesFromAPerturbedStart) {
-  const sim::SimulatedData data = testing::ThesisCase(GetParam(), 6, 74);
+  const testing::Scene data = testing::ThesisCase(GetParam(), 6, 74);
   Vector6d offset;
   offset << 0.05, -0.06, 0.04, 0.05, -0.03, 0.02;
   const StroblResult result = RefineStrobl(
@@ -48,7 +48,7 @@ TEST_P(StroblTest, AutomaticWeightingAndAccuracyWithNoise) {
   const PoseSigma sigma{1.0 * kDeg, 1e-3};
   double error2 = 0.0, bound2 = 0.0;
   for (int trial = 0; trial < 20; ++trial) {
-    const sim::SimulatedData data =
+    const testing::Scene data =
         testing::ThesisCase(GetParam(), 15, 7000 + trial, sigma.rotation, sigma.translation);
     const handeye::Problem problem = data.MeasuredProblem();
     const StroblResult result = RefineStrobl(problem, Solutions(InitialSolutions(problem)));

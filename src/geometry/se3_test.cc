@@ -1,7 +1,9 @@
 // Property tests for se3.h. Independent truth: the 4×4 matrix exponential of the twist (Eigen's
 // unsupported MatrixFunctions, Padé with scaling and squaring), screw motions constructed from an
-// axis line, the adjoint identities, and finite differences of Exp/Log for the Jacobians —
-// including both sides of se3.cc's series threshold (θ = 0.1), so3.cc's (θ = 1e-2), and near π.
+// axis line, the adjoint identities, and the Jacobians' inverse and left/right relations on both
+// sides of se3.cc's series threshold (θ = 0.1), so3.cc's (θ = 1e-2), and near π. Exp∘Log,
+// Log∘Exp and the Jacobians against finite differences are the typed Lie-group suite's
+// (lie_group_test.cc).
 // Tangent order is (ω, v), rotation first (docs/conventions.md).
 #include "hecal/geometry/se3.h"
 
@@ -54,17 +56,6 @@ Eigen::Matrix4d MatrixExponential(const Vector6d& xi) {
 Pose ScrewMotion(const Eigen::Vector3d& n, const Eigen::Vector3d& c, double theta, double d) {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, n).toRotationMatrix();
   return MakePose(R, c - R * c + d * n);
-}
-
-// Central five-point derivative of f: R⁶ → R⁶ at δ = 0 (error O(h⁴)).
-template <typename F>
-Matrix6d NumericJacobian(const F& f, double h) {
-  Matrix6d J;
-  for (int j = 0; j < 6; ++j) {
-    const Vector6d e = h * Vector6d::Unit(j);
-    J.col(j) = (8.0 * (f(e) - f(-e)) - (f(2.0 * e) - f(-2.0 * e))) / (12.0 * h);
-  }
-  return J;
 }
 
 // Rotation angles for Jacobian checks: tiny, both sides of 1e-2 (so3 series) and of 0.1 (the
@@ -137,41 +128,6 @@ TEST(Se3Exp, GivesTheConstructedScrewMotion) {
   }
 }
 
-TEST(Se3ExpLog, ExpOfLogIsIdentity) {
-  std::mt19937_64 rng(303);
-  std::vector<Pose> poses;
-  for (int i = 0; i < kSamples; ++i) poses.push_back(testing::RandomPose(rng, 2.0));
-  for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    poses.push_back(MakePose(so3::Exp(omega), RandomVector(rng)));
-  }
-  poses.push_back(MakePose(Eigen::Vector3d(1, -1, -1).asDiagonal(), Eigen::Vector3d(1, 2, 3)));
-  for (const Pose& T : poses) {
-    EXPECT_LT(PoseError(se3::Exp(se3::Log(T)), T), 1e-14 * (1 + T.translation().norm()))
-        << T.matrix();
-  }
-}
-
-TEST(Se3ExpLog, LogOfExpIsIdentityBelowPi) {
-  std::mt19937_64 rng(304);
-  std::uniform_real_distribution<double> angle(0.0, kPi);
-  std::vector<Vector6d> twists;
-  for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(Twist(testing::RandomRotationVector(rng, angle(rng)), RandomVector(rng)));
-  }
-  for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    if (omega.norm() < kPi) twists.push_back(Twist(omega, RandomVector(rng)));
-  }
-  twists.push_back(Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, -2, 3)));  // translation
-  for (const Vector6d& xi : twists) {
-    const Vector6d log = se3::Log(se3::Exp(xi));
-    EXPECT_LE((log.head<3>() - xi.head<3>()).norm(), 2e-15 * std::min(1.0, xi.head<3>().norm()))
-        << xi.transpose();
-    EXPECT_LT((log.tail<3>() - xi.tail<3>()).norm(), 4e-15 * (1 + xi.tail<3>().norm()))
-        << xi.transpose();
-    EXPECT_LE(log.head<3>().norm(), kPi * (1 + 1e-15));
-  }
-}
-
 TEST(Se3Adjoint, MatchesExplicitBlocksAndConjugation) {
   std::mt19937_64 rng(305);
   for (int i = 0; i < kSamples; ++i) {
@@ -212,42 +168,6 @@ std::vector<Vector6d> JacobianTwists(std::mt19937_64& rng) {
     }
   }
   return result;
-}
-
-TEST(Se3Jacobians, RightJacobianMatchesFiniteDifferences) {
-  // Exp(ξ + δ) ≈ Exp(ξ) Exp(Jr δ)  ⇒  Jr = ∂/∂δ Log(Exp(ξ)⁻¹ Exp(ξ + δ)).
-  std::mt19937_64 rng(307);
-  for (const Vector6d& xi : JacobianTwists(rng)) {
-    const Pose T_inv = se3::Exp(xi).inverse();
-    const auto f = [&](const Vector6d& d) { return se3::Log(T_inv * se3::Exp(xi + d)); };
-    EXPECT_LT(MaxAbs(se3::RightJacobian(xi) - NumericJacobian(f, 1e-3)), 1e-10) << xi.transpose();
-  }
-}
-
-TEST(Se3Jacobians, LeftJacobianMatchesFiniteDifferences) {
-  // Exp(ξ + δ) ≈ Exp(Jl δ) Exp(ξ)  ⇒  Jl = ∂/∂δ Log(Exp(ξ + δ) Exp(ξ)⁻¹).
-  std::mt19937_64 rng(308);
-  for (const Vector6d& xi : JacobianTwists(rng)) {
-    const Pose T_inv = se3::Exp(xi).inverse();
-    const auto f = [&](const Vector6d& d) { return se3::Log(se3::Exp(xi + d) * T_inv); };
-    EXPECT_LT(MaxAbs(se3::LeftJacobian(xi) - NumericJacobian(f, 1e-3)), 1e-10) << xi.transpose();
-  }
-}
-
-TEST(Se3Jacobians, InverseJacobiansMatchFiniteDifferencesOfLog) {
-  // Log(T Exp(δ)) ≈ Log(T) + Jr⁻¹ δ and Log(Exp(δ) T) ≈ Log(T) + Jl⁻¹ δ, at ξ = Log(T). The
-  // step stays well inside the distance to the cut at θ = π.
-  std::mt19937_64 rng(309);
-  for (const Vector6d& xi : JacobianTwists(rng)) {
-    const double h = std::min(1e-3, 0.05 * (kPi - xi.head<3>().norm()));
-    const Pose T = se3::Exp(xi);
-    const auto right = [&](const Vector6d& d) { return se3::Log(T * se3::Exp(d)); };
-    const auto left = [&](const Vector6d& d) { return se3::Log(se3::Exp(d) * T); };
-    EXPECT_LT(MaxAbs(se3::RightJacobianInverse(xi) - NumericJacobian(right, h)), 1e-9)
-        << xi.transpose();
-    EXPECT_LT(MaxAbs(se3::LeftJacobianInverse(xi) - NumericJacobian(left, h)), 1e-9)
-        << xi.transpose();
-  }
 }
 
 TEST(Se3Jacobians, InversesAndLeftRightRelations) {

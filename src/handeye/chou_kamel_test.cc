@@ -10,8 +10,8 @@
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/so3.h"
-#include "hecal/sim/noise.h"
 #include "testing/handeye_solver_suite.h"
+#include "testing/scene.h"
 
 namespace hecal::handeye {
 namespace {
@@ -27,7 +27,7 @@ Motion MotionFor(const Pose& X, const Eigen::Vector3d& rotation_vector, std::mt1
 // must not enter: with 30 noisy motions of 0.05°–0.5° (axes essentially random) next to 10 good
 // ones, the estimate stays at the accuracy of the good ones.
 TEST(ChouKamel, NearZeroRotationsDoNotEnterTheUnitAxisSystem) {
-  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.05 * kDegree, 0.0};
+  const testing::PoseNoise noise{0.05 * kDegree, 0.0};
   std::mt19937_64 rng(51);
   double worst_good = 0.0, worst_all = 0.0;
   for (int trial = 0; trial < 20; ++trial) {
@@ -37,11 +37,11 @@ TEST(ChouKamel, NearZeroRotationsDoNotEnterTheUnitAxisSystem) {
     for (int k = 0; k < 10; ++k) {
       motions.push_back(MotionFor(X, large(rng) * testing::RandomUnitVector(rng), rng));
     }
-    for (Motion& m : motions) m.A = sim::AddNoise(m.A, noise, rng);
+    for (Motion& m : motions) m.A = testing::AddPoseNoise(m.A, noise, rng);
     worst_good = std::max(worst_good, testing::Error(SolveChouKamel(motions), X).rotation);
     for (int k = 0; k < 30; ++k) {
       Motion m = MotionFor(X, small(rng) * testing::RandomUnitVector(rng), rng);
-      m.A = sim::AddNoise(m.A, noise, rng);
+      m.A = testing::AddPoseNoise(m.A, noise, rng);
       motions.push_back(m);
     }
     worst_all = std::max(worst_all, testing::Error(SolveChouKamel(motions), X).rotation);

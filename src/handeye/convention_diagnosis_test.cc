@@ -15,7 +15,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Every alternative applies: units not named, quaternion files.
-PoseData Open(const sim::SimulatedData& data) {
+PoseData Open(const testing::Scene& data) {
   PoseData out;
   out.setup = data.setup;
   out.T_base_gripper = data.T_base_gripper;
@@ -47,7 +47,7 @@ TEST(ConventionDiagnosis, NeverFiresOnCorrectData) {
     for (int n : {4, 5, 8, 15, 30}) {
       for (double sigma : {0.0, 0.1, 1.0, 3.0}) {
         for (int seed = 0; seed < 30; ++seed) {
-          const sim::SimulatedData data =
+          const testing::Scene data =
               testing::ThesisCase(setup, n, 1000 + 7 * seed + n, sigma * kDeg, sigma * 1e-3);
           const ConventionDiagnosis diagnosis = DiagnoseConventions(Open(data), Fast());
           if (diagnosis.better || !diagnosis.given.solved || diagnosis.alternatives.size() != 9) {
@@ -158,7 +158,7 @@ TEST(ConventionDiagnosis, NamesEveryMistake) {
 // Inverting both files swaps X and Z (A⁻¹ Z B⁻¹ = X) and fits exactly: not a mistake the fit can
 // see, and the diagnosis stays silent (plausibility catches it when the lengths are wrong).
 TEST(ConventionDiagnosis, BothFilesInvertedSwapXAndZ) {
-  const sim::SimulatedData data = testing::ThesisCase(Setup::kEyeInHand, 10, 31);
+  const testing::Scene data = testing::ThesisCase(Setup::kEyeInHand, 10, 31);
   PoseData both = Open(data);
   both.T_base_gripper = Inverted(both.T_base_gripper);
   both.T_camera_target = Inverted(both.T_camera_target);
@@ -170,7 +170,7 @@ TEST(ConventionDiagnosis, BothFilesInvertedSwapXAndZ) {
 
 // Alternatives apply only where the files left the question open.
 TEST(ConventionDiagnosis, AlternativesFollowWhatTheFilesFix) {
-  const sim::SimulatedData data = testing::ThesisCase(Setup::kEyeToHand, 6, 32);
+  const testing::Scene data = testing::ThesisCase(Setup::kEyeToHand, 6, 32);
   PoseData named = Open(data);
   named.robot_unit_named = named.camera_unit_named = true;
   named.robot_quaternions = named.camera_quaternions = false;

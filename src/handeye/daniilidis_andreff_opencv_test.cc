@@ -71,7 +71,7 @@ TEST(DaniilidisAndreffOpenCvPeer, WideRotationsBreakOpenCvDaniilidisNotHecal) {
   int opencv_failures = 0;
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     for (uint64_t seed = 1; seed <= 10; ++seed) {
-      const sim::SimulatedData data = testing::WideRotationCase(setup, 8, seed);
+      const testing::Scene data = testing::WideRotationCase(setup, 8, seed);
       const Problem problem = data.MeasuredProblem();
       const Pose X = SolveDaniilidis(AllPairMotions(problem));
       testing::ExpectPoseNear(X, data.X, 1e-9, "hecal daniilidis");

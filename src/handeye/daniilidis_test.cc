@@ -22,7 +22,7 @@ TEST(Daniilidis, ExactOnNoiseFreeDataIncludingWideRotations) {
 
 TEST(Daniilidis, TwoSmallestSingularValuesVanishWithoutNoise) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const sim::SimulatedData data = testing::ThesisCase(setup, 10, 7);
+    const testing::Scene data = testing::ThesisCase(setup, 10, 7);
     DaniilidisReport report;
     SolveDaniilidis(AllPairMotions(data.MeasuredProblem()), &report);
     const auto& sigma = report.singular_values;
@@ -44,7 +44,7 @@ TEST(Daniilidis, NoisyDataLoseFewMotionsToTheConsistencyCheck) {
   for (double sigma : {0.3, 1.0}) {
     size_t rejected = 0, total = 0;
     for (uint64_t seed = 0; seed < 40; ++seed) {
-      const sim::SimulatedData data = testing::ThesisCase(
+      const testing::Scene data = testing::ThesisCase(
           seed % 2 == 0 ? handeye::Setup::kEyeInHand : handeye::Setup::kEyeToHand, 15, 300 + seed,
           sigma * std::numbers::pi / 180.0, sigma * 1e-3);
       const std::vector<Motion> motions = AllPairMotions(data.MeasuredProblem());
@@ -63,7 +63,7 @@ TEST(Daniilidis, NoisyDataLoseFewMotionsToTheConsistencyCheck) {
 TEST(Daniilidis, ConsistencyCheckRejectsMotionsOfACorruptedStation) {
   constexpr int kBad = 3;
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    sim::SimulatedData data = testing::ThesisCase(setup, 8, 21);
+    testing::Scene data = testing::ThesisCase(setup, 8, 21);
     data.T_camera_target[kBad] =
         data.T_camera_target[kBad] *
         MakePose(so3::Exp(Eigen::Vector3d(0.05, -0.06, 0.03)), Eigen::Vector3d(0.02, 0.0, 0.0));
@@ -105,8 +105,7 @@ TEST(Daniilidis, DegenerateDataThrow) {
 
 // The translation normalisation makes the result independent of the length unit.
 TEST(Daniilidis, ResultDoesNotDependOnTheLengthUnit) {
-  const sim::SimulatedData data =
-      testing::ThesisCase(handeye::Setup::kEyeInHand, 10, 31, 0.01, 1e-3);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 10, 31, 0.01, 1e-3);
   std::vector<Motion> motions = AllPairMotions(data.MeasuredProblem());
   const Pose X_m = SolveDaniilidis(motions);
   for (Motion& motion : motions) {

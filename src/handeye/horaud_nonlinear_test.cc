@@ -30,7 +30,7 @@ TEST(HoraudNonlinear, DegenerateDataThrow) {
 // From a start 30° and 10 cm off, the refinement still reaches the exact solution.
 TEST(HoraudNonlinear, RefinementConvergesFromAPoorStart) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const sim::SimulatedData data = testing::ThesisCase(setup, 8, 51);
+    const testing::Scene data = testing::ThesisCase(setup, 8, 51);
     const Pose start =
         data.X * MakePose(so3::Exp(Eigen::Vector3d(0.3, -0.3, 0.25)), Eigen::Vector3d(0.1, 0, 0));
     const Pose X = RefineHoraudNonlinear(AllPairMotions(data.MeasuredProblem()), start);

@@ -28,8 +28,8 @@ double F1(const std::vector<Motion>& motions, const Eigen::Matrix3d& R) {
 // random directions) costs more.
 TEST(Horaud, RotationMinimisesTheQuaternionCost) {
   for (uint64_t seed = 1; seed <= 5; ++seed) {
-    const sim::SimulatedData data = testing::ThesisCase(Setup::kEyeInHand, 8, 900 + seed,
-                                                        0.5 * std::numbers::pi / 180.0, 0.5e-3);
+    const testing::Scene data = testing::ThesisCase(Setup::kEyeInHand, 8, 900 + seed,
+                                                    0.5 * std::numbers::pi / 180.0, 0.5e-3);
     const std::vector<Motion> motions = AllPairMotions(data.MeasuredProblem());
     const Eigen::Matrix3d R = SolveHoraud(motions).linear();
     const double best = F1(motions, R);

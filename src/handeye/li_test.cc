@@ -29,8 +29,7 @@ TEST(Li, TabbDatasetWithinUpstreamTolerance) {
 // Translations are normalised before the joint system is formed, so the length unit does not
 // change the (noisy) result beyond scaling it.
 TEST(Li, ResultDoesNotDependOnTheLengthUnit) {
-  const sim::SimulatedData data =
-      testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 41, 0.01, 1e-3);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 41, 0.01, 1e-3);
   Problem problem = data.MeasuredProblem();
   const Solution in_m = SolveLi(problem);
   for (Pose& A : problem.A) A.translation() *= 1000.0;

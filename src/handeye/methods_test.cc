@@ -58,7 +58,7 @@ TEST(Methods, EveryClosedFormIsExactOnNoiseFreeData) {
     SCOPED_TRACE(std::string(Info(method).name));
     for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
       for (int n : {3, 15}) {
-        const sim::SimulatedData data = testing::ThesisCase(setup, n, 200 + n);
+        const testing::Scene data = testing::ThesisCase(setup, n, 200 + n);
         const Solution solution = SolveClosedForm(method, data.MeasuredProblem());
         testing::ExpectPoseNear(solution.X, data.X, 1e-9, "X");
         testing::ExpectPoseNear(solution.Z, data.Z, 1e-9, "Z");
@@ -83,7 +83,7 @@ TEST(Methods, EveryClosedFormIsExactWithExactHalfTurnsBetweenStations) {
         MakePose(R0 * so3::Exp(omega), testing::RandomPose(rng, 0.5).translation()));
   }
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const sim::SimulatedData data = testing::CaseFromCameraPoses(setup, T_target_camera, rng);
+    const testing::Scene data = testing::CaseFromCameraPoses(setup, T_target_camera, rng);
     for (Method method : ClosedFormMethods()) {
       SCOPED_TRACE(std::string(Info(method).name) + " " + std::string(SetupName(setup)));
       const Solution solution = SolveClosedForm(method, data.MeasuredProblem());

@@ -16,7 +16,7 @@ namespace {
 // motion.h (A_ij = A_j⁻¹ A_i, B_ij = B_j B_i⁻¹), in both setups.
 TEST(AllPairMotions, EveryPairOnceAndConjugate) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const sim::SimulatedData data = testing::ThesisCase(setup, 7, 3);
+    const testing::Scene data = testing::ThesisCase(setup, 7, 3);
     const Problem problem = data.MeasuredProblem();
     const std::vector<Motion> motions = AllPairMotions(problem);
     ASSERT_EQ(motions.size(), 21u);

@@ -10,9 +10,9 @@
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/so3.h"
-#include "hecal/sim/noise.h"
 #include "testing/handeye_solver_suite.h"
 #include "testing/moveit_dataset.h"
+#include "testing/scene.h"
 #include "testing/tabb_dataset.h"
 #include "testing/thrown.h"
 
@@ -146,11 +146,11 @@ TEST(Observability, PureTranslationStationsAmongRotatingOnesAreFine) {
 
 // Degenerate data with robot noise σ on every station: the exact checks pass (noise spreads the
 // axes), the noise-aware check names the unobservable part.
-Problem WithRobotNoise(const sim::SimulatedData& data, double sigma, uint64_t seed) {
+Problem WithRobotNoise(const testing::Scene& data, double sigma, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, sigma, 0.0};
+  const testing::PoseNoise noise{sigma, 0.0};
   std::vector<Pose> robot = data.T_base_gripper;
-  for (Pose& T : robot) T = sim::AddNoise(T, noise, rng);
+  for (Pose& T : robot) T = testing::AddPoseNoise(T, noise, rng);
   return MakeProblem(data.setup, robot, data.T_camera_target);
 }
 

@@ -7,8 +7,8 @@
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/so3.h"
-#include "hecal/sim/gross_outliers.h"
 #include "testing/handeye_cases.h"
+#include "testing/scene.h"
 
 namespace hecal::handeye {
 namespace {
@@ -19,7 +19,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 TEST(StationConsensus, NoiseFreeDataAreOneConsensusAndExact) {
   for (handeye::Setup setup : {Setup::kEyeInHand, Setup::kEyeToHand}) {
     for (int n : {3, 5, 12, 40}) {
-      const sim::SimulatedData data = testing::ThesisCase(setup, n, 300 + n);
+      const testing::Scene data = testing::ThesisCase(setup, n, 300 + n);
       const StationConsensus consensus = FindStationConsensus(data.MeasuredProblem(), {});
       EXPECT_EQ(std::count(consensus.inlier.begin(), consensus.inlier.end(), true), n);
       EXPECT_LT(testing::Error(consensus.solution.X, data.X).rotation, 1e-9);
@@ -40,9 +40,9 @@ TEST(StationConsensus, ExcludesGrossOutliersUpToTheRejectionLimit) {
   for (handeye::Setup setup : {Setup::kEyeInHand, Setup::kEyeToHand}) {
     for (int k : {1, 3, 8}) {
       for (int trial = 0; trial < 10; ++trial) {
-        sim::SimulatedData data = testing::ThesisCase(setup, 20, 1000 * k + trial, kDeg, 1e-3);
+        testing::Scene data = testing::ThesisCase(setup, 20, 1000 * k + trial, kDeg, 1e-3);
         std::mt19937_64 rng(77 + trial);
-        const std::vector<int> replaced = sim::InjectGrossOutliers(&data, k, rng);
+        const std::vector<int> replaced = testing::ReplaceRobotPoses(&data, k, rng);
         const StationConsensus consensus = FindStationConsensus(data.MeasuredProblem(), {});
         for (int i = 0; i < 20; ++i) {
           const bool is_outlier = std::count(replaced.begin(), replaced.end(), i) > 0;
@@ -63,9 +63,9 @@ TEST(StationConsensus, ExcludesGrossOutliersUpToTheRejectionLimit) {
 
 // Many stations: random triples (seeded, deterministic) and a scored subset.
 TEST(StationConsensus, RandomTriplesAreDeterministicAndStillFindTheConsensus) {
-  sim::SimulatedData data = testing::ThesisCase(Setup::kEyeInHand, 60, 9, 0.5 * kDeg, 5e-4);
+  testing::Scene data = testing::ThesisCase(Setup::kEyeInHand, 60, 9, 0.5 * kDeg, 5e-4);
   std::mt19937_64 rng(3);
-  const std::vector<int> replaced = sim::InjectGrossOutliers(&data, 12, rng);
+  const std::vector<int> replaced = testing::ReplaceRobotPoses(&data, 12, rng);
   ConsensusOptions options;
   options.max_hypotheses = 100;  // below RequiredHypotheses(60): the cap binds
   options.max_scored_stations = 30;
@@ -89,15 +89,15 @@ TEST(StationConsensus, HypothesisCountFollowsTheBreakdownBound) {
   EXPECT_EQ(RequiredHypotheses(1000), 236);
   EXPECT_EQ(RequiredHypotheses(10000), 238);
   // 9 stations: 84 triples, fewer than the bound, so all of them.
-  const sim::SimulatedData nine = testing::ThesisCase(Setup::kEyeInHand, 9, 21, kDeg, 1e-3);
+  const testing::Scene nine = testing::ThesisCase(Setup::kEyeInHand, 9, 21, kDeg, 1e-3);
   EXPECT_EQ(FindStationConsensus(nine.MeasuredProblem(), {}).hypotheses, 84);
-  const sim::SimulatedData fifty = testing::ThesisCase(Setup::kEyeInHand, 50, 22, kDeg, 1e-3);
+  const testing::Scene fifty = testing::ThesisCase(Setup::kEyeInHand, 50, 22, kDeg, 1e-3);
   EXPECT_EQ(FindStationConsensus(fifty.MeasuredProblem(), {}).hypotheses, 197);
 }
 
 // Sizes of a residual: rotation angle accurate at tiny angles and near π.
 TEST(StationConsensus, ResidualSizeIsAccurateNearZeroAndPi) {
-  const sim::SimulatedData data = testing::ThesisCase(Setup::kEyeInHand, 3, 5);
+  const testing::Scene data = testing::ThesisCase(Setup::kEyeInHand, 3, 5);
   const Problem problem = data.MeasuredProblem();
   for (double angle : {1e-12, 1e-6, 0.5, std::numbers::pi - 1e-9}) {
     Solution solution{data.X, data.Z};
@@ -123,7 +123,7 @@ TEST(StationConsensus, DegenerateDataAreRefused) {
 }
 
 TEST(SubProblem, KeepsTheFlaggedStationsInOrder) {
-  const sim::SimulatedData data = testing::ThesisCase(Setup::kEyeToHand, 5, 6);
+  const testing::Scene data = testing::ThesisCase(Setup::kEyeToHand, 5, 6);
   const Problem problem = data.MeasuredProblem();
   const Problem sub = SubProblem(problem, {true, false, true, false, true});
   ASSERT_EQ(sub.A.size(), 3u);

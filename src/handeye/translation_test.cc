@@ -31,7 +31,7 @@ Eigen::Vector3d DenseSolution(const std::vector<Motion>& motions, const Eigen::M
 
 TEST(SolveTranslation, ExactWithTheTrueRotation) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    for (const sim::SimulatedData& data :
+    for (const testing::Scene& data :
          {testing::ThesisCase(setup, 3, 1), testing::ThesisCase(setup, 20, 2),
           testing::WideRotationCase(setup, 6, 3),
           testing::WideRotationCase(setup, 6, 4, std::numbers::pi)}) {
@@ -44,8 +44,8 @@ TEST(SolveTranslation, ExactWithTheTrueRotation) {
 
 TEST(SolveTranslation, EqualsTheDenseLeastSquaresSolution) {
   for (uint64_t seed = 1; seed <= 10; ++seed) {
-    const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 8, seed,
-                                                        1.0 * std::numbers::pi / 180.0, 1e-3);
+    const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 8, seed,
+                                                    1.0 * std::numbers::pi / 180.0, 1e-3);
     const std::vector<Motion> motions = AllPairMotions(data.MeasuredProblem());
     std::mt19937_64 rng(seed);
     const Eigen::Matrix3d R_X =
@@ -56,7 +56,7 @@ TEST(SolveTranslation, EqualsTheDenseLeastSquaresSolution) {
 
 // A motion without rotation has R_A − I = 0: whatever its translations, it changes nothing.
 TEST(SolveTranslation, MotionsWithoutRotationAddNothing) {
-  const sim::SimulatedData data = testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 5);
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 5);
   std::vector<Motion> motions = AllPairMotions(data.MeasuredProblem());
   const Eigen::Vector3d before = SolveTranslation(motions, data.X.linear());
   motions.push_back({MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(3.0, -2.0, 1.0)),
@@ -65,7 +65,7 @@ TEST(SolveTranslation, MotionsWithoutRotationAddNothing) {
 }
 
 TEST(SolveTranslation, ParallelAxesNameTheCommonAxis) {
-  const sim::SimulatedData data = testing::ParallelAxesCase(handeye::Setup::kEyeInHand, 5, 6);
+  const testing::Scene data = testing::ParallelAxesCase(handeye::Setup::kEyeInHand, 5, 6);
   const std::vector<Motion> motions = AllPairMotions(data.MeasuredProblem());
   try {
     SolveTranslation(motions, data.X.linear());
@@ -77,7 +77,7 @@ TEST(SolveTranslation, ParallelAxesNameTheCommonAxis) {
 }
 
 TEST(SolveTranslation, NoRotationAtAllThrows) {
-  const sim::SimulatedData data = testing::PureTranslationCase(handeye::Setup::kEyeToHand, 5, 7);
+  const testing::Scene data = testing::PureTranslationCase(handeye::Setup::kEyeToHand, 5, 7);
   EXPECT_THROW(SolveTranslation(AllPairMotions(data.MeasuredProblem()), data.X.linear()),
                DegenerateError);
   EXPECT_THROW(SolveTranslation({}, Eigen::Matrix3d::Identity()), DegenerateError);

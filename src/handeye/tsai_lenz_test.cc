@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "hecal/geometry/so3.h"
-#include "hecal/sim/noise.h"
 #include "testing/handeye_solver_suite.h"
+#include "testing/scene.h"
 
 namespace hecal::handeye {
 namespace {
@@ -19,7 +19,7 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 // Thesis-like stations (±45° tilt, free spin, 1 m from the target) with X's rotation angle fixed
 // to `x_angle`, σ = 0.3 mm / 0.3° on robot and camera.
-sim::SimulatedData NoisyCaseWithXAngle(double x_angle, int stations, uint64_t seed) {
+testing::Scene NoisyCaseWithXAngle(double x_angle, int stations, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> tilt(-45.0 * kDegree, 45.0 * kDegree);
   std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
@@ -31,14 +31,14 @@ sim::SimulatedData NoisyCaseWithXAngle(double x_angle, int stations, uint64_t se
     T_target_camera.push_back(
         MakePose(R, Eigen::Vector3d(0.0, 0.0, -1.0) + testing::RandomPose(rng, 0.5).translation()));
   }
-  sim::SimulatedData data = testing::CaseFromCameraPoses(Setup::kEyeInHand, T_target_camera, rng);
+  testing::Scene data = testing::CaseFromCameraPoses(Setup::kEyeInHand, T_target_camera, rng);
   // Re-pose the robot for the chosen X (Z = A X B).
   data.X.linear() = so3::Exp(testing::RandomRotationVector(rng, x_angle));
-  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.3 * kDegree, 0.3e-3};
+  const testing::PoseNoise noise{0.3 * kDegree, 0.3e-3};
   for (int i = 0; i < stations; ++i) {
     data.T_base_gripper_true[i] = data.Z * T_target_camera[i] * data.X.inverse();
-    data.T_base_gripper[i] = sim::AddNoise(data.T_base_gripper_true[i], noise, rng);
-    data.T_camera_target[i] = sim::AddNoise(data.T_camera_target_true[i], noise, rng);
+    data.T_base_gripper[i] = testing::AddPoseNoise(data.T_base_gripper_true[i], noise, rng);
+    data.T_camera_target[i] = testing::AddPoseNoise(data.T_camera_target_true[i], noise, rng);
   }
   return data;
 }
@@ -50,7 +50,7 @@ TEST(TsaiLenz, NoisyDataWithXNearHalfTurnStayAccurate) {
   for (double x_angle : {std::numbers::pi, std::numbers::pi - 1e-3 * kDegree, 1.0}) {
     double worst = 0.0;
     for (uint64_t seed = 1; seed <= 40; ++seed) {
-      const sim::SimulatedData data = NoisyCaseWithXAngle(x_angle, 8, seed);
+      const testing::Scene data = NoisyCaseWithXAngle(x_angle, 8, seed);
       const Pose X = SolveTsaiLenz(AllPairMotions(data.MeasuredProblem()));
       worst = std::max(worst, testing::Degrees(testing::Error(X, data.X).rotation));
     }
@@ -65,19 +65,19 @@ TEST(TsaiLenz, NoisyDataWithXNearHalfTurnStayAccurate) {
 TEST(TsaiLenz, PureTranslationStationsAreHarmless) {
   double worst_with = 0.0, worst_without = 0.0;
   for (uint64_t seed = 1; seed <= 20; ++seed) {
-    sim::SimulatedData data = NoisyCaseWithXAngle(2.0, 8, seed);
+    testing::Scene data = NoisyCaseWithXAngle(2.0, 8, seed);
     worst_without = std::max(
         worst_without,
         testing::Error(SolveTsaiLenz(AllPairMotions(data.MeasuredProblem())), data.X).rotation);
     std::mt19937_64 rng(seed);
-    const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, 0.3 * kDegree, 0.3e-3};
+    const testing::PoseNoise noise{0.3 * kDegree, 0.3e-3};
     for (int k = 0; k < 20; ++k) {  // same orientation as station 0, moved by up to 10 cm
       const Pose shift =
           MakePose(Eigen::Matrix3d::Identity(), testing::RandomPose(rng, 0.1).translation());
       const Pose T_target_camera = data.T_camera_target_true[0].inverse() * shift;
       const Pose A = data.Z * T_target_camera * data.X.inverse();
-      data.T_base_gripper.push_back(sim::AddNoise(A, noise, rng));
-      data.T_camera_target.push_back(sim::AddNoise(T_target_camera.inverse(), noise, rng));
+      data.T_base_gripper.push_back(testing::AddPoseNoise(A, noise, rng));
+      data.T_camera_target.push_back(testing::AddPoseNoise(T_target_camera.inverse(), noise, rng));
     }
     worst_with = std::max(
         worst_with,

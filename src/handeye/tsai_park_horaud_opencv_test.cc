@@ -33,8 +33,8 @@ Outcome Compare(Pose (*hecal)(const std::vector<Motion>&), cv::HandEyeCalibratio
   Outcome outcome;
   for (int k = 0; k < count; ++k) {
     const Setup setup = k % 2 == 0 ? Setup::kEyeInHand : Setup::kEyeToHand;
-    const sim::SimulatedData data = kind == Case::kBenign ? testing::BenignCase(setup, 10, 1 + k)
-                                                          : testing::ThesisCase(setup, 10, 300 + k);
+    const testing::Scene data = kind == Case::kBenign ? testing::BenignCase(setup, 10, 1 + k)
+                                                      : testing::ThesisCase(setup, 10, 300 + k);
     const Problem problem = data.MeasuredProblem();
     const testing::PoseError mine = testing::Error(hecal(AllPairMotions(problem)), data.X);
     outcome.hecal_worst = std::max({outcome.hecal_worst, mine.rotation, mine.translation});

@@ -72,14 +72,14 @@ std::string JoinPath(const std::string& directory, const char* name) {
 void CheckOptions(ImportFormat format, const ImportOptions& options) {
   const std::string name(ImportFormatName(format));
   if (options.units && format != ImportFormat::kMatrix16 && format != ImportFormat::kOpenCvYaml) {
-    Fail("--units", 0,
+    Fail("ImportOptions.units", 0,
          name + " files fix their own length unit (" +
-             (format == ImportFormat::kTabb ? "mm" : "m") + "), so --units does not apply",
-         "drop --units (it is for matrix16 and opencv-yaml, whose files do not say)");
+             (format == ImportFormat::kTabb ? "mm" : "m") + "), so a length unit does not apply",
+         "leave the unit unset (it is for matrix16 and opencv-yaml, whose files do not say)");
   }
   if (options.setup && format != ImportFormat::kEasyHandeye) {
-    Fail("--setup", 0, "does not apply to " + name + " (only easy_handeye needs it)",
-         "drop --setup");
+    Fail("ImportOptions.setup", 0, "does not apply to " + name + " (only easy_handeye needs it)",
+         "leave the setup unset");
   }
 }
 
@@ -142,8 +142,8 @@ ImportedPoses Read(ImportFormat format, const std::vector<std::string>& inputs,
     case ImportFormat::kMatrix16: {
       if (count != 1 && count != 2) WrongInputCount(format, count);
       if (count == 1 && options.camera_inverse) {
-        Fail("--camera-inverse", 0, "given without a camera matrix file",
-             "pass the camera file after the robot file, or drop --camera-inverse");
+        Fail("ImportOptions.camera_inverse", 0, "given without a camera matrix file",
+             "pass the camera file after the robot file, or leave camera_inverse unset");
       }
       Matrix16Options matrix_options;
       matrix_options.unit = options.units.value_or(LengthUnit::kMetre);
@@ -161,7 +161,7 @@ ImportedPoses Read(ImportFormat format, const std::vector<std::string>& inputs,
       return ParseVispPoseFiles(files);
     }
   }
-  Fail("--format", 0, "unknown import format", "use one of " + ImportFormatList());
+  Fail("ImportOptions.format", 0, "unknown import format", "use one of " + ImportFormatList());
 }
 
 }  // namespace

@@ -208,10 +208,10 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source,
 
   const Parameters parameters = ReadParameters(root, source);
   if (setup_flag && parameters.setup && *setup_flag != *parameters.setup) {
-    Fail("--setup", 0,
+    Fail("ImportOptions.setup", 0,
          "contradicts " + source + ":" + std::to_string(parameters.setup_line) + ", which says " +
              std::string(SetupText(*parameters.setup)),
-         "drop --setup or fix the file");
+         "leave the setup unset or fix the file");
   }
   const std::optional<ImportSetup> setup = parameters.setup ? parameters.setup : setup_flag;
   if (!setup) {

@@ -100,7 +100,7 @@ TEST(ImportEasyHandeye, SetupFromTheFileOrTheFlag) {
     ParseEasyHandeyeSamples(Samples("eye_in_hand"), "s.yaml", ImportSetup::kEyeToHand);
     ADD_FAILURE() << "no error for a contradicting --setup";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "--setup");
+    EXPECT_EQ(e.source(), "ImportOptions.setup");
     EXPECT_THAT(std::string(e.what()), HasSubstr("s.yaml:2, which says eye_in_hand"));
   }
 }

@@ -61,17 +61,17 @@ TEST(Import, FlagsThatDoNotApplyAreRejected) {
   ImportOptions units;
   units.units = LengthUnit::kMillimetre;
   EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {json}, units),
-              HasSubstr("--units: moveit files fix their own length unit (m)"));
+              HasSubstr("ImportOptions.units: moveit files fix their own length unit (m)"));
   EXPECT_THAT(ErrorOf(ImportFormat::kTabb, {kData + "tabb-rwhe-dataset1"}, units),
               HasSubstr("(mm)"));
   ImportOptions setup;
   setup.setup = ImportSetup::kEyeInHand;
-  EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {json}, setup), HasSubstr("--setup"));
+  EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {json}, setup), HasSubstr("ImportOptions.setup: "));
   ImportOptions camera_inverse;
   camera_inverse.camera_inverse = true;
   EXPECT_THAT(
       ErrorOf(ImportFormat::kMatrix16, {kData + "rwhe-kuka2/RobotPosesVec.txt"}, camera_inverse),
-      HasSubstr("--camera-inverse: given without a camera matrix file"));
+      HasSubstr("ImportOptions.camera_inverse: given without a camera matrix file"));
 }
 
 // --robot-inverse / --camera-inverse apply to every format, after its own convention: each side

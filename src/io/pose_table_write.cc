@@ -55,7 +55,8 @@ void CheckFinite(double value, const PoseTable& table, const PoseRow& row, std::
 std::string FormatPoseTable(const PoseTable& table, const PoseWriteOptions& options) {
   const RotationFormat& format = options.rotation;
   if (format.kind == RotationFormat::Kind::kEuler && !format.sequence) {
-    throw std::invalid_argument("FormatPoseTable: an Euler format needs a sequence");
+    throw InputError("PoseWriteOptions.rotation", 0, "an Euler format needs a sequence",
+                     "name the sequence, e.g. xyz");
   }
   const bool any_id = std::any_of(table.rows.begin(), table.rows.end(),
                                   [](const PoseRow& row) { return row.id.has_value(); });

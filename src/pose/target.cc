@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
+
 namespace hecal::pose {
 namespace {
 
@@ -374,7 +376,8 @@ std::optional<TargetProblem> CheckTarget(const TargetSpec& target) {
 
 std::vector<ObjectPoint> ObjectPoints(const TargetSpec& target) {
   if (const std::optional<TargetProblem> problem = CheckTarget(target)) {
-    throw std::invalid_argument("ObjectPoints: " + problem->problem);
+    throw InputError("TargetSpec." + std::string(TargetFieldName(problem->field)), 0,
+                     problem->problem, problem->fix);
   }
   std::vector<ObjectPoint> points;
   points.reserve(static_cast<size_t>(PointCount(target)));

@@ -8,6 +8,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
+
 namespace hecal::pose {
 namespace {
 
@@ -234,7 +236,7 @@ void ExpectProblem(const TargetSpec& spec, TargetField field, const std::string&
   EXPECT_EQ(problem->field, field) << problem->problem;
   EXPECT_THAT(problem->problem, HasSubstr(text));
   EXPECT_FALSE(problem->fix.empty());
-  EXPECT_THROW(ObjectPoints(spec), std::invalid_argument);
+  EXPECT_THROW(ObjectPoints(spec), InputError);
 }
 
 TEST(Target, CheckRejectsUnusableSpecs) {

@@ -136,7 +136,9 @@ Bound BoundAtTruth(const sim::SimulatedData& data, const Setting& setting) {
     const estimation::AccuracyBound bound =
         estimation::FirstOrderBound(truth, data.X, data.Z, robot, camera);
     return {bound.rotation_rmse_X, bound.translation_rmse_X};
-  } catch (const std::invalid_argument&) {
+  } catch (const DegenerateError&) {  // singular information
+    return {kNaN, kNaN};
+  } catch (const std::invalid_argument&) {  // a singular noise model
     return {kNaN, kNaN};
   }
 }
@@ -191,35 +193,37 @@ estimation::PoseSigma CameraSigma(const Setting& setting) {
 
 void ValidateStudyOptions(const StudyOptions& options) {
   if (options.settings.empty()) {
-    throw InputError("--stations", 0, "the study has no setting", "give at least one value");
+    throw InputError("StudyOptions.settings", 0, "the study has no setting",
+                     "give at least one value");
   }
   if (options.methods.empty()) {
-    throw InputError("--method", 0, "no method selected", "name one or more methods, or all");
+    throw InputError("StudyOptions.methods", 0, "no method selected",
+                     "name one or more methods, or all");
   }
   if (options.trials < 1) {
-    throw InputError("--trials", 0, "needs at least 1 trial, got " + std::to_string(options.trials),
-                     "e.g. --trials 200");
+    throw InputError("StudyOptions.trials", 0,
+                     "needs at least 1 trial, got " + std::to_string(options.trials), "e.g. 200");
   }
   if (options.threads < 0) {
-    throw InputError("--threads", 0, "cannot be negative", "0 uses every core");
+    throw InputError("StudyOptions.threads", 0, "cannot be negative", "0 uses every core");
   }
   estimation::ValidateCovarianceOptions(options.covariance);
   for (const Setting& s : options.settings) {
     if (s.stations < 3) {
-      throw InputError("--stations", 0,
+      throw InputError("Setting.stations", 0,
                        "needs at least 3 stations (2 motions), got " + std::to_string(s.stations),
                        "the thesis' k motions are k + 1 stations");
     }
     if (s.gross_outliers < 0 || s.stations - s.gross_outliers < 3) {
-      throw InputError("--outliers", 0,
+      throw InputError("Setting.gross_outliers", 0,
                        std::to_string(s.gross_outliers) + " gross outliers in " +
                            std::to_string(s.stations) + " stations leave fewer than 3 good ones",
                        "give 0 to stations - 3 outliers");
     }
     if (!(s.translation_sigma >= 0.0) || !(s.rotation_sigma >= 0.0) ||
         !std::isfinite(s.translation_sigma) || !std::isfinite(s.rotation_sigma)) {
-      throw InputError("--sigma", 0, "noise levels must be finite and non-negative",
-                       "e.g. --sigma 0,0.3,1");
+      throw InputError("Setting.rotation_sigma", 0, "noise levels must be finite and non-negative",
+                       "e.g. 0, 0.3 or 1");
     }
   }
 }

@@ -1,5 +1,5 @@
 // Test support (not installed): hand–eye data sets with known truth for solver tests.
-//  - ThesisCase: the thesis protocol (sim/thesis_protocol.h), optionally noisy.
+//  - ThesisCase: the thesis protocol (testing/scene.h), optionally noisy.
 //  - WideRotationCase: every consecutive station pair differs by a rotation of 170°–179.9°
 //    (the data that break OpenCV 4.6's TSAI / HORAUD / DANIILIDIS), plus a hand–eye rotation
 //    chosen by the caller (e.g. exactly π, to stress Tsai's tan(θ/2)).
@@ -10,29 +10,29 @@
 
 #include "hecal/geometry/so3.h"
 #include "hecal/handeye/problem.h"
-#include "hecal/sim/thesis_protocol.h"
 #include "testing/random_poses.h"
+#include "testing/scene.h"
 
 namespace hecal::testing {
 
-inline sim::SimulatedData ThesisCase(handeye::Setup setup, int stations, uint64_t seed,
-                                     double rotation_sigma = 0.0, double translation_sigma = 0.0) {
+inline Scene ThesisCase(handeye::Setup setup, int stations, uint64_t seed,
+                        double rotation_sigma = 0.0, double translation_sigma = 0.0) {
   std::mt19937_64 rng(seed);
-  sim::ProtocolOptions options;
+  SceneOptions options;
   options.setup = setup;
   options.stations = stations;
-  sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, rotation_sigma, translation_sigma};
-  return sim::SimulateThesisProtocol(options, noise, noise, rng);
+  options.robot_noise = options.camera_noise = {rotation_sigma, translation_sigma};
+  return MakeScene(options, rng);
 }
 
 // Noise-free; station k+1 = station k rotated by 170°–179.9° about a random axis (relative
 // rotations of consecutive stations in that range). X's rotation angle is `x_angle` about a
 // random axis (default random rotation when negative).
-inline sim::SimulatedData WideRotationCase(handeye::Setup setup, int stations, uint64_t seed,
-                                           double x_angle = -1.0) {
+inline Scene WideRotationCase(handeye::Setup setup, int stations, uint64_t seed,
+                              double x_angle = -1.0) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> angle(170.0, 179.9);
-  sim::SimulatedData data;
+  Scene data;
   data.setup = setup;
   const Pose small = RandomPose(rng, 0.05);
   const Pose large = RandomPose(rng, 1.0);

@@ -23,7 +23,6 @@
 #include "hecal/geometry/so3.h"
 #include "hecal/handeye/motion.h"
 #include "hecal/handeye/problem.h"
-#include "hecal/sim/noise.h"
 #include "testing/handeye_cases.h"
 #include "testing/tabb_dataset.h"
 
@@ -47,7 +46,7 @@ inline double Degrees(double radians) {
 
 struct NamedCase {
   std::string name;
-  sim::SimulatedData data;
+  Scene data;
 };
 
 inline std::vector<NamedCase> NoiseFreeCases() {
@@ -119,7 +118,7 @@ inline NoisyStudy RunNoisyStudy(const ProblemSolver& solve, int trials, uint64_t
   for (int trial = 0; trial < trials; ++trial) {
     const handeye::Setup setup =
         trial % 2 == 0 ? handeye::Setup::kEyeInHand : handeye::Setup::kEyeToHand;
-    const sim::SimulatedData data =
+    const Scene data =
         ThesisCase(setup, kStations[trial % 5], seed + trial, kSigmaRotation, kSigmaTranslation);
     const handeye::Solution solution = solve(data.MeasuredProblem());
     const PoseError x = Error(solution.X, data.X);
@@ -143,10 +142,9 @@ inline NoisyStudy RunNoisyStudy(const ProblemSolver& solve, int trials, uint64_t
 }
 
 // Noise-free data from given camera poses T_target_camera_i and a random X, Z.
-inline sim::SimulatedData CaseFromCameraPoses(handeye::Setup setup,
-                                              const std::vector<Pose>& T_target_camera,
-                                              std::mt19937_64& rng) {
-  sim::SimulatedData data;
+inline Scene CaseFromCameraPoses(handeye::Setup setup, const std::vector<Pose>& T_target_camera,
+                                 std::mt19937_64& rng) {
+  Scene data;
   data.setup = setup;
   data.X = RandomPose(rng, 0.1);
   data.Z = RandomPose(rng, 1.0);
@@ -162,8 +160,8 @@ inline sim::SimulatedData CaseFromCameraPoses(handeye::Setup setup,
 
 // Camera orientations within 40° of a common one (so relative rotations stay below 80°, away
 // from π), positions in a 1 m box 1 m from the target; Gaussian noise on robot and camera.
-inline sim::SimulatedData BenignCase(handeye::Setup setup, int stations, uint64_t seed,
-                                     double rotation_sigma = 0.0, double translation_sigma = 0.0) {
+inline Scene BenignCase(handeye::Setup setup, int stations, uint64_t seed,
+                        double rotation_sigma = 0.0, double translation_sigma = 0.0) {
   std::mt19937_64 rng(seed);
   const Eigen::Matrix3d R0 = RandomRotation(rng);
   std::uniform_real_distribution<double> angle(0.0, 40.0 * std::numbers::pi / 180.0);
@@ -173,17 +171,17 @@ inline sim::SimulatedData BenignCase(handeye::Setup setup, int stations, uint64_
     poses.push_back(
         MakePose(R, R * Eigen::Vector3d(0.0, 0.0, -1.0) + RandomPose(rng, 0.5).translation()));
   }
-  sim::SimulatedData data = CaseFromCameraPoses(setup, poses, rng);
-  const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, rotation_sigma, translation_sigma};
+  Scene data = CaseFromCameraPoses(setup, poses, rng);
+  const PoseNoise noise{rotation_sigma, translation_sigma};
   for (size_t i = 0; i < poses.size(); ++i) {
-    data.T_base_gripper[i] = sim::AddNoise(data.T_base_gripper[i], noise, rng);
-    data.T_camera_target[i] = sim::AddNoise(data.T_camera_target[i], noise, rng);
+    data.T_base_gripper[i] = AddPoseNoise(data.T_base_gripper[i], noise, rng);
+    data.T_camera_target[i] = AddPoseNoise(data.T_camera_target[i], noise, rng);
   }
   return data;
 }
 
 // Every station rotated about the same axis (so every relative rotation axis is parallel).
-inline sim::SimulatedData ParallelAxesCase(handeye::Setup setup, int stations, uint64_t seed) {
+inline Scene ParallelAxesCase(handeye::Setup setup, int stations, uint64_t seed) {
   std::mt19937_64 rng(seed);
   const Eigen::Matrix3d R0 = RandomRotation(rng);
   const Eigen::Vector3d axis = RandomUnitVector(rng);
@@ -196,7 +194,7 @@ inline sim::SimulatedData ParallelAxesCase(handeye::Setup setup, int stations, u
 }
 
 // Every station with the same orientation.
-inline sim::SimulatedData PureTranslationCase(handeye::Setup setup, int stations, uint64_t seed) {
+inline Scene PureTranslationCase(handeye::Setup setup, int stations, uint64_t seed) {
   std::mt19937_64 rng(seed);
   const Eigen::Matrix3d R0 = RandomRotation(rng);
   std::vector<Pose> poses;

@@ -1,6 +1,6 @@
 // Test support (not installed): hand–eye stations with images of a planar grid target, for the
-// reprojection tests. A compact thesis protocol (camera 1 m from the target, 0.4 m cube, ±20°
-// tilt, free spin) keeps every target point in front of every camera; the camera is a 640×480
+// reprojection tests. A compact scene (testing/scene.h: camera 1 m from the target, 0.4 m cube,
+// ±20° tilt, free spin) keeps every target point in front of every camera; the camera is a 640×480
 // pinhole with mild plumb_bob distortion; the target is a 9 × 6 grid of 30 mm pitch.
 #pragma once
 
@@ -9,7 +9,7 @@
 
 #include "hecal/estimation/reprojection_refinement.h"
 #include "hecal/pose/camera_model.h"
-#include "hecal/sim/thesis_protocol.h"
+#include "testing/scene.h"
 
 namespace hecal::testing {
 
@@ -34,22 +34,22 @@ inline std::vector<Eigen::Vector3d> GridTarget() {
 }
 
 struct ImageStations {
-  sim::SimulatedData data;                      // truth and (noisy) robot poses
+  Scene data;                                   // truth and (noisy) robot poses
   std::vector<estimation::ImagePoints> images;  // pixels of the TRUE camera poses + pixel noise
 };
 
 // `robot_noise` perturbs the robot poses (right perturbation); pixels get isotropic Gaussian
 // noise `pixel_sigma` (px).
 inline ImageStations MakeImageStations(handeye::Setup setup, int stations, uint64_t seed,
-                                       const sim::NoiseModel& robot_noise, double pixel_sigma) {
+                                       const PoseNoise& robot_noise, double pixel_sigma) {
   std::mt19937_64 rng(seed);
-  sim::ProtocolOptions options;
+  SceneOptions options;
   options.setup = setup;
   options.stations = stations;
   options.cube_side = 0.4;
   options.max_tilt = 20.0 * 3.14159265358979323846 / 180.0;
-  const sim::NoiseModel none{sim::NoiseModel::Kind::kGaussian, 0.0, 0.0};
-  ImageStations out{sim::SimulateThesisProtocol(options, robot_noise, none, rng), {}};
+  options.robot_noise = robot_noise;
+  ImageStations out{MakeScene(options, rng), {}};
   const pose::CameraModel camera = TestCamera();
   std::normal_distribution<double> noise(0.0, 1.0);
   for (const Pose& B : out.data.T_camera_target_true) {

@@ -97,7 +97,7 @@ inline PeerAccuracy ComparePeerAccuracy(
   int count = 0;
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     for (int trial = 0; trial < trials; ++trial) {
-      const sim::SimulatedData data =
+      const Scene data =
           BenignCase(setup, 10, 1000 + trial, 0.3 * std::numbers::pi / 180.0, 0.3e-3);
       const handeye::Problem problem = data.MeasuredProblem();
       for (int impl = 0; impl < 2; ++impl) {

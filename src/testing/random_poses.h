@@ -30,10 +30,15 @@ inline Eigen::Vector3d RandomRotationVector(std::mt19937_64& rng, double angle) 
   return angle * RandomUnitVector(rng);
 }
 
+// A point uniform in the cube [−half_side, half_side]³.
+inline Eigen::Vector3d RandomPointInBox(std::mt19937_64& rng, double half_side) {
+  std::uniform_real_distribution<double> uniform(-half_side, half_side);
+  return Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng));
+}
+
 // Random pose: uniform rotation, translation uniform in [−scale, scale]³ (metres).
 inline Pose RandomPose(std::mt19937_64& rng, double scale = 1.0) {
-  std::uniform_real_distribution<double> uniform(-scale, scale);
-  return MakePose(RandomRotation(rng), Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)));
+  return MakePose(RandomRotation(rng), RandomPointInBox(rng, scale));
 }
 
 // Rotation vectors at the edges of the domain: zero, 1e-9 rad, 1e-4 rad, exactly π about each

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
+
 namespace hecal::uncertainty {
 namespace {
 
@@ -86,7 +88,7 @@ TEST(MonteCarloTransform, RejectsBadArguments) {
   options.samples = 1;
   EXPECT_THROW((MonteCarloTransform<VectorXd, VectorXd>(f, VectorXd::Zero(2),
                                                         MatrixXd::Identity(2, 2), options)),
-               std::invalid_argument);
+               InputError);
   options.samples = 10;
   EXPECT_THROW((MonteCarloTransform<VectorXd, VectorXd>(f, VectorXd::Zero(2),
                                                         MatrixXd::Identity(3, 3), options)),

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
+
 namespace hecal::uncertainty {
 
 Eigen::MatrixXd CovarianceSquareRoot(const Eigen::MatrixXd& covariance, SquareRoot kind) {
@@ -79,7 +81,8 @@ bool UnscentedParameters::IsValid(int n, std::string* why) const {
 SigmaWeights Weights(int n, const UnscentedParameters& parameters) {
   std::string why;
   if (!parameters.IsValid(n, &why)) {
-    throw std::invalid_argument("unscented parameters: " + why);
+    throw InputError("UnscentedParameters", 0, why,
+                     "choose α, β, κ (or w0) that the state dimension allows, e.g. the defaults");
   }
   const double dim = n;
   SigmaWeights w;

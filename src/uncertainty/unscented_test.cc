@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/uncertainty/monte_carlo.h"
 #include "testing/random_poses.h"
@@ -102,7 +103,7 @@ TEST(Weights, InvalidParametersAreRejected) {
   EXPECT_FALSE(UnscentedParameters::Scaled(0.0, 2.0, 0.0).IsValid(3, &why));
   EXPECT_FALSE(UnscentedParameters::Scaled(1.0, 2.0, -3.0).IsValid(3, &why));
   EXPECT_FALSE(UnscentedParameters::Symmetric().IsValid(0, &why));
-  EXPECT_THROW(Weights(3, UnscentedParameters::Symmetric(2.0)), std::invalid_argument);
+  EXPECT_THROW(Weights(3, UnscentedParameters::Symmetric(2.0)), InputError);
 }
 
 TEST(UnscentedTransform, ExactForLinearMaps) {

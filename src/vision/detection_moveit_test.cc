@@ -12,8 +12,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "hecal/vision/detection.h"
-#include "render_test_views.h"
 #include "testing/moveit_photos.h"
+#include "testing/render_views.h"
 
 namespace hecal::vision {
 namespace {

@@ -15,7 +15,7 @@
 
 #include "hecal/vision/detection.h"
 #include "hecal/vision/render.h"
-#include "render_test_views.h"
+#include "testing/render_views.h"
 
 namespace hecal::vision {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/vision/render.h"
-#include "render_test_views.h"
+#include "testing/render_views.h"
 
 namespace hecal::vision {
 namespace {

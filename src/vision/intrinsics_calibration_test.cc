@@ -11,7 +11,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
-#include "vision/synthetic_views_test_util.h"
+#include "testing/synthetic_views.h"
 
 namespace hecal::vision {
 namespace {

@@ -8,7 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "hecal/vision/intrinsics_fit.h"
-#include "order_consistency_kuka2_views.h"
+#include "testing/kuka2_views.h"
 #include "testing/moveit_photos.h"
 
 namespace hecal::vision {

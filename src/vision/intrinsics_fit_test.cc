@@ -9,7 +9,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
-#include "synthetic_views_test_util.h"
+#include "testing/synthetic_views.h"
 
 namespace hecal::vision {
 namespace {

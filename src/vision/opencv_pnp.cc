@@ -69,7 +69,7 @@ Shape AnalyseShape(const std::vector<Eigen::Vector3d>& points) {
 }
 
 std::string MethodSource(PnpMethod method) {
-  return "--method " + std::string(Info(method).name);
+  return "PnpMethod " + std::string(Info(method).name);
 }
 
 void CheckInput(PnpMethod method, const std::vector<Eigen::Vector3d>& object_points,
@@ -117,13 +117,13 @@ void CheckInput(PnpMethod method, const std::vector<Eigen::Vector3d>& object_poi
                      std::string(info.name) + " needs coplanar object points, but they are up to " +
                          std::to_string(shape.plane_distance) +
                          " (object units) off their best-fit plane",
-                     "use --method sqpnp, epnp or iterative for non-planar points");
+                     "use sqpnp, epnp or iterative for non-planar points");
   }
   if (method == PnpMethod::kIterative && !planar && !has_initial && object_points.size() < 6) {
     throw InputError(MethodSource(method), 0,
                      "iterative needs at least 6 non-coplanar points to start (DLT), got " +
                          std::to_string(object_points.size()),
-                     "give 6 or more points, or use --method sqpnp");
+                     "give 6 or more points, or use sqpnp");
   }
 }
 

@@ -10,7 +10,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
-#include "vision/synthetic_views_test_util.h"
+#include "testing/synthetic_views.h"
 
 namespace hecal::vision {
 namespace {
@@ -129,7 +129,7 @@ TEST(OpenCvPnp, IppeRefusesNonPlanarPoints) {
     SolvePnPOpenCv(PnpMethod::kIppe, points, pixels, camera);
     FAIL() << "ippe accepted non-planar points";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "--method ippe");
+    EXPECT_EQ(e.source(), "PnpMethod ippe");
     EXPECT_NE(e.problem().find("coplanar"), std::string::npos) << e.what();
     EXPECT_NE(e.fix().find("sqpnp"), std::string::npos) << e.what();
   }

@@ -7,7 +7,7 @@
 // it by the board's diagonal (0.4 m) and turn it by 180°. Slow: ~2–6 s per image.
 #include <gtest/gtest.h>
 
-#include "order_consistency_kuka2_views.h"
+#include "testing/kuka2_views.h"
 
 namespace hecal::vision {
 namespace {

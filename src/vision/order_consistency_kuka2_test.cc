@@ -1,8 +1,8 @@
-// Real images (data/rwhe-kuka2, see order_consistency_kuka2_views.h): the first and the last of
+// Real images (data/rwhe-kuka2, see testing/kuka2_views.h): the first and the last of
 // the 28 views, in CI (all 28: order_consistency_kuka2_slow_test).
 #include <gtest/gtest.h>
 
-#include "order_consistency_kuka2_views.h"
+#include "testing/kuka2_views.h"
 
 namespace hecal::vision {
 namespace {

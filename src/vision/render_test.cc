@@ -8,7 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "hecal/core/error.h"
-#include "render_test_views.h"
+#include "testing/render_views.h"
 
 namespace hecal::vision {
 namespace {

@@ -54,7 +54,8 @@ struct ContourCamera {
   double focal = 1.0;
   double z0 = 1.0;
 };
-// Throws hecal::InputError (source "--focal" / "--z0") unless both are finite and positive.
+// Throws hecal::InputError (source "ContourCamera.focal" / "ContourCamera.z0") unless both are
+// finite and positive.
 void ValidateContourCamera(const ContourCamera& camera);
 
 struct ContourPose {

@@ -38,8 +38,9 @@ struct EdgeHit {
   double gradient = 0.0;  // g at the peak sample (signed, grey levels / px)
 };
 
-// Throws std::invalid_argument for options out of range (range, step, σ_d ≤ 0, step > range,
-// polarity not in {−1, 0, 1}) or a normal that is not a finite non-zero vector (it is normalised).
+// Throws hecal::InputError (source "EdgeSearchOptions") for options out of range (range, step,
+// σ_d ≤ 0, step > range, polarity not in {−1, 0, 1}), std::invalid_argument for a normal that is
+// not a finite non-zero vector (it is normalised).
 std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d& point,
                                   const Eigen::Vector2d& normal, const EdgeSearchOptions& options);
 

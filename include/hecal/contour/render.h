@@ -51,8 +51,9 @@ struct RenderOptions {
 };
 
 // The polygon (2 × M vertices, pixel coordinates, closed implicitly) filled with coverage
-// anti-aliasing, blurred, then noise and quantisation. Throws std::invalid_argument for a negative
-// size, fewer than 3 vertices, non-finite vertices or options out of range.
+// anti-aliasing, blurred, then noise and quantisation. Throws hecal::InputError (source
+// "RenderOptions.<field>") for options out of range, std::invalid_argument for a negative size,
+// fewer than 3 vertices or non-finite vertices.
 GrayImage RenderPolygon(const Eigen::Matrix2Xd& polygon, int width, int height,
                         const RenderOptions& options);
 

@@ -1,7 +1,7 @@
 // Errors a user can act on. Everything hecal rejects because of its input is reported with one of
 // these; the CLI prints `what()` as one line on stderr and exits with code 2 (docs/cli.md).
 //
-//   InputError      — a file or flag is malformed: names the source, the line (0 when not
+//   InputError      — a file or an option is malformed: names the source, the line (0 when not
 //                     line-bound), what is wrong and how to fix it.
 //   DegenerateError — the data are well formed but do not determine the unknowns (parallel
 //                     rotation axes, too few stations, ...): names what cannot be observed.
@@ -14,7 +14,9 @@ namespace hecal {
 
 class InputError : public std::runtime_error {
  public:
-  // `source` is a file name or a flag such as "--units"; `line` is 1-based, 0 = whole source.
+  // `source` is a file name or the options field that holds the bad value, as
+  // "Struct.field" (e.g. "CalibrateOptions.robust_loss"; the CLI shows the flag that sets it);
+  // `line` is 1-based, 0 = whole source.
   InputError(std::string source, int line, std::string problem, std::string fix)
       : std::runtime_error(Format(source, line, problem, fix)),
         source_(std::move(source)),

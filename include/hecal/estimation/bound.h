@@ -36,8 +36,8 @@ struct AccuracyBound {
 
 // `truth`: the noise-free problem (or the measured one; the Jacobians are then evaluated at
 // the measurements); X, Z: the true unknowns. Throws std::invalid_argument when the noise model
-// gives a singular station covariance (e.g. every sigma zero) or the information is singular
-// (degenerate data).
+// gives a singular station covariance (e.g. every sigma zero), hecal::DegenerateError when the
+// information is singular (degenerate data).
 AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
                               const PoseSigma& robot_sigma, const PoseSigma& camera_sigma);
 

@@ -45,13 +45,13 @@ struct CovarianceOptions {
   uncertainty::UnscentedParameters unscented;
 };
 
-// Throws InputError (sources "--covariance-samples", "--threads") for fewer than 2 Monte Carlo
-// samples or a negative thread count. Calibrate and RunStudy call it; the CLI too, before any
-// input is read.
+// Throws InputError (sources "CovarianceOptions.samples", "CovarianceOptions.threads") for fewer
+// than 2 Monte Carlo samples or a negative thread count. Calibrate and RunStudy call it; the CLI
+// too, before any input is read.
 void ValidateCovarianceOptions(const CovarianceOptions& options);
-// Throws InputError (source "--covariance") when `method` for `solver` needs the dense input
-// covariance and there are more than kMaxPropagatedStations stations. Calibrate calls it before
-// solving, PropagateCovariance again.
+// Throws InputError (source "CovarianceOptions.method") when `method` for `solver` needs the dense
+// input covariance and there are more than kMaxPropagatedStations stations. Calibrate calls it
+// before solving, PropagateCovariance again.
 void CheckCovarianceFits(CovarianceMethod method, handeye::Method solver, size_t stations);
 
 struct CalibrationCovariance {

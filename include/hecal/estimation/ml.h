@@ -75,13 +75,14 @@ struct MlResult {
   int distinct_minima = 0;  // distinct optima reached from the starts
 };
 
-// Throws std::invalid_argument when `starts` is empty or the problem has fewer than 3 stations.
+// Throws hecal::DegenerateError for fewer than 3 stations, std::invalid_argument when `starts` is
+// empty.
 MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::Solution>& starts,
                   const MlOptions& options);
 
 // RefineMl(problem, {start}, options)'s X and Z (the same refinement), without the noise estimate,
-// station tests, covariance and cost. Throws std::invalid_argument when options lacks the robot or
-// the camera sigma, or the problem has fewer than 3 stations.
+// station tests, covariance and cost. Throws hecal::InputError (source "MlOptions.robot_sigma")
+// when options lacks the robot or the camera sigma, DegenerateError for fewer than 3 stations.
 handeye::Solution RefineMlFromGoodStart(const handeye::Problem& problem,
                                         const handeye::Solution& start, const MlOptions& options);
 

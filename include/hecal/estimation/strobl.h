@@ -42,7 +42,8 @@ struct StroblResult {
   int starts_refined = 0;
 };
 
-// Throws std::invalid_argument when `starts` is empty or there are fewer than 3 stations.
+// Throws hecal::DegenerateError for fewer than 3 stations, std::invalid_argument when `starts` is
+// empty.
 StroblResult RefineStrobl(const handeye::Problem& problem,
                           const std::vector<handeye::Solution>& starts,
                           const StroblOptions& options = {});

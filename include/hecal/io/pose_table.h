@@ -98,7 +98,7 @@ PoseTable ParsePoseTable(std::string_view text, const std::string& source,
 
 // The file text. Throws InputError when a value does not fit in a double in the output unit
 // (|x| > ~1.8e305 m written in mm), when only some rows have ids or stamps, or when an id holds
-// a line break; std::invalid_argument for an Euler format without a sequence.
+// a line break, or for an Euler format without a sequence (source "PoseWriteOptions.rotation").
 std::string FormatPoseTable(const PoseTable& table, const PoseWriteOptions& options);
 // Writes atomically (temporary file, then rename): never a partial file.
 void WritePoseTable(const std::string& path, const PoseTable& table,

@@ -159,7 +159,8 @@ struct ObjectPoint {
 };
 
 // Every point of the target, ordered by id (ids 0 .. PointCount − 1, see the header comment).
-// Throws std::invalid_argument with CheckTarget's problem when the spec is not usable.
+// Throws hecal::InputError (source "TargetSpec.<field>") with CheckTarget's problem and fix when
+// the spec is not usable.
 std::vector<ObjectPoint> ObjectPoints(const TargetSpec& target);
 
 }  // namespace hecal::pose

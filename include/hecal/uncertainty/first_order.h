@@ -23,6 +23,7 @@
 #include <unsupported/Eigen/AutoDiff>
 #include <vector>
 
+#include "hecal/core/error.h"
 #include "hecal/uncertainty/manifold.h"
 #include "hecal/uncertainty/parallel_for.h"
 #include "hecal/uncertainty/unscented.h"
@@ -84,7 +85,8 @@ struct FirstOrderOptions {
   int threads = 1;  // f is called concurrently when > 1 (0: every core)
 };
 
-// Mean f(x̄) and covariance G Gᵀ (above); `evaluations` counts the calls of f.
+// Mean f(x̄) and covariance G Gᵀ (above); `evaluations` counts the calls of f. Throws
+// hecal::InputError for a step ≤ 0, std::invalid_argument for a covariance that is not n × n.
 template <class In, class Out, class F>
 Moments<Out> FirstOrderTransform(const F& f, const In& mean, const Eigen::MatrixXd& covariance,
                                  const FirstOrderOptions& options = {}) {
@@ -94,7 +96,9 @@ Moments<Out> FirstOrderTransform(const F& f, const In& mean, const Eigen::Matrix
   if (covariance.rows() != n || covariance.cols() != n) {
     throw std::invalid_argument("FirstOrderTransform: the covariance is not dim × dim");
   }
-  if (!(options.step > 0.0)) throw std::invalid_argument("FirstOrderTransform: step must be > 0");
+  if (!(options.step > 0.0)) {
+    throw InputError("FirstOrderOptions.step", 0, "the step must be > 0", "use e.g. 1e-3");
+  }
   const Eigen::MatrixXd S = CovarianceSquareRoot(covariance, options.square_root);
   Moments<Out> moments;
   moments.mean = f(mean);

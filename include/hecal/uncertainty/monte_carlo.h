@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "hecal/core/error.h"
 #include "hecal/uncertainty/manifold.h"
 #include "hecal/uncertainty/parallel_for.h"
 #include "hecal/uncertainty/unscented.h"
@@ -58,13 +59,16 @@ void SampleStatistics(const Eigen::MatrixXd& deviations, Eigen::MatrixXd* covari
 // own inputs (e.g. a diagonal noise model too large for a dense covariance): sample(k) should
 // use StandardNormalSample(options.seed, k, n) so that the result does not depend on the number
 // of threads. `reference` (the unperturbed output) starts the mean and screens non-finite
-// results. Throws std::invalid_argument for samples < 2, std::runtime_error when fewer than 2
+// results. Throws hecal::InputError for samples < 2, std::runtime_error when fewer than 2
 // samples succeed.
 template <class Out, class Sample>
 MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& reference,
                                          const MonteCarloOptions& options) {
   using MOut = Manifold<Out>;
-  if (options.samples < 2) throw std::invalid_argument("Monte Carlo: needs at least 2 samples");
+  if (options.samples < 2) {
+    throw InputError("MonteCarloOptions.samples", 0, "Monte Carlo needs at least 2 samples",
+                     "use e.g. 5000");
+  }
   const size_t count = static_cast<size_t>(options.samples);
   std::vector<Out> y(count, reference);
   std::vector<char> ok(count, 0);
@@ -107,8 +111,8 @@ MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& refere
   return moments;
 }
 
-// Throws std::invalid_argument for samples < 2 or a covariance of the wrong size, and
-// std::runtime_error when fewer than 2 samples succeed or f(x̄) itself fails.
+// Throws hecal::InputError for samples < 2, std::invalid_argument for a covariance of the wrong
+// size, and std::runtime_error when fewer than 2 samples succeed or f(x̄) itself fails.
 template <class In, class Out, class F>
 MonteCarloMoments<Out> MonteCarloTransform(const F& f, const In& mean,
                                            const Eigen::MatrixXd& covariance,

@@ -78,7 +78,7 @@ struct SigmaWeights {
   double cov_centre = 0.0;   // w_0^c
   double other = 0.0;        // w_i, i ≥ 1 (mean and covariance)
 };
-// Throws std::invalid_argument when !parameters.IsValid(n).
+// Throws hecal::InputError (source "UnscentedParameters") when !parameters.IsValid(n).
 SigmaWeights Weights(int n, const UnscentedParameters& parameters);
 
 // Mean and covariance of a transformed distribution: the covariance in the tangent space at the

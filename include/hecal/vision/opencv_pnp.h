@@ -17,7 +17,7 @@
 //              a homography (coplanar points, n ≥ 4) or from a DLT (n ≥ 6 otherwise), or from
 //              `initial` when given (n ≥ 4).
 //
-// Preconditions, checked (hecal::InputError; source "--method NAME", "object points" or "camera"):
+// Preconditions, checked (hecal::InputError; source "PnpMethod NAME", "object points" or "camera"):
 // as many pixels as object points; every value finite; the method's minimum n; for ippe, coplanar
 // object points (largest distance from their least-squares plane ≤ 1e-6 × the points' extent; the
 // error says how far off and which methods accept non-planar points); fx, fy > 0. Degenerate data

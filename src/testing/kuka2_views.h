@@ -14,7 +14,7 @@
 #include "hecal/geometry/so3.h"
 #include "hecal/geometry/types.h"
 #include "hecal/vision/detection.h"
-#include "render_test_views.h"
+#include "testing/render_views.h"
 
 namespace hecal::vision::kuka2 {
 

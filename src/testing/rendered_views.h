@@ -6,10 +6,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <numbers>
 #include <opencv2/imgcodecs.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,7 +15,8 @@
 #include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
 #include "hecal/vision/render.h"
-#include "vision/synthetic_views_test_util.h"
+#include "testing/camera_yaml.h"
+#include "testing/synthetic_views.h"
 
 namespace hecal::cli::rendered_views {
 
@@ -59,15 +58,7 @@ inline pose::CameraModel TrueCamera() {
   return camera;
 }
 
-inline std::string CameraYaml(const pose::CameraModel& c) {
-  std::ostringstream yaml;
-  yaml << std::setprecision(17) << "fx: " << c.fx << "\nfy: " << c.fy << "\ncx: " << c.cx
-       << "\ncy: " << c.cy << "\nwidth: " << c.width << "\nheight: " << c.height
-       << "\ndistortion:\n  model: plumb_bob\n  coefficients: [" << c.distortion[0] << ", "
-       << c.distortion[1] << ", " << c.distortion[2] << ", " << c.distortion[3] << ", "
-       << c.distortion[4] << "]\n";
-  return yaml.str();
-}
+using ::hecal::testing::CameraYaml;
 
 // T_camera_target of the camera `distance` from the target's centre (the board's by default),
 // tilted by `tilt` towards `azimuth` (x right, y down on the board), looking at the centre and

@@ -1,0 +1,73 @@
+#include "field_flags.h"
+
+#include <array>
+#include <utility>
+
+namespace hecal::cli {
+namespace {
+
+// Options field (the library's InputError source) → the flag that sets it. A field set by no
+// flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFieldFlags = {{
+    {"CalibrateOptions.robot_sigma", "--robot-sigma"},
+    {"CalibrateOptions.camera_sigma", "--camera-sigma"},
+    {"CalibrateOptions.robust_loss", "--robust"},
+    {"MlOptions.robot_sigma", "--robot-sigma"},
+    {"CovarianceOptions.method", "--covariance"},
+    {"CovarianceOptions.samples", "--covariance-samples"},
+    {"CovarianceOptions.threads", "--threads"},
+    {"ReprojectionOptions.robot_sigma", "--robot-sigma"},
+    {"ReprojectionOptions.pixel_sigma", "--pixel-sigma"},
+    {"StudyOptions.settings", "--stations"},
+    {"StudyOptions.methods", "--method"},
+    {"StudyOptions.trials", "--trials"},
+    {"StudyOptions.threads", "--threads"},
+    {"Setting.stations", "--stations"},
+    {"Setting.gross_outliers", "--outliers"},
+    {"Setting.rotation_sigma", "--sigma"},
+    {"ImportOptions.format", "--format"},
+    {"ImportOptions.units", "--units"},
+    {"ImportOptions.setup", "--setup"},
+    {"ImportOptions.camera_inverse", "--camera-inverse"},
+    {"ContourCamera.focal", "--focal"},
+    {"ContourCamera.z0", "--z0"},
+    {"ContourStudyOptions.focal_mm", "--focal"},
+    {"ContourStudyOptions.z0_mm", "--z0"},
+    {"ContourStudyOptions.pixel_size_mm", "--pixel-size"},
+    {"ContourStudyOptions.pixel_noise", "--pixel-noise"},
+    {"ContourStudyOptions.from", "--from"},
+    {"ContourStudyOptions.to", "--to"},
+    {"ContourStudyOptions.steps", "--steps"},
+    {"ContourStudyOptions.samples", "--samples"},
+    {"ContourStudyOptions.threads", "--threads"},
+    {"ContourStudyOptions.target", "--contour"},
+    {"UnscentedParameters", "--ut-w0"},
+    {"RenderOptions.blur_sigma", "--blur"},
+    {"RenderOptions.noise_sigma", "--noise"},
+}};
+
+// vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".
+constexpr std::string_view kPnpMethod = "PnpMethod ";
+
+}  // namespace
+
+std::optional<std::string_view> FlagForField(std::string_view field) {
+  for (const auto& [name, flag] : kFieldFlags) {
+    if (name == field) return flag;
+  }
+  return std::nullopt;
+}
+
+InputError WithFlag(const InputError& error) {
+  const std::string& source = error.source();
+  if (source.starts_with(kPnpMethod)) {
+    return InputError("--method " + source.substr(kPnpMethod.size()), error.line(), error.problem(),
+                      error.fix());
+  }
+  if (const std::optional<std::string_view> flag = FlagForField(source)) {
+    return InputError(std::string(*flag), error.line(), error.problem(), error.fix());
+  }
+  return error;
+}
+
+}  // namespace hecal::cli
