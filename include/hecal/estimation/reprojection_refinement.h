@@ -43,8 +43,8 @@
 // expected 2σ coverage 90.0% and 1σ 63% at ν = 18 (measured on 100 rendered 8-image sets: 88.0%
 // and 71.0%; with the posterior means 92.0% and 79.0%, README "Uncertainty"). The factor is 1.16 at
 // ν = 18, 1.04 at 28 stations (ν = 78), ≈ 1 for the pixel sigma (thousands of residuals). X and Z
-// are the solution at the point estimates, and robot_sigma reports the point estimate (its median
-// is the truth's; the posterior mean's sits ≈ 8% above it at 8 stations).
+// are the solution at the point estimates, and robot_sigma reports the point estimate (median
+// ratio to the truth 0.93 / 0.99 there; the posterior mean sits ≈ 8% above it at 8 stations).
 //
 // Per-image report: reprojection RMS (px) of each station; a station is flagged
 // when its RMS exceeds 3 σ̂_px (a detection or robot-pose problem).
