@@ -33,6 +33,19 @@ constexpr double kMinRobotSigma = 1e-7;
 // gantry, and far below the kilometres of millimetre lengths read as metres.
 constexpr double kMaxRobotReach = 100.0;
 
+// The fewest degrees of freedom PosteriorMeanFactor takes (E[σ] is infinite at ν ≤ 2).
+constexpr double kMinPosteriorDof = 3.0;
+
+// E[σ]² / σ̂² for a variance estimated with ν degrees of freedom under a prior flat in σ (header:
+// "Covariance"): σ̂² ν / σ² ~ χ²(ν) gives an inverse-gamma posterior of σ², and
+// E[σ]² = σ̂² (ν/2) (Γ(ν/2 − 1) / Γ((ν − 1)/2))² (1.16 at ν = 18, 1.04 at ν = 78, → 1). ν is
+// clamped to at least kMinPosteriorDof, where the mean is finite.
+double PosteriorMeanFactor(double dof) {
+  const double nu = std::max(dof, kMinPosteriorDof);
+  const double log_ratio = std::lgamma(0.5 * nu - 1.0) - std::lgamma(0.5 * (nu - 1.0));
+  return 0.5 * nu * std::exp(2.0 * log_ratio);
+}
+
 Parameters ToParameters(const Pose& T) {
   Parameters p;
   PoseToParameters(T, p.data());
@@ -332,7 +345,20 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
   result.pixel_sigma = sigma;
   result.X = refinement.X();
   result.Z = refinement.Z();
-  const Eigen::MatrixXd inverse = refinement.InverseInformation(sigma);
+  // The covariance at the posterior-mean sigmas of the estimated groups (header: "Covariance").
+  double covariance_sigma = sigma;
+  if (result.robot_sigma_estimated) {
+    const std::array<VarianceComponent, 3> c = refinement.VarianceComponents(sigma);
+    if (result.pixel_sigma_estimated)
+      covariance_sigma *= std::sqrt(PosteriorMeanFactor(c[0].redundancy));
+    result.robot_sigma_covariance = {
+        result.robot_sigma.rotation * std::sqrt(PosteriorMeanFactor(c[1].redundancy)),
+        result.robot_sigma.translation * std::sqrt(PosteriorMeanFactor(c[2].redundancy))};
+    refinement.robot_sigma() = result.robot_sigma_covariance;
+  } else {
+    result.robot_sigma_covariance = result.robot_sigma;
+  }
+  const Eigen::MatrixXd inverse = refinement.InverseInformation(covariance_sigma);
   result.covariance = inverse.topLeftCorner<12, 12>();
   result.camera = refinement.Camera();
   if (options.refine_intrinsics) {
