@@ -2,7 +2,7 @@
 // on its default path (robot and pixel noise estimated, nothing given), on many rendered image
 // sets of a known scene (README "Uncertainty", "From images").
 //
-// Each set: an eye-in-hand camera sees the 9 × 6 chessboard of rendered_views_test_util.h from
+// Each set: an eye-in-hand camera sees the 9 × 6 chessboard of testing/rendered_views.h from
 // random directions (0.36–0.44 m away, tilted 10–35° towards a random azimuth, turned about its
 // optical axis by up to ±60°, panned so the board lands in different parts of the image, every
 // corner at least 15 px inside the image); the true robot poses follow from a known X and Z
@@ -42,7 +42,7 @@
 #include "hecal/geometry/se3.h"
 #include "hecal/sim/noise.h"
 #include "hecal/uncertainty/consistency.h"
-#include "rendered_views_test_util.h"
+#include "testing/rendered_views.h"
 
 namespace hecal::cli {
 namespace {
