@@ -91,9 +91,10 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
 //      out with a note); otherwise by sorted file name — one robot row per image file, in order,
 //      counting the images where the target was not usable (their rows are left out); ids that
 //      name no image (such as the row numbers of `hecal import`) get a note;
-//   3. estimation::CalibrateFromImages: the pose-level method (--method, ml by default; not
-//      `all`), then the joint reprojection refinement over X, Z and the robot poses (and the
-//      intrinsics with --refine-intrinsics);
+//   3. the convention check, then report::CalibrateFromImages (report/image_calibration.h):
+//      the pose-level method (--method, ml by default; not `all`), then the joint reprojection
+//      refinement over X, Z and the robot poses (and the intrinsics with --refine-intrinsics),
+//      returned as the result document;
 //   4. the summary, a per-image reprojection table (RMS px, flag), and the result file with
 //      "refinement": "reprojection" and an "images" section (intrinsics, pixel sigma, per-image
 //      RMS and flags, skipped images and why, the pose-level X and Z). Skipped images are the

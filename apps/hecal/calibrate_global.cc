@@ -17,7 +17,7 @@
 #include "hecal/io/camera_file.h"
 #include "hecal/io/correspondence_file.h"
 #include "hecal/io/units.h"
-#include "json_matrix.h"
+#include "hecal/report/json_matrix.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "image_report.h"
@@ -288,8 +288,8 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   doc["setup"] = std::string(handeye::SetupName(*setup));
   nlohmann::json x;
   x["frame"] = std::string(handeye::XFrameName(*setup));
-  x["rotation"] = JsonRows(X.linear());
-  x["translation_m"] = JsonVector(X.translation());
+  x["rotation"] = report::JsonRows(X.linear());
+  x["translation_m"] = report::JsonVector(X.translation());
   doc["X"] = x;
   doc["certificate"] = {{"lower", c.lower},
                         {"upper", c.upper},
@@ -301,10 +301,10 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                         {"relative_gap", flags.relative_gap},
                         {"error", "max cheiral ray error, radians"},
                         {"reach_m", flags.reach}};
-  doc["l_infinity_X"] = {{"rotation", JsonRows(robust.solution.X.linear())},
-                         {"translation_m", JsonVector(robust.solution.X.translation())}};
+  doc["l_infinity_X"] = {{"rotation", report::JsonRows(robust.solution.X.linear())},
+                         {"translation_m", report::JsonVector(robust.solution.X.translation())}};
   doc["covariance"] = {{"method", "linear"},
-                       {"X", JsonRows(polish.covariance)},
+                       {"X", report::JsonRows(polish.covariance)},
                        {"convention", "right perturbation (rx, ry, rz, tx, ty, tz), rad and m"},
                        {"ray_sigma_rad", polish.ray_sigma}};
   doc["polish"] = {{"rms_rad", polish.rms}, {"pairs", polish.pairs}};

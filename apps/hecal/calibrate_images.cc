@@ -8,19 +8,16 @@
 #include <charconv>
 #include <cmath>
 #include <iomanip>
-#include <map>
 #include <numbers>
 #include <optional>
-#include <sstream>
 #include <vector>
 
 #include "bounds.h"
 #include "conventions.h"
 #include "hecal/estimation/image_calibration.h"
-#include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/image_pairing.h"
-#include "hecal/report/pose_calibration.h"
+#include "hecal/report/image_calibration.h"
 #include "image_report.h"
 #endif
 
@@ -116,30 +113,23 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
       "hecal calibrate", io);
   const std::vector<Pose> robot_poses = RobotPosePerImage(robot, set, flags.images, io);
 
-  report::ResultDocument document;
-  document.unit = robot.unit;
-  report::ImageReport report;
-  std::vector<estimation::ImageStation> stations;
-  std::vector<size_t> station_image;  // the image index of every station
-  std::vector<std::string> station_ids;
+  report::ImageCalibrationInput input;
+  input.unit = robot.unit;
+  input.robot_unit_named = robot.unit_named;
+  handeye::PoseData data;
   for (size_t i = 0; i < set.images.size(); ++i) {
     const ImageRecord& image = set.images[i];
-    document.station_ids.push_back(image.id());
+    input.image_ids.push_back(image.id());
+    input.skipped.push_back(image.skipped);
     if (!image.used()) continue;
     estimation::ImageStation station;
     station.T_base_gripper = robot_poses[i];
     station.T_camera_target = image.pose->T_camera_target;
     station.camera_covariance = image.pose->covariance;
     station.points = {ObjectPointsOf(image.detection, set.board), PixelsOf(image.detection)};
-    stations.push_back(std::move(station));
-    station_image.push_back(i);
-    station_ids.push_back(image.id());
-  }
-
-  handeye::PoseData data;
-  for (const estimation::ImageStation& station : stations) {
     data.T_base_gripper.push_back(station.T_base_gripper);
     data.T_camera_target.push_back(station.T_camera_target);
+    input.stations.push_back(std::move(station));
   }
   data.robot_unit_named = robot.unit_named;
   data.robot_quaternions = HasQuaternionColumns(robot);
@@ -150,82 +140,32 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   convention_flags.robot_matrix_lines = !robot.rotation;
   const ConventionCheck check =
       CheckConventions(data, settings.setup, convention_flags, settings.options.consensus);
-  document.setup = check.setup;
+  input.notes = check.notes;
+  input.notes.insert(input.notes.end(), robot.warnings.begin(), robot.warnings.end());
+  input.intrinsics_source =
+      set.estimated ? std::string("estimated from the images") : flags.intrinsics;
+  if (set.estimated) input.intrinsics_rms_px = set.estimated->rms_px;
 
   estimation::ImageCalibrationOptions options;
   options.setup = check.setup;
   options.calibrate = settings.options;
-  options.calibrate.station_ids = station_ids;
   options.camera = set.camera;
   options.pixel_sigma = pixel_sigma;
   options.refine_intrinsics = flags.refine_intrinsics;
-  estimation::ImageCalibrationResult result = estimation::CalibrateFromImages(stations, options);
+  const report::ResultDocument document = report::CalibrateFromImages(input, options);
+  const estimation::CalibrationResult& result = document.results.front();
+  const report::ImageReport& report = *document.images;
 
-  // Rejected: the images where the target was not usable, and the outlier stations.
-  std::map<size_t, std::string> rejected;
-  for (size_t i = 0; i < set.images.size(); ++i)
-    if (!set.images[i].used()) rejected[i] = set.images[i].skipped;
-  for (size_t k = 0; k < result.result.rejected.size(); ++k) {
-    const int station = result.result.rejected[k];
-    const auto image =
-        std::find(result.image_rejected.begin(), result.image_rejected.end(), station);
-    std::ostringstream reason;
-    reason << std::setprecision(3);
-    if (image != result.image_rejected.end()) {
-      reason << "outlier: reprojection RMS "
-             << result.image_rejected_rms_px[static_cast<size_t>(image -
-                                                                 result.image_rejected.begin())]
-             << " px, beyond 3 sigma of the pixel noise";
-    } else {
-      const estimation::StationResidual& r = result.result.rejected_residuals[k];
-      reason << "outlier: pose residual " << r.rotation * 180.0 / std::numbers::pi << " deg / "
-             << r.translation * 1e3 << " mm, beyond 3 sigma of the other stations";
-    }
-    rejected[station_image[static_cast<size_t>(station)]] = reason.str();
-  }
-  for (const auto& [image, reason] : rejected) {
-    document.rejected.push_back(static_cast<int>(image));
-    report.skipped_reasons.push_back(reason);
-  }
-  std::vector<std::string> notes = check.notes;
-  notes.insert(notes.end(), robot.warnings.begin(), robot.warnings.end());
-  for (std::string& warning : estimation::PlausibilityWarnings(
-           {check.setup, data.T_base_gripper, data.T_camera_target, robot.unit_named, true},
-           result.result))
-    notes.push_back(std::move(warning));
-  result.result.warnings.insert(result.result.warnings.begin(), notes.begin(), notes.end());
-
-  report.intrinsics_source =
-      set.estimated ? std::string("estimated from the images") : flags.intrinsics;
-  report.camera = result.reprojection.camera;
-  if (set.estimated) report.intrinsics_rms_px = set.estimated->rms_px;
-  if (result.reprojection.intrinsics_covariance) {
-    std::array<double, pose::kNumIntrinsics> sigma{};
-    for (int k = 0; k < pose::kNumIntrinsics; ++k) {
-      sigma[static_cast<size_t>(k)] = std::sqrt((*result.reprojection.intrinsics_covariance)(k, k));
-    }
-    report.intrinsics_sigma = sigma;
-  }
-  report.pixel_sigma = result.reprojection.pixel_sigma;
-  report.pixel_sigma_estimated = result.reprojection.pixel_sigma_estimated;
-  report.rms_px = result.reprojection.rms_px;
-  report.image_rms_px = result.reprojection.image_rms_px;
-  report.image_outlier = result.reprojection.image_outlier;
-  report.pose_level = result.pose_level;
-  report::CheckFiniteResult(result.result);
-  document.results.push_back(result.result);
-  document.images = report;
-
-  const Pose step = result.pose_level.X.inverse() * result.result.X;
+  const Pose step = report.pose_level.X.inverse() * result.X;
   const double scale = 1.0 / io::MetresPer(document.unit);
-  io.out << "\npose level (" << handeye::Info(result.pose_level.method).name
+  io.out << "\npose level (" << handeye::Info(report.pose_level.method).name
          << " on the PnP poses), then the joint reprojection refinement moved X by "
          << std::setprecision(4)
          << AxisAngleFromMatrix(step.linear()).angle * 180.0 / std::numbers::pi << " deg, "
-         << (result.result.X.translation() - result.pose_level.X.translation()).norm() * scale
-         << " " << io::UnitName(document.unit) << "\n";
+         << (result.X.translation() - report.pose_level.X.translation()).norm() * scale << " "
+         << io::UnitName(document.unit) << "\n";
   io.out.unsetf(std::ios::floatfield);
-  PrintSummary(io.out, document, result.result);
+  PrintSummary(io.out, document, result);
   if (report.intrinsics_sigma) PrintRefinedIntrinsics(io.out, set.camera, report);
   PrintImageTable(io.out, document, report);
   if (!flags.output.empty()) {

@@ -8,17 +8,17 @@
 #include <cmath>
 #include <iomanip>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <string_view>
 
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/pose_uncertainty.h"
+#include "hecal/contour/shape_pose.h"
 #include "hecal/core/error.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/point_file.h"
-#include "json_matrix.h"
+#include "hecal/report/contour_pose_file.h"
 
 namespace hecal::cli {
 namespace {
@@ -131,45 +131,27 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
     throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
                      "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
   }
-  const contour::ContourPose pose = contour::PoseFromShape(shape, camera, *form);
-  std::optional<contour::ContourPoseUncertainty> ut;
+  contour::ShapePoseOptions pose_options;
+  pose_options.camera = camera;
+  pose_options.form = *form;
   if (!options.covariance.empty()) {
-    contour::UnscentedPoseOptions ut_options;
     const double w0 = ParseNumber("--ut-w0", options.ut_w0, "w0 < 1");
-    ut_options.unscented = uncertainty::UnscentedParameters::Symmetric(w0);
+    pose_options.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(w0);
     std::string why;
-    if (!ut_options.unscented.IsValid(6, &why)) {
+    if (!pose_options.unscented.unscented.IsValid(6, &why)) {
       throw InputError("--ut-w0", 0, why, "give w0 < 1 (default 0)");
     }
-    ut = contour::UnscentedPose(shape, ParseShapeCovariance(options.covariance), camera, *form,
-                                ut_options);
+    pose_options.shape_covariance = ParseShapeCovariance(options.covariance);
   }
-  const std::string_view sequence = contour::RotationSequence(*form);
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
+  const contour::ShapePose result = contour::EstimateShapePose(shape, pose_options);
   if (options.json) {
-    nlohmann::json result = {
-        {"translation", JsonVector(pose.translation)},
-        {"rotation_matrix", JsonRows(pose.rotation)},
-        {"euler", JsonVector(pose.euler)},
-        {"euler_deg", JsonVector(pose.euler * kDegrees)},
-        {"sequence", sequence},
-        {"units", {{"translation", "unit of --z0"}, {"euler", "rad"}, {"euler_deg", "deg"}}},
-    };
-    if (ut) {
-      nlohmann::json bias = nlohmann::json::object();
-      nlohmann::json parameter_names = nlohmann::json::array();
-      for (std::size_t j = 0; j < 6; ++j) {
-        bias[std::string(names[j])] = ut->biased[j];
-        parameter_names.push_back(names[j]);
-      }
-      result["parameters"] = parameter_names;
-      result["ut_mean"] = JsonVector(ut->mean);
-      result["covariance"] = JsonRows(ut->covariance);
-      result["bias"] = bias;
-    }
-    io.out << result.dump(2) << "\n";
+    io.out << report::ContourPoseJson(result);
     return;
   }
+  const contour::ContourPose& pose = result.pose;
+  const std::optional<contour::ContourPoseUncertainty>& ut = result.uncertainty;
+  const std::string_view sequence = contour::RotationSequence(*form);
+  const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
   io.out << std::setprecision(9);
   io.out << "translation (Tx, Ty, Tz) = (" << pose.translation.transpose() << ")  [unit of --z0]\n";
   io.out << "rotation matrix\n";

@@ -9,7 +9,8 @@
 //      "sequence": "ZYX"|"ZXZ", "units": {…}} with the Euler angles in radians
 //     (docs/conventions.md) and also "euler_deg". With --covariance (36 numbers, row-major Σ_S, or
 //     6 variances) the UT adds "covariance" (6×6 over Tx,Ty,Tz + the Euler angles),
-//     "parameters", "ut_mean", "bias" (docs/contour.md#the-bias-check).
+//     "parameters", "ut_mean", "bias" (docs/contour.md#the-bias-check). The job is
+//     contour/shape_pose.h, the JSON report/contour_pose_file.h.
 //   hecal contour study --motion tx|ty|tz|rx|ry|rz --from A --to B --steps N … (contour_study.h)
 //   hecal contour track / render: contour_track.h.
 // Errors: bad flags → InputError, a singular shape vector (det M ≤ 0: the plane edge-on or a

@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <string_view>
@@ -30,8 +29,8 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/image_files.h"
+#include "hecal/report/contour_track_file.h"
 #include "hecal/version.h"
-#include "json_matrix.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "hecal/vision/contour_images.h"
 #endif
@@ -41,8 +40,6 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr double kDegrees = 180.0 / std::numbers::pi;
-constexpr std::array<std::string_view, 6> kShapeNames = {"tx",    "ty",  "m11m1",
-                                                         "m22m1", "m21", "m12"};
 
 double ParsePositive(const std::string& flag, const std::string& text, const std::string& what) {
   const double value = ParseNumber(flag, text, what);
@@ -78,131 +75,11 @@ OutputKind ParseOutputKind(const std::string& output) {
                    "name the file *.csv (one row per frame) or *.json (full covariances)");
 }
 
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-std::string TrackCsv(const std::vector<vision::TrackedImage>& frames, contour::RotationForm form,
-                     const std::string& unit_note) {
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(form);
-  std::string csv = "# hecal " + std::string(kVersion) +
-                    " contour track: S = (tx, ty, M11-1, M22-1, M21, M12), tx/ty in px; " +
-                    unit_note + "; angles in degrees (" +
-                    std::string(contour::RotationSequence(form)) +
-                    "); sd = 1 sigma (UT for the pose)\n";
-  csv += "frame,image,status,edges_used,edges_searched,sigma_px,residual_rms_px";
-  for (std::string_view n : kShapeNames) csv += "," + std::string(n);
-  for (std::string_view n : kShapeNames) csv += ",sd_" + std::string(n);
-  for (std::size_t i = 0; i < 6; ++i) csv += "," + std::string(names[i]) + (i < 3 ? "" : "_deg");
-  for (std::size_t i = 0; i < 6; ++i) {
-    csv += ",sd_" + std::string(names[i]) + (i < 3 ? "" : "_deg");
-  }
-  csv += ",bias\n";
-  for (const vision::TrackedImage& image : frames) {
-    const contour::SequenceFrame& f = image.frame;
-    const contour::TrackedFrame& t = f.tracked;
-    csv += std::to_string(t.frame) + "," + io::QuoteField(image.image) + "," +
-           std::string(contour::FrameStatusName(f.status)) + "," + std::to_string(t.edges_used) +
-           "," + std::to_string(t.edges_searched) + ",";
-    io::AppendDouble(t.sigma, &csv);
-    csv += ",";
-    io::AppendDouble(t.residual_rms, &csv);
-    for (int i = 0; i < 6; ++i) {
-      csv += ",";
-      io::AppendDouble(t.shape(i), &csv);
-    }
-    for (int i = 0; i < 6; ++i) {
-      csv += ",";
-      io::AppendDouble(std::sqrt(std::max(0.0, t.shape_covariance(i, i))), &csv);
-    }
-    std::string biased;
-    for (int i = 0; i < 12; ++i) {
-      csv += ",";
-      if (!f.pose) continue;
-      const int j = i % 6;
-      const double value =
-          i < 6 ? f.pose->parameters(j) : std::sqrt(std::max(0.0, f.pose->covariance(j, j)));
-      io::AppendDouble(j < 3 ? value : value * kDegrees, &csv);
-    }
-    if (f.pose) {
-      for (std::size_t j = 0; j < 6; ++j) {
-        if (f.pose->biased[j]) biased += (biased.empty() ? "" : " ") + std::string(names[j]);
-      }
-    }
-    csv += "," + io::QuoteField(biased) + "\n";
-  }
-  return csv;
-}
-
 // The pose model --pose-model selects (auto: perspective when the principal point is given).
 bool UsesPerspectivePose(const ContourTrackOptions& options) {
   return options.pose_model == "perspective" ||
          (options.pose_model == "auto" && !options.principal_point.empty());
 }
-
-std::string TrackJson(const std::vector<vision::TrackedImage>& frames,
-                      const ContourTrackOptions& options, const contour::ContourCamera& camera,
-                      const Eigen::Vector2d& principal, contour::RotationForm form,
-                      const contour::ShapeTracker& tracker) {
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(form);
-  nlohmann::json parameter_names = nlohmann::json::array();
-  for (std::string_view n : names) parameter_names.push_back(n);
-  nlohmann::json shape_names = nlohmann::json::array();
-  for (std::string_view n : kShapeNames) shape_names.push_back(n);
-  nlohmann::json result = {
-      {"hecal_version", kVersion},
-      {"command", "contour track"},
-      {"pose_model", UsesPerspectivePose(options) ? "perspective" : "weak"},
-      {"units",
-       {{"shape", "tx, ty in px (from the principal point); M entries dimensionless"},
-        {"translation", "unit of --z0"},
-        {"euler_deg", "deg"},
-        {"pose_parameters", "translation in the unit of --z0, angles in rad"},
-        {"pose_covariance", "over pose_parameters: (unit of --z0)^2, rad^2 and products"}}},
-      {"camera",
-       {{"focal_px", camera.focal}, {"z0", camera.z0}, {"principal_point", JsonVector(principal)}}},
-      {"subspace", options.subspace},
-      {"rotation",
-       {{"form", contour::RotationFormName(form)}, {"sequence", contour::RotationSequence(form)}}},
-      {"shape_names", shape_names},
-      {"pose_parameter_names", parameter_names},
-      {"template_shape", JsonVector(tracker.template_shape())},
-      {"polarity", tracker.polarity()},
-  };
-  nlohmann::json list = nlohmann::json::array();
-  for (const vision::TrackedImage& image : frames) {
-    const contour::SequenceFrame& f = image.frame;
-    const contour::TrackedFrame& t = f.tracked;
-    nlohmann::json frame = {
-        {"frame", t.frame},
-        {"image", image.image},
-        {"status", contour::FrameStatusName(f.status)},
-        {"edges",
-         {{"searched", t.edges_searched}, {"found", t.edges_found}, {"used", t.edges_used}}},
-        {"measurement_sigma_px", t.sigma},
-        {"measurement_sigma_source", t.sigma_estimated ? "estimated" : "given"},
-        {"residual_rms_px", t.residual_rms},
-        {"shape", JsonVector(t.shape)},
-        {"shape_covariance", JsonRows(t.shape_covariance)},
-        {"x", JsonVector(t.x)},
-        {"x_covariance", JsonRows(t.x_covariance)},
-    };
-    if (f.pose) {
-      nlohmann::json bias = nlohmann::json::object();
-      for (std::size_t j = 0; j < 6; ++j) bias[std::string(names[j])] = f.pose->biased[j];
-      frame["pose"] = {
-          {"translation", JsonVector(f.pose->pose.translation)},
-          {"rotation_matrix", JsonRows(f.pose->pose.rotation)},
-          {"euler_deg", JsonVector(f.pose->pose.euler * kDegrees)},
-          {"parameters", JsonVector(f.pose->parameters)},
-          {"covariance", JsonRows(f.pose->covariance)},
-          {"ut_mean", JsonVector(f.pose->mean)},
-          {"bias", bias},
-      };
-    }
-    list.push_back(std::move(frame));
-  }
-  result["frames"] = std::move(list);
-  return result.dump(2) + "\n";
-}
-#endif  // HECAL_HAVE_OPENCV_PEERS
 
 }  // namespace
 
@@ -258,8 +135,9 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
                      "use auto, weak or perspective");
   }
   const bool perspective = UsesPerspectivePose(options);
-  contour::SequenceTracker tracker(
-      {control, principal, camera, *form, perspective, tracker_options});
+  const contour::SequenceTrackingOptions tracking{control, principal,   camera,
+                                                  *form,   perspective, tracker_options};
+  contour::SequenceTracker tracker(tracking);
   io.out << "pose model: "
          << (perspective
                  ? "perspective (weak-perspective bias removed, principal point given)"
@@ -287,14 +165,12 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
   };
   const std::vector<vision::TrackedImage> frames =
       vision::TrackImageSequence(options.images, &tracker, print);
-  const std::string unit_note =
-      "translation in the unit of --z0 (Z0 = " + io::FormatDouble(camera.z0) + "); pose model " +
-      (perspective ? "perspective" : "weak perspective");
-  if (output_kind == OutputKind::kCsv) {
-    io::WriteFileAtomically(options.output, TrackCsv(frames, *form, unit_note));
-  } else if (output_kind == OutputKind::kJson) {
-    io::WriteFileAtomically(
-        options.output, TrackJson(frames, options, camera, principal, *form, tracker.tracker()));
+  if (output_kind != OutputKind::kNone) {
+    const report::ContourTrack track{tracking, tracker.tracker().template_shape(),
+                                     tracker.tracker().polarity(), frames};
+    io::WriteFileAtomically(options.output, output_kind == OutputKind::kCsv
+                                                ? report::ContourTrackCsv(track)
+                                                : report::ContourTrackJson(track));
   }
 #else
   (void)output_kind;

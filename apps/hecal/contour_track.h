@@ -24,7 +24,8 @@
 //   frame, image, status, edges, σ, residual RMS, S, sd(S), the pose and its sd, the bias flag)
 //   or JSON (full 6 × 6 covariances), chosen by the extension. Units: tx, ty and their sd in px;
 //   M entries dimensionless; translation in the unit of --z0; angles in degrees in the CSV and
-//   in the JSON's *_deg fields, radians in the JSON's covariance (stated in "units").
+//   in the JSON's *_deg fields, radians in the JSON's covariance (stated in "units"); both
+//   written by report/contour_track_file.h.
 //   status: tracked | lost (too few edges: the prediction is kept) | singular (det M ≤ 0: no
 //   pose). bias: the bias check (UT mean vs the pose of the mean shape) flagged a
 //   parameter — expected while the tilt is small (Necker fold).

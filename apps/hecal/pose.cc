@@ -9,7 +9,6 @@
 #include <iomanip>
 #include <map>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <string_view>
@@ -17,7 +16,6 @@
 
 #include "bounds.h"
 #include "hecal/core/error.h"
-#include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/camera_file.h"
@@ -25,8 +23,7 @@
 #include "hecal/io/point_file.h"
 #include "hecal/io/units.h"
 #include "hecal/pose/pose_method.h"
-#include "hecal/version.h"
-#include "json_matrix.h"
+#include "hecal/report/pose_file.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "hecal/vision/opencv_pnp.h"
 #endif
@@ -217,48 +214,6 @@ void Print(std::ostream& out, const pose::PoseEstimate& estimate, const Correspo
   out.unsetf(std::ios::floatfield);
 }
 
-std::string ResultJson(const pose::PoseEstimate& estimate, const Correspondences& pairs,
-                       io::LengthUnit unit) {
-  const double scale = 1.0 / io::MetresPer(unit);
-  const Pose& T = estimate.T_camera_target;
-  Eigen::Matrix4d M = T.matrix();
-  M.topRightCorner<3, 1>() *= scale;
-  const Eigen::Vector3d t = T.translation() * scale;
-  const Eigen::Quaterniond q = QuaternionFromMatrix(T.linear());
-  const Eigen::Vector3d rvec = so3::Log(T.linear());
-  nlohmann::json result = {
-      {"hecal_version", hecal::kVersion},
-      {"method", estimate.method},
-      {"units", {{"length", io::UnitName(unit)}, {"angle", "rad"}}},
-      {"T_camera_target",
-       {{"frame", "T_camera_target"},
-        {"matrix", JsonRows(M)},
-        {"translation", {t.x(), t.y(), t.z()}},
-        {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}},
-        {"rotation_vector", {rvec.x(), rvec.y(), rvec.z()}}}},
-      {"reprojection_rms_px", estimate.rms_px},
-  };
-  if (estimate.covariance) {
-    Vector6d s;
-    s << 1.0, 1.0, 1.0, scale, scale, scale;
-    const Matrix6d C = s.asDiagonal() * *estimate.covariance * s.asDiagonal();
-    result["covariance"] = {{"matrix", JsonRows(0.5 * (C + C.transpose()))},
-                            {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"},
-                            {"pixel_sigma", estimate.sigma_px},
-                            {"pixel_sigma_source", pose::SigmaSourceName(estimate.sigma_source)}};
-  }
-  nlohmann::json points = nlohmann::json::array();
-  for (std::size_t k = 0; k < estimate.residuals_px.size(); ++k) {
-    const io::PointRow& row = *pairs.image_rows[k];
-    const Eigen::Vector2d& e = estimate.residuals_px[k];
-    points.push_back({{"id", row.id ? nlohmann::json(*row.id) : nlohmann::json(k + 1)},
-                      {"residual_px", {e.x(), e.y()}}});
-  }
-  result["points"] = std::move(points);
-  result["warnings"] = estimate.warnings;
-  return result.dump(2) + "\n";
-}
-
 }  // namespace
 
 void RunPose(const PoseCommandOptions& options, const Io& io) {
@@ -289,7 +244,10 @@ void RunPose(const PoseCommandOptions& options, const Io& io) {
     io.err << "hecal: warning: " << warning << "\n";
   Print(io.out, estimate, pairs, object.unit);
   if (!options.output.empty()) {
-    io::WriteFileAtomically(options.output, ResultJson(estimate, pairs, object.unit));
+    std::vector<std::optional<std::string>> point_ids;
+    for (const io::PointRow* row : pairs.image_rows) point_ids.push_back(row->id);
+    io::WriteFileAtomically(options.output,
+                            report::PoseResultJson(estimate, point_ids, object.unit));
     io.out << "wrote " << options.output << "\n";
   }
 }

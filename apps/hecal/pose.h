@@ -21,7 +21,7 @@
 // Output: R, t (the object file's unit), the rotation vector, the 1σ of each component (refined
 //   methods), the RMS reprojection error sqrt(Σ‖e_k‖²/N) (px per point, as OpenCV reports it)
 //   and σ per axis (given by --pixel-sigma, or estimated from the residuals; ≈ RMS/√2).
-//   --output writes JSON atomically:
+//   --output writes JSON atomically (report/pose_file.h):
 //   {"hecal_version", "method", "units": {"length", "angle"},
 //    "T_camera_target": {"frame", "matrix", "translation", "quaternion_wxyz", "rotation_vector"},
 //    "covariance": {"matrix" (6×6), "parameterization": "right, (rx,ry,rz,tx,ty,tz)",

@@ -8,6 +8,7 @@
 
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/report/json_matrix.h"
 #include "hecal/version.h"
 
 namespace hecal::report {
@@ -17,16 +18,6 @@ using nlohmann::json;
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
-json MatrixJson(const Eigen::MatrixXd& M) {
-  json rows = json::array();
-  for (Eigen::Index r = 0; r < M.rows(); ++r) {
-    json row = json::array();
-    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 // A pose in the output length unit: 4×4 matrix, translation, Hamilton quaternion (w, x, y, z).
 json PoseJson(const Pose& T, std::string_view frame, double scale) {
   Eigen::Matrix4d M = T.matrix();
@@ -34,7 +25,7 @@ json PoseJson(const Pose& T, std::string_view frame, double scale) {
   const Eigen::Quaterniond q = QuaternionFromMatrix(T.linear());
   const Eigen::Vector3d t = scale * T.translation();
   return {{"frame", frame},
-          {"matrix", MatrixJson(M)},
+          {"matrix", JsonRows(M)},
           {"translation", {t.x(), t.y(), t.z()}},
           {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}}};
 }
@@ -45,7 +36,7 @@ json CovarianceJson(const Matrix6d& covariance, double scale) {
   s << 1.0, 1.0, 1.0, scale, scale, scale;
   // Written exactly symmetric (the solver's inverse is symmetric only to rounding).
   const Matrix6d scaled = s.asDiagonal() * covariance * s.asDiagonal();
-  return MatrixJson(0.5 * (scaled + scaled.transpose()));
+  return JsonRows(0.5 * (scaled + scaled.transpose()));
 }
 
 // Per-axis values of a (ω, v) 6-vector of standard deviations: degrees and the output unit.
@@ -61,7 +52,7 @@ json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double sc
   const Eigen::Matrix<double, 12, 12> scaled = s.asDiagonal() * c.covariance * s.asDiagonal();
   json section = {{"X", CovarianceJson(c.X(), scale)},
                   {"Z", CovarianceJson(c.Z(), scale)},
-                  {"XZ", MatrixJson(Matrix6d(scaled.topRightCorner<6, 6>()))},
+                  {"XZ", JsonRows(Matrix6d(scaled.topRightCorner<6, 6>()))},
                   {"parameterization", "right, (rx,ry,rz,tx,ty,tz)"},
                   {"method", estimation::CovarianceMethodName(c.method)},
                   {"solves", c.solves},

@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -57,6 +58,12 @@ struct SequenceFrame {
   TrackedFrame tracked;
   FrameStatus status = FrameStatus::kTracked;
   std::optional<ContourPoseUncertainty> pose;  // none when singular
+};
+
+// A frame of a sequence of image files: the file name and what was tracked in it.
+struct TrackedImage {
+  std::string image;
+  SequenceFrame frame;
 };
 
 class SequenceTracker {

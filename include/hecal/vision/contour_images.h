@@ -24,10 +24,7 @@
 
 namespace hecal::vision {
 
-struct TrackedImage {
-  std::string image;  // the file name
-  contour::SequenceFrame frame;
-};
+using contour::TrackedImage;  // contour/sequence.h
 
 // Tracks the images of `dir` with `tracker`, handing every frame to `on_frame` (may be empty)
 // as soon as it is tracked.

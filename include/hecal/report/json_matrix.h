@@ -1,11 +1,12 @@
 // Eigen matrices and vectors as JSON arrays (rows of numbers), the layout of every hecal result
-// file: a matrix is an array of rows, a vector a flat array.
+// file (docs/result-file.md): a matrix is an array of rows, a vector a flat array. Numbers are
+// written as nlohmann::json writes doubles (shortest round-trip form).
 #pragma once
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-namespace hecal::cli {
+namespace hecal::report {
 
 inline nlohmann::json JsonRows(const Eigen::MatrixXd& M) {
   nlohmann::json rows = nlohmann::json::array();
@@ -23,4 +24,4 @@ inline nlohmann::json JsonVector(const Eigen::VectorXd& v) {
   return out;
 }
 
-}  // namespace hecal::cli
+}  // namespace hecal::report

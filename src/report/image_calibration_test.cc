@@ -1,0 +1,97 @@
+// report::CalibrateFromImages on simulated image stations (testing/image_stations.h): the
+// document's stations, rejections and reasons against the images that were skipped, blurred or
+// paired with a wrong robot pose, and X against the known truth.
+#include "hecal/report/image_calibration.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "hecal/core/error.h"
+#include "hecal/geometry/se3.h"
+#include "testing/image_stations.h"
+
+namespace hecal::report {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// 13 images im0 … im12: im1 was skipped by the front end; the other twelve are stations, with
+// the true camera poses (σ 0.1 mrad / 0.1 mm) and pixels of 0.2 px noise, except im4 (the fourth
+// station: 2 px more, a blurred view) and im9 (the ninth: its robot pose is off by 5°).
+ImageCalibrationInput Input(const testing::ImageStations& s) {
+  ImageCalibrationInput input;
+  input.unit = io::LengthUnit::kMillimetre;
+  input.intrinsics_source = "camera.yaml";
+  input.notes = {"a note of the caller"};
+  size_t station = 0;
+  for (int i = 0; i < 13; ++i) {
+    input.image_ids.push_back("im" + std::to_string(i));
+    input.skipped.push_back(i == 1 ? "no target found" : "");
+    if (i == 1) continue;
+    Matrix6d covariance = Matrix6d::Identity() * 1e-8;
+    input.stations.push_back({s.data.T_base_gripper[station], s.data.T_camera_target_true[station],
+                              covariance, s.images[station]});
+    ++station;
+  }
+  return input;
+}
+
+TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
+  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kDeg, 0.05e-3};
+  testing::ImageStations s =
+      testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 31, robot, 0.2);
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> gaussian;
+  for (Eigen::Vector2d& pixel : s.images[3].pixels) {
+    pixel += 2.0 * Eigen::Vector2d(gaussian(rng), gaussian(rng));
+  }
+  ImageCalibrationInput input = Input(s);
+  Vector6d slip;
+  slip << 0.0, 0.0, 5.0 * kDeg, 0.0, 0.0, 0.0;
+  input.stations[8].T_base_gripper = input.stations[8].T_base_gripper * se3::Exp(slip);
+  estimation::ImageCalibrationOptions options;
+  options.setup = handeye::Setup::kEyeInHand;
+  options.camera = testing::TestCamera();
+
+  const ResultDocument document = CalibrateFromImages(input, options);
+  EXPECT_EQ(document.setup, handeye::Setup::kEyeInHand);
+  EXPECT_EQ(document.unit, io::LengthUnit::kMillimetre);
+  EXPECT_EQ(document.station_ids, input.image_ids);
+  EXPECT_EQ(document.rejected, (std::vector<int>{1, 4, 9}));  // image indices, in order
+  ASSERT_TRUE(document.images);
+  const ImageReport& report = *document.images;
+  ASSERT_EQ(report.skipped_reasons.size(), 3u);
+  EXPECT_EQ(report.skipped_reasons[0], "no target found");
+  EXPECT_EQ(report.skipped_reasons[1].rfind("outlier: reprojection RMS ", 0), 0u);
+  EXPECT_EQ(report.skipped_reasons[2].rfind("outlier: pose residual ", 0), 0u);
+  EXPECT_EQ(report.intrinsics_source, "camera.yaml");
+  EXPECT_FALSE(report.intrinsics_rms_px);
+  EXPECT_EQ(report.image_rms_px.size(), 10u);  // the stations used
+  ASSERT_EQ(document.results.size(), 1u);
+  const estimation::CalibrationResult& result = document.results.front();
+  EXPECT_EQ(result.rejected_ids, (std::vector<std::string>{"im4", "im9"}));
+  ASSERT_FALSE(result.warnings.empty());
+  EXPECT_EQ(result.warnings.front(), "a note of the caller");
+  EXPECT_LT(se3::Log(s.data.X.inverse() * result.X).head<3>().norm(), 0.05 * kDeg);
+}
+
+TEST(ImageCalibration, StationsMustMatchTheUsedImages) {
+  const sim::NoiseModel none{sim::NoiseModel::Kind::kGaussian, 0.0, 0.0};
+  const testing::ImageStations s =
+      testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 5, none, 0.0);
+  ImageCalibrationInput input = Input(s);
+  estimation::ImageCalibrationOptions options;
+  options.camera = testing::TestCamera();
+  input.stations.pop_back();
+  EXPECT_THROW(CalibrateFromImages(input, options), InputError);
+  input = Input(s);
+  input.skipped.pop_back();
+  EXPECT_THROW(CalibrateFromImages(input, options), InputError);
+}
+
+}  // namespace
+}  // namespace hecal::report
