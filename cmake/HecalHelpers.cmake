@@ -64,8 +64,9 @@ endfunction()
 
 # hecal_add_test(<name> <sources>... DEPENDS <targets>...)
 # One GoogleTest executable, run from the source tree so tests find data/ by relative path
-# through HECAL_SOURCE_DIR. Label "slow" for *_slow_test names, "unit" and "robustness" for
-# *_robustness_test names, else "unit".
+# through HECAL_SOURCE_DIR. Label "slow" for *_slow_test names; "unit" and "robustness" for
+# *_robustness_test names and the fuzz corpora (*_fuzz_*), which also join the target
+# robustness_checks; else "unit".
 function(hecal_add_test name)
   cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
   add_executable(test_${name} ${ARG_UNPARSED_ARGUMENTS})
@@ -75,9 +76,11 @@ function(hecal_add_test name)
   add_test(NAME ${name} COMMAND test_${name})
   if(name MATCHES "_slow_test$")
     set_tests_properties(${name} PROPERTIES LABELS slow)
-  elseif(name MATCHES "_robustness_test$")
-    # The bad-input corpus (tests/data/robustness): its own label, and part of every unit run.
+  elseif(name MATCHES "_robustness_test$" OR name MATCHES "_fuzz_")
+    # The bad-input corpus (tests/data/robustness) and the fuzzers' kept inputs: their own label,
+    # and part of every unit run.
     set_tests_properties(${name} PROPERTIES LABELS "unit;robustness")
+    add_dependencies(robustness_checks test_${name})
   else()
     set_tests_properties(${name} PROPERTIES LABELS unit)
   endif()
