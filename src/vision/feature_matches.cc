@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <functional>
 #include <map>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/features2d.hpp>
@@ -10,6 +12,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/vision/image_read.h"
 
 namespace hecal::vision {
 namespace {
@@ -115,6 +118,58 @@ std::vector<FeatureMatch> MatchFeatures(const ImageFeatures& first, const ImageF
     out.push_back(inliers[k]);
   }
   return out;
+}
+
+std::vector<std::vector<FeatureMatch>> MatchConsecutiveImages(
+    const std::vector<std::filesystem::path>& paths, const std::vector<std::string>& names,
+    const pose::CameraModel& camera, const FeatureMatchOptions& options, int threads) {
+  if (names.size() != paths.size()) {
+    throw std::invalid_argument("MatchConsecutiveImages: one name per path");
+  }
+  const int previous_threads = cv::getNumThreads();
+  cv::setNumThreads(threads == 0 ? -1 : threads);  // -1: OpenCV's default, every core
+  struct Restore {
+    int threads;
+    ~Restore() { cv::setNumThreads(threads); }
+  } restore{previous_threads};
+  // Runs `job(i)` for i in [0, n) in parallel; rethrows the first error in index order.
+  const auto each = [](int n, const std::function<void(int)>& job) {
+    std::vector<std::exception_ptr> errors(std::size_t(std::max(n, 0)));
+    cv::parallel_for_(
+        cv::Range(0, std::max(n, 0)),
+        [&](const cv::Range& range) {
+          for (int i = range.start; i < range.end; ++i) {
+            try {
+              job(i);
+            } catch (...) {
+              errors[std::size_t(i)] = std::current_exception();
+            }
+          }
+        },
+        double(std::max(n, 1)));
+    for (const std::exception_ptr& error : errors) {
+      if (error) std::rethrow_exception(error);
+    }
+  };
+  const int n = int(paths.size());
+  std::vector<ImageFeatures> features(std::size_t(std::max(n, 0)));
+  each(n, [&](int i) {
+    const cv::Mat gray = ReadGrayImage(paths[std::size_t(i)].string(), kMinDetectionSide);
+    if (camera.width > 0 && (gray.cols != camera.width || gray.rows != camera.height)) {
+      throw InputError(paths[std::size_t(i)].string(), 0,
+                       "the image is " + std::to_string(gray.cols) + "x" +
+                           std::to_string(gray.rows) + " but the intrinsics are for " +
+                           std::to_string(camera.width) + "x" + std::to_string(camera.height),
+                       "give the intrinsics of this camera at this resolution");
+    }
+    features[std::size_t(i)] = DetectFeatures(gray);
+  });
+  std::vector<std::vector<FeatureMatch>> matches(std::size_t(std::max(n - 1, 0)));
+  each(n - 1, [&](int k) {
+    const std::size_t a = std::size_t(k), b = a + 1;
+    matches[a] = MatchFeatures(features[a], features[b], camera, options, names[a], names[b]);
+  });
+  return matches;
 }
 
 }  // namespace hecal::vision

@@ -19,17 +19,24 @@
 //      ⌈√max_matches⌉² grid of cells, and the matches are taken round by round, the best
 //      (smallest descriptor distance) remaining match of every cell per round.
 //
+// MatchConsecutiveImages runs the steps over a sequence of station images: every image is read
+// as grey (vision/image_read.h) and its features detected, in parallel over images on `threads`
+// (0 = every core; cv::parallel_for_), then image k is matched with image k + 1. Errors are
+// raised for the first image (or pair) in sequence order, whatever the scheduling.
+//
 // Frames and units: pixels with the origin at the centre of the top-left pixel (OpenCV); rays are
 // unit vectors in the camera frame (z forward, x right, y down), in the first and the second
 // image's camera respectively — global::BearingPair's v and u.
 //
-// Refused (hecal::InputError naming both images, exit 2 in the CLI): fewer than `min_matches`
-// matches left after step 3 (a pair with too little texture or overlap, or a mostly rotating
-// camera whose essential matrix is undetermined); images that are not 8-bit grey (a programming
-// error: std::invalid_argument).
+// Refused (hecal::InputError, exit 2 in the CLI): an unreadable image, or one whose size is not
+// the camera's width × height (when the camera has them), naming the image; fewer than
+// `min_matches` matches left after step 3 (a pair with too little texture or overlap, or a mostly
+// rotating camera whose essential matrix is undetermined); images that are not 8-bit grey (a
+// programming error: std::invalid_argument).
 #pragma once
 
 #include <Eigen/Core>
+#include <filesystem>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -68,5 +75,11 @@ std::vector<FeatureMatch> MatchFeatures(const ImageFeatures& first, const ImageF
                                         const FeatureMatchOptions& options,
                                         const std::string& first_name,
                                         const std::string& second_name);
+
+// Steps 1–4 over consecutive images: element k holds the matches of image k with image k + 1.
+// `names` name the images in errors (one per path).
+std::vector<std::vector<FeatureMatch>> MatchConsecutiveImages(
+    const std::vector<std::filesystem::path>& paths, const std::vector<std::string>& names,
+    const pose::CameraModel& camera, const FeatureMatchOptions& options, int threads);
 
 }  // namespace hecal::vision
