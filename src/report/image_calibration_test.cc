@@ -41,7 +41,7 @@ ImageCalibrationInput Input(const testing::ImageStations& s) {
 }
 
 TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kDeg, 0.05e-3};
+  const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
   testing::ImageStations s =
       testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 31, robot, 0.2);
   std::mt19937_64 rng(9);
@@ -80,7 +80,7 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
 }
 
 TEST(ImageCalibration, StationsMustMatchTheUsedImages) {
-  const sim::NoiseModel none{sim::NoiseModel::Kind::kGaussian, 0.0, 0.0};
+  const testing::PoseNoise none{0.0, 0.0};
   const testing::ImageStations s =
       testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 5, none, 0.0);
   ImageCalibrationInput input = Input(s);
