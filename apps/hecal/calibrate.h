@@ -118,7 +118,8 @@ std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const vision::Im
 // pixels are undistorted through the intrinsics, bearings are taken as they are) — or, with
 // `--images DIR --target target.yaml --intrinsics camera.yaml` instead of the file, the target
 // corners detected in the images (vision/image_set.h), matched by their ids between consecutive
-// usable stations (the target's geometry is not used); then removes
+// usable stations (the target's geometry is not used), or with `--target none` SIFT matches
+// between consecutive station images (vision/feature_matches.h); then removes
 // wrong matches (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel
 // sigma 0.5 px unless given), certifies the L∞ optimum (global/branch_and_bound.h), polishes
 // it in L2 with a covariance (estimation/epipolar_polish.h), prints a summary and writes the

@@ -20,6 +20,11 @@
 #include "hecal/report/json_matrix.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
+#include <filesystem>
+
+#include "hecal/io/image_files.h"
+#include "hecal/io/image_pairing.h"
+#include "hecal/vision/feature_matches.h"
 #include "image_report.h"
 #endif
 
@@ -113,19 +118,6 @@ GlobalInput MatchesFromFile(const CalibrateFlags& flags, handeye::Setup setup) {
 // most `per_motion` matches per motion, evenly spaced in id order (spread over the target).
 GlobalInput MatchesFromTargetImages(const CalibrateFlags& flags, handeye::Setup setup, int threads,
                                     int per_motion, const Io& io) {
-  if (flags.target.empty() || flags.target == "none") {
-    throw InputError("--target", 0,
-                     "--method global with --images matches the corners of a target; matching "
-                     "generic image features (--target none) is not available",
-                     "give --target target.yaml, or bring your own matches with "
-                     "--correspondences FILE (docs/global.md)");
-  }
-  if (flags.intrinsics.empty()) {
-    throw InputError("--intrinsics", 0,
-                     "--method global with --images needs the camera's intrinsics (estimating "
-                     "them would use the target's geometry)",
-                     "give --intrinsics camera.yaml (e.g. calibrated with hecal detect)");
-  }
   const io::PoseTable robot = ReadRobot(flags);
   const ImageSet set =
       DetectImageSet({flags.images, flags.target, flags.intrinsics, threads, ImageUse::kHandEye},
@@ -175,10 +167,55 @@ GlobalInput MatchesFromTargetImages(const CalibrateFlags& flags, handeye::Setup 
   }
   return input;
 }
+
+// Generic image features as matches (--target none): SIFT matches between the images of
+// consecutive stations (sorted by name), checked by an essential-matrix RANSAC
+// (vision/feature_matches.h), at most `per_motion` per motion spread over the image.
+GlobalInput MatchesFromFeatureImages(const CalibrateFlags& flags, handeye::Setup setup, int threads,
+                                     int per_motion, double pixel_sigma, const Io& io) {
+  const io::PoseTable robot = ReadRobot(flags);
+  const pose::CameraModel camera = io::ReadCameraFile(flags.intrinsics).camera;
+  const io::StationImages listed = io::ListStationImages(flags.images, "the station images");
+  const std::vector<Pose> robot_poses = io::PairRobotWithStations(
+      robot, listed.stations, flags.images,
+      [&io](const std::string& note) { io.err << "hecal: note: " << note << "\n"; });
+  std::vector<std::filesystem::path> paths;
+  std::vector<std::string> names;
+  for (const io::StationImage& station : listed.stations) {
+    paths.push_back(station.path);
+    names.push_back(station.path.string());
+  }
+  vision::FeatureMatchOptions options;
+  options.pixel_sigma = pixel_sigma;
+  options.max_matches = per_motion;
+  const std::vector<std::vector<vision::FeatureMatch>> matches =
+      vision::MatchConsecutiveImages(paths, names, camera, options, threads);
+  GlobalInput input;
+  input.problem.setup = setup;
+  input.focal = 0.5 * (camera.fx + camera.fy);
+  for (std::size_t k = 0; k < matches.size(); ++k) {
+    global::EpipolarMotion motion;
+    motion.first_station = int(k);
+    motion.second_station = int(k + 1);
+    motion.hand = global::HandPose(setup, robot_poses[k]).inverse() *
+                  global::HandPose(setup, robot_poses[k + 1]);
+    for (std::size_t j = 0; j < matches[k].size(); ++j) {
+      motion.pairs.push_back({matches[k][j].first_ray, matches[k][j].second_ray, int(j)});
+    }
+    input.problem.motions.push_back(std::move(motion));
+    input.motion_names.emplace_back(listed.stations[k].id, listed.stations[k + 1].id);
+  }
+  io.out << "features: " << listed.stations.size() << " images, " << matches.size()
+         << " motions, SIFT matches per motion:";
+  for (const auto& motion : matches) io.out << " " << motion.size();
+  io.out << "\n";
+  return input;
+}
 #endif
 
 GlobalInput ReadGlobalInput(const CalibrateFlags& flags, handeye::Setup setup,
-                            [[maybe_unused]] int threads, [[maybe_unused]] const Io& io) {
+                            [[maybe_unused]] int threads, [[maybe_unused]] double pixel_sigma,
+                            [[maybe_unused]] const Io& io) {
   if (!flags.camera.empty()) {
     throw InputError("--camera", 0, "--method global reads point matches, not camera poses",
                      "give the matches with --correspondences FILE, or the images with --images "
@@ -189,7 +226,22 @@ GlobalInput ReadGlobalInput(const CalibrateFlags& flags, handeye::Setup setup,
       throw InputError("--correspondences", 0, "--images and --correspondences were both given",
                        "give the matches from one source: the images' target corners or the file");
     }
+    if (flags.target.empty()) {
+      throw InputError("--target", 0, "--method global with --images needs --target",
+                       "give --target target.yaml to match its corners, or --target none to "
+                       "match generic image features (docs/global.md)");
+    }
+    if (flags.intrinsics.empty()) {
+      throw InputError("--intrinsics", 0,
+                       "--method global with --images needs the camera's intrinsics (estimating "
+                       "them would need a target's geometry)",
+                       "give --intrinsics camera.yaml (e.g. calibrated with hecal detect)");
+    }
 #if defined(HECAL_HAVE_OPENCV_PEERS)
+    if (flags.target == "none") {
+      return MatchesFromFeatureImages(flags, setup, threads, flags.matches_per_motion, pixel_sigma,
+                                      io);
+    }
     return MatchesFromTargetImages(flags, setup, threads, flags.matches_per_motion, io);
 #else
     throw InputError("--images", 0, "this hecal was built without the vision layer (OpenCV)",
@@ -218,7 +270,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   }
   if (!(flags.matches_per_motion >= 8 && flags.matches_per_motion <= 100000)) {
     throw InputError("--matches-per-motion", 0, "must be at least 8 and at most 100000",
-                     "give how many target corners per motion the search uses, e.g. 40");
+                     "give how many matches per motion the search uses, e.g. 40");
   }
   if (!(flags.relative_gap >= 0.0 && flags.relative_gap < 1.0)) {
     throw InputError("--relative-gap", 0, "must be at least 0 and below 1",
@@ -244,7 +296,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
     }
     CheckPixelSigma("--pixel-sigma", pixel_sigma);
   }
-  const GlobalInput input = ReadGlobalInput(flags, *setup, threads, io);
+  const GlobalInput input = ReadGlobalInput(flags, *setup, threads, pixel_sigma, io);
   global::SearchOptions search;
   search.epsilon = flags.epsilon;
   search.relative_gap = flags.relative_gap;

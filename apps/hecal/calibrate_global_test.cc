@@ -140,9 +140,14 @@ TEST_F(CalibrateGlobal, RefusesBadInputWithOneLineAndNoFile) {
   ExpectRefusal(with({}), "needs the camera's intrinsics");
   ExpectRefusal(with({"--intrinsics", Path("camera.yaml"), "--matches-per-motion", "3"}),
                 "--matches-per-motion");
-  std::vector<std::string> none = {"--setup",  "eye-in-hand", "--images",     Path("."),
-                                   "--target", "none",        "--intrinsics", Path("camera.yaml")};
-  ExpectRefusal(run(none), "--target none");
+  ExpectRefusal(
+      run({"--setup", "eye-in-hand", "--images", Path("."), "--intrinsics", Path("camera.yaml")}),
+      "needs --target");
+  // Generic features (--target none) are for --method global only.
+  ExpectRefusal(Hecal({"calibrate", "--method", "ml", "--robot", Path("robot.csv"), "--setup",
+                       "eye-in-hand", "--images", Path("."), "--target", "none", "--intrinsics",
+                       Path("camera.yaml"), "--output", Path("out.json")}),
+                "works with --method global only");
   EXPECT_FALSE(std::filesystem::exists(Path("out.json")));
 }
 

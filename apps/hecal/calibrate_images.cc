@@ -103,6 +103,12 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
     throw InputError("--target", 0, "--images needs --target",
                      "give the target description, e.g. --target target.yaml (docs/targets.md)");
   }
+  if (flags.target == "none") {
+    throw InputError("--target", 0,
+                     "--target none (generic image features, no target) works with --method "
+                     "global only: the other methods need the target's poses",
+                     "add --method global, or give the target with --target target.yaml");
+  }
   const std::optional<double> pixel_sigma = ParsePixelSigma(flags.pixel_sigma);
   io::PoseReadOptions robot_read = settings.read;
   robot_read.invert = flags.robot_inverse;

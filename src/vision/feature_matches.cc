@@ -1,0 +1,175 @@
+// Generic feature matching between two images (vision/feature_matches.h).
+#include "hecal/vision/feature_matches.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <map>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/features2d.hpp>
+#include <optional>
+#include <stdexcept>
+
+#include "hecal/core/error.h"
+#include "hecal/vision/image_read.h"
+
+namespace hecal::vision {
+namespace {
+
+// For each query descriptor, its nearest train descriptor when it passes the ratio test, else -1.
+std::vector<int> RatioMatches(const cv::Mat& query, const cv::Mat& train, double ratio) {
+  std::vector<int> best(query.rows, -1);
+  if (query.empty() || train.rows < 2) return best;
+  cv::BFMatcher matcher(cv::NORM_L2);
+  std::vector<std::vector<cv::DMatch>> knn;
+  matcher.knnMatch(query, train, knn, 2);
+  for (const std::vector<cv::DMatch>& k : knn) {
+    if (k.size() == 2 && k[0].distance < ratio * k[1].distance) best[k[0].queryIdx] = k[0].trainIdx;
+  }
+  return best;
+}
+
+}  // namespace
+
+ImageFeatures DetectFeatures(const cv::Mat& gray, int max_features) {
+  if (gray.empty() || gray.type() != CV_8UC1) {
+    throw std::invalid_argument("DetectFeatures: the image must be 8-bit grey");
+  }
+  ImageFeatures features;
+  features.size = gray.size();
+  cv::SIFT::create(std::max(0, max_features))
+      ->detectAndCompute(gray, cv::noArray(), features.keypoints, features.descriptors);
+  return features;
+}
+
+std::vector<FeatureMatch> MatchFeatures(const ImageFeatures& first, const ImageFeatures& second,
+                                        const pose::CameraModel& camera,
+                                        const FeatureMatchOptions& options,
+                                        const std::string& first_name,
+                                        const std::string& second_name) {
+  // Step 2: ratio test both ways, mutual check.
+  const std::vector<int> forward =
+      RatioMatches(first.descriptors, second.descriptors, options.ratio);
+  const std::vector<int> backward =
+      RatioMatches(second.descriptors, first.descriptors, options.ratio);
+  std::vector<FeatureMatch> candidates;
+  std::vector<cv::Point2d> first_normalised, second_normalised;
+  for (int i = 0; i < int(forward.size()); ++i) {
+    const int j = forward[i];
+    if (j < 0 || backward[j] != i) continue;
+    FeatureMatch match;
+    match.first_pixel = {first.keypoints[i].pt.x, first.keypoints[i].pt.y};
+    match.second_pixel = {second.keypoints[j].pt.x, second.keypoints[j].pt.y};
+    const auto a = pose::Undistort(camera, match.first_pixel);
+    const auto b = pose::Undistort(camera, match.second_pixel);
+    if (!a || !b) continue;
+    match.first_ray = Eigen::Vector3d(a->x(), a->y(), 1.0).normalized();
+    match.second_ray = Eigen::Vector3d(b->x(), b->y(), 1.0).normalized();
+    match.distance = float(cv::norm(first.descriptors.row(i), second.descriptors.row(j)));
+    candidates.push_back(match);
+    first_normalised.emplace_back(a->x(), a->y());
+    second_normalised.emplace_back(b->x(), b->y());
+  }
+  const auto refuse = [&](std::size_t found, const std::string& stage) {
+    throw InputError(first_name, 0,
+                     "only " + std::to_string(found) + " feature matches with " + second_name +
+                         " " + stage + " (at least " + std::to_string(options.min_matches) +
+                         " needed)",
+                     "take the two images closer together, with more overlap and texture and a "
+                     "translation between them, or use a target (--target target.yaml)");
+  };
+  if (int(candidates.size()) < std::max(options.min_matches, 5)) {
+    refuse(candidates.size(), "pass the ratio and mutual checks");
+  }
+  // Step 3: essential-matrix RANSAC on normalised coordinates.
+  const double focal = 0.5 * (camera.fx + camera.fy);
+  const double threshold = 4.0 * std::sqrt(2.0) * options.pixel_sigma / focal;
+  cv::Mat inlier_mask;
+  const cv::Mat E =
+      cv::findEssentialMat(first_normalised, second_normalised, cv::Mat::eye(3, 3, CV_64F),
+                           cv::RANSAC, 0.999, threshold, inlier_mask);
+  std::vector<FeatureMatch> inliers;
+  if (!E.empty()) {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      if (inlier_mask.at<unsigned char>(int(k))) inliers.push_back(candidates[k]);
+    }
+  }
+  if (int(inliers.size()) < options.min_matches) {
+    refuse(inliers.size(), "fit one essential matrix");
+  }
+  // Step 4: round robin over a grid of cells, best descriptor distance first in each cell.
+  const int cells = std::max(1, int(std::ceil(std::sqrt(double(options.max_matches)))));
+  const double width = std::max(1, first.size.width), height = std::max(1, first.size.height);
+  std::stable_sort(
+      inliers.begin(), inliers.end(),
+      [](const FeatureMatch& a, const FeatureMatch& b) { return a.distance < b.distance; });
+  std::map<int, int> taken_in_cell;
+  std::vector<std::pair<int, int>> order;  // (rank in its cell, index)
+  for (int k = 0; k < int(inliers.size()); ++k) {
+    const int cx = std::clamp(int(inliers[k].first_pixel.x() / width * cells), 0, cells - 1);
+    const int cy = std::clamp(int(inliers[k].first_pixel.y() / height * cells), 0, cells - 1);
+    order.emplace_back(taken_in_cell[cy * cells + cx]++, k);
+  }
+  std::stable_sort(order.begin(), order.end());
+  std::vector<FeatureMatch> out;
+  for (const auto& [rank, k] : order) {
+    if (int(out.size()) == options.max_matches) break;
+    out.push_back(inliers[k]);
+  }
+  return out;
+}
+
+std::vector<std::vector<FeatureMatch>> MatchConsecutiveImages(
+    const std::vector<std::filesystem::path>& paths, const std::vector<std::string>& names,
+    const pose::CameraModel& camera, const FeatureMatchOptions& options, int threads) {
+  if (names.size() != paths.size()) {
+    throw std::invalid_argument("MatchConsecutiveImages: one name per path");
+  }
+  const int previous_threads = cv::getNumThreads();
+  cv::setNumThreads(threads == 0 ? -1 : threads);  // -1: OpenCV's default, every core
+  struct Restore {
+    int threads;
+    ~Restore() { cv::setNumThreads(threads); }
+  } restore{previous_threads};
+  // Runs `job(i)` for i in [0, n) in parallel; rethrows the first error in index order.
+  const auto each = [](int n, const std::function<void(int)>& job) {
+    std::vector<std::exception_ptr> errors(std::size_t(std::max(n, 0)));
+    cv::parallel_for_(
+        cv::Range(0, std::max(n, 0)),
+        [&](const cv::Range& range) {
+          for (int i = range.start; i < range.end; ++i) {
+            try {
+              job(i);
+            } catch (...) {
+              errors[std::size_t(i)] = std::current_exception();
+            }
+          }
+        },
+        double(std::max(n, 1)));
+    for (const std::exception_ptr& error : errors) {
+      if (error) std::rethrow_exception(error);
+    }
+  };
+  const int n = int(paths.size());
+  std::vector<ImageFeatures> features(std::size_t(std::max(n, 0)));
+  each(n, [&](int i) {
+    const cv::Mat gray = ReadGrayImage(paths[std::size_t(i)].string(), kMinDetectionSide);
+    if (camera.width > 0 && (gray.cols != camera.width || gray.rows != camera.height)) {
+      throw InputError(paths[std::size_t(i)].string(), 0,
+                       "the image is " + std::to_string(gray.cols) + "x" +
+                           std::to_string(gray.rows) + " but the intrinsics are for " +
+                           std::to_string(camera.width) + "x" + std::to_string(camera.height),
+                       "give the intrinsics of this camera at this resolution");
+    }
+    features[std::size_t(i)] = DetectFeatures(gray);
+  });
+  std::vector<std::vector<FeatureMatch>> matches(std::size_t(std::max(n - 1, 0)));
+  each(n - 1, [&](int k) {
+    const std::size_t a = std::size_t(k), b = a + 1;
+    matches[a] = MatchFeatures(features[a], features[b], camera, options, names[a], names[b]);
+  });
+  return matches;
+}
+
+}  // namespace hecal::vision
