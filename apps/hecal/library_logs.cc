@@ -5,7 +5,7 @@
 #include <glog/logging.h>
 #endif
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include <opencv2/core/utils/logger.hpp>
+#include "hecal/vision/opencv_log.h"
 #endif
 
 namespace hecal::cli {
@@ -16,7 +16,7 @@ void SilenceLibraryLogs() {
   FLAGS_stderrthreshold = google::GLOG_FATAL;
 #endif
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-  cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
+  vision::SilenceOpenCvLog();
 #endif
 }
 

@@ -2,9 +2,9 @@
 // error on their own — Ceres through glog ("W… residual_block.cc… Error in evaluating the
 // ResidualBlock"), OpenCV through its logger (imread warnings) — and those lines would break the
 // one-line error rule of the CLI (README "Reliability"). SilenceLibraryLogs raises glog's minimum
-// level above ERROR and sets OpenCV's log level to silent; the failures behind such lines reach
-// the user as hecal's own reasons (a solver's failure, an image that cannot be decoded). Safe to
-// call more than once.
+// level above ERROR and sets OpenCV's log level to silent (vision/opencv_log.h); the failures
+// behind such lines reach the user as hecal's own reasons (a solver's failure, an image that cannot
+// be decoded). Safe to call more than once.
 #pragma once
 
 namespace hecal::cli {
