@@ -22,6 +22,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+
+#include "testing/camera_yaml.h"
+#include "testing/kuka2_views.h"
 #endif
 
 namespace hecal::cli {
@@ -51,10 +54,7 @@ class CalibrateGlobalFeatures : public CliTest {
     std::string rows, line;
     for (int i = 0; i < kImages && std::getline(all, line); ++i) rows += line + "\n";
     Write("robot.txt", rows);
-    Write("camera.yaml",
-          "fx: 1056.2855\nfy: 1056.4172\ncx: 958.7994\ncy: 586.9487\nwidth: 1920\nheight: 1200\n"
-          "distortion:\n  model: plumb_bob\n"
-          "  coefficients: [-0.131337, 0.099230, 0.000133, 0.000312, -0.049132]\n");
+    Write("camera.yaml", testing::CameraYaml(vision::kuka2::Camera()));
     Write("target.yaml", "type: chessboard\ncols: 24\nrows: 17\nsquare: 0.015\n");
   }
 };
