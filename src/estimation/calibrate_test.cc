@@ -24,8 +24,9 @@ bool AnyWarningContains(const CalibrationResult& result, const std::string& text
 }
 
 // Every method dispatches: closed-form ones return exactly handeye::SolveClosedForm's solution
-// (their accuracy is tested in src/handeye), strobl and ml recover noise-free data to 1e-9.
-TEST(Calibrate, EveryMethodDispatchesAndTheRefinementsAreExact) {
+// (their accuracy is tested in src/handeye), and every method has a covariance. The accuracy of
+// every method through Calibrate is src/estimation/every_method_test.cc's.
+TEST(Calibrate, EveryMethodDispatches) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::Scene data = testing::ThesisCase(setup, 8, 81);
     const handeye::Problem problem = data.MeasuredProblem();
@@ -42,13 +43,6 @@ TEST(Calibrate, EveryMethodDispatchesAndTheRefinementsAreExact) {
         const handeye::Solution direct = handeye::SolveClosedForm(info.method, problem);
         EXPECT_TRUE(result.X.isApprox(direct.X, 1e-12)) << info.name;
         EXPECT_TRUE(result.Z.isApprox(direct.Z, 1e-12)) << info.name;
-      } else {
-        EXPECT_LT(testing::Error(result.X, data.X).rotation, 1e-9) << info.name;
-        EXPECT_LT(testing::Error(result.X, data.X).translation, 1e-9) << info.name;
-        EXPECT_LT(testing::Error(result.Z, data.Z).rotation, 1e-9) << info.name;
-        EXPECT_LT(testing::Error(result.Z, data.Z).translation, 1e-9) << info.name;
-        EXPECT_LT(result.rotation_rms, 1e-9) << info.name;
-        EXPECT_LT(result.translation_rms, 1e-9) << info.name;
       }
     }
   }

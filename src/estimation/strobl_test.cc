@@ -17,20 +17,8 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 class StroblTest : public ::testing::TestWithParam<handeye::Setup> {};
 
-TEST_P(StroblTest, NoiseFreeRecoversTheTruth) {
-  const handeye::Setup setup = GetParam();
-  for (const testing::Scene& data :
-       {testing::ThesisCase(setup, 10, 71), testing::WideRotationCase(setup, 8, 72),
-        testing::WideRotationCase(setup, 6, 73, std::numbers::pi)}) {
-    const handeye::Problem problem = data.MeasuredProblem();
-    const StroblResult result = RefineStrobl(problem, Solutions(InitialSolutions(problem)));
-    EXPECT_LT(testing::Error(result.X, data.X).rotation, 1e-9);
-    EXPECT_LT(testing::Error(result.X, data.X).translation, 1e-9);
-    EXPECT_LT(testing::Error(result.Z, data.Z).rotation, 1e-9);
-    EXPECT_LT(testing::Error(result.Z, data.Z).translation, 1e-9);
-  }
-}
-
+// Noise-free recovery from the closed-form starts (as `--method strobl` runs it) is
+// src/estimation/every_method_test.cc's; here from a rough start alone.
 TEST_P(StroblTest, NoiseFreeConvergesFromAPerturbedStart) {
   const testing::Scene data = testing::ThesisCase(GetParam(), 6, 74);
   Vector6d offset;

@@ -12,10 +12,6 @@ testing::ProblemSolver Andreff() {
   return testing::FromMotionSolver([](const auto& motions) { return SolveAndreff(motions); });
 }
 
-TEST(Andreff, ExactOnNoiseFreeDataIncludingWideRotations) {
-  testing::ExpectExactOnNoiseFreeCases(Andreff(), /*check_z=*/false);
-}
-
 TEST(Andreff, NoCatastrophicTrialWithNoise) {
   EXPECT_LT(testing::RunNoisyStudy(Andreff(), 200, 6000).worst_rotation_deg, 10.0);
 }

@@ -14,10 +14,6 @@ testing::ProblemSolver HoraudNonlinear() {
       [](const auto& motions) { return SolveHoraudNonlinear(motions); });
 }
 
-TEST(HoraudNonlinear, ExactOnNoiseFreeDataIncludingWideRotations) {
-  testing::ExpectExactOnNoiseFreeCases(HoraudNonlinear(), /*check_z=*/false);
-}
-
 TEST(HoraudNonlinear, NoCatastrophicTrialWithNoise) {
   EXPECT_LT(testing::RunNoisyStudy(HoraudNonlinear(), 200, 9000).worst_rotation_deg, 10.0);
 }

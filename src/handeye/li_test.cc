@@ -8,10 +8,6 @@
 namespace hecal::handeye {
 namespace {
 
-TEST(Li, ExactOnNoiseFreeDataIncludingWideRotations) {
-  testing::ExpectExactOnNoiseFreeCases(SolveLi, /*check_z=*/true);
-}
-
 TEST(Li, NoCatastrophicTrialWithNoise) {
   const testing::NoisyStudy study = testing::RunNoisyStudy(SolveLi, 200, 8000);
   EXPECT_LT(study.worst_rotation_deg, 10.0);

@@ -7,10 +7,6 @@
 namespace hecal::handeye {
 namespace {
 
-TEST(Shah, ExactOnNoiseFreeDataIncludingWideRotations) {
-  testing::ExpectExactOnNoiseFreeCases(SolveShah, /*check_z=*/true);
-}
-
 TEST(Shah, NoCatastrophicTrialWithNoise) {
   const testing::NoisyStudy study = testing::RunNoisyStudy(SolveShah, 200, 7000);
   EXPECT_LT(study.worst_rotation_deg, 10.0);
