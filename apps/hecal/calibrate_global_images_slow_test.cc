@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "testing/render_once.h"
 #include "testing/rendered_views.h"
 #endif
 
@@ -46,17 +47,14 @@ Pose TrueZ() {
       Eigen::Vector3d(0.7, -0.1, 0.1));
 }
 
-class CalibrateGlobalImages : public CliTest {
- protected:
-  static void SetUpTestSuite() {
-    rendered_views::RenderViewFolder(RenderDir(), rendered_views::Views(kViews), 200);
-  }
-  static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
-  static std::filesystem::path RenderDir() {
-    return std::filesystem::temp_directory_path() /
-           ("hecal_calibrate_global_images_test_" + std::to_string(::getpid()));
+class CalibrateGlobalImages : public hecal::testing::RenderOnce<CalibrateGlobalImages, CliTest> {
+ public:
+  static constexpr const char* kRenderFolder = "calibrate_global_images_test";
+  static void Render(const std::filesystem::path& dir) {
+    rendered_views::RenderViewFolder(dir, rendered_views::Views(kViews), 200);
   }
 
+ protected:
   // robot.csv: T_base_gripper of every view, in the images' order.
   std::string RobotFile() {
     std::ostringstream csv;

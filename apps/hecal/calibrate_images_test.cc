@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "testing/render_once.h"
 #include "testing/rendered_views.h"
 #endif
 
@@ -62,17 +63,14 @@ std::string ViewName(int i) {
 }
 
 // Images rendered once for the suite.
-class CalibrateImagesTest : public CliTest {
- protected:
-  static void SetUpTestSuite() {
-    rendered_views::RenderViewFolder(RenderDir(), rendered_views::Views(kViews), 100);
-  }
-  static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
-  static std::filesystem::path RenderDir() {
-    return std::filesystem::temp_directory_path() /
-           ("hecal_calibrate_images_test_renders_" + std::to_string(::getpid()));
+class CalibrateImagesTest : public hecal::testing::RenderOnce<CalibrateImagesTest, CliTest> {
+ public:
+  static constexpr const char* kRenderFolder = "calibrate_images_test_renders";
+  static void Render(const std::filesystem::path& dir) {
+    rendered_views::RenderViewFolder(dir, rendered_views::Views(kViews), 100);
   }
 
+ protected:
   // robot.csv: one row per view in `order` (indices into `views`), with an id column when `ids`.
   // `id_prefix` names the stations ("view_0" + index by default).
   std::string RobotFile(handeye::Setup setup, const std::vector<Pose>& views,

@@ -11,8 +11,6 @@
 #include "cli_test_util.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include <unistd.h>
-
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <iomanip>
@@ -20,6 +18,7 @@
 #include <sstream>
 
 #include "testing/csv_reader.h"
+#include "testing/render_once.h"
 #include "testing/rendered_views.h"
 #endif
 
@@ -66,17 +65,16 @@ Pose TrueZ() {
                   Eigen::Vector3d(0.5, -0.1, 0.02));
 }
 
-class CameraFileImagesTest : public cli_test::CliTest {
- protected:
-  static void SetUpTestSuite() {
-    rendered_views::RenderViewFolder(RenderDir(), rendered_views::Views(kViews), 200,
+class CameraFileImagesTest
+    : public hecal::testing::RenderOnce<CameraFileImagesTest, cli_test::CliTest> {
+ public:
+  static constexpr const char* kRenderFolder = "camera_file_images_test_renders";
+  static void Render(const std::filesystem::path& dir) {
+    rendered_views::RenderViewFolder(dir, rendered_views::Views(kViews), 200,
                                      rendered_views::Board(), KudCamera());
   }
-  static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
-  static std::filesystem::path RenderDir() {
-    return std::filesystem::temp_directory_path() /
-           ("hecal_camera_file_images_test_renders_" + std::to_string(::getpid()));
-  }
+
+ protected:
   std::string Target() { return Write("target.yaml", rendered_views::kTargetYaml); }
 };
 

@@ -16,8 +16,6 @@
 #include "cli_test_util.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include <unistd.h>
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -32,6 +30,7 @@
 #include "hecal/pose/target.h"
 #include "hecal/vision/render.h"
 #include "testing/csv_reader.h"
+#include "testing/render_once.h"
 #include "testing/rendered_views.h"
 #endif
 
@@ -65,31 +64,27 @@ std::vector<Pose> ParallelViews() {
 
 // Images are rendered once for the suite (slight blur and noise, as a real camera) and copied
 // into each test's own folder.
-class DetectTest : public CliTest {
- protected:
-  static void SetUpTestSuite() {
-    std::filesystem::create_directories(RenderDir());
+class DetectTest : public hecal::testing::RenderOnce<DetectTest, CliTest> {
+ public:
+  static constexpr const char* kRenderFolder = "detect_test_renders";
+  static void Render(const std::filesystem::path& dir) {
     std::uint64_t seed = 1;
     const std::vector<Pose> views = Views();
     for (std::size_t i = 0; i < views.size(); ++i) {
-      rendered_views::RenderView(views[i], ++seed, RenderDir() / ViewName(i));
+      rendered_views::RenderView(views[i], ++seed, dir / ViewName(i));
     }
     const std::vector<Pose> parallel = ParallelViews();
     for (std::size_t i = 0; i < parallel.size(); ++i) {
       rendered_views::RenderView(parallel[i], ++seed,
-                                 RenderDir() / ("parallel_" + std::to_string(i) + ".png"));
+                                 dir / ("parallel_" + std::to_string(i) + ".png"));
     }
     const std::vector<Pose> tags = rendered_views::TagViews(3);
     for (std::size_t i = 0; i < tags.size(); ++i) {
-      rendered_views::RenderView(tags[i], ++seed, RenderDir() / TagName(i), rendered_views::Tag());
+      rendered_views::RenderView(tags[i], ++seed, dir / TagName(i), rendered_views::Tag());
     }
   }
-  static void TearDownTestSuite() { std::filesystem::remove_all(RenderDir()); }
 
-  static std::filesystem::path RenderDir() {
-    return std::filesystem::temp_directory_path() /
-           ("hecal_detect_test_renders_" + std::to_string(::getpid()));
-  }
+ protected:
   static std::string ViewName(std::size_t i) { return "view_0" + std::to_string(i) + ".png"; }
   static std::string TagName(std::size_t i) { return "tag_0" + std::to_string(i) + ".png"; }
 
