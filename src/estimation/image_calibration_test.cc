@@ -1,4 +1,4 @@
-// CalibrateFromImages on simulated image stations (testing/image_stations.h): PnP poses from the
+// CalibrateFromImages on simulated image stations (testing/image_scene.h): PnP poses from the
 // projected pixels (pose::RefinePose, started at the true pose), then the whole chain against the
 // known X and Z.
 #include "hecal/estimation/image_calibration.h"
@@ -13,21 +13,20 @@
 
 #include "hecal/geometry/se3.h"
 #include "hecal/pose/pose_refinement.h"
-#include "testing/image_stations.h"
+#include "testing/image_scene.h"
 
 namespace hecal::estimation {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-std::vector<ImageStation> Stations(const testing::ImageStations& s) {
+std::vector<ImageStation> Stations(const testing::ImageScene& s) {
   std::vector<ImageStation> stations;
   for (size_t i = 0; i < s.images.size(); ++i) {
-    const pose::RefinementResult pnp =
-        pose::RefinePose(s.data.T_camera_target_true[i], s.images[i].target, s.images[i].pixels,
-                         testing::TestCamera());
-    stations.push_back(
-        {s.data.T_base_gripper[i], pnp.T_camera_target, pnp.covariance, s.images[i]});
+    const pose::RefinementResult pnp = pose::RefinePose(
+        s.poses.T_camera_target_true[i], s.images[i].target, s.images[i].pixels, s.camera);
+    stations.push_back({s.poses.T_base_gripper[i], pnp.T_camera_target, pnp.covariance,
+                        ImagePoints{s.images[i].target, s.images[i].pixels}});
   }
   return stations;
 }
@@ -35,20 +34,21 @@ std::vector<ImageStation> Stations(const testing::ImageStations& s) {
 ImageCalibrationOptions Options(handeye::Setup setup) {
   ImageCalibrationOptions options;
   options.setup = setup;
-  options.camera = testing::TestCamera();
+  options.camera = testing::DefaultCamera();
   return options;
 }
 
 TEST(CalibrateFromImages, NoiseFreeImagesGiveTheTruth) {
   const testing::PoseNoise none{0.0, 0.0};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const testing::ImageStations s = testing::MakeImageStations(setup, 8, 5, none, 0.0);
+    const testing::ImageScene s =
+        testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 8, 5, none, 0.0));
     ImageCalibrationOptions options = Options(setup);
     options.pixel_sigma = 0.5;
     const ImageCalibrationResult result = CalibrateFromImages(Stations(s), options);
-    EXPECT_LT(se3::Log(s.data.X.inverse() * result.result.X).norm(), 1e-8)
+    EXPECT_LT(se3::Log(s.poses.X.inverse() * result.result.X).norm(), 1e-8)
         << handeye::SetupName(setup);
-    EXPECT_LT(se3::Log(s.data.Z.inverse() * result.result.Z).norm(), 1e-8);
+    EXPECT_LT(se3::Log(s.poses.Z.inverse() * result.result.Z).norm(), 1e-8);
     EXPECT_LT(result.reprojection.rms_px, 1e-6);
     ASSERT_EQ(result.result.residuals.size(), 8u);
     EXPECT_LT(result.result.translation_rms, 1e-9);
@@ -60,8 +60,8 @@ TEST(CalibrateFromImages, NoiseFreeImagesGiveTheTruth) {
 // robot noise is estimated and the warning says so; with the robot noise known, nothing is.
 TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
   const testing::PoseNoise robot{0.02 * kDeg, 0.1e-3};
-  const testing::ImageStations s =
-      testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 9, robot, 0.3);
+  const testing::ImageScene s = testing::MakeImageScene(
+      testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 12, 9, robot, 0.3));
   const std::vector<ImageStation> stations = Stations(s);
   double rotation = 0.0;
   for (const ImageStation& station : stations) {
@@ -100,11 +100,11 @@ TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
     double image_rotation = 0.0, image_translation = 0.0, mahalanobis = 0.0;
     constexpr int kTrials = 100;
     for (int trial = 0; trial < kTrials; ++trial) {
-      const testing::ImageStations s =
-          testing::MakeImageStations(setup, 10, 500 + trial, robot, 0.5);
+      const testing::ImageScene s = testing::MakeImageScene(
+          testing::ImageSceneOptions::For(setup, 10, 500 + trial, robot, 0.5));
       const ImageCalibrationResult result = CalibrateFromImages(Stations(s), Options(setup));
-      const Vector6d pose_error = se3::Log(s.data.X.inverse() * result.pose_level.X);
-      const Vector6d image_error = se3::Log(s.data.X.inverse() * result.result.X);
+      const Vector6d pose_error = se3::Log(s.poses.X.inverse() * result.pose_level.X);
+      const Vector6d image_error = se3::Log(s.poses.X.inverse() * result.result.X);
       pose_rotation += pose_error.head<3>().squaredNorm();
       pose_translation += pose_error.tail<3>().squaredNorm();
       image_rotation += image_error.head<3>().squaredNorm();
@@ -130,7 +130,8 @@ TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
 TEST(CalibrateFromImages, MonteCarloCovarianceMatchesTheLinearOne) {
   const testing::PoseNoise robot{0.02 * kDeg, 0.1e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const testing::ImageStations s = testing::MakeImageStations(setup, 10, 31, robot, 0.5);
+    const testing::ImageScene s =
+        testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 10, 31, robot, 0.5));
     ImageCalibrationOptions options = Options(setup);
     options.pixel_sigma = 0.5;
     options.calibrate.robot_sigma = PoseSigma{0.02 * kDeg, 0.1e-3};
@@ -164,7 +165,8 @@ namespace {
 TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
   const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    testing::ImageStations s = testing::MakeImageStations(setup, 12, 31, robot, 0.2);
+    testing::ImageScene s =
+        testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 12, 31, robot, 0.2));
     std::mt19937_64 rng(9);
     std::normal_distribution<double> gaussian;
     for (Eigen::Vector2d& pixel : s.images[3].pixels)
@@ -189,7 +191,7 @@ TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
       named = named || (warning.rfind("image im3 (", 0) == 0 &&
                         warning.find(": rejected") != std::string::npos);
     EXPECT_TRUE(named);
-    EXPECT_LT(se3::Log(s.data.X.inverse() * result.result.X).head<3>().norm(), 0.05 * kDeg);
+    EXPECT_LT(se3::Log(s.poses.X.inverse() * result.result.X).head<3>().norm(), 0.05 * kDeg);
   }
 }
 
@@ -224,8 +226,8 @@ TEST(CalibrateFromImages, RobotNoiseAgreesWithThePoseLevelOrSaysWhyNot) {
   const testing::PoseNoise robot{0.5 * kDeg, 2e-3};
   int covered = 0;
   for (int set = 0; set < 5; ++set) {
-    const testing::ImageStations s =
-        testing::MakeImageStations(handeye::Setup::kEyeInHand, 8, 40 + set, robot, 0.2);
+    const testing::ImageScene s = testing::MakeImageScene(
+        testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 8, 40 + set, robot, 0.2));
     std::vector<ImageStation> stations = Stations(s);
     Vector6d slip;
     slip << 2.0 * kDeg, 0.0, 0.0, 0.0, 0.0, 0.0;
@@ -243,7 +245,7 @@ TEST(CalibrateFromImages, RobotNoiseAgreesWithThePoseLevelOrSaysWhyNot) {
     const size_t used = result.result.residuals.size();
     const double limit = std::exp(2.0 / std::sqrt(3.0 * static_cast<double>(used) - 6.0));
     EXPECT_TRUE(has_warning || (ratio < limit && ratio > 1.0 / limit)) << ratio;
-    const Vector6d error = se3::Log(result.result.X.inverse() * s.data.X);
+    const Vector6d error = se3::Log(result.result.X.inverse() * s.poses.X);
     const Matrix6d covariance = result.result.covariance->X();
     covered += error.dot(covariance.ldlt().solve(error)) < 20.06 ? 1 : 0;
   }

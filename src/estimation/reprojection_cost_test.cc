@@ -8,7 +8,7 @@
 #include <random>
 
 #include "hecal/geometry/se3.h"
-#include "testing/image_stations.h"
+#include "testing/image_scene.h"
 #include "testing/random_poses.h"
 
 namespace hecal::estimation {
@@ -19,16 +19,16 @@ namespace {
 // Z and G and along each intrinsic parameter, for both setups.
 TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
   std::mt19937_64 rng(3);
-  const pose::CameraModel camera = testing::TestCamera();
+  const pose::CameraModel camera = testing::DefaultCamera();
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const testing::ImageStations stations =
-        testing::MakeImageStations(setup, 4, 11, testing::PoseNoise{}, 0.0);
+    const testing::ImageScene stations = testing::MakeImageScene(
+        testing::ImageSceneOptions::For(setup, 4, 11, testing::PoseNoise{}, 0.0));
     for (size_t i = 0; i < stations.images.size(); ++i) {
       const Eigen::Vector3d P = stations.images[i].target[7];
       const Eigen::Vector2d u(300.0, 200.0);
       const ReprojectionCost cost(setup, camera, P, u, 0.5);
-      std::array<Pose, 3> poses = {stations.data.X, stations.data.Z,
-                                   stations.data.T_base_gripper_true[i]};
+      std::array<Pose, 3> poses = {stations.poses.X, stations.poses.Z,
+                                   stations.poses.T_base_gripper_true[i]};
       std::array<std::array<double, kPoseAmbientSize>, 3> parameters;
       for (int b = 0; b < 3; ++b) PoseToParameters(poses[b], parameters[b].data());
       const pose::IntrinsicParameters intrinsics = pose::IntrinsicsOf(camera);
@@ -84,12 +84,12 @@ TEST(ReprojectionCost, JacobiansMatchFiniteDifferences) {
 
 TEST(ReprojectionCost, CameraFromUnknownsFollowsTheModel) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const testing::ImageStations stations =
-        testing::MakeImageStations(setup, 5, 12, testing::PoseNoise{}, 0.0);
+    const testing::ImageScene stations = testing::MakeImageScene(
+        testing::ImageSceneOptions::For(setup, 5, 12, testing::PoseNoise{}, 0.0));
     for (size_t i = 0; i < 5; ++i) {
-      const Pose B = CameraFromUnknowns(setup, stations.data.X, stations.data.Z,
-                                        stations.data.T_base_gripper_true[i]);
-      EXPECT_TRUE(B.isApprox(stations.data.T_camera_target_true[i], 1e-12));
+      const Pose B = CameraFromUnknowns(setup, stations.poses.X, stations.poses.Z,
+                                        stations.poses.T_base_gripper_true[i]);
+      EXPECT_TRUE(B.isApprox(stations.poses.T_camera_target_true[i], 1e-12));
     }
   }
 }

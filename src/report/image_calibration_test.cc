@@ -1,4 +1,4 @@
-// report::CalibrateFromImages on simulated image stations (testing/image_stations.h): the
+// report::CalibrateFromImages on simulated image stations (testing/image_scene.h): the
 // document's stations, rejections and reasons against the images that were skipped, blurred or
 // paired with a wrong robot pose, and X against the known truth.
 #include "hecal/report/image_calibration.h"
@@ -12,7 +12,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
-#include "testing/image_stations.h"
+#include "testing/image_scene.h"
 
 namespace hecal::report {
 namespace {
@@ -22,7 +22,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 // 13 images im0 … im12: im1 was skipped by the front end; the other twelve are stations, with
 // the true camera poses (σ 0.1 mrad / 0.1 mm) and pixels of 0.2 px noise, except im4 (the fourth
 // station: 2 px more, a blurred view) and im9 (the ninth: its robot pose is off by 5°).
-ImageCalibrationInput Input(const testing::ImageStations& s) {
+ImageCalibrationInput Input(const testing::ImageScene& s) {
   ImageCalibrationInput input;
   input.unit = io::LengthUnit::kMillimetre;
   input.intrinsics_source = "camera.yaml";
@@ -33,8 +33,9 @@ ImageCalibrationInput Input(const testing::ImageStations& s) {
     input.skipped.push_back(i == 1 ? "no target found" : "");
     if (i == 1) continue;
     Matrix6d covariance = Matrix6d::Identity() * 1e-8;
-    input.stations.push_back({s.data.T_base_gripper[station], s.data.T_camera_target_true[station],
-                              covariance, s.images[station]});
+    input.stations.push_back(
+        {s.poses.T_base_gripper[station], s.poses.T_camera_target_true[station], covariance,
+         estimation::ImagePoints{s.images[station].target, s.images[station].pixels}});
     ++station;
   }
   return input;
@@ -42,8 +43,8 @@ ImageCalibrationInput Input(const testing::ImageStations& s) {
 
 TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
-  testing::ImageStations s =
-      testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 31, robot, 0.2);
+  testing::ImageScene s = testing::MakeImageScene(
+      testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 12, 31, robot, 0.2));
   std::mt19937_64 rng(9);
   std::normal_distribution<double> gaussian;
   for (Eigen::Vector2d& pixel : s.images[3].pixels) {
@@ -55,7 +56,7 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   input.stations[8].T_base_gripper = input.stations[8].T_base_gripper * se3::Exp(slip);
   estimation::ImageCalibrationOptions options;
   options.setup = handeye::Setup::kEyeInHand;
-  options.camera = testing::TestCamera();
+  options.camera = testing::DefaultCamera();
 
   const ResultDocument document = CalibrateFromImages(input, options);
   EXPECT_EQ(document.setup, handeye::Setup::kEyeInHand);
@@ -76,16 +77,16 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   EXPECT_EQ(result.rejected_ids, (std::vector<std::string>{"im4", "im9"}));
   ASSERT_FALSE(result.warnings.empty());
   EXPECT_EQ(result.warnings.front(), "a note of the caller");
-  EXPECT_LT(se3::Log(s.data.X.inverse() * result.X).head<3>().norm(), 0.05 * kDeg);
+  EXPECT_LT(se3::Log(s.poses.X.inverse() * result.X).head<3>().norm(), 0.05 * kDeg);
 }
 
 TEST(ImageCalibration, StationsMustMatchTheUsedImages) {
   const testing::PoseNoise none{0.0, 0.0};
-  const testing::ImageStations s =
-      testing::MakeImageStations(handeye::Setup::kEyeInHand, 12, 5, none, 0.0);
+  const testing::ImageScene s = testing::MakeImageScene(
+      testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 12, 5, none, 0.0));
   ImageCalibrationInput input = Input(s);
   estimation::ImageCalibrationOptions options;
-  options.camera = testing::TestCamera();
+  options.camera = testing::DefaultCamera();
   input.stations.pop_back();
   EXPECT_THROW(CalibrateFromImages(input, options), InputError);
   input = Input(s);

@@ -1,6 +1,7 @@
-// Test support for the vision tests: a planar board, camera poses that look at it from chosen
-// directions, and pixels projected with OpenCV's own plumb_bob model (cv::projectPoints, the
-// reference for pose/camera_model.h), optionally with Gaussian pixel noise.
+// Test support for the vision tests: camera poses that look at a planar board (its points:
+// testing/image_scene.h, GridPoints) from chosen directions, and pixels projected with OpenCV's own
+// plumb_bob model (cv::projectPoints, the reference for pose/camera_model.h), optionally with
+// Gaussian pixel noise.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -12,15 +13,6 @@
 #include "hecal/pose/camera_model.h"
 
 namespace hecal::vision::testing {
-
-// Inner corners of a cols × rows chessboard, row-major, in the target frame (z = 0, metres).
-inline std::vector<Eigen::Vector3d> BoardPoints(int cols, int rows, double square) {
-  std::vector<Eigen::Vector3d> points;
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c) points.emplace_back(c * square, r * square, 0.0);
-  }
-  return points;
-}
 
 // T_camera_target of a camera at `eye` (target frame) looking at `centre`, its x axis kept
 // perpendicular to the target's y axis, then turned by `pan` (radians, about the camera's own x

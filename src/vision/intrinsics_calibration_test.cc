@@ -11,12 +11,12 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "testing/image_scene.h"
 #include "testing/synthetic_views.h"
 
 namespace hecal::vision {
 namespace {
 
-using testing::BoardPoints;
 using testing::LookAt;
 using testing::Project;
 
@@ -36,7 +36,8 @@ pose::CameraModel TrueCamera() {
 
 // An 11 × 8 board with 40 mm squares (0.4 × 0.28 m), centre (0.2, 0.14, 0).
 const std::vector<Eigen::Vector3d>& Board() {
-  static const std::vector<Eigen::Vector3d> board = BoardPoints(11, 8, 0.04);
+  static const std::vector<Eigen::Vector3d> board =
+      ::hecal::testing::GridPoints({.cols = 11, .rows = 8, .pitch = 0.04, .centred = false});
   return board;
 }
 

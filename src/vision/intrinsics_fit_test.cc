@@ -9,6 +9,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "testing/image_scene.h"
 #include "testing/synthetic_views.h"
 
 namespace hecal::vision {
@@ -57,7 +58,9 @@ std::vector<CalibrationView> Views(const std::vector<Eigen::Vector3d>& points,
 
 // A 9 × 6 chessboard of 30 mm squares.
 std::vector<CalibrationView> BoardViews(const pose::CameraModel& camera) {
-  return Views(testing::BoardPoints(9, 6, 0.03), Eigen::Vector3d(0.12, 0.075, 0.0), camera);
+  return Views(
+      ::hecal::testing::GridPoints({.cols = 9, .rows = 6, .pitch = 0.03, .centred = false}),
+      Eigen::Vector3d(0.12, 0.075, 0.0), camera);
 }
 
 TEST(IntrinsicsFit, TrueIntrinsicsFit) {

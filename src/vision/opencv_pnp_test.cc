@@ -10,12 +10,12 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "testing/image_scene.h"
 #include "testing/synthetic_views.h"
 
 namespace hecal::vision {
 namespace {
 
-using testing::BoardPoints;
 using testing::LookAt;
 using testing::Project;
 using testing::RotationError;
@@ -31,6 +31,11 @@ pose::CameraModel TestCamera() {
   camera.height = 960;
   camera.distortion = {-0.21, 0.09, 0.0012, -0.0007, -0.015};
   return camera;
+}
+
+// The inner corners of a 9 × 6 chessboard of 30 mm squares, the first corner the origin.
+std::vector<Eigen::Vector3d> Board() {
+  return ::hecal::testing::GridPoints({.cols = 9, .rows = 6, .pitch = 0.03, .centred = false});
 }
 
 // A 9 × 6 board (30 mm squares) seen from 0.5 m, tilted 35° about a skew axis.
@@ -64,7 +69,7 @@ double ReprojectionRms(const std::vector<Eigen::Vector3d>& points,
 
 TEST(OpenCvPnp, EveryMethodRecoversAPlanarPoseExactly) {
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = BoardPoints(9, 6, 0.03);
+  const std::vector<Eigen::Vector3d> board = Board();
   const Pose truth = PlanarTruth();
   const std::vector<Eigen::Vector2d> pixels = Project(board, truth, camera);
   for (const PnpMethodInfo& info : OpenCvPnpMethods()) {
@@ -79,7 +84,7 @@ TEST(OpenCvPnp, PoseMapsTargetPointsIntoTheCameraFrame) {
   // Frame convention, independently of any solver: the target's origin lands where the pose's
   // translation says, and the first corner's pixel is that point's projection.
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = BoardPoints(9, 6, 0.03);
+  const std::vector<Eigen::Vector3d> board = Board();
   const Pose truth = PlanarTruth();
   const std::vector<Eigen::Vector2d> pixels = Project(board, truth, camera);
   const Pose T = SolvePnPOpenCv(PnpMethod::kIppe, board, pixels, camera);
@@ -94,7 +99,7 @@ TEST(OpenCvPnp, IppeAcceptsAnyPlaneNotOnlyZEqualsZero) {
   const Pose T_board_moved = MakePose(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX()).matrix(),
                                       Eigen::Vector3d(0, 0, 0.1));
   std::vector<Eigen::Vector3d> points;
-  for (const Eigen::Vector3d& p : BoardPoints(9, 6, 0.03)) points.push_back(T_board_moved * p);
+  for (const Eigen::Vector3d& p : Board()) points.push_back(T_board_moved * p);
   ASSERT_TRUE(AreCoplanar(points));
   const Pose truth = PlanarTruth() * T_board_moved.inverse();
   const Pose T = SolvePnPOpenCv(PnpMethod::kIppe, points, Project(points, truth, camera), camera);
@@ -137,7 +142,7 @@ TEST(OpenCvPnp, IppeRefusesNonPlanarPoints) {
 
 TEST(OpenCvPnp, RefinedPoseMinimisesTheReprojectionErrorUnderNoise) {
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = BoardPoints(9, 6, 0.03);
+  const std::vector<Eigen::Vector3d> board = Board();
   const Pose truth = PlanarTruth();
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 20; ++trial) {
@@ -172,7 +177,7 @@ TEST(OpenCvPnp, MethodNamesRoundTrip) {
 
 TEST(OpenCvPnp, BadInputIsReported) {
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = BoardPoints(9, 6, 0.03);
+  const std::vector<Eigen::Vector3d> board = Board();
   std::vector<Eigen::Vector2d> pixels = Project(board, PlanarTruth(), camera);
 
   std::vector<Eigen::Vector2d> short_pixels(pixels.begin(), pixels.end() - 1);

@@ -1,0 +1,133 @@
+// Test support (not installed): the synthetic camera and scene of the image tests, every number
+// an option: the camera's intrinsics and plumb_bob distortion (pose/camera_model.h), a planar
+// grid target, the stations (testing/scene.h: setup, count, spread, robot noise), Gaussian pixel
+// noise and the seed.
+//
+// MakeImageScene draws, from one std::mt19937_64 seeded with `seed`: first the stations
+// (MakeScene: X, Z, the true poses, then the robot noise), then per station and per grid point
+// two standard normals (x, y), scaled by pixel_sigma — drawn also when pixel_sigma is zero, so
+// that the noise-free pixels and the stations of a seed do not depend on it. The pixels are the
+// projections through the TRUE camera poses (T_camera_target_true) of the grid points, plus
+// that noise. Frames and units: testing/scene.h and docs/conventions.md; metres, pixels.
+//
+// The defaults are a compact scene for a 640×480 camera: the camera 1 m from the target, in a
+// 0.4 m cube, tilted up to ±20° with a free spin, looking at a 9 × 6 grid of 30 mm pitch
+// centred on the target origin, so that every grid point is in front of every camera and in
+// the image.
+#pragma once
+
+#include <cstdint>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "hecal/geometry/types.h"
+#include "hecal/pose/camera_model.h"
+#include "testing/scene.h"
+
+namespace hecal::testing {
+
+// A planar grid in the target frame (z = 0, metres): cols × rows points `pitch` apart,
+// row-major (point r·cols + c at column c, row r). The origin at the first point, or at the
+// grid's centre when `centred`.
+struct GridOptions {
+  int cols = 9;
+  int rows = 6;
+  double pitch = 0.03;
+  bool centred = true;
+};
+
+inline std::vector<Eigen::Vector3d> GridPoints(const GridOptions& grid) {
+  const Eigen::Vector3d origin = grid.centred
+                                     ? Eigen::Vector3d(0.5 * grid.pitch * (grid.cols - 1),
+                                                       0.5 * grid.pitch * (grid.rows - 1), 0.0)
+                                     : Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> points;
+  for (int r = 0; r < grid.rows; ++r) {
+    for (int c = 0; c < grid.cols; ++c) {
+      points.push_back(Eigen::Vector3d(grid.pitch * c, grid.pitch * r, 0.0) - origin);
+    }
+  }
+  return points;
+}
+
+// 640 × 480 px, f ≈ 800 px, the principal point a little off-centre, mild radial and
+// tangential distortion.
+inline pose::CameraModel DefaultCamera() {
+  return {.fx = 800.0,
+          .fy = 805.0,
+          .cx = 321.0,
+          .cy = 238.0,
+          .width = 640,
+          .height = 480,
+          .distortion = {-0.12, 0.08, 0.0005, -0.0003, 0.0}};
+}
+
+// The stations of the default scene (see the header): testing/scene.h's options with a 0.4 m
+// cube and ±20° tilt.
+inline SceneOptions CompactStations() {
+  SceneOptions stations;
+  stations.cube_side = 0.4;
+  stations.max_tilt = 20.0 * std::numbers::pi / 180.0;
+  return stations;
+}
+
+struct ImageSceneOptions {
+  pose::CameraModel camera = DefaultCamera();  // intrinsics and distortion
+  GridOptions grid;                            // the target
+  SceneOptions stations = CompactStations();   // setup, count, spread, robot noise
+  double pixel_sigma = 0.0;                    // px, isotropic Gaussian per coordinate
+  std::uint64_t seed = 1;
+
+  // The default scene with the options a test varies most set.
+  static ImageSceneOptions For(handeye::Setup setup, int stations, std::uint64_t seed,
+                               const PoseNoise& robot_noise = {}, double pixel_sigma = 0.0) {
+    ImageSceneOptions options;
+    options.stations.setup = setup;
+    options.stations.stations = stations;
+    options.stations.robot_noise = robot_noise;
+    options.pixel_sigma = pixel_sigma;
+    options.seed = seed;
+    return options;
+  }
+};
+
+// One station's image: the grid points (target frame) and their pixels, same order.
+struct StationImage {
+  std::vector<Eigen::Vector3d> target;
+  std::vector<Eigen::Vector2d> pixels;
+};
+
+struct ImageScene {
+  Scene poses;  // truth and (noisy) robot poses
+  pose::CameraModel camera;
+  std::vector<StationImage> images;  // one per station
+
+  // The images as another {target, pixels} aggregate (e.g. estimation::ImagePoints).
+  template <typename Points>
+  std::vector<Points> ImagesAs() const {
+    std::vector<Points> out;
+    for (const StationImage& image : images) out.push_back(Points{image.target, image.pixels});
+    return out;
+  }
+};
+
+inline ImageScene MakeImageScene(const ImageSceneOptions& options) {
+  std::mt19937_64 rng(options.seed);
+  ImageScene scene{MakeScene(options.stations, rng), options.camera, {}};
+  const std::vector<Eigen::Vector3d> grid = GridPoints(options.grid);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (const Pose& T_camera_target : scene.poses.T_camera_target_true) {
+    StationImage image;
+    for (const Eigen::Vector3d& P : grid) {
+      image.target.push_back(P);
+      const Eigen::Vector2d n(normal(rng), normal(rng));
+      image.pixels.push_back(pose::Project(options.camera, T_camera_target * P) +
+                             options.pixel_sigma * n);
+    }
+    scene.images.push_back(std::move(image));
+  }
+  return scene;
+}
+
+}  // namespace hecal::testing
