@@ -8,11 +8,15 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 39> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
-    {"CalibrateOptions.robust_loss", "--robust"},
+    {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
+    {"ImageSetOptions.images", "--images"},
+    {"ImageSetOptions.target", "--target"},
+    {"ImageSetOptions.threads", "--threads"},
     {"MlOptions.robot_sigma", "--robot-sigma"},
+    {"MlOptions.camera_sigma", "--camera-sigma"},
     {"CovarianceOptions.method", "--covariance"},
     {"CovarianceOptions.samples", "--covariance-samples"},
     {"CovarianceOptions.threads", "--threads"},
