@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 39> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 41> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
@@ -48,6 +48,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 39> kFieldFl
     {"UnscentedParameters", "--ut-w0"},
     {"RenderOptions.blur_sigma", "--blur"},
     {"RenderOptions.noise_sigma", "--noise"},
+    {"EdgeSearchOptions.range", "--search-range"},
+    {"RefinementOptions.pixel_sigma", "--pixel-sigma"},
 }};
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".
