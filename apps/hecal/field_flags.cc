@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 41> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 42> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
@@ -50,6 +50,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 41> kFieldFl
     {"RenderOptions.noise_sigma", "--noise"},
     {"EdgeSearchOptions.range", "--search-range"},
     {"RefinementOptions.pixel_sigma", "--pixel-sigma"},
+    {"PoseConversionOptions.input", "--input"},
 }};
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".

@@ -1,4 +1,4 @@
-// Every checked field of the options the calibrate and detect commands fill, driven through
+// Every checked field of the options the calibrate, detect and poses commands fill, driven through
 // `hecal` with a bad value of its flag: the library's IsValid refuses it (core/options_check.h),
 // and the user sees exit 2, one line naming the FLAG (field_flags.h maps the field), nothing on
 // stdout and no output file. Fields no flag sets (CalibrateOptions.robust_scale, MlOptions,
@@ -105,6 +105,12 @@ TEST_F(OptionsFlags, CalibrateOptions) {
       {{"--threads", "257"}, "--threads", "CovarianceOptions.threads", "from 0 to 256, got 257"},
   };
   for (const Case& c : cases) ExpectRefused(calibrate, c);
+}
+
+// io::PoseConversionOptions, through `hecal poses convert`.
+TEST_F(OptionsFlags, PoseConversionOptions) {
+  ExpectRefused({"poses", "convert", "--to", "quaternion", "--output", Path("out/poses.csv")},
+                {{"--input", ""}, "--input", "PoseConversionOptions.input", "no input pose table"});
 }
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
