@@ -1,9 +1,9 @@
-// Every checked field of the options the calibrate, detect and poses commands fill, driven through
-// `hecal` with a bad value of its flag: the library's IsValid refuses it (core/options_check.h),
-// and the user sees exit 2, one line naming the FLAG (field_flags.h maps the field), nothing on
-// stdout and no output file. Fields no flag sets (CalibrateOptions.robust_scale, MlOptions,
-// StroblOptions, ConsensusOptions and StationSelectionOptions counts, ReprojectionOptions) are
-// tested beside their structs in src/.
+// Every checked field of the options the calibrate, detect, import and poses commands fill, driven
+// through `hecal` with a bad value of its flag: the library's IsValid refuses it
+// (core/options_check.h), and the user sees exit 2, one line naming the FLAG (field_flags.h maps
+// the field), nothing on stdout and no output file. Fields no flag sets
+// (CalibrateOptions.robust_scale, MlOptions, StroblOptions, ConsensusOptions and
+// StationSelectionOptions counts, ReprojectionOptions) are tested beside their structs in src/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,6 +111,20 @@ TEST_F(OptionsFlags, CalibrateOptions) {
 TEST_F(OptionsFlags, PoseConversionOptions) {
   ExpectRefused({"poses", "convert", "--to", "quaternion", "--output", Path("out/poses.csv")},
                 {{"--input", ""}, "--input", "PoseConversionOptions.input", "no input pose table"});
+}
+
+// io::ImportOptions, through `hecal import` (the options that apply depend on the format).
+TEST_F(OptionsFlags, ImportOptions) {
+  const std::vector<std::string> import = {
+      "import",   "--format",
+      "moveit",   std::string(HECAL_SOURCE_DIR) + "/data/moveit-calibration/pose_samples.json",
+      "--robot",  Path("out/robot.csv"),
+      "--camera", Path("out/camera.csv")};
+  const Case cases[] = {
+      {{"--units", "mm"}, "--units", "ImportOptions.units", "so a length unit does not apply"},
+      {{"--setup", "eye-to-hand"}, "--setup", "ImportOptions.setup", "only easy_handeye needs it"},
+  };
+  for (const Case& c : cases) ExpectRefused(import, c);
 }
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
