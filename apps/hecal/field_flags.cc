@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 42> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 44> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
@@ -51,6 +51,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 42> kFieldFl
     {"EdgeSearchOptions.range", "--search-range"},
     {"RefinementOptions.pixel_sigma", "--pixel-sigma"},
     {"PoseConversionOptions.input", "--input"},
+    {"FeatureMatchOptions.pixel_sigma", "--pixel-sigma"},
+    {"FeatureMatchOptions.max_matches", "--matches-per-motion"},
 }};
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".
