@@ -40,6 +40,10 @@ int ParseThreads(const std::string& flag, const std::string& text) {
   return ParseInt(flag, text, 0, kMaxThreads, "a thread count (0 = every core)");
 }
 
+int CheckThreads(const std::string& flag, int threads) {
+  return ParseThreads(flag, std::to_string(threads));
+}
+
 std::uint64_t ParseSeed(const std::string& flag, const std::string& text) {
   const std::string_view item = io::Trim(text);
   std::uint64_t value = 0;

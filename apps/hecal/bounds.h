@@ -1,7 +1,11 @@
 // The bounds of the command line (README "Reliability"): every number that reaches an
 // allocation or a loop — threads, samples, stations, trials, data sets, steps, frames, image
 // sizes, noise levels, seeds — is checked against its range before any work, and a value outside
-// it is a hecal::InputError naming the flag, the value and the range (exit 2). The ranges are
+// it is a hecal::InputError naming the flag, the value and the range (exit 2). Where a range is a
+// fact of the library it is the library's (the options' IsValid, core/options_check.h: thread
+// counts core/limits.h, noise levels estimation/pose_sigma.h, Monte Carlo samples
+// estimation/covariance_method.h, pixel noise estimation/reprojection_refinement.h) and the
+// calibrate, detect and global flags are checked there only; the rest are the CLI's. The ranges are
 // wide enough for every study in this repository and small enough that no flag alone can ask for
 // more memory than a workstation has (the largest: 10^5 Monte Carlo samples of two poses, 10^6
 // trial rows of `hecal simulate`, 10^8 pixels per image).
@@ -31,10 +35,15 @@
 #include <cstdint>
 #include <string>
 
+#include "hecal/core/limits.h"
+#include "hecal/estimation/covariance_method.h"
+#include "hecal/estimation/pose_sigma.h"
+#include "hecal/estimation/reprojection_refinement.h"
+
 namespace hecal::cli {
 
-constexpr int kMaxThreads = 256;
-constexpr int kMaxCovarianceSamples = 100000;
+using estimation::kMaxCovarianceSamples;
+using estimation::kMaxPixelSigma;
 constexpr int kMinSimulatedStations = 3;
 constexpr int kMaxSimulatedStations = 100000;
 constexpr int kMaxTrials = 100000;
@@ -43,9 +52,8 @@ constexpr std::int64_t kMaxTrialRows = 1000000;
 constexpr int kMaxDatasets = 10000;
 constexpr std::int64_t kMaxBenchPoses = 1000000;  // stations × data sets
 constexpr double kMaxMinTime = 3600.0;            // seconds
-constexpr double kMaxSigmaMm = 1000.0;
-constexpr double kMaxSigmaDeg = 180.0;
-constexpr double kMaxPixelSigma = 100.0;
+constexpr double kMaxSigmaMm = estimation::kMaxSigmaTranslation * 1000.0;
+constexpr double kMaxSigmaDeg = 180.0;  // estimation::kMaxSigmaRotation in degrees
 constexpr int kMaxSteps = 10000;
 constexpr int kMaxContourSamples = 1000000;
 constexpr std::int64_t kMaxContourSolves = 100000000;  // steps × samples
@@ -65,6 +73,8 @@ int ParseInt(const std::string& flag, const std::string& text, int min, int max,
 
 // --threads: 0 … kMaxThreads.
 int ParseThreads(const std::string& flag, const std::string& text);
+// The same range for a thread count CLI11 has parsed; returns `threads`.
+int CheckThreads(const std::string& flag, int threads);
 
 // --seed: 0 … 2^64 − 1.
 std::uint64_t ParseSeed(const std::string& flag, const std::string& text);

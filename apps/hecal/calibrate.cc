@@ -17,6 +17,7 @@
 #include "bounds.h"
 #include "conventions.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/atomic_file.h"
@@ -30,7 +31,7 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 constexpr size_t kMaxPrintedStations = 200;
 constexpr size_t kLargestPrintedStations = 20;
 
-// "MM,DEG" → PoseSigma in metres and radians.
+// "MM,DEG" → PoseSigma in metres and radians (its range is CalibrateOptions::IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
   const size_t comma = text.find(',');
   double values[2] = {0.0, 0.0};
@@ -40,13 +41,12 @@ estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& tex
     const auto [end, error] =
         std::from_chars(parts[k].data(), parts[k].data() + parts[k].size(), values[k]);
     ok = error == std::errc() && end == parts[k].data() + parts[k].size() &&
-         std::isfinite(values[k]) && values[k] >= 0.0;
+         std::isfinite(values[k]);
   }
   if (!ok) {
-    throw InputError(flag, 0, "expected two non-negative numbers MM,DEG, got '" + text + "'",
+    throw InputError(flag, 0, "expected two numbers MM,DEG, got '" + text + "'",
                      "write e.g. " + flag + " 0.5,0.1 for 0.5 mm and 0.1 degree per axis");
   }
-  CheckNoiseLevel(flag, values[0], values[1]);
   return {values[1] / kDegrees, values[0] * 1e-3};
 }
 
@@ -221,19 +221,19 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     }
     options.covariance.method = *covariance;
   }
-  options.covariance.samples =
-      ParseInt("--covariance-samples", flags.covariance_samples, 2, kMaxCovarianceSamples,
-               "the number of Monte Carlo samples (e.g. 5000)");
+  options.covariance.samples = flags.covariance_samples;
   options.covariance.seed = ParseSeed("--seed", flags.seed);
   options.consensus.seed = options.covariance.seed;
   options.reject_outliers = !flags.keep_outliers;
-  options.covariance.threads = ParseThreads("--threads", flags.threads);
-  estimation::ValidateCovarianceOptions(options.covariance);
-  options.robust_loss = flags.robust;
-  if (flags.robust != "none" && flags.robust != "huber" && flags.robust != "cauchy") {
+  options.covariance.threads = flags.threads;
+  const std::optional<estimation::RobustLoss> robust = estimation::ParseRobustLoss(flags.robust);
+  if (!robust) {
     throw InputError("--robust", 0, "unknown loss '" + flags.robust + "'",
                      "use none, huber or cauchy");
   }
+  options.robust_loss = *robust;
+  // Once, before any file is read: the job checks the same again (core/options_check.h).
+  RequireValid(options);
   if (flags.images.empty() == flags.camera.empty()) {
     throw InputError(flags.images.empty() ? "--camera" : "--images", 0,
                      flags.images.empty() ? "neither --camera nor --images was given"

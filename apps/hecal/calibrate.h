@@ -36,11 +36,11 @@ namespace hecal::cli {
 struct CalibrateFlags {
   std::string robot;
   std::string camera;
-  std::string images;         // --images DIR (instead of --camera)
-  std::string target;         // --target target.yaml (with --images)
-  std::string intrinsics;     // --intrinsics camera.yaml (with --images; estimated when absent)
-  std::string pixel_sigma;    // --pixel-sigma PX (with --images; estimated when absent)
-  std::string threads = "0";  // --threads (detection, covariance solves; 0 = every core)
+  std::string images;       // --images DIR (instead of --camera)
+  std::string target;       // --target target.yaml (with --images)
+  std::string intrinsics;   // --intrinsics camera.yaml (with --images; estimated when absent)
+  std::string pixel_sigma;  // --pixel-sigma PX (with --images; estimated when absent)
+  int threads = 0;          // --threads (detection, covariance solves; 0 = every core)
   bool refine_intrinsics = false;  // --refine-intrinsics (with --images)
   std::string setup;
   std::string method = "ml";
@@ -54,15 +54,15 @@ struct CalibrateFlags {
   bool camera_inverse = false;
   bool keep_outliers = false;  // --keep-outliers: no outlier rejection
   std::string robust = "none";
-  std::string covariance;                   // --covariance (empty: the method's default)
-  std::string covariance_samples = "5000";  // --covariance-samples (montecarlo)
-  std::string seed = "1";                   // --seed (montecarlo, and the outlier consensus)
-  std::string correspondences;              // --correspondences FILE (--method global)
-  double epsilon = 2e-4;        // --epsilon RAD: the certificate's requested gap (global)
-  double relative_gap = 0.1;    // --relative-gap: or this fraction of the optimum (global)
-  int matches_per_motion = 40;  // --matches-per-motion: target corners used per motion (global)
-  double reach = 2.0;           // --reach M: |t| of X is searched up to this (global)
-  long max_cubes = 20'000'000;  // --max-cubes: the search's budget of cube tests (global)
+  std::string covariance;         // --covariance (empty: the method's default)
+  int covariance_samples = 5000;  // --covariance-samples (montecarlo)
+  std::string seed = "1";         // --seed (montecarlo, and the outlier consensus)
+  std::string correspondences;    // --correspondences FILE (--method global)
+  double epsilon = 2e-4;          // --epsilon RAD: the certificate's requested gap (global)
+  double relative_gap = 0.1;      // --relative-gap: or this fraction of the optimum (global)
+  int matches_per_motion = 40;    // --matches-per-motion: target corners used per motion (global)
+  double reach = 2.0;             // --reach M: |t| of X is searched up to this (global)
+  long max_cubes = 20'000'000;    // --max-cubes: the search's budget of cube tests (global)
 };
 
 // The flags every form shares, checked.
@@ -73,10 +73,10 @@ struct CalibrateSettings {
   io::PoseReadOptions read;              // --units, --degrees, --euler (robot and camera files)
 };
 
-// Throws InputError naming the flag for every bad value (numbers outside the ranges of bounds.h),
-// when neither or both of --camera and --images are given, and for a flag of the --images form
-// (--target, --intrinsics,
-// --pixel-sigma, --refine-intrinsics) given with --camera.
+// Throws InputError naming the flag for a value that does not parse, for options the library
+// refuses (estimation::CalibrateOptions::IsValid, its field shown as the flag), when neither or
+// both of --camera and --images are given, and for a flag of the --images form (--target,
+// --intrinsics, --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 
 // The readable summary of one result: X, Z, their 1σ, the residuals of every station.

@@ -285,7 +285,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
     throw InputError("--max-cubes", 0, "must be at least 1",
                      "give the search's budget of cube tests, e.g. 1000000");
   }
-  const int threads = ParseThreads("--threads", flags.threads);
+  const int threads = CheckThreads("--threads", flags.threads);
   const std::uint64_t seed = ParseSeed("--seed", flags.seed);
   double pixel_sigma = 0.5;
   if (!flags.pixel_sigma.empty()) {

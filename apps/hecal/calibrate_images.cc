@@ -1,6 +1,7 @@
 // `hecal calibrate --images`: see calibrate.h.
 #include "calibrate.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <algorithm>
@@ -26,16 +27,15 @@ namespace hecal::cli {
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 namespace {
 
+// Its range is ImageCalibrationOptions::IsValid's.
 std::optional<double> ParsePixelSigma(const std::string& text) {
   if (text.empty()) return std::nullopt;
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
-      value <= 0.0) {
-    throw InputError("--pixel-sigma", 0, "expected a positive number of pixels, got '" + text + "'",
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+    throw InputError("--pixel-sigma", 0, "expected a number of pixels, got '" + text + "'",
                      "write e.g. --pixel-sigma 0.1, or leave it out to estimate it");
   }
-  CheckPixelSigma("--pixel-sigma", value);
   return value;
 }
 
@@ -109,7 +109,12 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
                      "global only: the other methods need the target's poses",
                      "add --method global, or give the target with --target target.yaml");
   }
-  const std::optional<double> pixel_sigma = ParsePixelSigma(flags.pixel_sigma);
+  // Checked before the images are read; setup and camera follow from them.
+  estimation::ImageCalibrationOptions options;
+  options.calibrate = settings.options;
+  options.pixel_sigma = ParsePixelSigma(flags.pixel_sigma);
+  options.refine_intrinsics = flags.refine_intrinsics;
+  RequireValid(options);
   io::PoseReadOptions robot_read = settings.read;
   robot_read.invert = flags.robot_inverse;
   const io::PoseTable robot = io::ReadPoseTable(flags.robot, robot_read);
@@ -152,12 +157,8 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
       set.estimated ? std::string("estimated from the images") : flags.intrinsics;
   if (set.estimated) input.intrinsics_rms_px = set.estimated->rms_px;
 
-  estimation::ImageCalibrationOptions options;
   options.setup = check.setup;
-  options.calibrate = settings.options;
   options.camera = set.camera;
-  options.pixel_sigma = pixel_sigma;
-  options.refine_intrinsics = flags.refine_intrinsics;
   const report::ResultDocument document = report::CalibrateFromImages(input, options);
   const estimation::CalibrationResult& result = document.results.front();
   const report::ImageReport& report = *document.images;

@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "bounds.h"
+#include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
@@ -55,7 +55,9 @@ std::string OutputStem(const std::string& output) {
 }  // namespace
 
 void RunDetect(const DetectFlags& flags, const Io& io) {
-  const int threads = ParseThreads("--threads", flags.threads);
+  const vision::ImageSetOptions options{flags.images, flags.target, flags.intrinsics, flags.threads,
+                                        ImageUse::kPoses};
+  RequireValid(options);
   // Every output is checked before the detection and written all or none after it.
   const std::string stem = OutputStem(flags.output);
   const std::string points_path = stem + ".points.csv";
@@ -64,9 +66,7 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
                     {"--output (points)", points_path},
                     {"--output (intrinsics)", camera_path}},
                    {{"--target", flags.target}, {"--intrinsics", flags.intrinsics}});
-  const ImageSet set =
-      DetectImageSet({flags.images, flags.target, flags.intrinsics, threads, ImageUse::kPoses},
-                     "hecal detect", io);
+  const ImageSet set = DetectImageSet(options, "hecal detect", io);
 
   io::PoseTable table;
   table.source = flags.output;

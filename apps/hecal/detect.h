@@ -15,10 +15,10 @@
 //      <output stem>.camera.yaml only when the intrinsics were estimated
 //   The output stem is <output> without its extension (camera.csv → camera).
 //
-// Errors (hecal::InputError, exit 2, nothing written): those of vision/image_set.h, --threads
-// outside 0 … 256 (bounds.h), and any of the three output paths refused by io::CheckOutputs
-// (checked before the detection): in a directory that does not exist, a folder, a device or a FIFO,
-// or one of the inputs (--target, --intrinsics).
+// Errors (hecal::InputError, exit 2, nothing written): those of vision/image_set.h (with
+// --threads outside 0 … 256: ImageSetOptions::IsValid, checked before anything else), and any of
+// the three output paths refused by io::CheckOutputs (checked before the detection): in a directory
+// that does not exist, a folder, a device or a FIFO, or one of the inputs (--target, --intrinsics).
 #pragma once
 
 #include <string>
@@ -32,7 +32,7 @@ struct DetectFlags {
   std::string target;
   std::string intrinsics;  // "" = estimate from the images
   std::string output;
-  std::string threads = "0";  // 0 = every core (bounds.h: 0 … 256)
+  int threads = 0;  // 0 = every core (vision::ImageSetOptions::IsValid: 0 … 256)
 };
 
 // Runs the command; throws hecal::InputError for bad flags or data.

@@ -8,11 +8,15 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 44> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
-    {"CalibrateOptions.robust_loss", "--robust"},
+    {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
+    {"ImageSetOptions.images", "--images"},
+    {"ImageSetOptions.target", "--target"},
+    {"ImageSetOptions.threads", "--threads"},
     {"MlOptions.robot_sigma", "--robot-sigma"},
+    {"MlOptions.camera_sigma", "--camera-sigma"},
     {"CovarianceOptions.method", "--covariance"},
     {"CovarianceOptions.samples", "--covariance-samples"},
     {"CovarianceOptions.threads", "--threads"},
@@ -44,6 +48,11 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFieldFl
     {"UnscentedParameters", "--ut-w0"},
     {"RenderOptions.blur_sigma", "--blur"},
     {"RenderOptions.noise_sigma", "--noise"},
+    {"EdgeSearchOptions.range", "--search-range"},
+    {"RefinementOptions.pixel_sigma", "--pixel-sigma"},
+    {"PoseConversionOptions.input", "--input"},
+    {"FeatureMatchOptions.pixel_sigma", "--pixel-sigma"},
+    {"FeatureMatchOptions.max_matches", "--matches-per-motion"},
 }};
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".

@@ -137,7 +137,7 @@ TEST_F(InputErrors, TooFewStationsExitTwo) {
 
 // The table itself: a listed field becomes its flag; a file, a line and unknown text stay.
 TEST(FieldFlags, MapsFieldsAndLeavesOtherSources) {
-  EXPECT_EQ(FlagForField("CalibrateOptions.robust_loss"), "--robust");
+  EXPECT_EQ(FlagForField("CalibrateOptions.robot_sigma"), "--robot-sigma");
   EXPECT_EQ(FlagForField("StudyOptions.trials"), "--trials");
   EXPECT_FALSE(FlagForField("robot.csv").has_value());
   EXPECT_FALSE(FlagForField("CalibrateOptions.robust_scale").has_value());  // no flag sets it

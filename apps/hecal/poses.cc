@@ -6,6 +6,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/io/pose_conversion.h"
 #include "hecal/io/pose_table.h"
 #include "hecal/io/rotation_format.h"
 #include "hecal/io/units.h"
@@ -37,19 +38,22 @@ std::optional<io::LengthUnit> UnitFlag(const std::string& text, const char* flag
 }  // namespace
 
 void RunPosesConvert(const PosesConvertOptions& options, const Io& io) {
+  io::PoseConversionOptions job;
+  job.input = options.input;
   const std::optional<io::RotationFormat> format = io::ParseRotationFormat(options.to);
   if (!format) {
     throw InputError("--to", 0, "unknown rotation format '" + options.to + "'",
                      "use one of " + std::string(io::RotationFormatSpellings()));
   }
-  const std::optional<io::LengthUnit> output_unit = UnitFlag(options.units, "--units");
-  io::PoseReadOptions read;
-  read.units = UnitFlag(options.input_units, "--input-units").value_or(io::LengthUnit::kMetre);
-  read.degrees = options.input_degrees;
-  read.invert = options.invert;
+  job.to = *format;
+  job.units = UnitFlag(options.units, "--units");
+  job.degrees = options.degrees;
+  job.read.units = UnitFlag(options.input_units, "--input-units").value_or(io::LengthUnit::kMetre);
+  job.read.degrees = options.input_degrees;
+  job.read.invert = options.invert;
   if (!options.euler.empty()) {
-    read.euler = EulerSequence::Parse(options.euler);
-    if (!read.euler) {
+    job.read.euler = EulerSequence::Parse(options.euler);
+    if (!job.read.euler) {
       throw InputError("--euler", 0, "unknown Euler sequence '" + options.euler + "'",
                        "use three axis letters, lowercase = extrinsic, uppercase = intrinsic "
                        "(e.g. xyz, ZYX, ZXZ)");
@@ -57,19 +61,16 @@ void RunPosesConvert(const PosesConvertOptions& options, const Io& io) {
   }
 
   io::CheckOutputs({{"--output", options.output}}, {{"--input", options.input}});
-  const io::PoseTable table = io::ReadPoseTable(options.input, read);
-  for (const std::string& warning : table.warnings) io.err << "hecal: warning: " << warning << "\n";
-
-  io::PoseWriteOptions write;
-  write.rotation = *format;
-  write.units = output_unit.value_or(table.unit);
-  write.degrees = options.degrees;
-  io::WritePoseTable(options.output, table, write);
+  const io::PoseConversion result = io::ConvertPoseTable(job);
+  for (const std::string& warning : result.table.warnings) {
+    io.err << "hecal: warning: " << warning << "\n";
+  }
+  io::WritePoseTable(options.output, result.table, result.write);
 
   const bool angles = format->kind == io::RotationFormat::Kind::kRotationVector ||
                       format->kind == io::RotationFormat::Kind::kEuler;
-  io.out << "hecal: wrote " << table.rows.size() << " poses to " << options.output << " ("
-         << format->ToString() << ", " << io::UnitName(write.units)
+  io.out << "hecal: wrote " << result.table.rows.size() << " poses to " << options.output << " ("
+         << format->ToString() << ", " << io::UnitName(result.write.units)
          << (angles ? (options.degrees || format->angles_in_degrees ? ", degrees" : ", radians")
                     : "")
          << (options.invert ? ", inverted" : "") << ")\n";

@@ -8,8 +8,9 @@
 //   output  --units m|mm (default: the input's length unit) and --degrees (default radians;
 //           kuka and fanuc are always written in degrees). The output header names any unit
 //           that is not metres/radians (x_mm, a_deg), so it reads back the same without flags.
-// Errors are hecal::InputError (exit 2, one line); the output is written atomically, so a failed
-// conversion leaves no output file.
+// The flags fill io::PoseConversionOptions; the job is io::ConvertPoseTable (io/pose_conversion.h);
+// this file writes its result and prints the summary. Errors are hecal::InputError (exit 2, one
+// line); the output is written atomically, so a failed conversion leaves no output file.
 #pragma once
 
 #include <string>

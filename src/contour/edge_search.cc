@@ -7,18 +7,38 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 
 namespace hecal::contour {
 
+bool EdgeSearchOptions::IsValid(std::string* why) const {
+  if (!(range > 0.0) || !std::isfinite(range)) {
+    return Invalid(why, "EdgeSearchOptions.range", "must be positive and finite",
+                   "use e.g. 10 px either side of the curve");
+  }
+  if (!(step > 0.0) || !(step <= range)) {
+    return Invalid(why, "EdgeSearchOptions.step", "must be above 0 and at most the range",
+                   "use e.g. 0.5 px");
+  }
+  if (!(derivative_sigma > 0.0) || !std::isfinite(derivative_sigma)) {
+    return Invalid(why, "EdgeSearchOptions.derivative_sigma", "must be positive and finite",
+                   "use e.g. 1 px");
+  }
+  if (!(min_gradient >= 0.0) || !std::isfinite(min_gradient)) {
+    return Invalid(why, "EdgeSearchOptions.min_gradient", "must be non-negative and finite",
+                   "use e.g. 10 grey levels per px");
+  }
+  if (polarity < -1 || polarity > 1) {
+    return Invalid(why, "EdgeSearchOptions.polarity",
+                   "must be -1, 0 or 1, got " + std::to_string(polarity),
+                   "use +1 or -1 for one edge direction, 0 for either");
+  }
+  return true;
+}
+
 std::optional<EdgeHit> SearchEdge(const GrayImage& image, const Eigen::Vector2d& point,
                                   const Eigen::Vector2d& normal, const EdgeSearchOptions& options) {
-  if (!(options.range > 0.0) || !(options.step > 0.0) || !(options.step <= options.range) ||
-      !(options.derivative_sigma > 0.0) || !std::isfinite(options.range) ||
-      !std::isfinite(options.derivative_sigma) || (options.polarity < -1 || options.polarity > 1)) {
-    throw InputError("EdgeSearchOptions", 0, "options out of range",
-                     "give range > 0, 0 < step ≤ range, derivative_sigma > 0 and polarity −1, 0 "
-                     "or 1");
-  }
+  RequireValid(options);
   const double length = normal.norm();
   if (!std::isfinite(length) || !(length > 0.0)) {
     throw std::invalid_argument("SearchEdge: the normal must be a finite non-zero vector");

@@ -8,6 +8,7 @@
 
 #include "hecal/contour/render.h"
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
@@ -170,6 +171,20 @@ TEST(SearchEdge, RejectsBadOptions) {
   options = {};
   options.polarity = 2;
   EXPECT_THROW(SearchEdge(image, {5, 5}, {1, 0}, options), InputError);
+}
+
+TEST(EdgeSearchOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const EdgeSearchOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "EdgeSearchOptions.range", [](auto& o) { o.range = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "EdgeSearchOptions.step", [](auto& o) { o.step = 11.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "EdgeSearchOptions.derivative_sigma",
+                            [](auto& o) { o.derivative_sigma = -1.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "EdgeSearchOptions.min_gradient",
+                            [](auto& o) { o.min_gradient = -0.5; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "EdgeSearchOptions.polarity", [](auto& o) { o.polarity = 2; }));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/calibration_covariance.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/estimation/ml.h"
@@ -25,15 +26,6 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 bool SameSigma(const std::optional<PoseSigma>& a, const std::optional<PoseSigma>& b) {
   if (!a || !b) return !a && !b;
   return a->rotation == b->rotation && a->translation == b->translation;
-}
-
-void ValidateSigma(const std::optional<PoseSigma>& sigma, const char* field) {
-  if (!sigma) return;
-  if (!std::isfinite(sigma->rotation) || !std::isfinite(sigma->translation) ||
-      sigma->rotation < 0.0 || sigma->translation < 0.0) {
-    throw InputError(field, 0, "sigmas must be finite and non-negative",
-                     "give values >= 0 (radians, metres)");
-  }
 }
 
 std::string Format(const char* format, double a, double b) {
@@ -94,42 +86,39 @@ std::vector<int> Indices(const std::vector<bool>& flags) {
   return indices;
 }
 
-// Checks the options; returns the robust loss they name.
-RobustLoss ValidateOptions(const handeye::Problem& problem, const CalibrateOptions& options) {
-  ValidateSigma(options.robot_sigma, "CalibrateOptions.robot_sigma");
-  ValidateSigma(options.camera_sigma, "CalibrateOptions.camera_sigma");
-  if (options.robot_sigma && options.camera_sigma) {
-    const PoseSigma& r = *options.robot_sigma;
-    const PoseSigma& c = *options.camera_sigma;
-    if (r.rotation + c.rotation == 0.0 || r.translation + c.translation == 0.0) {
-      throw InputError("CalibrateOptions.robot_sigma", 0,
-                       "the robot and camera sigmas are both zero in rotation or in translation, "
-                       "so the noise model is singular",
-                       "give a non-zero value, or leave both sigmas unset to estimate the noise");
-    }
-  }
-  const std::optional<RobustLoss> loss = ParseRobustLoss(options.robust_loss);
-  if (!loss) {
-    throw InputError("CalibrateOptions.robust_loss", 0,
-                     "unknown robust loss '" + options.robust_loss + "'",
-                     "use none, huber or cauchy");
-  }
-  if (!(options.robust_scale > 0.0) || !std::isfinite(options.robust_scale)) {
-    throw InputError("CalibrateOptions.robust_scale", 0, "the robust loss scale must be positive",
-                     "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
-  }
+// Checks the options and what the problem asks of them.
+void ValidateOptions(const handeye::Problem& problem, const CalibrateOptions& options) {
+  RequireValid(options);
   if (problem.A.size() != problem.B.size()) {
     throw InputError("stations", 0, "the numbers of robot and camera poses differ",
                      "give one camera pose per robot pose");
   }
-  ValidateCovarianceOptions(options.covariance);
   if (options.covariance.method) {
     CheckCovarianceFits(*options.covariance.method, options.method, problem.A.size());
   }
-  return *loss;
 }
 
 }  // namespace
+
+bool CalibrateOptions::IsValid(std::string* why) const {
+  if (!SigmaIsValid(robot_sigma, "CalibrateOptions.robot_sigma", why) ||
+      !SigmaIsValid(camera_sigma, "CalibrateOptions.camera_sigma", why)) {
+    return false;
+  }
+  if (robot_sigma && camera_sigma &&
+      (robot_sigma->rotation + camera_sigma->rotation == 0.0 ||
+       robot_sigma->translation + camera_sigma->translation == 0.0)) {
+    return Invalid(why, "CalibrateOptions.robot_sigma",
+                   "the robot and camera sigmas are both zero in rotation or in translation, so "
+                   "the noise model is singular",
+                   "give a non-zero value, or leave both sigmas unset to estimate the noise");
+  }
+  if (!(robust_scale > 0.0) || !std::isfinite(robust_scale)) {
+    return Invalid(why, "CalibrateOptions.robust_scale", "the robust loss scale must be positive",
+                   "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
+  }
+  return covariance.IsValid(why) && consensus.IsValid(why);
+}
 
 std::vector<int> SetStationResiduals(const handeye::Problem& problem, const NoiseEstimate& noise,
                                      CalibrationResult* result) {
@@ -186,7 +175,8 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
 
 CalibrationResult Calibrate(const handeye::Problem& all_stations, const CalibrateOptions& options,
                             const StationSelection& selection) {
-  const RobustLoss loss = ValidateOptions(all_stations, options);
+  ValidateOptions(all_stations, options);
+  const RobustLoss loss = options.robust_loss;
   const handeye::Problem problem = handeye::SubProblem(all_stations, selection.used);
   handeye::CheckObservability(problem);
 

@@ -11,6 +11,7 @@
 #include "hecal/geometry/se3.h"
 #include "hecal/handeye/methods.h"
 #include "testing/handeye_cases.h"
+#include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
@@ -123,9 +124,6 @@ TEST(Calibrate, RejectsACorruptedStationOrFlagsItWhenKept) {
 TEST(Calibrate, RejectsBadOptionsAndDegenerateData) {
   const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 84);
   const handeye::Problem problem = data.MeasuredProblem();
-  CalibrateOptions bad_loss;
-  bad_loss.robust_loss = "tukey";
-  EXPECT_THROW(Calibrate(problem, bad_loss), InputError);
   CalibrateOptions negative;
   negative.robot_sigma = PoseSigma{-1.0, 0.001};
   EXPECT_THROW(Calibrate(problem, negative), InputError);
@@ -135,12 +133,49 @@ TEST(Calibrate, RejectsBadOptionsAndDegenerateData) {
   EXPECT_THROW(Calibrate(problem, zero), InputError);
   CalibrateOptions robust_closed_form;
   robust_closed_form.method = handeye::Method::kParkMartin;
-  robust_closed_form.robust_loss = "huber";
+  robust_closed_form.robust_loss = RobustLoss::kHuber;
   EXPECT_TRUE(AnyWarningContains(Calibrate(problem, robust_closed_form), "ml only"));
   handeye::Problem two = problem;
   two.A.resize(2);
   two.B.resize(2);
   EXPECT_THROW(Calibrate(two, {}), DegenerateError);
+}
+
+TEST(CalibrateOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const CalibrateOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  CalibrateOptions given = defaults;
+  given.robot_sigma = PoseSigma{std::numbers::pi, 1.0};  // the largest: 180 deg, 1000 mm
+  given.camera_sigma = PoseSigma{0.0, 0.0};              // exact camera, noisy robot
+  EXPECT_TRUE(testing::IsValidOptions(given));
+  EXPECT_TRUE(RefusesNaming(defaults, "CalibrateOptions.robot_sigma", [](auto& o) {
+    o.robot_sigma = PoseSigma{-1e-3, 1e-3};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CalibrateOptions.robot_sigma", [](auto& o) {
+    o.robot_sigma = PoseSigma{1e-3, 1.001};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CalibrateOptions.camera_sigma", [](auto& o) {
+    o.camera_sigma = PoseSigma{3.2, 1e-3};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CalibrateOptions.camera_sigma", [](auto& o) {
+    o.camera_sigma = PoseSigma{std::nan(""), 1e-3};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CalibrateOptions.robot_sigma", [](auto& o) {
+    o.robot_sigma = PoseSigma{0.0, 1e-3};  // no rotation noise on either side: singular
+    o.camera_sigma = PoseSigma{0.0, 1e-3};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CalibrateOptions.robust_scale",
+                            [](auto& o) { o.robust_scale = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CovarianceOptions.samples",
+                            [](auto& o) { o.covariance.samples = 1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ConsensusOptions.max_hypotheses",
+                            [](auto& o) { o.consensus.max_hypotheses = 0; }));
+  // Calibrate refuses them before solving.
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 84);
+  CalibrateOptions bad;
+  bad.robust_scale = -1.0;
+  EXPECT_THROW(Calibrate(data.MeasuredProblem(), bad), InputError);
 }
 
 }  // namespace

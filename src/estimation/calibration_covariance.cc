@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/limits.h"
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/ml.h"
 #include "hecal/estimation/robust_loss.h"
@@ -84,14 +86,20 @@ CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations
                                            : CovarianceMethod::kInformation;
 }
 
-void ValidateCovarianceOptions(const CovarianceOptions& options) {
-  if (options.samples < 2) {
-    throw InputError("CovarianceOptions.samples", 0, "Monte Carlo needs at least 2 samples",
-                     "use e.g. 5000");
+bool CovarianceOptions::IsValid(std::string* why) const {
+  if (samples < 2 || samples > kMaxCovarianceSamples) {
+    return Invalid(why, "CovarianceOptions.samples",
+                   "must be a whole number from 2 to " + std::to_string(kMaxCovarianceSamples) +
+                       ", got " + std::to_string(samples),
+                   "give the number of Monte Carlo samples in that range (e.g. 5000)");
   }
-  if (options.threads < 0) {
-    throw InputError("CovarianceOptions.threads", 0, "cannot be negative", "0 uses every core");
+  if (threads < 0 || threads > kMaxThreads) {
+    return Invalid(why, "CovarianceOptions.threads",
+                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
+                       std::to_string(threads),
+                   "give a thread count in that range (0 = every core)");
   }
+  return true;
 }
 
 void CheckCovarianceFits(CovarianceMethod method, handeye::Method solver, size_t stations) {
@@ -145,7 +153,7 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
       ml.robot_sigma = result.robot_sigma;
       ml.camera_sigma = result.camera_sigma;
       ml.camera_excess = result.camera_excess;
-      ml.robust_loss = ParseRobustLoss(options.robust_loss).value_or(RobustLoss::kNone);
+      ml.robust_loss = options.robust_loss;
       ml.robust_scale = options.robust_scale;
       return RefineMlFromGoodStart(problem, start.front(), ml);
     }

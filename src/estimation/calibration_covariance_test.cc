@@ -7,8 +7,10 @@
 #include <numbers>
 
 #include "hecal/core/error.h"
+#include "hecal/core/limits.h"
 #include "hecal/estimation/bound.h"
 #include "testing/handeye_cases.h"
+#include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
@@ -210,6 +212,23 @@ TEST(PropagateCovariance, UnscentedCovarianceIsPositiveDefiniteForDaniilidis) {
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> eigen(ut.covariance);
     EXPECT_GT(eigen.eigenvalues().minCoeff(), 0.0) << seed;
   }
+}
+
+TEST(CovarianceOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const CovarianceOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  CovarianceOptions edges;
+  edges.samples = kMaxCovarianceSamples;
+  edges.threads = kMaxThreads;
+  EXPECT_TRUE(testing::IsValidOptions(edges));
+  EXPECT_TRUE(RefusesNaming(defaults, "CovarianceOptions.samples", [](auto& o) { o.samples = 1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CovarianceOptions.samples",
+                            [](auto& o) { o.samples = kMaxCovarianceSamples + 1; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "CovarianceOptions.threads", [](auto& o) { o.threads = -1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CovarianceOptions.threads",
+                            [](auto& o) { o.threads = kMaxThreads + 1; }));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/image_monte_carlo.h"
 
 namespace hecal::estimation {
@@ -96,8 +97,14 @@ std::string RobotNoiseAgreementWarning(const PoseSigma& joint, const PoseSigma& 
   return text;
 }
 
+bool ImageCalibrationOptions::IsValid(std::string* why) const {
+  return PixelSigmaIsValid(pixel_sigma, "ImageCalibrationOptions.pixel_sigma", why) &&
+         calibrate.IsValid(why);
+}
+
 ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stations,
                                            const ImageCalibrationOptions& options) {
+  RequireValid(options);
   std::vector<Pose> robot, camera;
   for (const ImageStation& station : stations) {
     robot.push_back(station.T_base_gripper);

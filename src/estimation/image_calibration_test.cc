@@ -14,6 +14,7 @@
 #include "hecal/geometry/se3.h"
 #include "hecal/pose/pose_refinement.h"
 #include "testing/image_scene.h"
+#include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
@@ -250,6 +251,23 @@ TEST(CalibrateFromImages, RobotNoiseAgreesWithThePoseLevelOrSaysWhyNot) {
     covered += error.dot(covariance.ldlt().solve(error)) < 20.06 ? 1 : 0;
   }
   EXPECT_GE(covered, 4);
+}
+
+TEST(ImageCalibrationOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const ImageCalibrationOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "ImageCalibrationOptions.pixel_sigma",
+                            [](auto& o) { o.pixel_sigma = -0.5; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ImageCalibrationOptions.pixel_sigma",
+                            [](auto& o) { o.pixel_sigma = 101.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "CalibrateOptions.robot_sigma", [](auto& o) {
+    o.calibrate.robot_sigma = PoseSigma{0.0, 2.0};
+  }));
+  // CalibrateFromImages refuses them before any work.
+  ImageCalibrationOptions bad;
+  bad.pixel_sigma = 0.0;
+  EXPECT_THROW(CalibrateFromImages({}, bad), InputError);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/station_covariance.h"
 #include "loop_solver.h"
 #include "multi_start.h"
@@ -152,8 +153,30 @@ void CheckStations(const handeye::Problem& problem) {
 
 }  // namespace
 
+bool MlOptions::IsValid(std::string* why) const {
+  const auto bad = [](const std::optional<PoseSigma>& sigma) {
+    return sigma && !(sigma->rotation >= 0.0 && std::isfinite(sigma->rotation) &&
+                      sigma->translation >= 0.0 && std::isfinite(sigma->translation));
+  };
+  if (bad(robot_sigma) || bad(camera_sigma)) {
+    return Invalid(why, bad(robot_sigma) ? "MlOptions.robot_sigma" : "MlOptions.camera_sigma",
+                   "sigmas must be finite and non-negative", "give values >= 0 (radians, metres)");
+  }
+  if (!(robust_scale > 0.0) || !std::isfinite(robust_scale)) {
+    return Invalid(why, "MlOptions.robust_scale", "the robust loss scale must be positive",
+                   "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
+  }
+  if (max_noise_iterations < 1) {
+    return Invalid(why, "MlOptions.max_noise_iterations",
+                   "must be at least 1, got " + std::to_string(max_noise_iterations),
+                   "use e.g. 10");
+  }
+  return true;
+}
+
 MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::Solution>& starts,
                   const MlOptions& options) {
+  RequireValid(options);
   if (starts.empty()) throw std::invalid_argument("RefineMl: no starting solution");
   CheckStations(problem);
   MlSolver solver(problem, options);
@@ -181,7 +204,7 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
 
   // Alternate the noise estimate and the pose estimate.
   NoiseSpec current = spec;
-  for (int iteration = 0; iteration < std::max(1, options.max_noise_iterations); ++iteration) {
+  for (int iteration = 0; iteration < options.max_noise_iterations; ++iteration) {
     current.variances = theta;
     result.noise = EstimateNoise(LinearizeStations(problem, best.X, best.Z), current, L);
     if (!spec.AnyEstimated()) break;
@@ -202,6 +225,7 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
 
 handeye::Solution RefineMlFromGoodStart(const handeye::Problem& problem,
                                         const handeye::Solution& start, const MlOptions& options) {
+  RequireValid(options);
   CheckStations(problem);
   if (!options.robot_sigma || !options.camera_sigma) {
     throw InputError("MlOptions.robot_sigma", 0,

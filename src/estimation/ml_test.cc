@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -15,6 +16,7 @@
 #include "hecal/handeye/methods.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "testing/handeye_cases.h"
+#include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
@@ -250,6 +252,22 @@ TEST(Ml, RobustLossReducesTheEffectOfAGrossOutlier) {
 TEST(Ml, RejectsMissingStarts) {
   const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 63);
   EXPECT_THROW(RefineMl(data.MeasuredProblem(), {}, {}), std::invalid_argument);
+}
+
+TEST(MlOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const MlOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "MlOptions.robot_sigma", [](auto& o) {
+    o.robot_sigma = PoseSigma{-1.0, 0.0};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "MlOptions.camera_sigma", [](auto& o) {
+    o.camera_sigma = PoseSigma{0.0, std::numeric_limits<double>::infinity()};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "MlOptions.robust_scale",
+                            [](auto& o) { o.robust_scale = std::nan(""); }));
+  EXPECT_TRUE(RefusesNaming(defaults, "MlOptions.max_noise_iterations",
+                            [](auto& o) { o.max_noise_iterations = 0; }));
 }
 
 }  // namespace

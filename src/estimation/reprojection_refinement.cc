@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/reprojection_cost.h"
 #include "small_problem.h"
 
@@ -52,8 +54,7 @@ Parameters ToParameters(const Pose& T) {
   return p;
 }
 
-void Validate(const std::vector<Pose>& T_base_gripper, const std::vector<ImagePoints>& images,
-              const ReprojectionOptions& options) {
+void Validate(const std::vector<Pose>& T_base_gripper, const std::vector<ImagePoints>& images) {
   if (T_base_gripper.size() != images.size()) {
     throw InputError("stations", 0,
                      std::to_string(T_base_gripper.size()) + " robot poses but " +
@@ -65,16 +66,6 @@ void Validate(const std::vector<Pose>& T_base_gripper, const std::vector<ImagePo
       throw InputError("image points", 0, "target points and pixels differ in number",
                        "pair every detected pixel with its target point");
     }
-  }
-  const PoseSigma& robot = options.robot_sigma;
-  if (!std::isfinite(robot.rotation) || !std::isfinite(robot.translation) || robot.rotation < 0.0 ||
-      robot.translation < 0.0) {
-    throw InputError("ReprojectionOptions.robot_sigma", 0, "sigmas must be finite and non-negative",
-                     "give values >= 0 (radians, metres)");
-  }
-  if (options.pixel_sigma && !(*options.pixel_sigma > 0.0 && std::isfinite(*options.pixel_sigma))) {
-    throw InputError("ReprojectionOptions.pixel_sigma", 0, "the pixel sigma must be positive",
-                     "give e.g. 0.3 px, or leave it unset to estimate it");
   }
 }
 
@@ -291,10 +282,36 @@ class Refinement {
 
 }  // namespace
 
+bool PixelSigmaIsValid(const std::optional<double>& pixel_sigma, std::string_view field,
+                       std::string* why) {
+  if (!pixel_sigma || (*pixel_sigma > 0.0 && *pixel_sigma <= kMaxPixelSigma)) return true;
+  char got[32];
+  std::snprintf(got, sizeof(got), "%g", *pixel_sigma);
+  return Invalid(why, field, std::string("must be above 0 to 100 px, got ") + got,
+                 "give the noise of one image coordinate in pixels, e.g. 0.5, or leave it unset "
+                 "to estimate it");
+}
+
+bool ReprojectionOptions::IsValid(std::string* why) const {
+  if (!(robot_sigma.rotation >= 0.0 && std::isfinite(robot_sigma.rotation) &&
+        robot_sigma.translation >= 0.0 && std::isfinite(robot_sigma.translation))) {
+    return Invalid(why, "ReprojectionOptions.robot_sigma", "sigmas must be finite and non-negative",
+                   "give values >= 0 (radians, metres)");
+  }
+  if (!PixelSigmaIsValid(pixel_sigma, "ReprojectionOptions.pixel_sigma", why)) return false;
+  if (max_sigma_iterations < 1) {
+    return Invalid(why, "ReprojectionOptions.max_sigma_iterations",
+                   "must be at least 1, got " + std::to_string(max_sigma_iterations),
+                   "use e.g. 30");
+  }
+  return true;
+}
+
 ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
                                       const std::vector<ImagePoints>& images, const Pose& X0,
                                       const Pose& Z0, const ReprojectionOptions& options) {
-  Validate(T_base_gripper, images, options);
+  RequireValid(options);
+  Validate(T_base_gripper, images);
   ValidateStart(T_base_gripper, images, X0, Z0, options);
   Refinement refinement(T_base_gripper, images, X0, Z0, options);
   size_t points = 0;

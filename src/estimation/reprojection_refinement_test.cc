@@ -12,6 +12,7 @@
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
 #include "testing/image_scene.h"
+#include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
@@ -160,6 +161,24 @@ TEST(ReprojectionRefinement, RefusesAStartItCannotUse) {
             std::string::npos);
   // The truth itself is accepted.
   EXPECT_EQ(message(s.poses.T_base_gripper, s.poses.X, s.poses.Z), "no error");
+}
+
+TEST(ReprojectionOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const ReprojectionOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  ReprojectionOptions edge;
+  edge.pixel_sigma = kMaxPixelSigma;
+  EXPECT_TRUE(testing::IsValidOptions(edge));
+  EXPECT_TRUE(RefusesNaming(defaults, "ReprojectionOptions.robot_sigma", [](auto& o) {
+    o.robot_sigma = PoseSigma{-0.1, 0.0};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ReprojectionOptions.pixel_sigma",
+                            [](auto& o) { o.pixel_sigma = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ReprojectionOptions.pixel_sigma",
+                            [](auto& o) { o.pixel_sigma = 100.5; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ReprojectionOptions.max_sigma_iterations",
+                            [](auto& o) { o.max_sigma_iterations = 0; }));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/estimation/ml.h"
 #include "hecal/handeye/observability.h"
@@ -56,8 +57,24 @@ StationSelection AllStations(size_t n) {
   return selection;
 }
 
+bool StationSelectionOptions::IsValid(std::string* why) const {
+  if (!SigmaIsValid(robot_sigma, "StationSelectionOptions.robot_sigma", why) ||
+      !SigmaIsValid(camera_sigma, "StationSelectionOptions.camera_sigma", why)) {
+    return false;
+  }
+  for (const Matrix6d& covariance : camera_covariances) {
+    if (!covariance.allFinite()) {
+      return Invalid(why, "StationSelectionOptions.camera_covariances",
+                     "a camera pose covariance is not finite",
+                     "give finite PnP covariances, or none to estimate the camera noise");
+    }
+  }
+  return consensus.IsValid(why);
+}
+
 StationSelection SelectStations(const handeye::Problem& problem,
                                 const StationSelectionOptions& options) {
+  RequireValid(options);
   const size_t n = problem.A.size();
   if (n < 3) handeye::CheckObservability(problem);  // throws: too few stations
   StationSelection selection = AllStations(n);

@@ -9,6 +9,7 @@
 #include "hecal/estimation/initialization.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
+#include "testing/options_validity.h"
 #include "testing/scene.h"
 
 namespace hecal::estimation {
@@ -125,6 +126,23 @@ TEST(SelectStations, PerStationCameraCovariancesKeepImpreciseViews) {
   StationSelectionOptions per_station = isotropic;
   per_station.camera_covariances = covariances;
   EXPECT_TRUE(SelectStations(data.MeasuredProblem(), per_station).Rejected().empty());
+}
+
+TEST(StationSelectionOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const StationSelectionOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "StationSelectionOptions.robot_sigma", [](auto& o) {
+    o.robot_sigma = PoseSigma{0.01, -0.001};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "StationSelectionOptions.camera_sigma", [](auto& o) {
+    o.camera_sigma = PoseSigma{4.0, 0.001};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "StationSelectionOptions.camera_covariances", [](auto& o) {
+    o.camera_covariances = {Matrix6d::Identity(), Matrix6d::Constant(std::nan(""))};
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ConsensusOptions.max_scored_stations",
+                            [](auto& o) { o.consensus.max_scored_stations = 2; }));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/se3_manifold.h"
 #include "hecal/estimation/strobl_cost.h"
@@ -78,9 +79,16 @@ handeye::Solution Minimize(const handeye::Problem& problem, const handeye::Solut
 
 }  // namespace
 
+bool StroblOptions::IsValid(std::string* why) const {
+  if (max_iterations >= 1) return true;
+  return Invalid(why, "StroblOptions.max_iterations",
+                 "must be at least 1, got " + std::to_string(max_iterations), "use e.g. 20");
+}
+
 StroblResult RefineStrobl(const handeye::Problem& problem,
                           const std::vector<handeye::Solution>& starts,
                           const StroblOptions& options) {
+  RequireValid(options);
   if (starts.empty()) throw std::invalid_argument("RefineStrobl: no starting solution");
   if (problem.A.size() != problem.B.size()) {
     throw std::invalid_argument("RefineStrobl: one camera pose per robot pose");
@@ -107,7 +115,7 @@ StroblResult RefineStrobl(const handeye::Problem& problem,
   result.starts_refined = multi.starts_refined;
   handeye::Solution best = multi.best.solution;
 
-  for (int iteration = 0; iteration < std::max(1, options.max_iterations); ++iteration) {
+  for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     const Weights next = Bounded(ErrorRms(problem, best), L);
     const double ratio = weights.translation / weights.rotation;
     const double next_ratio = next.translation / next.rotation;

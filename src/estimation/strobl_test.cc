@@ -9,6 +9,7 @@
 #include "hecal/estimation/initialization.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
+#include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
@@ -58,6 +59,12 @@ TEST_P(StroblTest, AutomaticWeightingAndAccuracyWithNoise) {
 
 INSTANTIATE_TEST_SUITE_P(BothSetups, StroblTest,
                          ::testing::Values(handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand));
+
+TEST(StroblOptions, IsValidNamesTheField) {
+  EXPECT_TRUE(testing::IsValidOptions(StroblOptions{}));
+  EXPECT_TRUE(testing::RefusesNaming(StroblOptions{}, "StroblOptions.max_iterations",
+                                     [](auto& o) { o.max_iterations = 0; }));
+}
 
 }  // namespace
 }  // namespace hecal::estimation

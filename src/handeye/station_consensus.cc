@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/handeye/observability.h"
 #include "hecal/handeye/shah.h"
@@ -146,7 +147,22 @@ Problem SubProblem(const Problem& problem, const std::vector<bool>& keep) {
   return sub;
 }
 
+bool ConsensusOptions::IsValid(std::string* why) const {
+  if (max_hypotheses < 1) {
+    return Invalid(why, "ConsensusOptions.max_hypotheses",
+                   "must be at least 1, got " + std::to_string(max_hypotheses), "use e.g. 1000");
+  }
+  if (max_scored_stations < 3) {
+    return Invalid(
+        why, "ConsensusOptions.max_scored_stations",
+        "must be at least 3 (one minimal set), got " + std::to_string(max_scored_stations),
+        "use e.g. 2000");
+  }
+  return true;
+}
+
 StationConsensus FindStationConsensus(const Problem& problem, const ConsensusOptions& options) {
+  RequireValid(options);
   const int n = static_cast<int>(problem.A.size());
   if (n < 3 || problem.B.size() != problem.A.size()) CheckObservability(problem);  // throws
   const double L = LengthScale(problem);

@@ -8,6 +8,7 @@
 #include "hecal/core/error.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_cases.h"
+#include "testing/options_validity.h"
 #include "testing/scene.h"
 
 namespace hecal::handeye {
@@ -130,6 +131,16 @@ TEST(SubProblem, KeepsTheFlaggedStationsInOrder) {
   EXPECT_EQ(sub.setup, Setup::kEyeToHand);
   EXPECT_TRUE(sub.A[1].isApprox(problem.A[2], 0.0));
   EXPECT_TRUE(sub.B[2].isApprox(problem.B[4], 0.0));
+}
+
+TEST(ConsensusOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const ConsensusOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "ConsensusOptions.max_hypotheses",
+                            [](auto& o) { o.max_hypotheses = 0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ConsensusOptions.max_scored_stations",
+                            [](auto& o) { o.max_scored_stations = 2; }));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_camodocal.h"
 #include "hecal/io/import_easy_handeye.h"
@@ -67,20 +68,6 @@ bool IsDirectory(const std::string& path) {
 
 std::string JoinPath(const std::string& directory, const char* name) {
   return (std::filesystem::path(directory) / name).string();
-}
-
-void CheckOptions(ImportFormat format, const ImportOptions& options) {
-  const std::string name(ImportFormatName(format));
-  if (options.units && format != ImportFormat::kMatrix16 && format != ImportFormat::kOpenCvYaml) {
-    Fail("ImportOptions.units", 0,
-         name + " files fix their own length unit (" +
-             (format == ImportFormat::kTabb ? "mm" : "m") + "), so a length unit does not apply",
-         "leave the unit unset (it is for matrix16 and opencv-yaml, whose files do not say)");
-  }
-  if (options.setup && format != ImportFormat::kEasyHandeye) {
-    Fail("ImportOptions.setup", 0, "does not apply to " + name + " (only easy_handeye needs it)",
-         "leave the setup unset");
-  }
 }
 
 // --robot-inverse / --camera-inverse: every pose of that side inverted, after the format's own
@@ -189,9 +176,27 @@ std::string ImportFormatList() {
   return list;
 }
 
+bool ImportOptions::IsValid(ImportFormat format, std::string* why) const {
+  const std::string name(ImportFormatName(format));
+  if (units && format != ImportFormat::kMatrix16 && format != ImportFormat::kOpenCvYaml) {
+    return Invalid(
+        why, "ImportOptions.units",
+        name + " files fix their own length unit (" + (format == ImportFormat::kTabb ? "mm" : "m") +
+            "), so a length unit does not apply",
+        "leave the unit unset (it is for matrix16 and opencv-yaml, whose files do not say)");
+  }
+  if (setup && format != ImportFormat::kEasyHandeye) {
+    return Invalid(why, "ImportOptions.setup",
+                   "does not apply to " + name + " (only easy_handeye needs it)",
+                   "leave the setup unset");
+  }
+  return true;
+}
+
 ImportedPoses ImportFiles(ImportFormat format, const std::vector<std::string>& inputs,
                           const ImportOptions& options) {
-  CheckOptions(format, options);
+  std::string why;
+  if (!options.IsValid(format, &why)) throw OptionsError(why);
   std::vector<std::string> sources;
   ImportedPoses poses = Read(format, inputs, options, &sources);
   poses.sources = std::move(sources);

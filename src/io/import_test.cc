@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 
 namespace hecal::io {
 namespace {
@@ -146,6 +147,38 @@ TEST(Import, EveryRealDataSetImports) {
   EXPECT_EQ(ImportFiles(ImportFormat::kMatrix16, {kData + "rwhe-kuka2/RobotPosesVec.txt"}, {})
                 .robot.rows.size(),
             28u);
+}
+
+// ImportOptions::IsValid for a format: the defaults apply to every format; --units only where the
+// files do not fix the unit, --setup only for easy_handeye; the field is named first.
+TEST(ImportOptions, IsValidNamesTheFieldForTheFormat) {
+  const auto refused = [](ImportFormat format, const ImportOptions& options) {
+    std::string why;
+    return options.IsValid(format, &why) ? std::string() : why;
+  };
+  for (const ImportFormat format :
+       {ImportFormat::kMoveit, ImportFormat::kEasyHandeye, ImportFormat::kTabb,
+        ImportFormat::kMatrix16, ImportFormat::kOpenCvYaml, ImportFormat::kVisp}) {
+    EXPECT_EQ(refused(format, {}), "") << ImportFormatName(format);
+  }
+  ImportOptions units;
+  units.units = LengthUnit::kMillimetre;
+  EXPECT_EQ(refused(ImportFormat::kMatrix16, units), "");
+  EXPECT_EQ(refused(ImportFormat::kOpenCvYaml, units), "");
+  EXPECT_EQ(refused(ImportFormat::kTabb, units).rfind("ImportOptions.units: tabb files fix", 0), 0u)
+      << refused(ImportFormat::kTabb, units);
+  ImportOptions setup;
+  setup.setup = ImportSetup::kEyeToHand;
+  EXPECT_EQ(refused(ImportFormat::kEasyHandeye, setup), "");
+  EXPECT_EQ(refused(ImportFormat::kMoveit, setup).rfind("ImportOptions.setup: ", 0), 0u);
+  // ImportFiles refuses them before reading (the input does not exist).
+  try {
+    ImportFiles(ImportFormat::kMoveit, {"no-such-file.json"}, setup);
+    ADD_FAILURE() << "accepted --setup for moveit";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.source(), "ImportOptions.setup");
+    EXPECT_FALSE(error.fix().empty());
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/nearest_rotation.h"
 #include "hecal/pose/linear_pose.h"
 
@@ -155,9 +156,17 @@ std::string_view DltPathName(DltPath path) {
   return path == DltPath::kProjective ? "projective DLT" : "homography";
 }
 
+bool DltPoseOptions::IsValid(std::string* why) const {
+  if (planarity_tolerance > 0.0 && planarity_tolerance < 1.0) return true;
+  return Invalid(why, "DltPoseOptions.planarity_tolerance",
+                 "must be above 0 and below 1, got " + std::to_string(planarity_tolerance),
+                 "use e.g. 1e-3 (the smallest spread of a plane relative to the largest)");
+}
+
 DltPoseResult DltPoseNormalized(const std::vector<Eigen::Vector3d>& object_points,
                                 const std::vector<Eigen::Vector2d>& normalized,
                                 const DltPoseOptions& options) {
+  RequireValid(options);
   CheckCorrespondences(object_points, normalized);
   const std::size_t n = object_points.size();
   const PointSpread spread = AnalyseSpread(object_points);

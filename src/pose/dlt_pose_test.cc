@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
 
 namespace hecal::pose {
@@ -113,6 +115,14 @@ TEST(DltPose, RefusesDegenerateConfigurations) {
     EXPECT_NE(std::string(e.what()).find("all object points but point 1"), std::string::npos)
         << e.what();
   }
+}
+
+TEST(DltPoseOptions, IsValidNamesTheField) {
+  EXPECT_TRUE(testing::IsValidOptions(DltPoseOptions{}));
+  EXPECT_TRUE(testing::RefusesNaming(DltPoseOptions{}, "DltPoseOptions.planarity_tolerance",
+                                     [](auto& o) { o.planarity_tolerance = -1e-3; }));
+  EXPECT_TRUE(testing::RefusesNaming(DltPoseOptions{}, "DltPoseOptions.planarity_tolerance",
+                                     [](auto& o) { o.planarity_tolerance = std::nan(""); }));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/nearest_rotation.h"
 
 namespace hecal::pose {
@@ -123,9 +124,17 @@ void CheckCorrespondences(const std::vector<Eigen::Vector3d>& object_points,
   }
 }
 
+bool LinearPoseOptions::IsValid(std::string* why) const {
+  if (planarity_tolerance > 0.0 && planarity_tolerance < 1.0) return true;
+  return Invalid(why, "LinearPoseOptions.planarity_tolerance",
+                 "must be above 0 and below 1, got " + Number(planarity_tolerance),
+                 "use e.g. 1e-3 (the smallest spread of a plane relative to the largest)");
+}
+
 LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object_points,
                                       const std::vector<Eigen::Vector2d>& normalized,
                                       const LinearPoseOptions& options) {
+  RequireValid(options);
   CheckCorrespondences(object_points, normalized);
   const std::size_t n = object_points.size();
   if (n < kMinPoints) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
 
 namespace hecal::pose {
@@ -180,6 +181,14 @@ TEST(LinearPose, RejectsMismatchedOrNonFiniteInput) {
   EXPECT_THROW(LinearPose(scene.object_points, fewer, scene.camera), InputError);
   scene.object_points[3].y() = std::nan("");
   EXPECT_THROW(LinearPose(scene.object_points, scene.pixels, scene.camera), InputError);
+}
+
+TEST(LinearPoseOptions, IsValidNamesTheField) {
+  EXPECT_TRUE(testing::IsValidOptions(LinearPoseOptions{}));
+  EXPECT_TRUE(testing::RefusesNaming(LinearPoseOptions{}, "LinearPoseOptions.planarity_tolerance",
+                                     [](auto& o) { o.planarity_tolerance = 0.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(LinearPoseOptions{}, "LinearPoseOptions.planarity_tolerance",
+                                     [](auto& o) { o.planarity_tolerance = 1.0; }));
 }
 
 }  // namespace

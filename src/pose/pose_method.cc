@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hecal/core/options_check.h"
+
 namespace hecal::pose {
 namespace {
 
@@ -44,9 +46,14 @@ std::optional<PoseMethod> ParsePoseMethod(std::string_view name) {
   return std::nullopt;
 }
 
+bool PoseOptions::IsValid(std::string* why) const {
+  return linear.IsValid(why) && dlt.IsValid(why) && refinement.IsValid(why);
+}
+
 PoseEstimate EstimatePose(PoseMethod method, const std::vector<Eigen::Vector3d>& object_points,
                           const std::vector<Eigen::Vector2d>& pixels, const CameraModel& camera,
                           const PoseOptions& options) {
+  RequireValid(options);
   const PoseMethodInfo& info = Info(method);
   if (method == PoseMethod::kDlt) {
     return FinishPose(std::string(info.name),

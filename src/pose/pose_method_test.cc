@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
 
 namespace hecal::pose {
@@ -125,6 +126,18 @@ TEST(PoseMethod, FinishPoseWithoutRefinementKeepsTheStart) {
   EXPECT_TRUE(kept.T_camera_target.isApprox(scene.T_camera_target, 0.0));
   EXPECT_FALSE(kept.covariance.has_value());
   EXPECT_LT(kept.rms_px, 1e-9);
+}
+
+TEST(PoseOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const PoseOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "LinearPoseOptions.planarity_tolerance",
+                            [](auto& o) { o.linear.planarity_tolerance = 2.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "DltPoseOptions.planarity_tolerance",
+                            [](auto& o) { o.dlt.planarity_tolerance = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RefinementOptions.pixel_sigma",
+                            [](auto& o) { o.refinement.pixel_sigma = 0.0; }));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/skew.h"
 #include "hecal/pose/linear_pose.h"
@@ -58,24 +59,24 @@ void CheckInputs(const std::vector<Eigen::Vector3d>& object_points,
         "pose refinement needs at least 3 points, got " + std::to_string(object_points.size()),
         "give more point correspondences");
   }
-  std::string why;
-  if (!options.IsValid(&why)) throw InputError("refinement options", 0, why, "");
+  RequireValid(options);
 }
 
 }  // namespace
 
 bool RefinementOptions::IsValid(std::string* why) const {
   if (max_iterations < 1) {
-    *why = "max_iterations must be at least 1";
-    return false;
+    return Invalid(why, "RefinementOptions.max_iterations",
+                   "must be at least 1, got " + std::to_string(max_iterations), "use e.g. 100");
   }
   if (!(relative_cost_tolerance >= 0.0)) {
-    *why = "relative_cost_tolerance must be non-negative";
-    return false;
+    return Invalid(why, "RefinementOptions.relative_cost_tolerance", "must be non-negative",
+                   "use e.g. 1e-14");
   }
   if (pixel_sigma.has_value() && !(*pixel_sigma > 0.0 && std::isfinite(*pixel_sigma))) {
-    *why = "the pixel sigma must be positive and finite";
-    return false;
+    return Invalid(why, "RefinementOptions.pixel_sigma",
+                   "the pixel sigma must be positive and finite",
+                   "give the pixel noise in px, e.g. 0.5, or leave it unset to estimate it");
   }
   return true;
 }

@@ -7,11 +7,13 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <cmath>
 #include <random>
 #include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
+#include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
 
 namespace hecal::pose {
@@ -186,6 +188,18 @@ TEST(PoseRefinement, RejectsInvalidOptions) {
   options.pixel_sigma.reset();
   options.max_iterations = 0;
   EXPECT_FALSE(options.IsValid(&why));
+}
+
+TEST(RefinementOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const RefinementOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "RefinementOptions.max_iterations",
+                            [](auto& o) { o.max_iterations = 0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RefinementOptions.relative_cost_tolerance",
+                            [](auto& o) { o.relative_cost_tolerance = -1.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RefinementOptions.pixel_sigma",
+                            [](auto& o) { o.pixel_sigma = std::nan(""); }));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/calibrate.h"
@@ -207,7 +208,7 @@ void ValidateStudyOptions(const StudyOptions& options) {
   if (options.threads < 0) {
     throw InputError("StudyOptions.threads", 0, "cannot be negative", "0 uses every core");
   }
-  estimation::ValidateCovarianceOptions(options.covariance);
+  RequireValid(options.covariance);
   for (const Setting& s : options.settings) {
     if (s.stations < 3) {
       throw InputError("Setting.stations", 0,

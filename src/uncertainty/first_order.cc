@@ -1,8 +1,26 @@
 #include "hecal/uncertainty/first_order.h"
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
+#include <string>
+
+#include "hecal/core/limits.h"
 
 namespace hecal::uncertainty {
+
+bool FirstOrderOptions::IsValid(std::string* why) const {
+  if (!(step > 0.0) || !std::isfinite(step)) {
+    return Invalid(why, "FirstOrderOptions.step", "the step must be positive and finite",
+                   "use e.g. 1e-3 (standard deviations)");
+  }
+  if (threads < 0 || threads > kMaxThreads) {
+    return Invalid(why, "FirstOrderOptions.threads",
+                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
+                       std::to_string(threads),
+                   "give a thread count in that range (0 = every core)");
+  }
+  return true;
+}
 
 Eigen::MatrixXd Propagate(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& covariance) {
   if (jacobian.cols() != covariance.rows() || covariance.rows() != covariance.cols()) {

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
+#include "hecal/core/limits.h"
 #include "hecal/geometry/se3.h"
+#include "testing/options_validity.h"
 
 namespace hecal::uncertainty {
 namespace {
@@ -105,6 +108,19 @@ TEST(LeastSquaresCovariance, StraightLineFit) {
   MatrixXd rank_deficient(3, 2);
   rank_deficient << 1, 2, 2, 4, 3, 6;
   EXPECT_FALSE(LeastSquaresCovariance(rank_deficient).has_value());
+}
+
+TEST(FirstOrderOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const FirstOrderOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "FirstOrderOptions.step", [](auto& o) { o.step = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "FirstOrderOptions.step",
+                            [](auto& o) { o.step = std::numeric_limits<double>::infinity(); }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "FirstOrderOptions.threads", [](auto& o) { o.threads = -2; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "FirstOrderOptions.threads",
+                            [](auto& o) { o.threads = kMaxThreads + 1; }));
 }
 
 }  // namespace

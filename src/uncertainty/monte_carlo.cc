@@ -2,9 +2,25 @@
 
 #include <random>
 
+#include "hecal/core/limits.h"
 #include "hecal/core/split_mix.h"
 
 namespace hecal::uncertainty {
+
+bool MonteCarloOptions::IsValid(std::string* why) const {
+  if (samples < 2) {
+    return Invalid(why, "MonteCarloOptions.samples",
+                   "Monte Carlo needs at least 2 samples, got " + std::to_string(samples),
+                   "use e.g. 5000");
+  }
+  if (threads < 0 || threads > kMaxThreads) {
+    return Invalid(why, "MonteCarloOptions.threads",
+                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
+                       std::to_string(threads),
+                   "give a thread count in that range (0 = every core)");
+  }
+  return true;
+}
 
 Eigen::VectorXd StandardNormalSample(std::uint64_t seed, int k, int n) {
   std::mt19937_64 rng(SplitMix64(SplitMix64(seed) ^ static_cast<std::uint64_t>(k)));

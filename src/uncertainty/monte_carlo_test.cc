@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/limits.h"
+#include "testing/options_validity.h"
 
 namespace hecal::uncertainty {
 namespace {
@@ -106,6 +108,17 @@ TEST(StandardNormalSample, IsDeterministicPerSeedAndIndex) {
   EXPECT_EQ((StandardNormalSample(5, 17, 4) - StandardNormalSample(5, 17, 4)).norm(), 0.0);
   EXPECT_GT((StandardNormalSample(5, 17, 4) - StandardNormalSample(5, 18, 4)).norm(), 0.0);
   EXPECT_GT((StandardNormalSample(5, 17, 4) - StandardNormalSample(6, 17, 4)).norm(), 0.0);
+}
+
+TEST(MonteCarloOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const MonteCarloOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "MonteCarloOptions.samples", [](auto& o) { o.samples = 1; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "MonteCarloOptions.threads", [](auto& o) { o.threads = -1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "MonteCarloOptions.threads",
+                            [](auto& o) { o.threads = kMaxThreads + 1; }));
 }
 
 }  // namespace

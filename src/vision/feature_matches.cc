@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/vision/image_read.h"
 
 namespace hecal::vision {
@@ -43,11 +44,36 @@ ImageFeatures DetectFeatures(const cv::Mat& gray, int max_features) {
   return features;
 }
 
+bool FeatureMatchOptions::IsValid(std::string* why) const {
+  if (!(ratio > 0.0 && ratio <= 1.0)) {
+    return Invalid(why, "FeatureMatchOptions.ratio", "must be above 0 and at most 1",
+                   "use e.g. 0.8 (Lowe's ratio test)");
+  }
+  if (!(pixel_sigma > 0.0) || !std::isfinite(pixel_sigma)) {
+    return Invalid(why, "FeatureMatchOptions.pixel_sigma", "must be positive and finite",
+                   "give the keypoint noise per axis in pixels, e.g. 0.5");
+  }
+  if (min_matches < 5) {
+    return Invalid(
+        why, "FeatureMatchOptions.min_matches",
+        "must be at least 5 (an essential matrix needs them), got " + std::to_string(min_matches),
+        "use e.g. 8");
+  }
+  if (max_matches < min_matches) {
+    return Invalid(why, "FeatureMatchOptions.max_matches",
+                   "must be at least min_matches (" + std::to_string(min_matches) + "), got " +
+                       std::to_string(max_matches),
+                   "use e.g. 40");
+  }
+  return true;
+}
+
 std::vector<FeatureMatch> MatchFeatures(const ImageFeatures& first, const ImageFeatures& second,
                                         const pose::CameraModel& camera,
                                         const FeatureMatchOptions& options,
                                         const std::string& first_name,
                                         const std::string& second_name) {
+  RequireValid(options);
   // Step 2: ratio test both ways, mutual check.
   const std::vector<int> forward =
       RatioMatches(first.descriptors, second.descriptors, options.ratio);
@@ -123,6 +149,7 @@ std::vector<FeatureMatch> MatchFeatures(const ImageFeatures& first, const ImageF
 std::vector<std::vector<FeatureMatch>> MatchConsecutiveImages(
     const std::vector<std::filesystem::path>& paths, const std::vector<std::string>& names,
     const pose::CameraModel& camera, const FeatureMatchOptions& options, int threads) {
+  RequireValid(options);
   if (names.size() != paths.size()) {
     throw std::invalid_argument("MatchConsecutiveImages: one name per path");
   }

@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 
 namespace hecal::vision {
 namespace {
@@ -109,6 +110,19 @@ TEST(FeatureMatches, UnrelatedImagesAreRefusedNamingBoth) {
     EXPECT_NE(std::string(e.what()).find("a.png"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("b.png"), std::string::npos) << e.what();
   }
+}
+
+TEST(FeatureMatchOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const FeatureMatchOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "FeatureMatchOptions.ratio", [](auto& o) { o.ratio = 1.5; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "FeatureMatchOptions.pixel_sigma",
+                            [](auto& o) { o.pixel_sigma = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "FeatureMatchOptions.min_matches",
+                            [](auto& o) { o.min_matches = 4; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "FeatureMatchOptions.max_matches",
+                            [](auto& o) { o.max_matches = 7; }));
 }
 
 }  // namespace

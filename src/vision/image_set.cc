@@ -7,6 +7,8 @@
 #include <opencv2/core/utility.hpp>
 
 #include "hecal/core/error.h"
+#include "hecal/core/limits.h"
+#include "hecal/core/options_check.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/image_files.h"
@@ -403,11 +405,26 @@ int ImagesNeeded(const ImageSetOptions& options) {
   return Needed(options).count;
 }
 
-ImageSet DetectImageSet(const ImageSetOptions& options, const ImageSetProgress& progress) {
-  if (options.threads < 0) {
-    throw InputError("threads", 0, "negative thread count " + std::to_string(options.threads),
-                     "give 0 (every core) or a positive count");
+bool ImageSetOptions::IsValid(std::string* why) const {
+  if (images.empty()) {
+    return Invalid(why, "ImageSetOptions.images", "no image folder given",
+                   "give the folder of target images");
   }
+  if (target.empty()) {
+    return Invalid(why, "ImageSetOptions.target", "no target file given",
+                   "give the target description, e.g. target.yaml (docs/targets.md)");
+  }
+  if (threads < 0 || threads > kMaxThreads) {
+    return Invalid(why, "ImageSetOptions.threads",
+                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
+                       std::to_string(threads),
+                   "give a thread count in that range (0 = every core)");
+  }
+  return true;
+}
+
+ImageSet DetectImageSet(const ImageSetOptions& options, const ImageSetProgress& progress) {
+  RequireValid(options);
   const auto report = [](const std::function<void(const ImageSet&)>& stage, const ImageSet& set) {
     if (stage) stage(set);
   };

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 
 #include "hecal/contour/gray_image.h"
 
@@ -31,6 +32,11 @@ struct EdgeSearchOptions {
   double derivative_sigma = 1.0;  // σ_d of the derivative-of-Gaussian (px)
   double min_gradient = 10.0;     // grey levels / px
   int polarity = 0;               // +1, −1, or 0 for either
+
+  // core/options_check.h: false naming EdgeSearchOptions.range (not positive and finite),
+  // .step (not in (0, range]), .derivative_sigma (not positive and finite), .min_gradient
+  // (negative or not finite) or .polarity (not −1, 0 or 1).
+  bool IsValid(std::string* why) const;
 };
 
 struct EdgeHit {

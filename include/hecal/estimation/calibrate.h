@@ -51,9 +51,9 @@ struct CalibrateOptions {
   handeye::Method method = handeye::Method::kMl;
   std::optional<PoseSigma> robot_sigma;   // --robot-sigma; estimated when absent
   std::optional<PoseSigma> camera_sigma;  // --camera-sigma; estimated when absent
-  // Robust loss for ml: "none" | "huber" | "cauchy" (robust_loss.h); scale in whitened units
-  // per component (the default down-weights exactly the stations beyond the outlier level).
-  std::string robust_loss = "none";
+  // Robust loss for ml (robust_loss.h); scale in whitened units per component (the default
+  // down-weights exactly the stations beyond the outlier level).
+  RobustLoss robust_loss = RobustLoss::kNone;
   double robust_scale = kOutlierLevelScale;
   // How the covariance of (X, Z) is computed (calibration_covariance.h).
   CovarianceOptions covariance;
@@ -66,6 +66,11 @@ struct CalibrateOptions {
   bool model_check = true;
   // Station names for warnings, one per station of the problem (default: numbers from 1).
   std::vector<std::string> station_ids;
+
+  // core/options_check.h: false naming CalibrateOptions.robot_sigma / .camera_sigma (outside
+  // pose_sigma.h's range, or both zero in rotation or in translation: a singular noise model),
+  // .robust_scale (not positive and finite), or a CovarianceOptions or ConsensusOptions field.
+  bool IsValid(std::string* why) const;
 };
 
 struct StationResidual {
@@ -109,8 +114,8 @@ struct CalibrationResult {
 };
 
 // Throws hecal::DegenerateError on degenerate data (handeye/observability.h), hecal::InputError
-// for invalid options (negative or all-zero sigmas, unknown robust loss, fewer than 2 Monte
-// Carlo samples; the source named is the CLI flag).
+// when !options.IsValid (its source the field), when the problem's robot and camera pose counts
+// differ, or when options.covariance.method does not fit that many stations (CheckCovarianceFits).
 CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOptions& options);
 
 // The same with the stations already selected (SelectStations or AllStations): `--method all`

@@ -37,18 +37,20 @@ inline constexpr size_t kMaxPropagatedStations = 500;
 // linearisation costs the same solves), kInformation above.
 CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations);
 
+// The most Monte Carlo samples (10^5 solves of two poses each).
+inline constexpr int kMaxCovarianceSamples = 100000;
+
 struct CovarianceOptions {
   std::optional<CovarianceMethod> method;  // nullopt: DefaultCovarianceMethod
-  int samples = 5000;                      // kMonteCarlo
+  int samples = 5000;                      // kMonteCarlo: 2 … kMaxCovarianceSamples
   std::uint64_t seed = 1;                  // kMonteCarlo
-  int threads = 0;                         // 0: every core
+  int threads = 0;                         // 0: every core; at most kMaxThreads (core/limits.h)
   uncertainty::UnscentedParameters unscented;
-};
 
-// Throws InputError (sources "CovarianceOptions.samples", "CovarianceOptions.threads") for fewer
-// than 2 Monte Carlo samples or a negative thread count. Calibrate and RunStudy call it; the CLI
-// too, before any input is read.
-void ValidateCovarianceOptions(const CovarianceOptions& options);
+  // core/options_check.h: false naming CovarianceOptions.samples or .threads outside the ranges
+  // above. Calibrate and RunStudy require it.
+  bool IsValid(std::string* why) const;
+};
 // Throws InputError (source "CovarianceOptions.method") when `method` for `solver` needs the dense
 // input covariance and there are more than kMaxPropagatedStations stations. Calibrate calls it
 // before solving, PropagateCovariance again.

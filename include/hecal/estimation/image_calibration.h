@@ -74,6 +74,10 @@ struct ImageCalibrationOptions {
   pose::CameraModel camera;           // the intrinsics of every image
   std::optional<double> pixel_sigma;  // px; estimated when absent
   bool refine_intrinsics = false;     // step 2 refines the intrinsics too
+
+  // core/options_check.h: false naming ImageCalibrationOptions.pixel_sigma (PixelSigmaIsValid)
+  // or a CalibrateOptions field.
+  bool IsValid(std::string* why) const;
 };
 
 struct ImageCalibrationResult {
@@ -91,7 +95,8 @@ std::string RobotNoiseAgreementWarning(const PoseSigma& joint, const PoseSigma& 
                                        size_t stations, double length_scale,
                                        const std::string& largest, double largest_deg);
 
-// Throws what Calibrate and RefineReprojection throw (DegenerateError, InputError).
+// Throws InputError when !options.IsValid, and what Calibrate and RefineReprojection throw
+// (DegenerateError, InputError).
 ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stations,
                                            const ImageCalibrationOptions& options);
 

@@ -43,6 +43,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "hecal/estimation/noise_estimation.h"
@@ -60,7 +61,12 @@ struct MlOptions {
   PoseSigma camera_excess;
   RobustLoss robust_loss = RobustLoss::kNone;
   double robust_scale = kOutlierLevelScale;  // whitened units per component (robust_loss.h)
-  int max_noise_iterations = 10;             // pose / variance alternations
+  int max_noise_iterations = 10;             // pose / variance alternations, at least 1
+
+  // core/options_check.h: false naming MlOptions.robot_sigma / .camera_sigma (negative or not
+  // finite; no upper bound: the estimate of one refinement seeds the next), .robust_scale (not
+  // positive and finite) or .max_noise_iterations (below 1).
+  bool IsValid(std::string* why) const;
 };
 
 struct MlResult {
@@ -75,8 +81,8 @@ struct MlResult {
   int distinct_minima = 0;  // distinct optima reached from the starts
 };
 
-// Throws hecal::DegenerateError for fewer than 3 stations, std::invalid_argument when `starts` is
-// empty.
+// Throws hecal::DegenerateError for fewer than 3 stations, hecal::InputError when
+// !options.IsValid, std::invalid_argument when `starts` is empty.
 MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::Solution>& starts,
                   const MlOptions& options);
 

@@ -52,6 +52,8 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "hecal/estimation/pose_sigma.h"
@@ -67,6 +69,15 @@ struct ImagePoints {
   std::vector<Eigen::Vector2d> pixels;  // u_k, pixels (same order)
 };
 
+// The largest pixel noise σ taken as a measurement's (px): above it the detections are not
+// measurements of the target.
+inline constexpr double kMaxPixelSigma = 100.0;
+
+// core/options_check.h's check of an optional pixel sigma: given, it must be in (0,
+// kMaxPixelSigma]; false naming `field` otherwise.
+bool PixelSigmaIsValid(const std::optional<double>& pixel_sigma, std::string_view field,
+                       std::string* why);
+
 struct ReprojectionOptions {
   handeye::Setup setup = handeye::Setup::kEyeInHand;
   pose::CameraModel camera;
@@ -78,7 +89,11 @@ struct ReprojectionOptions {
   // Refine the intrinsics (pose::IntrinsicsOf: fx, fy, cx, cy, k1, k2, p1, p2, k3) with X and Z,
   // `camera` being the starting value.
   bool refine_intrinsics = false;
-  int max_sigma_iterations = 30;
+  int max_sigma_iterations = 30;  // at least 1
+
+  // core/options_check.h: false naming ReprojectionOptions.robot_sigma (negative or not finite),
+  // .pixel_sigma (PixelSigmaIsValid) or .max_sigma_iterations (below 1).
+  bool IsValid(std::string* why) const;
 };
 
 struct ReprojectionResult {

@@ -34,6 +34,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "hecal/estimation/ml.h"
@@ -54,6 +55,11 @@ struct StationSelectionOptions {
   // next to them; camera_sigma then only weights the ml fit.
   std::vector<Matrix6d> camera_covariances;
   handeye::ConsensusOptions consensus;
+
+  // core/options_check.h: false naming StationSelectionOptions.robot_sigma / .camera_sigma
+  // outside pose_sigma.h's range, .camera_covariances with a non-finite entry, or a
+  // ConsensusOptions field.
+  bool IsValid(std::string* why) const;
 };
 
 struct StationSelection {

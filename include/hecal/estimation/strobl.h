@@ -22,6 +22,7 @@
 // noise-free data (all errors → 0) stay well posed.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "hecal/handeye/problem.h"
@@ -29,7 +30,10 @@
 namespace hecal::estimation {
 
 struct StroblOptions {
-  int max_iterations = 20;  // weight re-estimations
+  int max_iterations = 20;  // weight re-estimations, at least 1
+
+  // core/options_check.h: false naming StroblOptions.max_iterations below 1.
+  bool IsValid(std::string* why) const;
 };
 
 struct StroblResult {

@@ -48,6 +48,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hecal/handeye/problem.h"
@@ -55,9 +56,13 @@
 namespace hecal::handeye {
 
 struct ConsensusOptions {
-  int max_hypotheses = 1000;  // cap on RequiredHypotheses(n)
-  int max_scored_stations = 2000;
+  int max_hypotheses = 1000;       // cap on RequiredHypotheses(n), at least 1
+  int max_scored_stations = 2000;  // at least 3 (one minimal set)
   std::uint64_t seed = 1;
+
+  // core/options_check.h: false naming ConsensusOptions.max_hypotheses or
+  // .max_scored_stations below their least values.
+  bool IsValid(std::string* why) const;
 };
 
 struct StationConsensus {

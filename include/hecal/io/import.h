@@ -64,6 +64,12 @@ struct ImportOptions {
   // convention. --camera-inverse needs a camera side (not a robot-only matrix16 import).
   bool robot_inverse = false;
   bool camera_inverse = false;
+
+  // core/options_check.h, for `format` (the options that apply depend on it): false naming
+  // ImportOptions.units (given for a format whose files fix their unit) or .setup (given for a
+  // format other than easy_handeye). --camera-inverse without a camera file is known only from
+  // the inputs; ImportFiles refuses it.
+  bool IsValid(ImportFormat format, std::string* why) const;
 };
 
 // Reads `inputs` (paths; see the table above for how many) in `format`. Options that do not apply

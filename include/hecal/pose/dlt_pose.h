@@ -54,7 +54,10 @@ std::string_view DltPathName(DltPath path);
 
 struct DltPoseOptions {
   // Coplanar (→ homography) when σ3 ≤ planarity_tolerance · σ1 (see above).
-  double planarity_tolerance = 1e-3;
+  double planarity_tolerance = 1e-3;  // in (0, 1)
+
+  // core/options_check.h: false naming DltPoseOptions.planarity_tolerance outside (0, 1).
+  bool IsValid(std::string* why) const;
 };
 
 struct DltPoseResult {

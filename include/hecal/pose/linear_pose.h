@@ -67,7 +67,10 @@ struct LinearPoseOptions {
   // Coplanarity test of all points and of all points but one: σ3 ≤ planarity_tolerance · σ1
   // (see above). Flatter objects leave U's smallest singular value
   // within the pixel noise; the DLT (dlt_pose.h) treats them as planes at the same tolerance.
-  double planarity_tolerance = 1e-3;
+  double planarity_tolerance = 1e-3;  // in (0, 1)
+
+  // core/options_check.h: false naming LinearPoseOptions.planarity_tolerance outside (0, 1).
+  bool IsValid(std::string* why) const;
 };
 
 struct LinearPoseResult {

@@ -56,6 +56,9 @@ struct PoseOptions {
   LinearPoseOptions linear;
   DltPoseOptions dlt;
   RefinementOptions refinement;  // its pixel_sigma: given σ (px) for the covariance, or none
+
+  // core/options_check.h: false naming the first bad field of linear, dlt or refinement.
+  bool IsValid(std::string* why) const;
 };
 
 struct PoseEstimate {

@@ -53,7 +53,8 @@ struct RefinementOptions {
   double relative_cost_tolerance = 1e-14;
   std::optional<double> pixel_sigma;  // px, > 0; nullopt: estimated from the residuals
 
-  // True when usable; otherwise false with the reason in `*why`.
+  // core/options_check.h: false naming RefinementOptions.max_iterations (below 1),
+  // .relative_cost_tolerance (negative) or .pixel_sigma (given and not positive and finite).
   bool IsValid(std::string* why) const;
 };
 

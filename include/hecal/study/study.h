@@ -113,7 +113,7 @@ struct StudyOptions {
 
 // Throws InputError (source "--<flag>") when options are unusable: no setting, no method,
 // trials < 1, stations < 3, negative sigma, gross outliers < 0 or leaving fewer than 3 good
-// stations, covariance options (estimation::ValidateCovarianceOptions).
+// stations, covariance options (estimation::CovarianceOptions::IsValid).
 void ValidateStudyOptions(const StudyOptions& options);
 
 enum class TrialStatus { kOk, kThrew, kNonFinite };

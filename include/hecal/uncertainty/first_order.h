@@ -20,10 +20,12 @@
 #include <Eigen/Core>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <unsupported/Eigen/AutoDiff>
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/uncertainty/manifold.h"
 #include "hecal/uncertainty/parallel_for.h"
 #include "hecal/uncertainty/unscented.h"
@@ -82,11 +84,16 @@ Eigen::MatrixXd NumericJacobian(const F& f, const In& x, double step = 1e-6) {
 struct FirstOrderOptions {
   double step = 1e-3;  // h, in standard deviations along each square-root column
   SquareRoot square_root = SquareRoot::kCholesky;
-  int threads = 1;  // f is called concurrently when > 1 (0: every core)
+  int threads = 1;  // f is called concurrently when > 1 (0: every core; at most kMaxThreads)
+
+  // core/options_check.h: false naming FirstOrderOptions.step (not positive and finite) or
+  // .threads (outside 0 … kMaxThreads, core/limits.h).
+  bool IsValid(std::string* why) const;
 };
 
 // Mean f(x̄) and covariance G Gᵀ (above); `evaluations` counts the calls of f. Throws
-// hecal::InputError for a step ≤ 0, std::invalid_argument for a covariance that is not n × n.
+// hecal::InputError when !options.IsValid, std::invalid_argument for a covariance that is not n ×
+// n.
 template <class In, class Out, class F>
 Moments<Out> FirstOrderTransform(const F& f, const In& mean, const Eigen::MatrixXd& covariance,
                                  const FirstOrderOptions& options = {}) {
@@ -96,9 +103,7 @@ Moments<Out> FirstOrderTransform(const F& f, const In& mean, const Eigen::Matrix
   if (covariance.rows() != n || covariance.cols() != n) {
     throw std::invalid_argument("FirstOrderTransform: the covariance is not dim × dim");
   }
-  if (!(options.step > 0.0)) {
-    throw InputError("FirstOrderOptions.step", 0, "the step must be > 0", "use e.g. 1e-3");
-  }
+  RequireValid(options);
   const Eigen::MatrixXd S = CovarianceSquareRoot(covariance, options.square_root);
   Moments<Out> moments;
   moments.mean = f(mean);

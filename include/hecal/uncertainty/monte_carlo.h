@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/uncertainty/manifold.h"
 #include "hecal/uncertainty/parallel_for.h"
 #include "hecal/uncertainty/unscented.h"
@@ -30,10 +31,14 @@
 namespace hecal::uncertainty {
 
 struct MonteCarloOptions {
-  int samples = 5000;
+  int samples = 5000;  // at least 2
   std::uint64_t seed = 1;
-  int threads = 0;  // 0: every core
+  int threads = 0;  // 0: every core, at most kMaxThreads (core/limits.h)
   SquareRoot square_root = SquareRoot::kCholesky;
+
+  // core/options_check.h: false naming MonteCarloOptions.samples (below 2) or .threads (outside
+  // 0 … kMaxThreads).
+  bool IsValid(std::string* why) const;
 };
 
 template <class Out>
@@ -59,16 +64,13 @@ void SampleStatistics(const Eigen::MatrixXd& deviations, Eigen::MatrixXd* covari
 // own inputs (e.g. a diagonal noise model too large for a dense covariance): sample(k) should
 // use StandardNormalSample(options.seed, k, n) so that the result does not depend on the number
 // of threads. `reference` (the unperturbed output) starts the mean and screens non-finite
-// results. Throws hecal::InputError for samples < 2, std::runtime_error when fewer than 2
+// results. Throws hecal::InputError when !options.IsValid, std::runtime_error when fewer than 2
 // samples succeed.
 template <class Out, class Sample>
 MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& reference,
                                          const MonteCarloOptions& options) {
   using MOut = Manifold<Out>;
-  if (options.samples < 2) {
-    throw InputError("MonteCarloOptions.samples", 0, "Monte Carlo needs at least 2 samples",
-                     "use e.g. 5000");
-  }
+  RequireValid(options);
   const size_t count = static_cast<size_t>(options.samples);
   std::vector<Out> y(count, reference);
   std::vector<char> ok(count, 0);

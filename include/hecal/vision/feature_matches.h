@@ -54,8 +54,13 @@ struct ImageFeatures {
 struct FeatureMatchOptions {
   double ratio = 0.8;        // Lowe's ratio test
   double pixel_sigma = 0.5;  // keypoint noise per axis, pixels (sets the RANSAC threshold)
-  int max_matches = 40;      // returned per pair, spread over the image
-  int min_matches = 8;       // fewer RANSAC inliers are refused
+  int max_matches = 40;      // returned per pair, spread over the image; ≥ min_matches
+  int min_matches = 8;       // fewer RANSAC inliers are refused; ≥ 5 (the essential matrix)
+
+  // core/options_check.h: false naming FeatureMatchOptions.ratio (not in (0, 1]),
+  // .pixel_sigma (not positive and finite), .min_matches (below 5) or .max_matches (below
+  // min_matches).
+  bool IsValid(std::string* why) const;
 };
 
 struct FeatureMatch {

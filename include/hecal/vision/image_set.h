@@ -51,9 +51,10 @@
 // cy); given intrinsics that do not fit the images (step 6); a target found in no image (for a
 // chessboard: "cols/rows are INNER corners"); fewer usable
 // images than the use needs; intrinsics that cannot be estimated from the images (then
-// --intrinsics is needed); a single-tag target without --intrinsics; a negative thread count.
-// The target and camera files are read before any image, so their errors come at once. The
-// messages name the CLI's --intrinsics where the remedy is to give or leave out the intrinsics.
+// --intrinsics is needed); a single-tag target without --intrinsics; options that are not valid
+// (ImageSetOptions::IsValid). The target and camera files are read before any image, so their
+// errors come at once. The messages name the CLI's --intrinsics where the remedy is to give or
+// leave out the intrinsics.
 #pragma once
 
 #include <Eigen/Core>
@@ -78,8 +79,12 @@ struct ImageSetOptions {
   std::string images;      // the image folder
   std::string target;      // target.yaml (io/target_file.h)
   std::string intrinsics;  // camera.yaml or ViSP XML (io/camera_file.h); "" = estimate them
-  int threads = 0;         // detection threads; 0 = every core
+  int threads = 0;         // detection threads; 0 = every core, at most kMaxThreads
   ImageUse use = ImageUse::kHandEye;
+
+  // core/options_check.h: false naming ImageSetOptions.images or .target (empty) or .threads
+  // (outside 0 … kMaxThreads, core/limits.h).
+  bool IsValid(std::string* why) const;
 };
 
 // One image: where it is, what was found, and what became of it.
