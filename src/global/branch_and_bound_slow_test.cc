@@ -4,9 +4,13 @@
 // certified lower bound. Slow: the noisy gap is closed by many small cubes.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "hecal/geometry/so3.h"
 #include "hecal/global/branch_and_bound.h"
 #include "hecal/global/cube_feasibility.h"
+#include "hecal/global/local_start.h"
 #include "testing/epipolar_scenes.h"
 
 namespace hecal::global {
@@ -83,6 +87,7 @@ TEST(SolveGlobal, CertifiesTenMotionsByHundredMatchesWithinAMinute) {
     options.epsilon = 1e-6;
     options.translation_bound = 1.0;
     options.threads = threads;
+    options.start = LocalStart(scene.problem, options.translation_bound);  // as the CLI does
     const GlobalSolution solution = SolveGlobal(scene.problem, options);
     EXPECT_TRUE(solution.certificate.certified);
     seconds[threads - 1] = solution.certificate.seconds;
@@ -92,6 +97,34 @@ TEST(SolveGlobal, CertifiesTenMotionsByHundredMatchesWithinAMinute) {
   }
   EXPECT_LT(seconds[1], 60.0);
   std::printf("speed-up 1 -> 2 threads: %.2f\n", seconds[0] / seconds[1]);
+}
+
+// Scaling with motions and matches (noise-free, ε = 1e-6, two threads, from the local start as
+// the CLI searches): prints one row per size with the machine's load average (timings on a
+// shared machine mean little when it is above the core count).
+TEST(SolveGlobal, ScalesWithMotionsAndMatches) {
+  std::printf("motions matches seconds cubes LPs gap load\n");
+  for (int motions : {5, 10}) {
+    for (int pairs : {50, 100, 200}) {
+      testing::EpipolarSceneSpec spec;
+      spec.motions = motions;
+      spec.pairs = pairs;
+      const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 3);
+      SearchOptions options;
+      options.epsilon = 1e-6;
+      options.translation_bound = 1.0;
+      options.threads = 2;
+      options.start = LocalStart(scene.problem, options.translation_bound);
+      const GlobalSolution solution = SolveGlobal(scene.problem, options);
+      const Certificate& c = solution.certificate;
+      EXPECT_TRUE(c.certified) << motions << " x " << pairs;
+      EXPECT_LT(testing::RotationError(solution.X, scene.X), 5e-5) << motions << " x " << pairs;
+      double load[1] = {0.0};
+      getloadavg(load, 1);
+      std::printf("%d %d %.2f %ld %ld %.2g %.2f\n", motions, pairs, c.seconds, c.cubes, c.lps,
+                  c.upper - c.lower, load[0]);
+    }
+  }
 }
 
 }  // namespace
