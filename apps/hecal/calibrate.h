@@ -58,11 +58,12 @@ struct CalibrateFlags {
   std::string covariance_samples = "5000";  // --covariance-samples (montecarlo)
   std::string seed = "1";                   // --seed (montecarlo, and the outlier consensus)
   std::string correspondences;              // --correspondences FILE (--method global)
-  double epsilon = 2e-4;        // --epsilon RAD: the certificate's requested gap (global)
-  double relative_gap = 0.1;    // --relative-gap: or this fraction of the optimum (global)
-  int matches_per_motion = 40;  // --matches-per-motion: target corners used per motion (global)
-  double reach = 2.0;           // --reach M: |t| of X is searched up to this (global)
-  long max_cubes = 20'000'000;  // --max-cubes: the search's budget of cube tests (global)
+  double epsilon = 2e-4;          // --epsilon RAD: the certificate's requested gap (global)
+  double relative_gap = 0.1;      // --relative-gap: or this fraction of the optimum (global)
+  int matches_per_motion = 40;    // --matches-per-motion: target corners used per motion (global)
+  double reach = 2.0;             // --reach M: |t| of X is searched up to this (global)
+  long max_cubes = 20'000'000;    // --max-cubes: the search's budget of cube tests (global)
+  std::string features = "sift";  // --features sift|orb (global with --target none)
 };
 
 // The flags every form shares, checked.

@@ -189,6 +189,7 @@ GlobalInput MatchesFromFeatureImages(const CalibrateFlags& flags, handeye::Setup
   vision::FeatureMatchOptions options;
   options.pixel_sigma = pixel_sigma;
   options.max_matches = per_motion;
+  options.kind = flags.features == "orb" ? vision::FeatureKind::kOrb : vision::FeatureKind::kSift;
   const std::vector<std::vector<vision::FeatureMatch>> matches =
       vision::MatchConsecutiveImages(paths, names, camera, options, threads);
   GlobalInput input;
@@ -206,8 +207,8 @@ GlobalInput MatchesFromFeatureImages(const CalibrateFlags& flags, handeye::Setup
     input.problem.motions.push_back(std::move(motion));
     input.motion_names.emplace_back(listed.stations[k].id, listed.stations[k + 1].id);
   }
-  io.out << "features: " << listed.stations.size() << " images, " << matches.size()
-         << " motions, SIFT matches per motion:";
+  io.out << "features: " << listed.stations.size() << " images, " << matches.size() << " motions, "
+         << (flags.features == "orb" ? "ORB" : "SIFT") << " matches per motion:";
   for (const auto& motion : matches) io.out << " " << motion.size();
   io.out << "\n";
   return input;
@@ -285,6 +286,10 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   if (!(flags.max_cubes >= 1)) {
     throw InputError("--max-cubes", 0, "must be at least 1",
                      "give the search's budget of cube tests, e.g. 1000000");
+  }
+  if (flags.features != "sift" && flags.features != "orb") {
+    throw InputError("--features", 0, "unknown feature kind '" + flags.features + "'",
+                     "give --features sift or --features orb");
   }
   const int threads = ParseThreads("--threads", flags.threads);
   const std::uint64_t seed = ParseSeed("--seed", flags.seed);
