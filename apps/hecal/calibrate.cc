@@ -397,6 +397,10 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                    "proved so far")
       ->capture_default_str();
   command
+      ->add_option("--features", flags->features,
+                   "With --method global --target none: sift or orb image features")
+      ->capture_default_str();
+  command
       ->add_option("--reach", flags->reach,
                    "With --method global: search X's translation up to this length, metres")
       ->capture_default_str();

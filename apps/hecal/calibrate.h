@@ -63,6 +63,7 @@ struct CalibrateFlags {
   int matches_per_motion = 40;    // --matches-per-motion: target corners used per motion (global)
   double reach = 2.0;             // --reach M: |t| of X is searched up to this (global)
   long max_cubes = 20'000'000;    // --max-cubes: the search's budget of cube tests (global)
+  std::string features = "sift";  // --features sift|orb (global with --target none)
 };
 
 // The flags every form shares, checked.

@@ -11,6 +11,7 @@
 #include "calibrate.h"
 #include "hecal/core/error.h"
 #include "hecal/estimation/epipolar_polish.h"
+#include "hecal/estimation/epipolar_robot_noise.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/global/outlier_removal.h"
 #include "hecal/io/atomic_file.h"
@@ -188,6 +189,7 @@ GlobalInput MatchesFromFeatureImages(const CalibrateFlags& flags, handeye::Setup
   vision::FeatureMatchOptions options;
   options.pixel_sigma = pixel_sigma;
   options.max_matches = per_motion;
+  options.kind = flags.features == "orb" ? vision::FeatureKind::kOrb : vision::FeatureKind::kSift;
   const std::vector<std::vector<vision::FeatureMatch>> matches =
       vision::MatchConsecutiveImages(paths, names, camera, options, threads);
   GlobalInput input;
@@ -205,8 +207,8 @@ GlobalInput MatchesFromFeatureImages(const CalibrateFlags& flags, handeye::Setup
     input.problem.motions.push_back(std::move(motion));
     input.motion_names.emplace_back(listed.stations[k].id, listed.stations[k + 1].id);
   }
-  io.out << "features: " << listed.stations.size() << " images, " << matches.size()
-         << " motions, SIFT matches per motion:";
+  io.out << "features: " << listed.stations.size() << " images, " << matches.size() << " motions, "
+         << (flags.features == "orb" ? "ORB" : "SIFT") << " matches per motion:";
   for (const auto& motion : matches) io.out << " " << motion.size();
   io.out << "\n";
   return input;
@@ -285,6 +287,10 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
     throw InputError("--max-cubes", 0, "must be at least 1",
                      "give the search's budget of cube tests, e.g. 1000000");
   }
+  if (flags.features != "sift" && flags.features != "orb") {
+    throw InputError("--features", 0, "unknown feature kind '" + flags.features + "'",
+                     "give --features sift or --features orb");
+  }
   const int threads = CheckThreads("--threads", flags.threads);
   const std::uint64_t seed = ParseSeed("--seed", flags.seed);
   double pixel_sigma = 0.5;
@@ -310,7 +316,11 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
       global::SolveGlobalRobust(input.problem, search, outliers);
   const estimation::RecheckedPolish rechecked =
       estimation::PolishAndRecheck(input.problem, robust.inliers, robust.solution.X);
-  const estimation::EpipolarPolish& polish = rechecked.polish;
+  // The final X and covariance with the robot's pose error marginalised (the re-check above
+  // treats pairs as independent, which only decides which pairs to keep).
+  const estimation::RobotNoisePolish robot_noise =
+      estimation::PolishWithEstimatedRobotNoise(rechecked.inliers, rechecked.polish.X);
+  const estimation::EpipolarPolish& polish = robot_noise.polish;
   // The stage that removed each pair the re-check leaves out (pairs it re-admits are not listed).
   std::map<std::pair<int, int>, std::string> stage;
   for (const global::RemovedPair& r : robust.removed) {
@@ -327,6 +337,10 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
          << (X.translation() / metres).transpose() << "\n"
          << "  1 sigma: rotation [rad] " << sd.head<3>().transpose() << ", translation ["
          << flags.units << "] " << (sd.tail<3>() / metres).transpose() << "\n"
+         << "  noise (estimated): ray [rad] " << robot_noise.noise.ray_sigma
+         << ", robot per pose: rotation [rad] " << robot_noise.noise.robot_rotation_sigma
+         << ", translation [" << flags.units << "] "
+         << robot_noise.noise.robot_translation_sigma / metres << "\n"
          << std::setprecision(4) << "certificate: max ray error in [" << c.lower << ", " << c.upper
          << "] rad" << (c.certified ? " (certified)" : " (gap not closed)") << ", " << c.cubes
          << " cubes, " << c.lps << " LPs, " << c.seconds << " s\n"
@@ -355,10 +369,13 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                         {"reach_m", flags.reach}};
   doc["l_infinity_X"] = {{"rotation", report::JsonRows(robust.solution.X.linear())},
                          {"translation_m", report::JsonVector(robust.solution.X.translation())}};
-  doc["covariance"] = {{"method", "linear"},
+  doc["covariance"] = {{"method", "linear, robot pose error marginalised"},
                        {"X", report::JsonRows(polish.covariance)},
                        {"convention", "right perturbation (rx, ry, rz, tx, ty, tz), rad and m"},
-                       {"ray_sigma_rad", polish.ray_sigma}};
+                       {"ray_sigma_rad", robot_noise.noise.ray_sigma},
+                       {"robot_rotation_sigma_rad", robot_noise.noise.robot_rotation_sigma},
+                       {"robot_translation_sigma_m", robot_noise.noise.robot_translation_sigma},
+                       {"independent_pairs_X", report::JsonRows(rechecked.polish.covariance)}};
   doc["polish"] = {{"rms_rad", polish.rms}, {"pairs", polish.pairs}};
   doc["matches"] = {{"inliers", global::PairCount(rechecked.inliers)},
                     {"threshold_rad", robust.threshold},

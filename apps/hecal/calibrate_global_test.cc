@@ -143,6 +143,9 @@ TEST_F(CalibrateGlobal, RefusesBadInputWithOneLineAndNoFile) {
   ExpectRefusal(
       run({"--setup", "eye-in-hand", "--images", Path("."), "--intrinsics", Path("camera.yaml")}),
       "needs --target");
+  ExpectRefusal(run({"--setup", "eye-in-hand", "--images", Path("."), "--target", "none",
+                     "--intrinsics", Path("camera.yaml"), "--features", "surf"}),
+                "unknown feature kind 'surf'");
   // Generic features (--target none) are for --method global only.
   ExpectRefusal(Hecal({"calibrate", "--method", "ml", "--robot", Path("robot.csv"), "--setup",
                        "eye-in-hand", "--images", Path("."), "--target", "none", "--intrinsics",

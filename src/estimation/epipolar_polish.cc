@@ -6,24 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "epipolar_residual.h"
 #include "hecal/core/error.h"
 
 namespace hecal::estimation {
 namespace {
-
-template <typename T>
-using Vec3 = Eigen::Matrix<T, 3, 1>;
-
-template <typename T>
-T Sampson(const Vec3<T>& v, const Vec3<T>& Ru, const Vec3<T>& t_A, const Vec3<T>& u,
-          const Eigen::Matrix<T, 3, 3>& R_A) {
-  const Vec3<T> g_v = Ru.cross(t_A);
-  const Vec3<T> g_u = R_A.transpose() * t_A.cross(v);
-  const Vec3<T> p_v = g_v - v * v.dot(g_v);
-  const Vec3<T> p_u = g_u - u * u.dot(g_u);
-  const T scale = sqrt(p_v.squaredNorm() + p_u.squaredNorm() + T(1e-300));
-  return v.dot(g_v) / scale;
-}
 
 // Residual of one pair as a function of δ = (ω, τ): R = R̂ Exp(ω), t = t̂ + R̂ τ.
 struct PairCost {
@@ -32,29 +19,13 @@ struct PairCost {
 
   template <typename T>
   bool operator()(const T* delta, T* residual) const {
-    Eigen::Matrix<T, 3, 3> E;
-    ceres::AngleAxisToRotationMatrix(delta, ceres::ColumnMajorAdapter3x3(E.data()));
-    const Eigen::Matrix<T, 3, 3> R = X0_.linear().cast<T>() * E;
-    const Vec3<T> tau(delta[3], delta[4], delta[5]);
-    const Vec3<T> t = X0_.translation().cast<T>() + X0_.linear().cast<T>() * tau;
-    const Eigen::Matrix<T, 3, 3> R_B = B_.linear().cast<T>();
-    const Eigen::Matrix<T, 3, 3> R_A = R.transpose() * R_B * R;
-    const Vec3<T> t_A = R.transpose() * (R_B * t + B_.translation().cast<T>() - t);
-    const Vec3<T> u = pair_.second.normalized().cast<T>();
-    residual[0] = Sampson<T>(pair_.first.normalized().cast<T>(), R_A * u, t_A, u, R_A);
+    residual[0] = detail::SampsonResidual<T>(X0_, B_, pair_, delta, nullptr, nullptr);
     return true;
   }
 
   Pose X0_, B_;
   global::BearingPair pair_;
 };
-
-Pose Apply(const Pose& X0, const double* delta) {
-  Eigen::Matrix3d E;
-  ceres::AngleAxisToRotationMatrix(delta, ceres::ColumnMajorAdapter3x3(E.data()));
-  return MakePose(X0.linear() * E,
-                  X0.translation() + X0.linear() * Eigen::Vector3d(delta[3], delta[4], delta[5]));
-}
 
 }  // namespace
 
@@ -96,7 +67,7 @@ EpipolarPolish PolishEpipolar(const global::EpipolarProblem& problem, const Pose
       options.gradient_tolerance = 1e-16;
       ceres::Solver::Summary summary;
       ceres::Solve(options, &ceres_problem, &summary);
-      X = Apply(X, delta);
+      X = detail::ApplyDelta(X, delta);
       continue;
     }
     ceres::CRSMatrix jacobian;

@@ -15,6 +15,27 @@
 #include "hecal/uncertainty/parallel_for.h"
 
 namespace hecal::global {
+
+bool SearchOptions::IsValid(std::string* why) const {
+  const auto fail = [why](const std::string& problem) {
+    if (why != nullptr) *why = problem;
+    return false;
+  };
+  if (!(epsilon > 0.0) || !std::isfinite(epsilon)) return fail("epsilon must be above 0");
+  if (!(relative_gap >= 0.0 && relative_gap < 1.0)) {
+    return fail("relative_gap must be at least 0 and below 1");
+  }
+  if (!(translation_bound > 0.0) || !std::isfinite(translation_bound)) {
+    return fail("translation_bound must be above 0");
+  }
+  if (!(min_half_width > 0.0) || !std::isfinite(min_half_width)) {
+    return fail("min_half_width must be above 0");
+  }
+  if (max_cubes < 1) return fail("max_cubes must be at least 1");
+  if (threads < 0) return fail("threads must be at least 0 (0: every core)");
+  return true;
+}
+
 namespace {
 
 struct Cube {

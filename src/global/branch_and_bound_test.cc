@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "testing/epipolar_scenes.h"
 
 namespace hecal::global {
@@ -32,6 +35,27 @@ TEST(SolveGlobal, RecoversXFromNoiseFreeScenesWithAClosedCertificate) {
     EXPECT_LT(testing::RotationError(solution.X, scene.X), 2e-5);
     EXPECT_LT((solution.X.translation() - scene.X.translation()).norm(), 2e-5);
   }
+}
+
+TEST(SearchOptions, IsValidNamesTheBadField) {
+  EXPECT_TRUE(SearchOptions{}.IsValid(nullptr));
+  const auto bad = [](auto change) {
+    SearchOptions options;
+    change(options);
+    std::string why;
+    EXPECT_FALSE(options.IsValid(&why));
+    return why;
+  };
+  EXPECT_NE(bad([](SearchOptions& o) { o.epsilon = 0.0; }).find("epsilon"), std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.epsilon = NAN; }).find("epsilon"), std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.relative_gap = 1.0; }).find("relative_gap"),
+            std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.translation_bound = -1.0; }).find("translation_bound"),
+            std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.min_half_width = 0.0; }).find("min_half_width"),
+            std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.max_cubes = 0; }).find("max_cubes"), std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.threads = -1; }).find("threads"), std::string::npos);
 }
 
 }  // namespace

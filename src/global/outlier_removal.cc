@@ -9,6 +9,20 @@
 
 namespace hecal::global {
 
+bool OutlierOptions::IsValid(std::string* why) const {
+  const auto fail = [why](const std::string& problem) {
+    if (why != nullptr) *why = problem;
+    return false;
+  };
+  if (!(threshold > 0.0) || !std::isfinite(threshold)) return fail("threshold must be above 0");
+  if (!(error_level_multiple >= 0.0) || !std::isfinite(error_level_multiple)) {
+    return fail("error_level_multiple must be at least 0");
+  }
+  if (ransac_iterations < 1) return fail("ransac_iterations must be at least 1");
+  if (max_rounds < 1) return fail("max_rounds must be at least 1");
+  return true;
+}
+
 EpipolarProblem PrefilterPairs(const EpipolarProblem& problem, const OutlierOptions& options,
                                std::vector<RemovedPair>* removed) {
   EpipolarProblem kept = problem;

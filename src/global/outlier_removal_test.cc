@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <set>
+#include <string>
 
 #include "hecal/estimation/epipolar_polish.h"
 #include "hecal/geometry/se3.h"
@@ -93,6 +95,25 @@ TEST(PrefilterPairs, KeepsEveryPairOfANoiseFreeScene) {
   const EpipolarProblem kept = PrefilterPairs(scene.problem, OutlierOptions{}, &removed);
   EXPECT_TRUE(removed.empty());
   EXPECT_EQ(PairCount(kept), PairCount(scene.problem));
+}
+
+TEST(OutlierOptions, IsValidNamesTheBadField) {
+  EXPECT_TRUE(OutlierOptions{}.IsValid(nullptr));
+  const auto bad = [](auto change) {
+    OutlierOptions options;
+    change(options);
+    std::string why;
+    EXPECT_FALSE(options.IsValid(&why));
+    return why;
+  };
+  EXPECT_NE(bad([](OutlierOptions& o) { o.threshold = 0.0; }).find("threshold"), std::string::npos);
+  EXPECT_NE(bad([](OutlierOptions& o) { o.threshold = INFINITY; }).find("threshold"),
+            std::string::npos);
+  EXPECT_NE(bad([](OutlierOptions& o) { o.error_level_multiple = -1.0; }).find("error_level"),
+            std::string::npos);
+  EXPECT_NE(bad([](OutlierOptions& o) { o.ransac_iterations = 0; }).find("ransac_iterations"),
+            std::string::npos);
+  EXPECT_NE(bad([](OutlierOptions& o) { o.max_rounds = 0; }).find("max_rounds"), std::string::npos);
 }
 
 }  // namespace

@@ -24,6 +24,11 @@ struct EpipolarSceneSpec {
   double pixel_sigma = 0.0;     // pixels, per axis
   double wrong_fraction = 0.0;  // share of pairs whose second ray points at another point
   bool planar = false;          // scene points on one plane (z = depth in the first camera)
+  // Robot pose error: the hand poses the problem is given are the true ones times
+  // (Exp(ω), τ), ω and τ normal with these standard deviations per axis (radians, metres);
+  // the images are taken at the true poses.
+  double robot_rotation_sigma = 0.0;
+  double robot_translation_sigma = 0.0;
   handeye::Setup setup = handeye::Setup::kEyeInHand;
 };
 
@@ -77,8 +82,18 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
       }
       if (int(points.size()) == spec.pairs) break;
     }
-    motion.hand = H_first.inverse() * H_second;
-    const Pose camera_motion = global::CameraMotion(scene.X, motion.hand);
+    const Pose camera_motion = global::CameraMotion(scene.X, H_first.inverse() * H_second);
+    const auto measured = [&](const Pose& H) {
+      if (spec.robot_rotation_sigma <= 0.0 && spec.robot_translation_sigma <= 0.0) return H;
+      std::normal_distribution<double> normal(0.0, 1.0);
+      const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
+      const Eigen::Vector3d tau(normal(rng), normal(rng), normal(rng));
+      return Pose(H * MakePose(so3::Exp(spec.robot_rotation_sigma * omega),
+                               spec.robot_translation_sigma * tau));
+    };
+    const Pose H_first_measured = measured(H_first);
+    const Pose H_second_measured = measured(H_second);
+    motion.hand = H_first_measured.inverse() * H_second_measured;
     std::vector<bool> wrong(points.size(), false);
     for (std::size_t j = 0; j < points.size(); ++j) {
       const Eigen::Vector3d& p = points[j];
@@ -93,8 +108,10 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
                               NoisyBearing(q, spec.focal, spec.pixel_sigma, rng), int(j)});
     }
     // The robot poses as the robot file would give them.
-    const Pose G_first = spec.setup == handeye::Setup::kEyeInHand ? H_first : H_first.inverse();
-    const Pose G_second = spec.setup == handeye::Setup::kEyeInHand ? H_second : H_second.inverse();
+    const Pose G_first =
+        spec.setup == handeye::Setup::kEyeInHand ? H_first_measured : H_first_measured.inverse();
+    const Pose G_second =
+        spec.setup == handeye::Setup::kEyeInHand ? H_second_measured : H_second_measured.inverse();
     scene.T_base_gripper.push_back(G_first);
     scene.T_base_gripper.push_back(G_second);
     scene.wrong.push_back(wrong);

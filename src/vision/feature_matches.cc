@@ -18,11 +18,16 @@
 namespace hecal::vision {
 namespace {
 
+// Binary (ORB) descriptors are compared by Hamming distance, float (SIFT) ones by L2.
+int DescriptorNorm(const cv::Mat& descriptors) {
+  return descriptors.depth() == CV_8U ? cv::NORM_HAMMING : cv::NORM_L2;
+}
+
 // For each query descriptor, its nearest train descriptor when it passes the ratio test, else -1.
 std::vector<int> RatioMatches(const cv::Mat& query, const cv::Mat& train, double ratio) {
   std::vector<int> best(query.rows, -1);
   if (query.empty() || train.rows < 2) return best;
-  cv::BFMatcher matcher(cv::NORM_L2);
+  cv::BFMatcher matcher(DescriptorNorm(query));
   std::vector<std::vector<cv::DMatch>> knn;
   matcher.knnMatch(query, train, knn, 2);
   for (const std::vector<cv::DMatch>& k : knn) {
@@ -33,14 +38,17 @@ std::vector<int> RatioMatches(const cv::Mat& query, const cv::Mat& train, double
 
 }  // namespace
 
-ImageFeatures DetectFeatures(const cv::Mat& gray, int max_features) {
+ImageFeatures DetectFeatures(const cv::Mat& gray, int max_features, FeatureKind kind) {
   if (gray.empty() || gray.type() != CV_8UC1) {
     throw std::invalid_argument("DetectFeatures: the image must be 8-bit grey");
   }
   ImageFeatures features;
   features.size = gray.size();
-  cv::SIFT::create(std::max(0, max_features))
-      ->detectAndCompute(gray, cv::noArray(), features.keypoints, features.descriptors);
+  const cv::Ptr<cv::Feature2D> detector =
+      kind == FeatureKind::kOrb
+          ? cv::Ptr<cv::Feature2D>(cv::ORB::create(max_features > 0 ? max_features : 8000))
+          : cv::Ptr<cv::Feature2D>(cv::SIFT::create(std::max(0, max_features)));
+  detector->detectAndCompute(gray, cv::noArray(), features.keypoints, features.descriptors);
   return features;
 }
 
@@ -92,7 +100,8 @@ std::vector<FeatureMatch> MatchFeatures(const ImageFeatures& first, const ImageF
     if (!a || !b) continue;
     match.first_ray = Eigen::Vector3d(a->x(), a->y(), 1.0).normalized();
     match.second_ray = Eigen::Vector3d(b->x(), b->y(), 1.0).normalized();
-    match.distance = float(cv::norm(first.descriptors.row(i), second.descriptors.row(j)));
+    match.distance = float(cv::norm(first.descriptors.row(i), second.descriptors.row(j),
+                                    DescriptorNorm(first.descriptors)));
     candidates.push_back(match);
     first_normalised.emplace_back(a->x(), a->y());
     second_normalised.emplace_back(b->x(), b->y());
@@ -189,7 +198,7 @@ std::vector<std::vector<FeatureMatch>> MatchConsecutiveImages(
                            std::to_string(camera.width) + "x" + std::to_string(camera.height),
                        "give the intrinsics of this camera at this resolution");
     }
-    features[std::size_t(i)] = DetectFeatures(gray);
+    features[std::size_t(i)] = DetectFeatures(gray, 8000, options.kind);
   });
   std::vector<std::vector<FeatureMatch>> matches(std::size_t(std::max(n - 1, 0)));
   each(n - 1, [&](int k) {

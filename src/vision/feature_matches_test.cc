@@ -101,6 +101,33 @@ TEST(FeatureMatches, PairsSatisfyTheTrueEpipolarConstraint) {
   EXPECT_GE(occupied, 32);
 }
 
+TEST(FeatureMatches, OrbPairsSatisfyTheTrueEpipolarConstraint) {
+  const Pair pair = PlanePair();
+  FeatureMatchOptions options;
+  options.kind = FeatureKind::kOrb;
+  options.max_matches = 100000;
+  const ImageFeatures first = DetectFeatures(pair.first, 8000, FeatureKind::kOrb);
+  const ImageFeatures second = DetectFeatures(pair.second, 8000, FeatureKind::kOrb);
+  ASSERT_EQ(first.descriptors.depth(), CV_8U);  // binary: matched by Hamming distance
+  const std::vector<FeatureMatch> matches =
+      MatchFeatures(first, second, Camera(), options, "first.png", "second.png");
+  EXPECT_GE(int(matches.size()), 100);
+  for (const FeatureMatch& m : matches) {
+    const Eigen::Vector3d normal = pair.t.cross(pair.R * m.first_ray).normalized();
+    // Within the threshold of the RANSAC essential matrix, which ORB's coarse keypoints (below)
+    // put off the true one: twice the threshold of the true epipolar plane.
+    EXPECT_LT(std::abs(std::asin(normal.dot(m.second_ray))), 8.0 * std::sqrt(2.0) * 0.5 / kFocal);
+    // ORB keypoints lie on the pixel grid of their pyramid level (no sub-pixel refinement;
+    // 1.2⁷ ≈ 3.6 px at the coarsest of its 8 levels), and both of a pair are off: the
+    // homography to 5 px, which still tells a wrong match (another point of the texture) from
+    // a right one.
+    const Eigen::Vector3d x(m.first_ray / m.first_ray.z());
+    const Eigen::Vector3d y = pair.R * x * 2.0 + pair.t;
+    EXPECT_NEAR(kFocal * y.x() / y.z() + Camera().cx, m.second_pixel.x(), 5.0);
+    EXPECT_NEAR(kFocal * y.y() / y.z() + Camera().cy, m.second_pixel.y(), 5.0);
+  }
+}
+
 TEST(FeatureMatches, UnrelatedImagesAreRefusedNamingBoth) {
   try {
     MatchFeatures(DetectFeatures(Texture(1)), DetectFeatures(Texture(2)), Camera(), {}, "a.png",

@@ -34,6 +34,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "hecal/global/epipolar_problem.h"
 
@@ -50,6 +51,11 @@ struct SearchOptions {
   // Stop as soon as an X with max E ≤ stop_below is found (a decision, not an optimum: used by
   // the outlier removal to ask "is everything consistent within the threshold?").
   double stop_below = -1.0;
+
+  // False, with the offending field named in *why (when not null), unless epsilon > 0,
+  // 0 ≤ relative_gap < 1, translation_bound > 0, min_half_width > 0 (all finite),
+  // max_cubes ≥ 1 and threads ≥ 0.
+  bool IsValid(std::string* why) const;
 };
 
 struct Certificate {

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hecal/global/branch_and_bound.h"
@@ -38,6 +39,10 @@ struct OutlierOptions {
   int ransac_iterations = 500;
   int max_rounds = 20;  // L∞ removal rounds
   std::uint64_t seed = 1;
+
+  // False, with the offending field named in *why (when not null), unless threshold > 0 and
+  // error_level_multiple ≥ 0 (both finite), ransac_iterations ≥ 1 and max_rounds ≥ 1.
+  bool IsValid(std::string* why) const;
 };
 
 struct RemovedPair {

@@ -3,12 +3,14 @@
 //
 // Algorithm
 //   1. DetectFeatures: SIFT keypoints and descriptors (OpenCV 4.6 features2d, cv::SIFT; Lowe,
-//      "Distinctive image features from scale-invariant keypoints", IJCV 2004) on the 8-bit grey
-//      image, at most `max_features` of the strongest (0 = all).
+//      "Distinctive image features from scale-invariant keypoints", IJCV 2004) or ORB ones
+//      (cv::ORB; Rublee et al., "ORB: an efficient alternative to SIFT or SURF", ICCV 2011;
+//      binary descriptors) on the 8-bit grey image, at most `max_features` of the strongest
+//      (SIFT: 0 = all).
 //   2. MatchFeatures: for every descriptor of the first image its two nearest neighbours in the
-//      second (L2, brute force); kept when the nearest is closer than `ratio` (0.8, Lowe's ratio
-//      test) times the second nearest, in both directions, and when the two directions pick each
-//      other (mutual check).
+//      second (brute force; L2 for SIFT, Hamming for ORB's binary descriptors); kept when the
+//      nearest is closer than `ratio` (0.8, Lowe's ratio test) times the second nearest, in both
+//      directions, and when the two directions pick each other (mutual check).
 //   3. Every kept pixel is undistorted with the camera's plumb_bob model (pose/camera_model.h) to
 //      normalised image coordinates (a match with a pixel that cannot be undistorted is dropped);
 //      an essential matrix is fitted by RANSAC on them (cv::findEssentialMat, five-point solver,
@@ -48,14 +50,17 @@ namespace hecal::vision {
 struct ImageFeatures {
   cv::Size size;  // of the image
   std::vector<cv::KeyPoint> keypoints;
-  cv::Mat descriptors;  // one row per keypoint (CV_32F, 128 columns)
+  cv::Mat descriptors;  // one row per keypoint (SIFT: CV_32F, 128 columns; ORB: CV_8U, 32)
 };
+
+enum class FeatureKind { kSift, kOrb };
 
 struct FeatureMatchOptions {
   double ratio = 0.8;        // Lowe's ratio test
   double pixel_sigma = 0.5;  // keypoint noise per axis, pixels (sets the RANSAC threshold)
   int max_matches = 40;      // returned per pair, spread over the image; ≥ min_matches
   int min_matches = 8;       // fewer RANSAC inliers are refused; ≥ 5 (the essential matrix)
+  FeatureKind kind = FeatureKind::kSift;
 
   // core/options_check.h: false naming FeatureMatchOptions.ratio (not in (0, 1]),
   // .pixel_sigma (not positive and finite), .min_matches (below 5) or .max_matches (below
@@ -72,7 +77,8 @@ struct FeatureMatch {
 };
 
 // Step 1.
-ImageFeatures DetectFeatures(const cv::Mat& gray, int max_features = 8000);
+ImageFeatures DetectFeatures(const cv::Mat& gray, int max_features = 8000,
+                             FeatureKind kind = FeatureKind::kSift);
 
 // Steps 2–4. `first_name` and `second_name` name the images in errors.
 std::vector<FeatureMatch> MatchFeatures(const ImageFeatures& first, const ImageFeatures& second,

@@ -1,0 +1,66 @@
+// The L2 polish of a target-free hand–eye solution with the robot's pose error in the model
+// (docs/global.md, "The L2 polish and the covariance"). The plain polish (epipolar_polish.h)
+// treats every bearing pair as independent; but an error of a hand pose moves every pair of
+// every motion that uses that station alike, and on a real arm it dominates (0.03° and 0.25 mm
+// over a baseline of a few cm is several times the ray noise of detected corners). Its
+// covariance is then several times too small.
+//
+// Model (per station j, i.e. robot pose): the true hand pose is H_j (Exp(ω_j), τ_j) with the
+// nuisance η_j = (ω_j, τ_j) ~ N(0, diag(σ_r² I₃, σ_t² I₃)) (radians, metres; a right
+// perturbation of the hand pose H_j of global/epipolar_problem.h, independent between stations),
+// and the pair residual r (the angular Sampson error, src/estimation/epipolar_residual.h) has
+// independent noise of standard deviation σ (radians of ray). Linearised at X:
+//   r ≈ r̂ + J δ + G η,   Cov(r) = V = σ² I + G D Gᵀ,   D = blockdiag(σ_r² I₃, σ_t² I₃ per station),
+// J the Jacobian in δ = (ω, τ) of X (right perturbation, as the plain polish) and G the one in
+// all stations' η. A motion's two stations give every pair of the motion a shared error, and a
+// station shared by two motions correlates them.
+//
+// Noise estimate (EstimateEpipolarNoise): (σ², σ_r², σ_t²) maximise the restricted likelihood
+// (REML; Patterson & Thompson 1971, Harville 1977) of the residuals at X, which removes the
+// 6 degrees of freedom of X:
+//   ℓ_R = −½ (log det V + log det(Jᵀ V⁻¹ J) + r̂ᵀ V⁻¹ r̂ − bᵀ (Jᵀ V⁻¹ J)⁻¹ b),   b = Jᵀ V⁻¹ r̂,
+// evaluated through the Woodbury identity in the 6·stations nuisance dimensions
+// (V⁻¹ = σ⁻²(I − σ⁻² G D^½ K⁻¹ D^½ Gᵀ), K = I + σ⁻² D^½ GᵀG D^½, det V = σ²ᴺ det K), and
+// maximised by golden-section searches over the log-variances, one at a time, repeated until
+// none moves by more than 0.5% in σ (at most 8 rounds). A zero
+// robot noise is allowed (σ_r, σ_t then come out negligibly small).
+//
+// Polish (PolishWithRobotNoise): generalised least squares with the nuisances marginalised, by
+// Gauss–Newton: δ = −(Jᵀ V⁻¹ J)⁻¹ Jᵀ V⁻¹ r̂, X ← X (Exp(ω), τ), until δ is below 1e-12; the
+// covariance of X is (Jᵀ V⁻¹ J)⁻¹ at the last X (right perturbation (ω, v), radians and metres).
+// With σ_r = σ_t = 0 this is the plain polish with the given σ.
+//
+// Errors: fewer than 7 pairs throw hecal::DegenerateError.
+#pragma once
+
+#include "hecal/estimation/epipolar_polish.h"
+#include "hecal/global/epipolar_problem.h"
+
+namespace hecal::estimation {
+
+struct EpipolarNoise {
+  double ray_sigma = 0.0;                // σ: radians of ray
+  double robot_rotation_sigma = 0.0;     // σ_r: radians per axis, per hand pose
+  double robot_translation_sigma = 0.0;  // σ_t: metres per axis, per hand pose
+};
+
+// REML estimate of the three noise levels from the residuals at X.
+EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X);
+
+// The GLS polish from `start` for the given noise. The result's ray_sigma is noise.ray_sigma and
+// its rms the RMS residual at the polished X.
+EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, const Pose& start,
+                                    const EpipolarNoise& noise);
+
+struct RobotNoisePolish {
+  EpipolarPolish polish;
+  EpipolarNoise noise;
+  int stations = 0;  // distinct hand poses in the problem
+};
+
+// Both, twice: the noise estimated at `start` (best: the plain polish's X), the GLS polish, the
+// noise re-estimated at its X, the GLS polish again.
+RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& problem,
+                                               const Pose& start);
+
+}  // namespace hecal::estimation

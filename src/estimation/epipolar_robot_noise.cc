@@ -1,0 +1,217 @@
+#include "hecal/estimation/epipolar_robot_noise.h"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "epipolar_residual.h"
+#include "hecal/core/error.h"
+
+namespace hecal::estimation {
+namespace {
+
+// r as a function of δ (X) and the two stations' η.
+struct StationPairCost {
+  StationPairCost(const Pose& X0, const Pose& B, const global::BearingPair& pair)
+      : X0_(X0), B_(B), pair_(pair) {}
+
+  template <typename T>
+  bool operator()(const T* delta, const T* eta_first, const T* eta_second, T* residual) const {
+    residual[0] = detail::SampsonResidual<T>(X0_, B_, pair_, delta, eta_first, eta_second);
+    return true;
+  }
+
+  Pose X0_, B_;
+  global::BearingPair pair_;
+};
+
+// The model linearised at X, reduced to the products the likelihood and the GLS step need.
+struct Linearisation {
+  int n = 0;  // pairs
+  double rr = 0.0;
+  Matrix6d JJ = Matrix6d::Zero();
+  Vector6d Jr = Vector6d::Zero();
+  Eigen::MatrixXd GG, GJ;  // p × p, p × 6
+  Eigen::VectorXd Gr;      // p
+};
+
+int CheckedPairCount(const global::EpipolarProblem& problem) {
+  const int n = global::PairCount(problem);
+  if (n < 7) {
+    throw DegenerateError(
+        "the hand–eye transform (6 unknowns) from " + std::to_string(n) + " bearing pairs",
+        "give at least 7 point matches");
+  }
+  return n;
+}
+
+std::map<int, int> StationIndex(const global::EpipolarProblem& problem) {
+  std::map<int, int> index;
+  for (const global::EpipolarMotion& motion : problem.motions) {
+    for (int station : {motion.first_station, motion.second_station}) {
+      index.emplace(station, int(index.size()));
+    }
+  }
+  return index;
+}
+
+Linearisation Linearise(const global::EpipolarProblem& problem, const Pose& X) {
+  const std::map<int, int> station = StationIndex(problem);
+  const int p = 6 * int(station.size());
+  Linearisation lin;
+  lin.n = CheckedPairCount(problem);
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(lin.n, p);
+  Eigen::MatrixXd J(lin.n, 6);
+  Eigen::VectorXd r(lin.n);
+  const double zero[6] = {0, 0, 0, 0, 0, 0};
+  const double* parameters[3] = {zero, zero, zero};
+  int row = 0;
+  for (const global::EpipolarMotion& motion : problem.motions) {
+    const int f = 6 * station.at(motion.first_station);
+    const int s = 6 * station.at(motion.second_station);
+    for (const global::BearingPair& pair : motion.pairs) {
+      ceres::AutoDiffCostFunction<StationPairCost, 1, 6, 6, 6> cost(
+          new StationPairCost(X, motion.hand, pair));
+      double d_delta[6], d_first[6], d_second[6];
+      double* jacobians[3] = {d_delta, d_first, d_second};
+      cost.Evaluate(parameters, &r[row], jacobians);
+      for (int k = 0; k < 6; ++k) {
+        J(row, k) = d_delta[k];
+        G(row, f + k) += d_first[k];
+        G(row, s + k) += d_second[k];
+      }
+      ++row;
+    }
+  }
+  lin.rr = r.squaredNorm();
+  lin.JJ = J.transpose() * J;
+  lin.Jr = J.transpose() * r;
+  lin.GG = G.transpose() * G;
+  lin.GJ = G.transpose() * J;
+  lin.Gr = G.transpose() * r;
+  return lin;
+}
+
+// Jᵀ V⁻¹ J, Jᵀ V⁻¹ r̂, r̂ᵀ V⁻¹ r̂ and log det V for the noise (Woodbury, header comment).
+struct Weighted {
+  Matrix6d JVJ;
+  Vector6d JVr;
+  double rVr = 0.0;
+  double log_det_V = 0.0;
+};
+
+Weighted Weigh(const Linearisation& lin, const EpipolarNoise& noise) {
+  const int p = int(lin.GG.rows());
+  Eigen::VectorXd d(p);  // D^½
+  for (int k = 0; k < p; ++k) {
+    d[k] = k % 6 < 3 ? noise.robot_rotation_sigma : noise.robot_translation_sigma;
+  }
+  const double s2 = noise.ray_sigma * noise.ray_sigma;
+  const Eigen::MatrixXd K =
+      Eigen::MatrixXd::Identity(p, p) + d.asDiagonal() * lin.GG * d.asDiagonal() / s2;
+  const Eigen::LLT<Eigen::MatrixXd> llt(K);
+  const Eigen::MatrixXd F = d.asDiagonal() * lin.GJ;
+  const Eigen::VectorXd f = d.asDiagonal() * lin.Gr;
+  const Eigen::MatrixXd KF = llt.solve(F);
+  const Eigen::VectorXd Kf = llt.solve(f);
+  Weighted w;
+  w.JVJ = lin.JJ / s2 - F.transpose() * KF / (s2 * s2);
+  w.JVr = lin.Jr / s2 - F.transpose() * Kf / (s2 * s2);
+  w.rVr = lin.rr / s2 - f.dot(Kf) / (s2 * s2);
+  const Eigen::MatrixXd L = llt.matrixL();
+  w.log_det_V = lin.n * std::log(s2) + 2.0 * L.diagonal().array().log().sum();
+  return w;
+}
+
+double RestrictedLogLikelihood(const Linearisation& lin, const EpipolarNoise& noise) {
+  const Weighted w = Weigh(lin, noise);
+  const Eigen::LLT<Matrix6d> llt(w.JVJ);
+  const Matrix6d L = llt.matrixL();
+  const double log_det_JVJ = 2.0 * L.diagonal().array().log().sum();
+  return -0.5 * (w.log_det_V + log_det_JVJ + w.rVr - w.JVr.dot(llt.solve(w.JVr)));
+}
+
+}  // namespace
+
+EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X) {
+  const Linearisation lin = Linearise(problem, X);
+  // Log-variances, searched within wide bounds round the plain residual variance s0².
+  const double s0 = std::max(1e-300, lin.rr / std::max(1, lin.n - 6));
+  double log_var[3] = {std::log(s0), std::log(s0) - 12.0, std::log(s0) - 12.0};
+  const double low[3] = {std::log(s0) - 16.0, std::log(s0) - 30.0, std::log(s0) - 30.0};
+  const double high[3] = {std::log(s0) + 1.0, std::log(s0) + 8.0, std::log(s0) + 8.0};
+  const auto noise_of = [](const double* v) {
+    return EpipolarNoise{std::exp(0.5 * v[0]), std::exp(0.5 * v[1]), std::exp(0.5 * v[2])};
+  };
+  const auto value = [&](int k, double x) {
+    double v[3] = {log_var[0], log_var[1], log_var[2]};
+    v[k] = x;
+    const double l = RestrictedLogLikelihood(lin, noise_of(v));
+    return std::isfinite(l) ? l : -1e300;
+  };
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int sweep = 0; sweep < 8; ++sweep) {
+    double largest_change = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      double a = low[k], b = high[k];
+      double c = b - golden * (b - a), d = a + golden * (b - a);
+      double fc = value(k, c), fd = value(k, d);
+      while (b - a > 1e-3) {
+        if (fc > fd) {
+          b = d, d = c, fd = fc;
+          c = b - golden * (b - a);
+          fc = value(k, c);
+        } else {
+          a = c, c = d, fc = fd;
+          d = a + golden * (b - a);
+          fd = value(k, d);
+        }
+      }
+      largest_change = std::max(largest_change, std::abs(0.5 * (a + b) - log_var[k]));
+      log_var[k] = 0.5 * (a + b);
+    }
+    if (largest_change < 0.01) break;  // 0.5% in σ
+  }
+  return noise_of(log_var);
+}
+
+EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, const Pose& start,
+                                    const EpipolarNoise& noise) {
+  Pose X = start;
+  Weighted w;
+  Linearisation lin;
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    lin = Linearise(problem, X);
+    w = Weigh(lin, noise);
+    const Vector6d delta = -w.JVJ.ldlt().solve(w.JVr);
+    if (!delta.allFinite()) break;
+    X = detail::ApplyDelta(X, delta.data());
+    if (delta.norm() < 1e-12) break;
+  }
+  lin = Linearise(problem, X);
+  w = Weigh(lin, noise);
+  EpipolarPolish polish;
+  polish.X = X;
+  polish.pairs = lin.n;
+  polish.rms = std::sqrt(lin.rr / lin.n);
+  polish.ray_sigma = noise.ray_sigma;
+  polish.covariance = w.JVJ.inverse();
+  return polish;
+}
+
+RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& problem,
+                                               const Pose& start) {
+  RobotNoisePolish result;
+  result.stations = int(StationIndex(problem).size());
+  result.noise = EstimateEpipolarNoise(problem, start);
+  result.polish = PolishWithRobotNoise(problem, start, result.noise);
+  result.noise = EstimateEpipolarNoise(problem, result.polish.X);
+  result.polish = PolishWithRobotNoise(problem, result.polish.X, result.noise);
+  return result;
+}
+
+}  // namespace hecal::estimation

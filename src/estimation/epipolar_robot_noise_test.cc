@@ -1,0 +1,111 @@
+// The polish with the robot's pose error in the model, against synthetic scenes with a known
+// robot error like a real arm's (0.03°, 0.25 mm per pose; rwhe-kuka2's SOURCE.md): the noise
+// levels it estimates, and the covariance of X over many scenes (NEES against the truth).
+#include "hecal/estimation/epipolar_robot_noise.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "hecal/core/error.h"
+#include "hecal/geometry/se3.h"
+#include "testing/epipolar_scenes.h"
+
+namespace hecal::estimation {
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+// Motions like a hand–eye data set: 10° rotations, 3 cm steps, points 0.6 m away, 0.1 px rays.
+testing::EpipolarSceneSpec ArmLikeSpec() {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 10;
+  spec.pairs = 40;
+  spec.rotation = 10.0 * kDegree;
+  spec.step = 0.03;
+  spec.depth = 0.6;
+  spec.pixel_sigma = 0.1;
+  spec.robot_rotation_sigma = 0.03 * kDegree;
+  spec.robot_translation_sigma = 0.25e-3;
+  return spec;
+}
+
+double Nees(const EpipolarPolish& polish, const Pose& truth) {
+  const Vector6d error = se3::Log(polish.X.inverse() * truth);
+  return error.dot(polish.covariance.inverse() * error);
+}
+
+TEST(PolishWithEstimatedRobotNoise, CovarianceHoldsOverManyScenesWhereTheIndependentOneFails) {
+  const testing::EpipolarSceneSpec spec = ArmLikeSpec();
+  const int trials = 50;
+  double nees_sum = 0.0, plain_nees_sum = 0.0;
+  double rotation_sigma_sum = 0.0, translation_sigma_sum = 0.0, ray_sigma_sum = 0.0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 500 + trial);
+    const EpipolarPolish plain = PolishEpipolar(scene.problem, scene.X);
+    const RobotNoisePolish robot = PolishWithEstimatedRobotNoise(scene.problem, plain.X);
+    EXPECT_EQ(robot.stations, 2 * spec.motions);
+    nees_sum += Nees(robot.polish, scene.X);
+    plain_nees_sum += Nees(plain, scene.X);
+    rotation_sigma_sum += robot.noise.robot_rotation_sigma;
+    translation_sigma_sum += robot.noise.robot_translation_sigma;
+    ray_sigma_sum += robot.noise.ray_sigma;
+  }
+  const double mean_nees = nees_sum / trials;
+  std::printf(
+      "%d scenes: mean NEES %.2f (independent pairs: %.2f); mean estimated robot noise %.4f deg, "
+      "%.3f mm, ray %.3f px\n",
+      trials, mean_nees, plain_nees_sum / trials, rotation_sigma_sum / trials / kDegree,
+      1e3 * translation_sigma_sum / trials, ray_sigma_sum / trials * spec.focal);
+  // The mean of 50 χ²₆ values: standard deviation sqrt(12/50) = 0.49; a band of 4 of them.
+  EXPECT_NEAR(mean_nees, 6.0, 4.0 * std::sqrt(12.0 / trials));
+  // The premise: with independent pairs the covariance is far too small here.
+  EXPECT_GT(plain_nees_sum / trials, 3.0 * 6.0);
+  // The noise levels, on average over the scenes, within 30% of the truth.
+  EXPECT_NEAR(rotation_sigma_sum / trials, spec.robot_rotation_sigma,
+              0.3 * spec.robot_rotation_sigma);
+  EXPECT_NEAR(translation_sigma_sum / trials, spec.robot_translation_sigma,
+              0.3 * spec.robot_translation_sigma);
+  EXPECT_NEAR(ray_sigma_sum / trials, spec.pixel_sigma / spec.focal,
+              0.3 * spec.pixel_sigma / spec.focal);
+}
+
+TEST(PolishWithRobotNoise, WithoutRobotNoiseIsThePlainPolish) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 4;
+  spec.pairs = 30;
+  spec.pixel_sigma = 0.5;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
+  const double sigma = spec.pixel_sigma / spec.focal;
+  const EpipolarPolish plain = PolishEpipolar(scene.problem, scene.X, sigma);
+  const EpipolarPolish gls = PolishWithRobotNoise(scene.problem, scene.X, {sigma, 0.0, 0.0});
+  EXPECT_LT(se3::Log(plain.X.inverse() * gls.X).norm(), 1e-9);
+  EXPECT_LT((plain.covariance - gls.covariance).norm(), 1e-6 * plain.covariance.norm());
+}
+
+TEST(EstimateEpipolarNoise, FindsNoRobotNoiseWhereThereIsNone) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 8;
+  spec.pairs = 40;
+  spec.pixel_sigma = 0.5;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 3);
+  const EpipolarPolish plain = PolishEpipolar(scene.problem, scene.X);
+  const EpipolarNoise noise = EstimateEpipolarNoise(scene.problem, plain.X);
+  const double ray = spec.pixel_sigma / spec.focal;
+  EXPECT_NEAR(noise.ray_sigma, ray, 0.15 * ray);
+  // A robot error of 0.005° (a tenth of the ray noise) or 0.05 mm would show.
+  EXPECT_LT(noise.robot_rotation_sigma, 0.1 * ray);
+  EXPECT_LT(noise.robot_translation_sigma, 5e-5);
+}
+
+TEST(PolishWithRobotNoise, RefusesTooFewPairs) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 1;
+  spec.pairs = 6;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 2);
+  EXPECT_THROW(PolishWithEstimatedRobotNoise(scene.problem, scene.X), DegenerateError);
+}
+
+}  // namespace
+}  // namespace hecal::estimation
