@@ -8,14 +8,12 @@
 //
 //   --threads                     0 … 256 (0 = every core)
 //   --seed                        0 … 2^64 − 1, a whole decimal number (no sign, no exponent)
-//   --covariance-samples          2 … 100000 (calibrate, simulate)
-//   simulate/bench --stations     3 … 100000;  simulate --trials 1 … 100000, --outliers
-//                                 0 … 100000;
-//   simulate                      at most 10000 settings (the product of the sweeps) and 10^6
-//                                 trial rows (settings × trials × methods)
+//   --covariance-samples          2 … 100000 (calibrate)
+//   bench --stations              3 … 100000
+//   simulate                      study::SimulateOptions::IsValid (study/simulate.h)
 //   bench --datasets              1 … 10000, stations × data sets ≤ 10^6; --min-time 0 … 3600 s
 //   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma,
-//                                 simulate/bench --sigma)
+//                                 bench --sigma)
 //   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px;
 //                                 contour study --pixel-noise 0 … 100 px
 //   contour study                 --steps 1 … 10000, --samples 2 … 1000000, steps × samples
@@ -37,9 +35,6 @@ constexpr int kMaxThreads = 256;
 constexpr int kMaxCovarianceSamples = 100000;
 constexpr int kMinSimulatedStations = 3;
 constexpr int kMaxSimulatedStations = 100000;
-constexpr int kMaxTrials = 100000;
-constexpr std::int64_t kMaxSettings = 10000;
-constexpr std::int64_t kMaxTrialRows = 1000000;
 constexpr int kMaxDatasets = 10000;
 constexpr std::int64_t kMaxBenchPoses = 1000000;  // stations × data sets
 constexpr double kMaxMinTime = 3600.0;            // seconds

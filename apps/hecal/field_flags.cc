@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"CalibrateOptions.robust_loss", "--robust"},
@@ -25,6 +25,17 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 35> kFieldFl
     {"Setting.stations", "--stations"},
     {"Setting.gross_outliers", "--outliers"},
     {"Setting.rotation_sigma", "--sigma"},
+    {"SimulateOptions.setups", "--setup"},
+    {"SimulateOptions.stations", "--stations"},
+    {"SimulateOptions.noise_on", "--noise-on"},
+    {"SimulateOptions.noise", "--noise"},
+    {"SimulateOptions.sigmas", "--sigma"},
+    {"SimulateOptions.outliers", "--outliers"},
+    {"SimulateOptions.robot_scales", "--robot-scale"},
+    {"SimulateOptions.methods", "--method"},
+    {"SimulateOptions.trials", "--trials"},
+    {"SimulateOptions.threads", "--threads"},
+    {"SimulateOptions.covariance_samples", "--covariance-samples"},
     {"ImportOptions.format", "--format"},
     {"ImportOptions.units", "--units"},
     {"ImportOptions.setup", "--setup"},

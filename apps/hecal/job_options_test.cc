@@ -1,0 +1,68 @@
+// The options structs of the library jobs, driven through `hecal`: for every field an
+// options struct's IsValid checks (study::SimulateOptions, ...), a bad value given on the command
+// line exits 2 with exactly one line `hecal: --flag: problem (fix: ...)` naming the flag that set
+// the field (field_flags.h), prints nothing on stdout and writes no output file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_test_util.h"
+
+namespace hecal::cli {
+namespace {
+
+using cli_test::Hecal;
+using cli_test::Outcome;
+
+class JobOptions : public cli_test::CliTest {
+ protected:
+  // Exit 2, one line starting with `flag`, holding `problem`; no stdout, no `output` file.
+  void ExpectRefused(const std::vector<std::string>& args, const std::string& flag,
+                     const std::string& problem, const std::string& output) const {
+    const Outcome run = Hecal(args);
+    EXPECT_EQ(run.code, 2) << run.err;
+    EXPECT_EQ(run.err.rfind("hecal: " + flag + ": ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(problem), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_FALSE(std::filesystem::exists(Path(output))) << output;
+  }
+};
+
+// study::SimulateOptions::IsValid, field by field.
+TEST_F(JobOptions, SimulateOptionsNameTheFlag) {
+  const auto simulate = [&](std::vector<std::string> extra) {
+    // Every case below is refused before the study runs.
+    std::vector<std::string> args = {"simulate", "--method", "andreff", "--output",
+                                     Path("trials.csv")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::string out = "trials.csv";
+  ExpectRefused(simulate({"--stations", "5,2"}), "--stations", "'2' is outside the range 3 to",
+                out);
+  ExpectRefused(simulate({"--outliers", "-1"}), "--outliers", "'-1' is outside the range 0 to",
+                out);
+  ExpectRefused(simulate({"--sigma", "0.1/200"}), "--sigma", "0 to 180 deg", out);
+  ExpectRefused(simulate({"--robot-scale", "0"}), "--robot-scale", "above 0", out);
+  ExpectRefused(simulate({"--sigma", "100/1", "--robot-scale", "20"}), "--robot-scale",
+                "must stay within 1000 mm", out);
+  ExpectRefused(simulate({"--trials", "0"}), "--trials", "from 1 to 100000, got 0", out);
+  ExpectRefused(simulate({"--threads", "300"}), "--threads", "from 0 to 256, got 300", out);
+  ExpectRefused(simulate({"--covariance-samples", "1"}), "--covariance-samples",
+                "from 2 to 100000, got 1", out);
+  std::string many = "3";
+  for (int n = 4; n < 10010; ++n) {
+    many += ',';
+    many += std::to_string(n);
+  }
+  ExpectRefused(simulate({"--stations", many}), "--stations", "settings, more than 10000", out);
+  ExpectRefused(simulate({"--trials", "100000", "--stations", "5,6,7,8,9,10,11,12,13,14,15"}),
+                "--trials", "trial rows, more than 1000000", out);
+}
+
+}  // namespace
+}  // namespace hecal::cli
