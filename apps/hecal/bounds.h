@@ -9,11 +9,9 @@
 //   --threads                     0 … 256 (0 = every core)
 //   --seed                        0 … 2^64 − 1, a whole decimal number (no sign, no exponent)
 //   --covariance-samples          2 … 100000 (calibrate)
-//   bench --stations              3 … 100000
-//   simulate                      study::SimulateOptions::IsValid (study/simulate.h)
-//   bench --datasets              1 … 10000, stations × data sets ≤ 10^6; --min-time 0 … 3600 s
-//   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma,
-//                                 bench --sigma)
+//   simulate, bench               study::SimulateOptions::IsValid, study::BenchOptions::IsValid
+//                                 (study/simulate.h, study/bench.h)
+//   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma)
 //   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px;
 //                                 contour study --pixel-noise 0 … 100 px
 //   contour study                 --steps 1 … 10000, --samples 2 … 1000000, steps × samples
@@ -33,11 +31,6 @@ namespace hecal::cli {
 
 constexpr int kMaxThreads = 256;
 constexpr int kMaxCovarianceSamples = 100000;
-constexpr int kMinSimulatedStations = 3;
-constexpr int kMaxSimulatedStations = 100000;
-constexpr int kMaxDatasets = 10000;
-constexpr std::int64_t kMaxBenchPoses = 1000000;  // stations × data sets
-constexpr double kMaxMinTime = 3600.0;            // seconds
 constexpr double kMaxSigmaMm = 1000.0;
 constexpr double kMaxSigmaDeg = 180.0;
 constexpr double kMaxPixelSigma = 100.0;

@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 51> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"CalibrateOptions.robust_loss", "--robust"},
@@ -36,6 +36,11 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kFieldFl
     {"SimulateOptions.trials", "--trials"},
     {"SimulateOptions.threads", "--threads"},
     {"SimulateOptions.covariance_samples", "--covariance-samples"},
+    {"BenchOptions.stations", "--stations"},
+    {"BenchOptions.methods", "--method"},
+    {"BenchOptions.datasets", "--datasets"},
+    {"BenchOptions.min_time", "--min-time"},
+    {"BenchOptions.sigma", "--sigma"},
     {"ImportOptions.format", "--format"},
     {"ImportOptions.units", "--units"},
     {"ImportOptions.setup", "--setup"},

@@ -64,5 +64,17 @@ TEST_F(JobOptions, SimulateOptionsNameTheFlag) {
                 "--trials", "trial rows, more than 1000000", out);
 }
 
+// study::BenchOptions::IsValid, field by field (bench writes no file: stdout stays empty).
+TEST_F(JobOptions, BenchOptionsNameTheFlag) {
+  const std::string none = "no-such-output";
+  ExpectRefused({"bench", "--stations", "10,2"}, "--stations", "'2' is outside the range 3 to",
+                none);
+  ExpectRefused({"bench", "--datasets", "0"}, "--datasets", "from 1 to 10000, got 0", none);
+  ExpectRefused({"bench", "--stations", "100000", "--datasets", "100"}, "--datasets",
+                "poses, the most hecal bench generates", none);
+  ExpectRefused({"bench", "--min-time", "-1"}, "--min-time", "must be 0 to 3600 seconds", none);
+  ExpectRefused({"bench", "--sigma", "2000"}, "--sigma", "0 to 1000 mm", none);
+}
+
 }  // namespace
 }  // namespace hecal::cli

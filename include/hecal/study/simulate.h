@@ -29,12 +29,6 @@
 
 namespace hecal::study {
 
-// A noise level per component: millimetres on each translation, degrees on each rotation.
-struct NoiseLevel {
-  double mm = 0.0;
-  double deg = 0.0;
-};
-
 // Every method, in handeye::AllMethods() order (`--method all`).
 std::vector<handeye::Method> EveryMethod();
 
