@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 51> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 54> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"CalibrateOptions.robust_loss", "--robust"},
@@ -41,6 +41,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 51> kFieldFl
     {"BenchOptions.datasets", "--datasets"},
     {"BenchOptions.min_time", "--min-time"},
     {"BenchOptions.sigma", "--sigma"},
+    {"PointPoseOptions.focal", "--focal"},
+    {"PointPoseOptions.principal_point", "--principal-point"},
+    {"PointPoseOptions.pixel_sigma", "--pixel-sigma"},
     {"ImportOptions.format", "--format"},
     {"ImportOptions.units", "--units"},
     {"ImportOptions.setup", "--setup"},

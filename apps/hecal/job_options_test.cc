@@ -76,5 +76,27 @@ TEST_F(JobOptions, BenchOptionsNameTheFlag) {
   ExpectRefused({"bench", "--sigma", "2000"}, "--sigma", "0 to 1000 mm", none);
 }
 
+// report::PointPoseOptions::IsValid (hecal pose), field by field; checked before any file is read.
+TEST_F(JobOptions, PointPoseOptionsNameTheFlag) {
+  const auto pose = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"pose",           "--points",        Path("object.csv"),
+                                     "--image-points", Path("image.csv"), "--output",
+                                     Path("pose.json")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::string out = "pose.json";
+  ExpectRefused(pose({}), "--focal", "give exactly one of focal and intrinsics", out);
+  ExpectRefused(pose({"--focal", "800", "--intrinsics", Path("camera.yaml")}), "--focal",
+                "give exactly one", out);
+  ExpectRefused(pose({"--focal", "-3"}), "--focal", "expected a positive number, got '-3'", out);
+  ExpectRefused(pose({"--intrinsics", Path("camera.yaml"), "--principal-point", "1,2"}),
+                "--principal-point", "comes from the camera file", out);
+  ExpectRefused(pose({"--focal", "800", "--pixel-sigma", "0"}), "--pixel-sigma",
+                "must be above 0 to 100 px, got 0", out);
+  ExpectRefused(pose({"--focal", "800", "--pixel-sigma", "1e9"}), "--pixel-sigma",
+                "must be above 0 to 100 px", out);
+}
+
 }  // namespace
 }  // namespace hecal::cli
