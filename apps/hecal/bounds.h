@@ -9,13 +9,12 @@
 //   --threads                     0 … 256 (0 = every core)
 //   --seed                        0 … 2^64 − 1, a whole decimal number (no sign, no exponent)
 //   --covariance-samples          2 … 100000 (calibrate)
-//   simulate, bench               study::SimulateOptions::IsValid, study::BenchOptions::IsValid
-//                                 (study/simulate.h, study/bench.h)
+//   simulate, bench, pose         study::SimulateOptions::IsValid, study::BenchOptions::IsValid,
+//                                 report::PointPoseOptions::IsValid (study/simulate.h,
+//                                 study/bench.h, report/point_pose.h)
 //   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma)
-//   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px;
-//                                 contour study --pixel-noise 0 … 100 px
-//   contour study                 --steps 1 … 10000, --samples 2 … 1000000, steps × samples
-//                                 ≤ 10^8
+//   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px
+//   contour study                 contour::ContourStudyOptions::IsValid (contour/contour_study.h)
 //   contour render                --frames 1 … 10000, --size 8 … 20000 px a side, at most
 //                                 10^8 pixels a frame and 2·10^9 over the sequence,
 //                                 --noise 0 … 255 grey levels
@@ -34,9 +33,6 @@ constexpr int kMaxCovarianceSamples = 100000;
 constexpr double kMaxSigmaMm = 1000.0;
 constexpr double kMaxSigmaDeg = 180.0;
 constexpr double kMaxPixelSigma = 100.0;
-constexpr int kMaxSteps = 10000;
-constexpr int kMaxContourSamples = 1000000;
-constexpr std::int64_t kMaxContourSolves = 100000000;  // steps × samples
 constexpr int kMaxFrames = 10000;
 constexpr int kMaxRenderSide = 20000;
 constexpr std::int64_t kMaxSequencePixels = 2000000000;

@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 54> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 55> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"CalibrateOptions.robust_loss", "--robust"},
@@ -60,6 +60,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 54> kFieldFl
     {"ContourStudyOptions.samples", "--samples"},
     {"ContourStudyOptions.threads", "--threads"},
     {"ContourStudyOptions.target", "--contour"},
+    {"ContourStudyOptions.unscented", "--ut-w0"},
     {"UnscentedParameters", "--ut-w0"},
     {"RenderOptions.blur_sigma", "--blur"},
     {"RenderOptions.noise_sigma", "--noise"},

@@ -98,5 +98,35 @@ TEST_F(JobOptions, PointPoseOptionsNameTheFlag) {
                 "must be above 0 to 100 px", out);
 }
 
+// contour::ContourStudyOptions::IsValid (hecal contour study), field by field.
+TEST_F(JobOptions, ContourStudyOptionsNameTheFlag) {
+  const auto study = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"contour", "study", "--motion", "tx",
+                                     "--from",  "0",     "--output", Path("study.csv")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::vector<std::string> range = {"--to", "100", "--steps", "3"};
+  const auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), range.begin(), range.end());
+    return study(extra);
+  };
+  const std::string out = "study.csv";
+  ExpectRefused(with({"--focal", "0"}), "--focal", "must be a positive number", out);
+  ExpectRefused(with({"--z0", "-5"}), "--z0", "must be a positive number", out);
+  ExpectRefused(with({"--pixel-size", "0"}), "--pixel-size", "must be a positive number", out);
+  ExpectRefused(with({"--pixel-noise", "101"}), "--pixel-noise", "must be 0 to 100 px", out);
+  ExpectRefused(study({"--to", "100", "--steps", "1"}), "--steps", "at least 2 steps", out);
+  ExpectRefused(study({"--to", "100", "--steps", "20000"}), "--steps", "from 1 to 10000", out);
+  ExpectRefused(with({"--samples", "1"}), "--samples", "from 2 to 1000000, got 1", out);
+  ExpectRefused(study({"--to", "100", "--steps", "10000", "--samples", "20000"}), "--samples",
+                "Monte Carlo solves", out);
+  ExpectRefused(with({"--threads", "300"}), "--threads", "from 0 to 256, got 300", out);
+  ExpectRefused({"contour", "study", "--motion", "tz", "--from", "0", "--to", "-6000", "--steps",
+                 "3", "--output", Path("study.csv")},
+                "--to", "Tz must stay above", out);
+  ExpectRefused(with({"--ut-w0", "1.5"}), "--ut-w0", "", out);
+}
+
 }  // namespace
 }  // namespace hecal::cli
