@@ -12,18 +12,13 @@
 //
 //   --threads                     0 … 256 (0 = every core)
 //   --seed                        0 … 2^64 − 1, a whole decimal number (no sign, no exponent)
-//   --covariance-samples          2 … 100000 (calibrate, simulate)
-//   simulate/bench --stations     3 … 100000;  simulate --trials 1 … 100000, --outliers
-//                                 0 … 100000;
-//   simulate                      at most 10000 settings (the product of the sweeps) and 10^6
-//                                 trial rows (settings × trials × methods)
-//   bench --datasets              1 … 10000, stations × data sets ≤ 10^6; --min-time 0 … 3600 s
-//   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma,
-//                                 simulate/bench --sigma)
-//   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px;
-//                                 contour study --pixel-noise 0 … 100 px
-//   contour study                 --steps 1 … 10000, --samples 2 … 1000000, steps × samples
-//                                 ≤ 10^8
+//   --covariance-samples          2 … 100000 (calibrate)
+//   simulate, bench, pose         study::SimulateOptions::IsValid, study::BenchOptions::IsValid,
+//                                 report::PointPoseOptions::IsValid (study/simulate.h,
+//                                 study/bench.h, report/point_pose.h)
+//   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma)
+//   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px
+//   contour study                 contour::ContourStudyOptions::IsValid (contour/contour_study.h)
 //   contour render                --frames 1 … 10000, --size 8 … 20000 px a side, at most
 //                                 10^8 pixels a frame and 2·10^9 over the sequence,
 //                                 --noise 0 … 255 grey levels
@@ -44,19 +39,8 @@ namespace hecal::cli {
 
 using estimation::kMaxCovarianceSamples;
 using estimation::kMaxPixelSigma;
-constexpr int kMinSimulatedStations = 3;
-constexpr int kMaxSimulatedStations = 100000;
-constexpr int kMaxTrials = 100000;
-constexpr std::int64_t kMaxSettings = 10000;
-constexpr std::int64_t kMaxTrialRows = 1000000;
-constexpr int kMaxDatasets = 10000;
-constexpr std::int64_t kMaxBenchPoses = 1000000;  // stations × data sets
-constexpr double kMaxMinTime = 3600.0;            // seconds
 constexpr double kMaxSigmaMm = estimation::kMaxSigmaTranslation * 1000.0;
 constexpr double kMaxSigmaDeg = 180.0;  // estimation::kMaxSigmaRotation in degrees
-constexpr int kMaxSteps = 10000;
-constexpr int kMaxContourSamples = 1000000;
-constexpr std::int64_t kMaxContourSolves = 100000000;  // steps × samples
 constexpr int kMaxFrames = 10000;
 constexpr int kMaxRenderSide = 20000;
 constexpr std::int64_t kMaxSequencePixels = 2000000000;

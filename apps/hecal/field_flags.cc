@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 44> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 64> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
@@ -29,6 +29,25 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 44> kFieldFl
     {"Setting.stations", "--stations"},
     {"Setting.gross_outliers", "--outliers"},
     {"Setting.rotation_sigma", "--sigma"},
+    {"SimulateOptions.setups", "--setup"},
+    {"SimulateOptions.stations", "--stations"},
+    {"SimulateOptions.noise_on", "--noise-on"},
+    {"SimulateOptions.noise", "--noise"},
+    {"SimulateOptions.sigmas", "--sigma"},
+    {"SimulateOptions.outliers", "--outliers"},
+    {"SimulateOptions.robot_scales", "--robot-scale"},
+    {"SimulateOptions.methods", "--method"},
+    {"SimulateOptions.trials", "--trials"},
+    {"SimulateOptions.threads", "--threads"},
+    {"SimulateOptions.covariance_samples", "--covariance-samples"},
+    {"BenchOptions.stations", "--stations"},
+    {"BenchOptions.methods", "--method"},
+    {"BenchOptions.datasets", "--datasets"},
+    {"BenchOptions.min_time", "--min-time"},
+    {"BenchOptions.sigma", "--sigma"},
+    {"PointPoseOptions.focal", "--focal"},
+    {"PointPoseOptions.principal_point", "--principal-point"},
+    {"PointPoseOptions.pixel_sigma", "--pixel-sigma"},
     {"ImportOptions.format", "--format"},
     {"ImportOptions.units", "--units"},
     {"ImportOptions.setup", "--setup"},
@@ -45,6 +64,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 44> kFieldFl
     {"ContourStudyOptions.samples", "--samples"},
     {"ContourStudyOptions.threads", "--threads"},
     {"ContourStudyOptions.target", "--contour"},
+    {"ContourStudyOptions.unscented", "--ut-w0"},
     {"UnscentedParameters", "--ut-w0"},
     {"RenderOptions.blur_sigma", "--blur"},
     {"RenderOptions.noise_sigma", "--noise"},

@@ -28,30 +28,12 @@
 //                   "pixel_sigma", "pixel_sigma_source": "given"|"estimated"}   (refined only)
 //    "reprojection_rms_px", "points": [{"id", "residual_px": [du, dv]}, ...], "warnings": [...]}
 //   Warnings (e.g. an unreliable linear-pose estimate, pose_method.h) also go to stderr.
+// The flags bind into report::PointPoseOptions (report/point_pose.h: reading, pairing, the
+//   camera and the solve); its IsValid names fields, mapped to flags here (field_flags.h).
 // Errors: InputError with file:line for bad files (exit 2), DegenerateError when the method cannot
 //   determine the pose from these points (exit 2, with the methods that can); nothing is written.
 #pragma once
 
-#include <string>
-
 #include "cli.h"
 
-namespace hecal::cli {
-
-// Flags as given (numbers are parsed and checked by RunPose, so errors name the flag).
-struct PoseCommandOptions {
-  std::string points;
-  std::string image_points;
-  std::string intrinsics;
-  std::string focal;            // px; "" = not given
-  std::string principal_point;  // "CX,CY" (px) with --focal; "" = 0,0
-  std::string method = "linear";
-  std::string pixel_sigma;  // px; "" = estimate from the residuals
-  std::string units = "m";  // object.csv columns without a suffix
-  std::string output;
-};
-
-// Runs the command; throws hecal::InputError / DegenerateError for bad flags or data.
-void RunPose(const PoseCommandOptions& options, const Io& io);
-
-}  // namespace hecal::cli
+// RegisterPoseCommand (cli.h) adds the subcommand.

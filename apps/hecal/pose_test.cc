@@ -247,7 +247,7 @@ TEST_F(PoseCommand, BadInputExitsTwoWithFileAndLineAndWritesNothing) {
       {"id,x,y,w\n1,2,3,4\n", intrinsics, "object.csv:1: unknown column 'w'"},
       {"id,x_mm,y_m,z_mm\n", intrinsics, "object.csv:1: the position columns have different"},
       {"# only a comment\n", intrinsics, "no object points in the file"},
-      {good_object, {}, "give exactly one of --focal and --intrinsics"},
+      {good_object, {}, "--focal: give exactly one of focal and intrinsics"},
       {good_object, {"--focal", "-3"}, "--focal: expected a positive number"},
       {good_object, {"--focal", "1000", "--principal-point", "3"}, "expected two numbers"},
       {good_object,
@@ -255,7 +255,7 @@ TEST_F(PoseCommand, BadInputExitsTwoWithFileAndLineAndWritesNothing) {
        "unknown method 'nope'"},
       {good_object,
        {"--intrinsics", Path("camera.yaml"), "--pixel-sigma", "0"},
-       "--pixel-sigma: expected a positive number"},
+       "--pixel-sigma: must be above 0 to 100 px"},
       {good_object, {"--intrinsics", Path("camera.yaml"), "--units", "ft"}, "unknown unit 'ft'"},
   };
   for (const Case& c : cases) {

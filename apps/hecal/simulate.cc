@@ -3,16 +3,18 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "bounds.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
-#include "hecal/study/study.h"
+#include "hecal/study/simulate.h"
 #include "hecal/study/study_csv.h"
 #include "list_flags.h"
 
@@ -41,10 +43,11 @@ Bound: first-order (Cramer-Rao-type) RMSE of the ml estimate at the truth, RMS o
   stations rejected, and the RMSE over the clean reference's RMSE.
 Same --seed, same CSV files whatever --threads.)";
 
-std::vector<SigmaLevel> ParseSigmaLevels(const std::string& text) {
-  std::vector<SigmaLevel> levels;
+std::vector<study::NoiseLevel> ParseSigmaLevels(const std::string& text) {
+  std::vector<study::NoiseLevel> levels;
   for (const std::string& item : SplitList("--sigma", text)) {
-    levels.push_back(ParseSigmaLevel("--sigma", item));
+    const SigmaLevel level = ParseSigmaLevel("--sigma", item);
+    levels.push_back({level.mm, level.deg});
   }
   return levels;
 }
@@ -173,202 +176,169 @@ void PrintTable(const study::StudyResult& result, std::ostream& out) {
   }
 }
 
-}  // namespace
-
-void RunSimulate(const SimulateFlags& flags, const Io& io) {
-  study::StudyOptions options;
-  std::vector<handeye::Setup> setups;
-  for (const std::string& item : SplitList("--setup", flags.setup)) {
-    const std::optional<handeye::Setup> setup = handeye::ParseSetup(item);
-    if (!setup) {
-      throw InputError("--setup", 0, "unknown setup '" + item + "'",
-                       "use eye-in-hand or eye-to-hand (or both, comma separated)");
-    }
-    setups.push_back(*setup);
+// One item of --setup, --noise-on, --noise: `parse` or an InputError listing `choices`.
+template <typename T, typename Parse>
+std::vector<T> ParseNames(const std::string& flag, const std::string& text, Parse parse,
+                          const std::string& what, const std::string& choices) {
+  std::vector<T> values;
+  for (const std::string& item : SplitList(flag, text)) {
+    const std::optional<T> value = parse(item);
+    if (!value) throw InputError(flag, 0, "unknown " + what + " '" + item + "'", "use " + choices);
+    values.push_back(*value);
   }
-  io::CheckOutputs({{"--output", flags.output}, {"--summary", flags.summary}}, {});
-  const std::vector<int> stations =
-      ParseIntList("--stations", flags.stations, kMinSimulatedStations, kMaxSimulatedStations);
-  const std::vector<int> outliers =
-      ParseIntList("--outliers", flags.outliers, 0, kMaxSimulatedStations);
-  std::vector<study::NoiseOn> noise_on;
-  for (const std::string& item : SplitList("--noise-on", flags.noise_on)) {
-    const std::optional<study::NoiseOn> value = study::ParseNoiseOn(item);
-    if (!value) {
-      throw InputError("--noise-on", 0, "unknown value '" + item + "'",
-                       "use robot, camera or both");
-    }
-    noise_on.push_back(*value);
-  }
-  std::vector<sim::NoiseModel::Kind> kinds;
-  for (const std::string& item : SplitList("--noise", flags.noise)) {
-    const std::optional<sim::NoiseModel::Kind> kind = sim::ParseNoiseKind(item);
-    if (!kind) {
-      throw InputError("--noise", 0, "unknown noise kind '" + item + "'",
-                       "use gaussian, uniform, systematic, student-t3 or pnp");
-    }
-    kinds.push_back(*kind);
-  }
-  const std::vector<SigmaLevel> sigmas = ParseSigmaLevels(flags.sigma);
-  for (const SigmaLevel& sigma : sigmas) CheckNoiseLevel("--sigma", sigma.mm, sigma.deg);
-  std::vector<double> robot_scales;
-  for (const std::string& item : SplitList("--robot-scale", flags.robot_scale)) {
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    if (end == item.c_str() || *end != '\0' || !(value > 0.0) || !(value <= 1000.0)) {
-      throw InputError("--robot-scale", 0,
-                       "'" + item + "' is not a number above 0 and at most 1000",
-                       "e.g. --robot-scale 1,5");
-    }
-    robot_scales.push_back(value);
-  }
-  for (const SigmaLevel& sigma : sigmas) {
-    for (double scale : robot_scales) {
-      if (sigma.mm * scale > kMaxSigmaMm || sigma.deg * scale > kMaxSigmaDeg) {
-        throw InputError("--robot-scale", 0,
-                         "the robot noise (--sigma times --robot-scale) must stay within " +
-                             std::to_string(static_cast<int>(kMaxSigmaMm)) + " mm and " +
-                             std::to_string(static_cast<int>(kMaxSigmaDeg)) + " deg per axis",
-                         "give a smaller --robot-scale or --sigma");
-      }
-    }
-  }
-  options.methods = ParseMethodList("--method", flags.method);
-  const int trials = ParseInt("--trials", flags.trials, 1, kMaxTrials,
-                              "the number of data sets per setting (e.g. 200)");
-  const int threads = ParseThreads("--threads", flags.threads);
-  const std::uint64_t seed = ParseSeed("--seed", flags.seed);
-  const std::int64_t settings =
-      std::int64_t{1} * static_cast<std::int64_t>(setups.size()) *
-      static_cast<std::int64_t>(noise_on.size()) * static_cast<std::int64_t>(kinds.size()) *
-      static_cast<std::int64_t>(sigmas.size()) * static_cast<std::int64_t>(stations.size()) *
-      static_cast<std::int64_t>(outliers.size()) * static_cast<std::int64_t>(robot_scales.size());
-  if (settings > kMaxSettings) {
-    throw InputError("--stations", 0,
-                     "the sweeps make " + std::to_string(settings) + " settings, more than " +
-                         std::to_string(kMaxSettings),
-                     "sweep fewer values of --setup, --noise-on, --noise, --sigma, --stations, "
-                     "--outliers or --robot-scale");
-  }
-  const std::int64_t rows = settings * trials * static_cast<std::int64_t>(options.methods.size());
-  if (rows > kMaxTrialRows) {
-    throw InputError("--trials", 0,
-                     std::to_string(settings) + " settings x " + std::to_string(trials) +
-                         " trials x " + std::to_string(options.methods.size()) + " methods make " +
-                         std::to_string(rows) + " trial rows, more than " +
-                         std::to_string(kMaxTrialRows),
-                     "give fewer --trials, methods or swept values");
-  }
-  if (flags.covariance != "default") {
-    const auto covariance = estimation::ParseCovarianceMethod(flags.covariance);
-    if (!covariance) {
-      throw InputError("--covariance", 0, "unknown covariance method '" + flags.covariance + "'",
-                       "use none, default, linear, unscented or montecarlo");
-    }
-    options.covariance.method = *covariance;
-  } else {
-    options.covariance.method = std::nullopt;
-  }
-  options.covariance.samples =
-      ParseInt("--covariance-samples", flags.covariance_samples, 2, kMaxCovarianceSamples,
-               "the number of Monte Carlo samples (e.g. 1000)");
-  options.covariance.seed = seed;
-  options.trials = trials;
-  options.threads = threads;
-  options.seed = seed;
-  options.reject_outliers = flags.reject_outliers;
-  options.estimate_noise = flags.estimate_noise;
-  for (double robot_scale : robot_scales) {
-    for (handeye::Setup setup : setups) {
-      for (study::NoiseOn on : noise_on) {
-        for (sim::NoiseModel::Kind kind : kinds) {
-          for (const SigmaLevel& sigma : sigmas) {
-            for (int n : stations) {
-              for (int k : outliers) {
-                study::Setting setting;
-                setting.setup = setup;
-                setting.stations = n;
-                setting.noise_on = on;
-                setting.noise_kind = kind;
-                setting.translation_sigma = sigma.mm * 1e-3;
-                setting.rotation_sigma = sigma.deg / kDeg;
-                setting.gross_outliers = k;
-                setting.robot_scale = robot_scale;
-                options.settings.push_back(setting);
-              }
-            }
-          }
-        }
-      }
-    }
-  }
-
-  const study::StudyResult result = study::RunStudy(options);
-  std::vector<io::OutputFile> outputs;
-  if (!flags.output.empty())
-    outputs.push_back({"--output", flags.output, study::TrialsCsv(result)});
-  if (!flags.summary.empty()) {
-    outputs.push_back({"--summary", flags.summary, study::SummaryCsv(result)});
-  }
-  io::WriteFilesAtomically(outputs);
-  io.out << "hecal simulate: seed " << seed << "\n";
-  PrintTable(result, io.out);
-  if (!flags.output.empty()) io.out << "hecal: wrote per-trial errors to " << flags.output << "\n";
-  if (!flags.summary.empty()) io.out << "hecal: wrote the summary to " << flags.summary << "\n";
+  return values;
 }
 
+std::vector<double> ParseNumbers(const std::string& flag, const std::string& text) {
+  std::vector<double> values;
+  for (const std::string& item : SplitList(flag, text)) {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0') {
+      throw InputError(flag, 0, "'" + item + "' is not a number", "e.g. " + flag + " 1,5");
+    }
+    values.push_back(value);
+  }
+  return values;
+}
+
+struct SimulateCommand {
+  study::SimulateOptions options;
+  std::string output;
+  std::string summary;
+};
+
+void RunSimulate(const SimulateCommand& command, const Io& io) {
+  std::string why;
+  if (!command.options.IsValid(&why)) throw OptionsError(why);
+  io::CheckOutputs({{"--output", command.output}, {"--summary", command.summary}}, {});
+  const study::StudyResult result = study::Simulate(command.options);
+  std::vector<io::OutputFile> outputs;
+  if (!command.output.empty())
+    outputs.push_back({"--output", command.output, study::TrialsCsv(result)});
+  if (!command.summary.empty()) {
+    outputs.push_back({"--summary", command.summary, study::SummaryCsv(result)});
+  }
+  io::WriteFilesAtomically(outputs);
+  io.out << "hecal simulate: seed " << command.options.seed << "\n";
+  PrintTable(result, io.out);
+  if (!command.output.empty()) {
+    io.out << "hecal: wrote per-trial errors to " << command.output << "\n";
+  }
+  if (!command.summary.empty()) {
+    io.out << "hecal: wrote the summary to " << command.summary << "\n";
+  }
+}
+
+}  // namespace
+
 void RegisterSimulateCommand(CLI::App& app, const Io& io) {
-  auto flags = std::make_shared<SimulateFlags>();
+  auto command = std::make_shared<SimulateCommand>();
+  study::SimulateOptions& o = command->options;
   CLI::App* simulate = app.add_subcommand(
       "simulate", "The thesis study: every method on simulated data, errors and summaries");
-  simulate->add_option("--setup", flags->setup, "eye-in-hand | eye-to-hand (list sweeps)")
+  simulate
+      ->add_option_function<std::string>(
+          "--setup",
+          [&o](const std::string& text) {
+            o.setups = ParseNames<handeye::Setup>("--setup", text, handeye::ParseSetup, "setup",
+                                                  "eye-in-hand or eye-to-hand (or both, comma "
+                                                  "separated)");
+          },
+          "eye-in-hand | eye-to-hand (list sweeps)")
+      ->default_str("eye-in-hand");
+  simulate
+      ->add_option_function<std::string>(
+          "--stations",
+          [&o](const std::string& text) {
+            o.stations = ParseIntList("--stations", text, std::numeric_limits<int>::min(),
+                                      std::numeric_limits<int>::max());
+          },
+          "Stations per data set (list sweeps, 3 to 100000)")
+      ->default_str("3,5,10,15,20");
+  simulate->add_option("--trials", o.trials, "Random data sets per setting (1 to 100000)")
       ->capture_default_str();
   simulate
-      ->add_option("--stations", flags->stations,
-                   "Stations per data set (list sweeps, 3 to 100000)")
-      ->capture_default_str();
-  simulate->add_option("--trials", flags->trials, "Random data sets per setting (1 to 100000)")
-      ->capture_default_str();
-  simulate->add_option("--noise-on", flags->noise_on, "robot | camera | both (list sweeps)")
+      ->add_option_function<std::string>(
+          "--noise-on",
+          [&o](const std::string& text) {
+            o.noise_on = ParseNames<study::NoiseOn>("--noise-on", text, study::ParseNoiseOn,
+                                                    "value", "robot, camera or both");
+          },
+          "robot | camera | both (list sweeps)")
+      ->default_str("both");
+  simulate
+      ->add_option_function<std::string>(
+          "--noise",
+          [&o](const std::string& text) {
+            o.noise = ParseNames<sim::NoiseModel::Kind>(
+                "--noise", text, sim::ParseNoiseKind, "noise kind",
+                "gaussian, uniform, systematic, student-t3 or pnp");
+          },
+          "gaussian | uniform | systematic | student-t3 | pnp (camera) (list sweeps)")
+      ->default_str("gaussian");
+  simulate
+      ->add_option_function<std::string>(
+          "--sigma", [&o](const std::string& text) { o.sigmas = ParseSigmaLevels(text); },
+          "Noise levels: n (= n mm and n deg per component) or MM/DEG (list sweeps)")
+      ->default_str("0,0.3,1");
+  simulate
+      ->add_option_function<std::string>(
+          "--method",
+          [&o](const std::string& text) { o.methods = ParseMethodList("--method", text); },
+          "Method name(s), comma separated, or all")
+      ->default_str("all");
+  simulate
+      ->add_option_function<std::string>(
+          "--seed", [&o](const std::string& text) { o.seed = ParseSeed("--seed", text); },
+          "Random seed (0 to 2^64-1)")
+      ->default_str("1");
+  simulate->add_option("--threads", o.threads, "Worker threads, 0 to 256 (0 = every core)")
       ->capture_default_str();
   simulate
-      ->add_option("--noise", flags->noise,
-                   "gaussian | uniform | systematic | student-t3 | pnp (camera) (list sweeps)")
-      ->capture_default_str();
+      ->add_option_function<std::string>(
+          "--covariance",
+          [&o](const std::string& text) {
+            if (text == "default") {
+              o.covariance = std::nullopt;
+              return;
+            }
+            o.covariance = estimation::ParseCovarianceMethod(text);
+            if (!o.covariance) {
+              throw InputError("--covariance", 0, "unknown covariance method '" + text + "'",
+                               "use none, default, linear, unscented or montecarlo");
+            }
+          },
+          "Predict X's covariance per trial and report its consistency: none | default "
+          "(each method's own) | linear | unscented | montecarlo")
+      ->default_str("none");
   simulate
-      ->add_option("--sigma", flags->sigma,
-                   "Noise levels: n (= n mm and n deg per component) or MM/DEG (list sweeps)")
-      ->capture_default_str();
-  simulate->add_option("--method", flags->method, "Method name(s), comma separated, or all")
-      ->capture_default_str();
-  simulate->add_option("--seed", flags->seed, "Random seed (0 to 2^64-1)")->capture_default_str();
-  simulate->add_option("--threads", flags->threads, "Worker threads, 0 to 256 (0 = every core)")
-      ->capture_default_str();
-  simulate
-      ->add_option("--covariance", flags->covariance,
-                   "Predict X's covariance per trial and report its consistency: none | default "
-                   "(each method's own) | linear | unscented | montecarlo")
-      ->capture_default_str();
-  simulate
-      ->add_option("--covariance-samples", flags->covariance_samples,
+      ->add_option("--covariance-samples", o.covariance_samples,
                    "Monte Carlo samples per trial with --covariance montecarlo (2 to 100000)")
       ->capture_default_str();
   simulate
-      ->add_option("--outliers", flags->outliers,
-                   "Stations per data set given a random robot pose (gross outliers; list sweeps)")
-      ->capture_default_str();
-  simulate->add_flag("--reject-outliers", flags->reject_outliers,
+      ->add_option_function<std::string>(
+          "--outliers",
+          [&o](const std::string& text) {
+            o.outliers = ParseIntList("--outliers", text, std::numeric_limits<int>::min(),
+                                      std::numeric_limits<int>::max());
+          },
+          "Stations per data set given a random robot pose (gross outliers; list sweeps)")
+      ->default_str("0");
+  simulate->add_flag("--reject-outliers", o.reject_outliers,
                      "Every method through calibrate's outlier rejection (counts what it rejects)");
   simulate
-      ->add_option("--robot-scale", flags->robot_scale,
-                   "Robot noise = this times the level, camera noise = the level (list sweeps)")
-      ->capture_default_str();
-  simulate->add_flag("--estimate-noise", flags->estimate_noise,
+      ->add_option_function<std::string>(
+          "--robot-scale",
+          [&o](const std::string& text) { o.robot_scales = ParseNumbers("--robot-scale", text); },
+          "Robot noise = this times the level, camera noise = the level (list sweeps)")
+      ->default_str("1");
+  simulate->add_flag("--estimate-noise", o.estimate_noise,
                      "Tell no method the sigmas: estimated from the residuals (the default path)");
-  simulate->add_option("--output", flags->output, "Per-trial CSV (written atomically)");
-  simulate->add_option("--summary", flags->summary, "Summary CSV (written atomically)");
+  simulate->add_option("--output", command->output, "Per-trial CSV (written atomically)");
+  simulate->add_option("--summary", command->summary, "Summary CSV (written atomically)");
   simulate->footer(kFooter);
-  simulate->callback([flags, io] { RunSimulate(*flags, io); });
+  simulate->callback([command, io] { RunSimulate(*command, io); });
 }
 
 }  // namespace hecal::cli

@@ -27,40 +27,14 @@
 // --reject-outliers: every method runs through calibrate's outlier rejection
 // (estimation/station_selection.h); the table and summary then report the fraction of gross
 // outliers found, of good stations rejected, and the RMSE against the reference.
-// Prints the seed and a table per setting (stdout); --output and --summary write the CSV files of
-// study/study_csv.h, both or neither (io/atomic_file.h; the paths are checked before the study
-// runs). Bad flags, and numbers outside the ranges of bounds.h (stations, trials, settings,
-// trial rows, sigmas, seeds, threads, samples), are InputError (exit 2, one line on stderr).
+// The flags bind into study::SimulateOptions (study/simulate.h; list flags parsed once here),
+// whose IsValid checks every range (stations, outliers, trials, settings, trial rows, sigmas,
+// robot scales, threads, samples); a bad value is an InputError naming the flag (field_flags.h,
+// exit 2, one line on stderr). study::Simulate runs the study; this command prints the seed and
+// a table per setting (stdout); --output and --summary write the CSV files of study/study_csv.h,
+// both or neither (io/atomic_file.h; the paths are checked before the study runs).
 #pragma once
-
-#include <cstdint>
-#include <string>
 
 #include "cli.h"
 
-namespace hecal::cli {
-
-struct SimulateFlags {
-  std::string setup = "eye-in-hand";
-  std::string stations = "3,5,10,15,20";
-  std::string trials = "200";  // 1 … 100000 (bounds.h)
-  std::string noise_on = "both";
-  std::string noise = "gaussian";
-  std::string sigma = "0,0.3,1";
-  std::string method = "all";
-  std::string seed = "1";     // 0 … 2^64 − 1
-  std::string threads = "0";  // 0 … 256, 0 = every core
-  std::string output;
-  std::string summary;
-  std::string covariance = "none";
-  std::string covariance_samples = "1000";  // 2 … 100000
-  std::string outliers = "0";
-  bool reject_outliers = false;
-  std::string robot_scale = "1";  // robot noise = scale × level (list sweeps)
-  bool estimate_noise = false;    // tell no method the sigmas (Calibrate estimates them)
-};
-
-// Runs the study; throws hecal::InputError for bad flags.
-void RunSimulate(const SimulateFlags& flags, const Io& io);
-
-}  // namespace hecal::cli
+// RegisterSimulateCommand (cli.h) adds the subcommand.

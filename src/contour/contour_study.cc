@@ -6,11 +6,13 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/uncertainty/monte_carlo.h"
 
@@ -29,6 +31,13 @@ constexpr std::array<MotionInfo, 6> kMotions = {{{StudyMotion::kTx, "tx"},
                                                  {StudyMotion::kRx, "rx"},
                                                  {StudyMotion::kRy, "ry"},
                                                  {StudyMotion::kRz, "rz"}}};
+
+// A number for a message: shortest of %g's forms ("100", "1e+09").
+std::string Number(double x) {
+  std::ostringstream text;
+  text << x;
+  return text.str();
+}
 
 bool Finite(double x) {
   return std::isfinite(x);
@@ -66,53 +75,76 @@ Eigen::Matrix2Xd DefaultTarget() {
   return Q;
 }
 
-void ValidateStudyOptions(const ContourStudyOptions& o) {
-  const auto positive = [](double x, const char* field, const char* what) {
-    if (!Finite(x) || !(x > 0.0)) {
-      throw InputError(field, 0, std::string(what) + " must be a positive number",
-                       std::string("give ") + what);
-    }
+bool ContourStudyOptions::IsValid(std::string* why) const {
+  const auto positive = [why](double x, const char* field, const char* what) {
+    return (Finite(x) && x > 0.0) ||
+           Invalid(why, field, std::string(what) + " must be a positive number",
+                   std::string("give ") + what);
   };
-  positive(o.focal_mm, "ContourStudyOptions.focal_mm", "the focal length (mm)");
-  positive(o.z0_mm, "ContourStudyOptions.z0_mm", "the initial distance (mm)");
-  positive(o.pixel_size_mm, "ContourStudyOptions.pixel_size_mm", "the pixel size (mm)");
-  if (!Finite(o.pixel_noise) || o.pixel_noise < 0.0) {
-    throw InputError("ContourStudyOptions.pixel_noise", 0, "the pixel noise must be ≥ 0",
-                     "give σ in pixels, e.g. 0.5");
+  if (!positive(focal_mm, "ContourStudyOptions.focal_mm", "the focal length (mm)") ||
+      !positive(z0_mm, "ContourStudyOptions.z0_mm", "the initial distance (mm)") ||
+      !positive(pixel_size_mm, "ContourStudyOptions.pixel_size_mm", "the pixel size (mm)")) {
+    return false;
   }
-  if (!Finite(o.from) || !Finite(o.to)) {
-    throw InputError("ContourStudyOptions.from", 0, "the motion range must be finite numbers",
-                     "give e.g. from 0 to 250");
+  if (!(pixel_noise >= 0.0 && pixel_noise <= kMaxPixelNoise)) {
+    return Invalid(why, "ContourStudyOptions.pixel_noise",
+                   "must be 0 to " + Number(kMaxPixelNoise) + " px, got " + Number(pixel_noise),
+                   "give the noise of one image coordinate in pixels, e.g. 0.5");
   }
-  if (o.steps < 1 || (o.steps == 1 && o.from != o.to)) {
-    throw InputError("ContourStudyOptions.steps", 0,
-                     "need at least 2 steps for a range (1 when from = to)",
-                     "give e.g. --steps 11");
+  if (!Finite(from) || !Finite(to)) {
+    return Invalid(why, "ContourStudyOptions.from", "the motion range must be finite numbers",
+                   "give e.g. from 0 to 250");
   }
-  if (o.samples < 2) {
-    throw InputError("ContourStudyOptions.samples", 0, "the Monte Carlo needs at least 2 samples",
-                     "give e.g. 5000");
+  if (steps < 1 || steps > kMaxSteps) {
+    return Invalid(why, "ContourStudyOptions.steps",
+                   "must be a whole number from 1 to " + std::to_string(kMaxSteps) + ", got " +
+                       std::to_string(steps),
+                   "give the number of motion values in that range");
   }
-  if (o.threads < 0)
-    throw InputError("ContourStudyOptions.threads", 0, "must be ≥ 0", "0 uses every core");
-  if (IsRotation(o.motion) && o.motion != StudyMotion::kRz &&
-      (std::abs(o.from) >= 90.0 || std::abs(o.to) >= 90.0)) {
-    throw InputError("ContourStudyOptions.to", 0,
-                     "an out-of-plane rotation must stay below 90° (the plane is then "
-                     "seen edge-on: the tilt θ is beyond its range [0°, 90°))",
-                     "give angles in (−90°, 90°)");
+  if (steps == 1 && from != to) {
+    return Invalid(why, "ContourStudyOptions.steps",
+                   "need at least 2 steps for a range (1 when from = to)", "give e.g. 11 steps");
   }
-  if (o.motion == StudyMotion::kTz && (o.from <= -o.z0_mm || o.to <= -o.z0_mm)) {
-    throw InputError("ContourStudyOptions.to", 0,
-                     "Tz must stay above −Z0 (the target would be behind the camera)",
-                     "give Tz > −" + std::to_string(o.z0_mm));
+  if (samples < 2 || samples > kMaxSamples) {
+    return Invalid(why, "ContourStudyOptions.samples",
+                   "must be a whole number from 2 to " + std::to_string(kMaxSamples) + ", got " +
+                       std::to_string(samples),
+                   "give the number of Monte Carlo samples per step in that range");
   }
-  // The target itself: a closed contour whose control points span an area.
-  if (o.target.cols() < 4) {
-    throw InputError("ContourStudyOptions.target", 0, "the target needs at least 4 control points",
-                     "give 4 or more x,y rows");
+  if (std::int64_t{samples} * steps > kMaxSolves) {
+    return Invalid(why, "ContourStudyOptions.samples",
+                   std::to_string(steps) + " steps x " + std::to_string(samples) +
+                       " samples is more than " + std::to_string(kMaxSolves) +
+                       " Monte Carlo solves",
+                   "give fewer steps or samples");
   }
-  const ShapeSpace check(o.target);  // throws DegenerateError for collinear control points
+  if (threads < 0 || threads > kMaxThreads) {
+    return Invalid(why, "ContourStudyOptions.threads",
+                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
+                       std::to_string(threads),
+                   "give a thread count (0 = every core) in that range");
+  }
+  if (IsRotation(motion) && motion != StudyMotion::kRz &&
+      (std::abs(from) >= 90.0 || std::abs(to) >= 90.0)) {
+    return Invalid(why, "ContourStudyOptions.to",
+                   "an out-of-plane rotation must stay below 90° (the plane is then "
+                   "seen edge-on: the tilt θ is beyond its range [0°, 90°))",
+                   "give angles in (−90°, 90°)");
+  }
+  if (motion == StudyMotion::kTz && (from <= -z0_mm || to <= -z0_mm)) {
+    return Invalid(why, "ContourStudyOptions.to",
+                   "Tz must stay above −Z0 (the target would be behind the camera)",
+                   "give Tz > −" + std::to_string(z0_mm));
+  }
+  if (target.cols() < 4) {
+    return Invalid(why, "ContourStudyOptions.target", "the target needs at least 4 control points",
+                   "give 4 or more x,y rows");
+  }
+  std::string ut_why;
+  if (!unscented.unscented.IsValid(6, &ut_why)) {
+    return Invalid(why, "ContourStudyOptions.unscented", ut_why, "give w0 < 1 (default 0)");
+  }
+  return true;
 }
 
 ContourCamera StudyCamera(const ContourStudyOptions& options) {
@@ -146,7 +178,9 @@ void StudyMotionPose(StudyMotion motion, double value, Eigen::Matrix3d* rotation
 }
 
 std::vector<StudyStep> RunContourStudy(const ContourStudyOptions& options) {
-  ValidateStudyOptions(options);
+  std::string why;
+  if (!options.IsValid(&why)) throw OptionsError(why);
+  const ShapeSpace check(options.target);  // throws DegenerateError for collinear control points
   const ContourCamera camera = StudyCamera(options);
   constexpr RotationForm kForm = RotationForm::kZyx;
   const Eigen::Matrix2Xd template_image = TemplateImage(options.target, camera);

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
 #include <numbers>
+#include <string>
 
 #include "hecal/core/error.h"
 
@@ -102,6 +105,57 @@ TEST(ContourStudy, CorrelationsOfTheSeed) {
   // Tilted about y: Ry–Tz.
   const StudyStep about_y = Sweep(StudyMotion::kRy, 10, 10, 1).front();
   EXPECT_LT(Correlation(about_y.mc_covariance, kRy, kTz), -0.3);
+}
+
+// Each checked field: one bad value, named first in `why`.
+TEST(ContourStudyOptions, EachCheckedFieldRejectsABadValue) {
+  std::string why;
+  EXPECT_TRUE(ContourStudyOptions().IsValid(&why)) << why;
+  const auto expect = [](const std::function<void(ContourStudyOptions&)>& spoil,
+                         const std::string& field, const std::string& problem) {
+    ContourStudyOptions options;
+    spoil(options);
+    std::string text;
+    EXPECT_FALSE(options.IsValid(&text)) << field;
+    EXPECT_EQ(text.rfind("ContourStudyOptions." + field + ": ", 0), 0u) << text;
+    EXPECT_NE(text.find(problem), std::string::npos) << text;
+  };
+  expect([](ContourStudyOptions& o) { o.focal_mm = 0.0; }, "focal_mm", "positive");
+  expect([](ContourStudyOptions& o) { o.z0_mm = -1.0; }, "z0_mm", "positive");
+  expect([](ContourStudyOptions& o) { o.pixel_size_mm = NAN; }, "pixel_size_mm", "positive");
+  expect([](ContourStudyOptions& o) { o.pixel_noise = 101.0; }, "pixel_noise",
+         "must be 0 to 100 px, got 101");
+  expect([](ContourStudyOptions& o) { o.pixel_noise = -0.1; }, "pixel_noise", "0 to 100 px");
+  expect([](ContourStudyOptions& o) { o.from = INFINITY; }, "from", "finite");
+  expect([](ContourStudyOptions& o) { o.steps = 10001; }, "steps", "from 1 to 10000, got 10001");
+  expect([](ContourStudyOptions& o) { o.steps = 1; }, "steps", "at least 2 steps for a range");
+  expect([](ContourStudyOptions& o) { o.samples = 1; }, "samples", "from 2 to 1000000, got 1");
+  expect(
+      [](ContourStudyOptions& o) {
+        o.steps = 10000;
+        o.samples = 20000;
+      },
+      "samples", "more than 100000000 Monte Carlo solves");
+  expect([](ContourStudyOptions& o) { o.threads = 257; }, "threads", "from 0 to 256, got 257");
+  expect(
+      [](ContourStudyOptions& o) {
+        o.motion = StudyMotion::kRy;
+        o.to = -90.0;
+      },
+      "to", "below 90°");
+  expect(
+      [](ContourStudyOptions& o) {
+        o.motion = StudyMotion::kTz;
+        o.to = -5000.0;
+      },
+      "to", "above −Z0");
+  expect([](ContourStudyOptions& o) { o.target = Eigen::Matrix2Xd::Zero(2, 3); }, "target",
+         "at least 4 control points");
+  expect(
+      [](ContourStudyOptions& o) {
+        o.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(1.5);
+      },
+      "unscented", "");
 }
 
 TEST(ContourStudy, BadOptionsAreRejected) {

@@ -26,6 +26,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -46,6 +47,12 @@ bool IsRotation(StudyMotion motion);
 Eigen::Matrix2Xd DefaultTarget();
 
 struct ContourStudyOptions {
+  static constexpr int kMaxSteps = 10000;
+  static constexpr int kMaxSamples = 1000000;
+  static constexpr std::int64_t kMaxSolves = 100000000;  // steps × samples
+  static constexpr int kMaxThreads = 256;
+  static constexpr double kMaxPixelNoise = 100.0;  // px
+
   StudyMotion motion = StudyMotion::kTx;
   double from = 0.0;  // mm or degrees
   double to = 250.0;
@@ -60,9 +67,14 @@ struct ContourStudyOptions {
   int threads = 0;
   UnscentedPoseOptions unscented;
   int keep_samples = 0;  // Monte Carlo poses kept per step (for plots)
+
+  // True when usable, else false with "ContourStudyOptions.<field>: problem (fix: …)"
+  // (core/options_check.h): focal, z0 and pixel size positive; pixel noise 0 … 100 px; from and
+  // to finite, an out-of-plane rotation within (−90°, 90°), Tz above −Z0; steps 1 … 10000 (2 or
+  // more for a range); samples 2 … 10^6 with steps × samples ≤ 10^8; threads 0 … 256; at least 4
+  // target control points; the UT parameters valid for 6 dimensions.
+  bool IsValid(std::string* why) const;
 };
-// Throws hecal::InputError naming the flag for an invalid option.
-void ValidateStudyOptions(const ContourStudyOptions& options);
 
 // Pose parameters are zyx (Tx, Ty, Tz, Rx, Ry, Rz): mm and radians.
 struct StudyStep {
@@ -84,6 +96,7 @@ struct StudyStep {
   std::vector<Vector6d> sigma_poses;  // the UT's transformed sigma points
 };
 
+// Throws hecal::InputError when !options.IsValid, DegenerateError for collinear control points.
 std::vector<StudyStep> RunContourStudy(const ContourStudyOptions& options);
 
 // The camera of the study in pixels: f = focal_mm / pixel_size_mm, Z0 in mm.

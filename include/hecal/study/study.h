@@ -57,6 +57,13 @@ enum class NoiseOn { kRobot, kCamera, kBoth };
 std::optional<NoiseOn> ParseNoiseOn(std::string_view text);
 std::string_view NoiseOnName(NoiseOn noise_on);
 
+// A noise level as the user reads it (the thesis' "n mm / n°"): millimetres on each translation
+// component, degrees on each rotation component.
+struct NoiseLevel {
+  double mm = 0.0;
+  double deg = 0.0;
+};
+
 // One cell of the sweep.
 struct Setting {
   handeye::Setup setup = handeye::Setup::kEyeInHand;

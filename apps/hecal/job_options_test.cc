@@ -1,0 +1,132 @@
+// The options structs of the library jobs, driven through `hecal`: for every field an
+// options struct's IsValid checks (study::SimulateOptions, ...), a bad value given on the command
+// line exits 2 with exactly one line `hecal: --flag: problem (fix: ...)` naming the flag that set
+// the field (field_flags.h), prints nothing on stdout and writes no output file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_test_util.h"
+
+namespace hecal::cli {
+namespace {
+
+using cli_test::Hecal;
+using cli_test::Outcome;
+
+class JobOptions : public cli_test::CliTest {
+ protected:
+  // Exit 2, one line starting with `flag`, holding `problem`; no stdout, no `output` file.
+  void ExpectRefused(const std::vector<std::string>& args, const std::string& flag,
+                     const std::string& problem, const std::string& output) const {
+    const Outcome run = Hecal(args);
+    EXPECT_EQ(run.code, 2) << run.err;
+    EXPECT_EQ(run.err.rfind("hecal: " + flag + ": ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(problem), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_FALSE(std::filesystem::exists(Path(output))) << output;
+  }
+};
+
+// study::SimulateOptions::IsValid, field by field.
+TEST_F(JobOptions, SimulateOptionsNameTheFlag) {
+  const auto simulate = [&](std::vector<std::string> extra) {
+    // Every case below is refused before the study runs.
+    std::vector<std::string> args = {"simulate", "--method", "andreff", "--output",
+                                     Path("trials.csv")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::string out = "trials.csv";
+  ExpectRefused(simulate({"--stations", "5,2"}), "--stations", "'2' is outside the range 3 to",
+                out);
+  ExpectRefused(simulate({"--outliers", "-1"}), "--outliers", "'-1' is outside the range 0 to",
+                out);
+  ExpectRefused(simulate({"--sigma", "0.1/200"}), "--sigma", "0 to 180 deg", out);
+  ExpectRefused(simulate({"--robot-scale", "0"}), "--robot-scale", "above 0", out);
+  ExpectRefused(simulate({"--sigma", "100/1", "--robot-scale", "20"}), "--robot-scale",
+                "must stay within 1000 mm", out);
+  ExpectRefused(simulate({"--trials", "0"}), "--trials", "from 1 to 100000, got 0", out);
+  ExpectRefused(simulate({"--threads", "300"}), "--threads", "from 0 to 256, got 300", out);
+  ExpectRefused(simulate({"--covariance-samples", "1"}), "--covariance-samples",
+                "from 2 to 100000, got 1", out);
+  std::string many = "3";
+  for (int n = 4; n < 10010; ++n) {
+    many += ',';
+    many += std::to_string(n);
+  }
+  ExpectRefused(simulate({"--stations", many}), "--stations", "settings, more than 10000", out);
+  ExpectRefused(simulate({"--trials", "100000", "--stations", "5,6,7,8,9,10,11,12,13,14,15"}),
+                "--trials", "trial rows, more than 1000000", out);
+}
+
+// study::BenchOptions::IsValid, field by field (bench writes no file: stdout stays empty).
+TEST_F(JobOptions, BenchOptionsNameTheFlag) {
+  const std::string none = "no-such-output";
+  ExpectRefused({"bench", "--stations", "10,2"}, "--stations", "'2' is outside the range 3 to",
+                none);
+  ExpectRefused({"bench", "--datasets", "0"}, "--datasets", "from 1 to 10000, got 0", none);
+  ExpectRefused({"bench", "--stations", "100000", "--datasets", "100"}, "--datasets",
+                "poses, the most hecal bench generates", none);
+  ExpectRefused({"bench", "--min-time", "-1"}, "--min-time", "must be 0 to 3600 seconds", none);
+  ExpectRefused({"bench", "--sigma", "2000"}, "--sigma", "0 to 1000 mm", none);
+}
+
+// report::PointPoseOptions::IsValid (hecal pose), field by field; checked before any file is read.
+TEST_F(JobOptions, PointPoseOptionsNameTheFlag) {
+  const auto pose = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"pose",           "--points",        Path("object.csv"),
+                                     "--image-points", Path("image.csv"), "--output",
+                                     Path("pose.json")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::string out = "pose.json";
+  ExpectRefused(pose({}), "--focal", "give exactly one of focal and intrinsics", out);
+  ExpectRefused(pose({"--focal", "800", "--intrinsics", Path("camera.yaml")}), "--focal",
+                "give exactly one", out);
+  ExpectRefused(pose({"--focal", "-3"}), "--focal", "expected a positive number, got '-3'", out);
+  ExpectRefused(pose({"--intrinsics", Path("camera.yaml"), "--principal-point", "1,2"}),
+                "--principal-point", "comes from the camera file", out);
+  ExpectRefused(pose({"--focal", "800", "--pixel-sigma", "0"}), "--pixel-sigma",
+                "must be above 0 to 100 px, got 0", out);
+  ExpectRefused(pose({"--focal", "800", "--pixel-sigma", "1e9"}), "--pixel-sigma",
+                "must be above 0 to 100 px", out);
+}
+
+// contour::ContourStudyOptions::IsValid (hecal contour study), field by field.
+TEST_F(JobOptions, ContourStudyOptionsNameTheFlag) {
+  const auto study = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"contour", "study", "--motion", "tx",
+                                     "--from",  "0",     "--output", Path("study.csv")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::vector<std::string> range = {"--to", "100", "--steps", "3"};
+  const auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), range.begin(), range.end());
+    return study(extra);
+  };
+  const std::string out = "study.csv";
+  ExpectRefused(with({"--focal", "0"}), "--focal", "must be a positive number", out);
+  ExpectRefused(with({"--z0", "-5"}), "--z0", "must be a positive number", out);
+  ExpectRefused(with({"--pixel-size", "0"}), "--pixel-size", "must be a positive number", out);
+  ExpectRefused(with({"--pixel-noise", "101"}), "--pixel-noise", "must be 0 to 100 px", out);
+  ExpectRefused(study({"--to", "100", "--steps", "1"}), "--steps", "at least 2 steps", out);
+  ExpectRefused(study({"--to", "100", "--steps", "20000"}), "--steps", "from 1 to 10000", out);
+  ExpectRefused(with({"--samples", "1"}), "--samples", "from 2 to 1000000, got 1", out);
+  ExpectRefused(study({"--to", "100", "--steps", "10000", "--samples", "20000"}), "--samples",
+                "Monte Carlo solves", out);
+  ExpectRefused(with({"--threads", "300"}), "--threads", "from 0 to 256, got 300", out);
+  ExpectRefused({"contour", "study", "--motion", "tz", "--from", "0", "--to", "-6000", "--steps",
+                 "3", "--output", Path("study.csv")},
+                "--to", "Tz must stay above", out);
+  ExpectRefused(with({"--ut-w0", "1.5"}), "--ut-w0", "", out);
+}
+
+}  // namespace
+}  // namespace hecal::cli
