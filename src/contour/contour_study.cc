@@ -118,12 +118,7 @@ bool ContourStudyOptions::IsValid(std::string* why) const {
                        " Monte Carlo solves",
                    "give fewer steps or samples");
   }
-  if (threads < 0 || threads > kMaxThreads) {
-    return Invalid(why, "ContourStudyOptions.threads",
-                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
-                       std::to_string(threads),
-                   "give a thread count (0 = every core) in that range");
-  }
+  if (!ThreadCountValid(threads, "ContourStudyOptions.threads", why)) return false;
   if (IsRotation(motion) && motion != StudyMotion::kRz &&
       (std::abs(from) >= 90.0 || std::abs(to) >= 90.0)) {
     return Invalid(why, "ContourStudyOptions.to",

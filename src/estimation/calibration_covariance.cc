@@ -93,12 +93,7 @@ bool CovarianceOptions::IsValid(std::string* why) const {
                        ", got " + std::to_string(samples),
                    "give the number of Monte Carlo samples in that range (e.g. 5000)");
   }
-  if (threads < 0 || threads > kMaxThreads) {
-    return Invalid(why, "CovarianceOptions.threads",
-                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
-                       std::to_string(threads),
-                   "give a thread count in that range (0 = every core)");
-  }
+  if (!ThreadCountValid(threads, "CovarianceOptions.threads", why)) return false;
   return true;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/global/cube_feasibility.h"
 #include "hecal/uncertainty/parallel_for.h"
@@ -17,23 +18,27 @@
 namespace hecal::global {
 
 bool SearchOptions::IsValid(std::string* why) const {
-  const auto fail = [why](const std::string& problem) {
-    if (why != nullptr) *why = problem;
-    return false;
-  };
-  if (!(epsilon > 0.0) || !std::isfinite(epsilon)) return fail("epsilon must be above 0");
+  if (!(epsilon > 0.0) || !std::isfinite(epsilon)) {
+    return Invalid(why, "SearchOptions.epsilon", "must be above 0 and finite",
+                   "give the certificate's gap in radians, e.g. 2e-4");
+  }
   if (!(relative_gap >= 0.0 && relative_gap < 1.0)) {
-    return fail("relative_gap must be at least 0 and below 1");
+    return Invalid(why, "SearchOptions.relative_gap", "must be at least 0 and below 1",
+                   "give a fraction of the optimum, e.g. 0.1 (0: ε only)");
   }
   if (!(translation_bound > 0.0) || !std::isfinite(translation_bound)) {
-    return fail("translation_bound must be above 0");
+    return Invalid(why, "SearchOptions.translation_bound", "must be above 0 and finite",
+                   "give the largest |t| of X in metres, e.g. 2");
   }
   if (!(min_half_width > 0.0) || !std::isfinite(min_half_width)) {
-    return fail("min_half_width must be above 0");
+    return Invalid(why, "SearchOptions.min_half_width", "must be above 0 and finite",
+                   "give the smallest cube in radians, e.g. 1e-9");
   }
-  if (max_cubes < 1) return fail("max_cubes must be at least 1");
-  if (threads < 0) return fail("threads must be at least 0 (0: every core)");
-  return true;
+  if (max_cubes < 1) {
+    return Invalid(why, "SearchOptions.max_cubes", "must be at least 1",
+                   "give the search's budget of cube tests, e.g. 1000000");
+  }
+  return ThreadCountValid(threads, "SearchOptions.threads", why);
 }
 
 namespace {
@@ -246,6 +251,7 @@ class Search {
 }  // namespace
 
 GlobalSolution SolveGlobal(const EpipolarProblem& problem, const SearchOptions& options) {
+  RequireValid(options);
   if (PairCount(problem) == 0) {
     throw DegenerateError("the hand–eye transform from no bearing pairs",
                           "give point matches between the images of at least two motions");

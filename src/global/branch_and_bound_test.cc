@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "hecal/core/error.h"
 #include "testing/epipolar_scenes.h"
 
 namespace hecal::global {
@@ -56,6 +57,10 @@ TEST(SearchOptions, IsValidNamesTheBadField) {
             std::string::npos);
   EXPECT_NE(bad([](SearchOptions& o) { o.max_cubes = 0; }).find("max_cubes"), std::string::npos);
   EXPECT_NE(bad([](SearchOptions& o) { o.threads = -1; }).find("threads"), std::string::npos);
+  EXPECT_EQ(bad([](SearchOptions& o) { o.threads = 257; }).rfind("SearchOptions.threads: ", 0), 0u);
+  SearchOptions invalid;
+  invalid.max_cubes = 0;
+  EXPECT_THROW(SolveGlobal(EpipolarProblem{}, invalid), InputError);
 }
 
 }  // namespace

@@ -4,22 +4,27 @@
 #include <cmath>
 #include <random>
 
+#include "hecal/core/options_check.h"
 #include "hecal/global/essential_matrix.h"
 #include "hecal/global/local_start.h"
 
 namespace hecal::global {
 
 bool OutlierOptions::IsValid(std::string* why) const {
-  const auto fail = [why](const std::string& problem) {
-    if (why != nullptr) *why = problem;
-    return false;
-  };
-  if (!(threshold > 0.0) || !std::isfinite(threshold)) return fail("threshold must be above 0");
-  if (!(error_level_multiple >= 0.0) || !std::isfinite(error_level_multiple)) {
-    return fail("error_level_multiple must be at least 0");
+  if (!(threshold > 0.0) || !std::isfinite(threshold)) {
+    return Invalid(why, "OutlierOptions.threshold", "must be above 0 and finite",
+                   "give the largest ray error of an inlier in radians, e.g. 3e-3");
   }
-  if (ransac_iterations < 1) return fail("ransac_iterations must be at least 1");
-  if (max_rounds < 1) return fail("max_rounds must be at least 1");
+  if (!(error_level_multiple >= 0.0) || !std::isfinite(error_level_multiple)) {
+    return Invalid(why, "OutlierOptions.error_level_multiple", "must be at least 0 and finite",
+                   "give a multiple of the data's error scale, e.g. 4");
+  }
+  if (ransac_iterations < 1) {
+    return Invalid(why, "OutlierOptions.ransac_iterations", "must be at least 1", "e.g. 500");
+  }
+  if (max_rounds < 1) {
+    return Invalid(why, "OutlierOptions.max_rounds", "must be at least 1", "e.g. 20");
+  }
   return true;
 }
 
@@ -68,6 +73,8 @@ EpipolarProblem PrefilterPairs(const EpipolarProblem& problem, const OutlierOpti
 
 RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const SearchOptions& search,
                                        const OutlierOptions& options) {
+  RequireValid(search);
+  RequireValid(options);
   RobustGlobalSolution result;
   result.inliers = PrefilterPairs(problem, options, &result.removed);
   // The rounds only need to tell whether the optimum exceeds the threshold: they stop at an X

@@ -95,12 +95,7 @@ bool SimulateOptions::IsValid(std::string* why) const {
         "must be a whole number from " + Range(1, kMaxTrials) + ", got " + std::to_string(trials),
         "give the number of data sets per setting in that range (e.g. 200)");
   }
-  if (threads < 0 || threads > kMaxThreads) {
-    return Invalid(
-        why, "SimulateOptions.threads",
-        "must be a whole number from " + Range(0, kMaxThreads) + ", got " + std::to_string(threads),
-        "give a thread count (0 = every core) in that range");
-  }
+  if (!ThreadCountValid(threads, "SimulateOptions.threads", why)) return false;
   if (covariance_samples < 2 || covariance_samples > kMaxCovarianceSamples) {
     return Invalid(why, "SimulateOptions.covariance_samples",
                    "must be a whole number from " + Range(2, kMaxCovarianceSamples) + ", got " +

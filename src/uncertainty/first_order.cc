@@ -13,12 +13,7 @@ bool FirstOrderOptions::IsValid(std::string* why) const {
     return Invalid(why, "FirstOrderOptions.step", "the step must be positive and finite",
                    "use e.g. 1e-3 (standard deviations)");
   }
-  if (threads < 0 || threads > kMaxThreads) {
-    return Invalid(why, "FirstOrderOptions.threads",
-                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
-                       std::to_string(threads),
-                   "give a thread count in that range (0 = every core)");
-  }
+  if (!ThreadCountValid(threads, "FirstOrderOptions.threads", why)) return false;
   return true;
 }
 

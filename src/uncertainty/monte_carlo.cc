@@ -13,12 +13,7 @@ bool MonteCarloOptions::IsValid(std::string* why) const {
                    "Monte Carlo needs at least 2 samples, got " + std::to_string(samples),
                    "use e.g. 5000");
   }
-  if (threads < 0 || threads > kMaxThreads) {
-    return Invalid(why, "MonteCarloOptions.threads",
-                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
-                       std::to_string(threads),
-                   "give a thread count in that range (0 = every core)");
-  }
+  if (!ThreadCountValid(threads, "MonteCarloOptions.threads", why)) return false;
   return true;
 }
 

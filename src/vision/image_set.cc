@@ -414,12 +414,7 @@ bool ImageSetOptions::IsValid(std::string* why) const {
     return Invalid(why, "ImageSetOptions.target", "no target file given",
                    "give the target description, e.g. target.yaml (docs/targets.md)");
   }
-  if (threads < 0 || threads > kMaxThreads) {
-    return Invalid(why, "ImageSetOptions.threads",
-                   "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
-                       std::to_string(threads),
-                   "give a thread count in that range (0 = every core)");
-  }
+  if (!ThreadCountValid(threads, "ImageSetOptions.threads", why)) return false;
   return true;
 }
 

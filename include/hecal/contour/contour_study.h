@@ -50,7 +50,6 @@ struct ContourStudyOptions {
   static constexpr int kMaxSteps = 10000;
   static constexpr int kMaxSamples = 1000000;
   static constexpr std::int64_t kMaxSolves = 100000000;  // steps × samples
-  static constexpr int kMaxThreads = 256;
   static constexpr double kMaxPixelNoise = 100.0;  // px
 
   StudyMotion motion = StudyMotion::kTx;

@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "hecal/core/error.h"
+#include "hecal/core/limits.h"
 
 namespace hecal {
 
@@ -34,6 +35,16 @@ inline bool Invalid(std::string* why, std::string_view field, std::string_view p
     *why += ')';
   }
   return false;
+}
+
+// For IsValid implementations: a worker-thread count in 0 … kMaxThreads (0 = every core), or
+// Invalid naming `field`.
+inline bool ThreadCountValid(int threads, std::string_view field, std::string* why) {
+  if (threads >= 0 && threads <= kMaxThreads) return true;
+  return Invalid(why, field,
+                 "must be a whole number from 0 to " + std::to_string(kMaxThreads) + ", got " +
+                     std::to_string(threads),
+                 "give a thread count in that range (0 = every core)");
 }
 
 // The InputError of a `why` written by Invalid: source the field, problem and fix as written. A

@@ -54,7 +54,8 @@ struct SearchOptions {
 
   // False, with the offending field named in *why (when not null), unless epsilon > 0,
   // 0 ≤ relative_gap < 1, translation_bound > 0, min_half_width > 0 (all finite),
-  // max_cubes ≥ 1 and threads ≥ 0.
+  // max_cubes ≥ 1 and threads in 0 … kMaxThreads (core/limits.h); SolveGlobal and
+  // SolveGlobalRobust throw it as an InputError (core/options_check.h).
   bool IsValid(std::string* why) const;
 };
 
