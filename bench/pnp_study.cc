@@ -32,10 +32,10 @@
 namespace {
 
 using hecal::Pose;
-using hecal::testing::PoseScene;
-using hecal::testing::SceneShape;
+using hecal::testing::PointShape;
+using hecal::testing::PointView;
 
-using Solver = std::function<Pose(const PoseScene&, const std::vector<Eigen::Vector2d>&)>;
+using Solver = std::function<Pose(const PointView&, const std::vector<Eigen::Vector2d>&)>;
 
 struct Method {
   std::string name;
@@ -47,7 +47,7 @@ struct Method {
 std::vector<Method> Methods() {
   using hecal::pose::PoseMethod;
   const auto hecal_method = [](PoseMethod method) {
-    return [method](const PoseScene& scene, const std::vector<Eigen::Vector2d>& pixels) {
+    return [method](const PointView& scene, const std::vector<Eigen::Vector2d>& pixels) {
       return hecal::pose::EstimatePose(method, scene.object_points, pixels, scene.camera)
           .T_camera_target;
     };
@@ -62,7 +62,7 @@ std::vector<Method> Methods() {
     const hecal::vision::PnpMethod method = info.method;
     methods.push_back(
         {"cv-" + std::string(info.name),
-         [method](const PoseScene& scene, const std::vector<Eigen::Vector2d>& pixels) {
+         [method](const PointView& scene, const std::vector<Eigen::Vector2d>& pixels) {
            return hecal::vision::SolvePnPOpenCv(method, scene.object_points, pixels, scene.camera);
          },
          true, !info.planar_only});
@@ -79,8 +79,8 @@ struct Cell {
   int failed = 0;
 };
 
-void RunShape(SceneShape shape, int trials, const std::vector<Method>& methods) {
-  const bool planar = shape == SceneShape::kPlane;
+void RunShape(PointShape shape, int trials, const std::vector<Method>& methods) {
+  const bool planar = shape == PointShape::kPlane;
   std::vector<const Method*> used;
   for (const Method& m : methods) {
     if (planar ? m.planar : m.non_planar) used.push_back(&m);
@@ -101,7 +101,7 @@ void RunShape(SceneShape shape, int trials, const std::vector<Method>& methods) 
                           (planar ? 7u : 0u));
       std::vector<Cell> cells(used.size());
       for (int trial = 0; trial < trials; ++trial) {
-        const PoseScene scene = hecal::testing::RandomScene(rng, n, shape);
+        const PointView scene = hecal::testing::RandomScene(rng, n, shape);
         const std::vector<Eigen::Vector2d> pixels =
             hecal::testing::AddPixelNoise(rng, scene.pixels, sigma);
         for (std::size_t i = 0; i < used.size(); ++i) {
@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::vector<Method> methods = Methods();
-  RunShape(SceneShape::kVolume, trials, methods);
-  RunShape(SceneShape::kPlane, trials, methods);
+  RunShape(PointShape::kVolume, trials, methods);
+  RunShape(PointShape::kPlane, trials, methods);
   return 0;
 }

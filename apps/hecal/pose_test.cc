@@ -31,7 +31,7 @@ using ::hecal::testing::CameraYaml;
 
 // object.csv with ids p0.. in millimetres; image.csv with the ids of `image_order` (a subset of
 // the points, in that order).
-std::string ObjectCsvMm(const testing::PoseScene& scene) {
+std::string ObjectCsvMm(const testing::PointView& scene) {
   std::ostringstream csv;
   csv << std::setprecision(17) << "# a target with known points\nid,x_mm,y_mm,z_mm\n";
   for (std::size_t k = 0; k < scene.object_points.size(); ++k) {
@@ -41,7 +41,7 @@ std::string ObjectCsvMm(const testing::PoseScene& scene) {
   return csv.str();
 }
 
-std::string ImageCsv(const testing::PoseScene& scene, const std::vector<std::size_t>& order,
+std::string ImageCsv(const testing::PointView& scene, const std::vector<std::size_t>& order,
                      bool ids) {
   std::ostringstream csv;
   csv << std::setprecision(17) << (ids ? "id,u,v\n" : "u,v\n");
@@ -68,14 +68,14 @@ double RotationError(const Pose& a, const Pose& b) {
 
 class PoseCommand : public CliTest {
  protected:
-  testing::PoseScene Scene(int points, testing::SceneShape shape, uint64_t seed) {
+  testing::PointView Scene(int points, testing::PointShape shape, uint64_t seed) {
     std::mt19937_64 rng(seed);
     return testing::RandomScene(rng, points, shape);
   }
 };
 
 TEST_F(PoseCommand, LinearWithIntrinsicsPairsByIdAndWritesTheResult) {
-  const testing::PoseScene scene = Scene(14, testing::SceneShape::kVolume, 1);
+  const testing::PointView scene = Scene(14, testing::PointShape::kVolume, 1);
   Write("object.csv", ObjectCsvMm(scene));
   // Image points in another order, two object points not seen.
   Write("image.csv", ImageCsv(scene, {5, 2, 11, 0, 7, 1, 9, 3, 12, 6, 10, 4}, true));
@@ -116,12 +116,12 @@ TEST_F(PoseCommand, LinearWithIntrinsicsPairsByIdAndWritesTheResult) {
 }
 
 TEST_F(PoseCommand, LinearRawWithFocalPairsByOrderAndHasNoCovariance) {
-  const testing::PoseScene scene = [&] {
+  const testing::PointView scene = [&] {
     std::mt19937_64 rng(2);
     pose::CameraModel pinhole = pose::CameraModel::Pinhole(1100.0);
     pinhole.cx = 600.0;
     pinhole.cy = 450.0;
-    return testing::RandomScene(rng, 10, testing::SceneShape::kVolume, pinhole);
+    return testing::RandomScene(rng, 10, testing::PointShape::kVolume, pinhole);
   }();
   std::ostringstream object;
   object << std::setprecision(17) << "x,y,z\n";
@@ -146,7 +146,7 @@ TEST_F(PoseCommand, LinearRawWithFocalPairsByOrderAndHasNoCovariance) {
 }
 
 TEST_F(PoseCommand, GivenPixelSigmaScalesTheCovariance) {
-  const testing::PoseScene scene = Scene(12, testing::SceneShape::kVolume, 3);
+  const testing::PointView scene = Scene(12, testing::PointShape::kVolume, 3);
   Write("object.csv", ObjectCsvMm(scene));
   Write("image.csv", ImageCsv(scene, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, true));
   Write("camera.yaml", CameraYaml(scene.camera));
@@ -169,7 +169,7 @@ TEST_F(PoseCommand, GivenPixelSigmaScalesTheCovariance) {
 }
 
 TEST_F(PoseCommand, PlanarTargetNeedsDltOrIppe) {
-  const testing::PoseScene scene = Scene(20, testing::SceneShape::kPlane, 4);
+  const testing::PointView scene = Scene(20, testing::PointShape::kPlane, 4);
   Write("object.csv", ObjectCsvMm(scene));
   std::vector<std::size_t> all(20);
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
@@ -194,7 +194,7 @@ TEST_F(PoseCommand, PlanarTargetNeedsDltOrIppe) {
 }
 
 TEST_F(PoseCommand, OpenCvMethodsNeedTheVisionLayer) {
-  const testing::PoseScene scene = Scene(20, testing::SceneShape::kPlane, 5);
+  const testing::PointView scene = Scene(20, testing::PointShape::kPlane, 5);
   Write("object.csv", ObjectCsvMm(scene));
   std::vector<std::size_t> all(20);
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
@@ -220,7 +220,7 @@ TEST_F(PoseCommand, OpenCvMethodsNeedTheVisionLayer) {
 }
 
 TEST_F(PoseCommand, BadInputExitsTwoWithFileAndLineAndWritesNothing) {
-  const testing::PoseScene scene = Scene(8, testing::SceneShape::kVolume, 6);
+  const testing::PointView scene = Scene(8, testing::PointShape::kVolume, 6);
   Write("camera.yaml", CameraYaml(scene.camera));
   Write("image.csv", ImageCsv(scene, {0, 1, 2, 3, 4, 5, 6, 7}, true));
   const std::string good_object = ObjectCsvMm(scene);
@@ -283,7 +283,7 @@ TEST_F(PoseCommand, BadInputExitsTwoWithFileAndLineAndWritesNothing) {
 }
 
 TEST_F(PoseCommand, UnitsFlagAppliesToColumnsWithoutSuffix) {
-  const testing::PoseScene scene = Scene(10, testing::SceneShape::kVolume, 7);
+  const testing::PointView scene = Scene(10, testing::PointShape::kVolume, 7);
   std::ostringstream object, image;
   object << std::setprecision(17) << "id x y z\n";  // whitespace-separated
   image << std::setprecision(17) << "id,u,v\n";
@@ -329,8 +329,8 @@ TEST_F(PoseCommand, VispXmlAndFilesWithoutDistortion) {
         std::tuple{"plain.yaml", plain, "plain.yaml has no distortion: read as no distortion"}}) {
     SCOPED_TRACE(file);
     std::mt19937_64 rng(4);
-    const testing::PoseScene scene =
-        testing::RandomScene(rng, 12, testing::SceneShape::kVolume, camera);
+    const testing::PointView scene =
+        testing::RandomScene(rng, 12, testing::PointShape::kVolume, camera);
     Write("object.csv", ObjectCsvMm(scene));
     Write("image.csv", ImageCsv(scene, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, true));
     const cli_test::Outcome run =

@@ -18,14 +18,14 @@
 namespace hecal::pose {
 namespace {
 
+using testing::PointShape;
 using testing::RandomScene;
-using testing::SceneShape;
 
 double RotationError(const Pose& a, const Pose& b) {
   return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
 }
 
-void ExpectExact(const DltPoseResult& result, const testing::PoseScene& scene, DltPath path) {
+void ExpectExact(const DltPoseResult& result, const testing::PointView& scene, DltPath path) {
   EXPECT_EQ(result.path, path);
   EXPECT_LT(RotationError(result.T_camera_target, scene.T_camera_target), 1e-8);
   EXPECT_LT((result.T_camera_target.translation() - scene.T_camera_target.translation()).norm(),
@@ -36,7 +36,7 @@ TEST(DltPose, ProjectivePathExactOnNoiseFreeVolumes) {
   std::mt19937_64 rng(1);
   for (int n : {6, 8, 20, 100}) {
     for (int trial = 0; trial < 30; ++trial) {
-      const testing::PoseScene scene = RandomScene(rng, n, SceneShape::kVolume);
+      const testing::PointView scene = RandomScene(rng, n, PointShape::kVolume);
       ExpectExact(DltPose(scene.object_points, scene.pixels, scene.camera), scene,
                   DltPath::kProjective);
     }
@@ -47,7 +47,7 @@ TEST(DltPose, HomographyPathExactOnNoiseFreePlanes) {
   std::mt19937_64 rng(2);
   for (int n : {4, 5, 20, 100}) {
     for (int trial = 0; trial < 30; ++trial) {
-      testing::PoseScene scene = RandomScene(rng, n, SceneShape::kPlane);
+      testing::PointView scene = RandomScene(rng, n, PointShape::kPlane);
       ExpectExact(DltPose(scene.object_points, scene.pixels, scene.camera), scene,
                   DltPath::kHomography);
       // The same board described on another plane of the target frame: P' = G P, so the pose
@@ -65,9 +65,9 @@ TEST(DltPose, CloseToTheTruthUnderPixelNoise) {
   // 0.5 px on 30 points of a 0.4 m object at 1 m with f = 1000 px: the pose is determined to
   // roughly 0.1°, 1 mm; a bound 10× wider catches a wrong sign, scale or path choice.
   std::mt19937_64 rng(3);
-  for (SceneShape shape : {SceneShape::kVolume, SceneShape::kPlane}) {
+  for (PointShape shape : {PointShape::kVolume, PointShape::kPlane}) {
     for (int trial = 0; trial < 50; ++trial) {
-      const testing::PoseScene scene = RandomScene(rng, 30, shape);
+      const testing::PointView scene = RandomScene(rng, 30, shape);
       const DltPoseResult result = DltPose(
           scene.object_points, testing::AddPixelNoise(rng, scene.pixels, 0.5), scene.camera);
       EXPECT_LT(RotationError(result.T_camera_target, scene.T_camera_target), 0.02);
@@ -79,14 +79,14 @@ TEST(DltPose, CloseToTheTruthUnderPixelNoise) {
 
 TEST(DltPose, RefusesTooFewPoints) {
   std::mt19937_64 rng(4);
-  const testing::PoseScene volume = RandomScene(rng, 5, SceneShape::kVolume);
+  const testing::PointView volume = RandomScene(rng, 5, PointShape::kVolume);
   try {
     DltPose(volume.object_points, volume.pixels, volume.camera);
     FAIL() << "expected DegenerateError";
   } catch (const DegenerateError& e) {
     EXPECT_NE(std::string(e.what()).find("at least 6 non-coplanar"), std::string::npos) << e.what();
   }
-  const testing::PoseScene plane = RandomScene(rng, 3, SceneShape::kPlane);
+  const testing::PointView plane = RandomScene(rng, 3, PointShape::kPlane);
   EXPECT_THROW(DltPose(plane.object_points, plane.pixels, plane.camera), DegenerateError);
 }
 

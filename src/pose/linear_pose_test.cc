@@ -19,8 +19,8 @@
 namespace hecal::pose {
 namespace {
 
+using testing::PointShape;
 using testing::RandomScene;
-using testing::SceneShape;
 
 double RotationError(const Pose& a, const Pose& b) {
   return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
@@ -41,7 +41,7 @@ TEST(LinearPose, ExactOnNoiseFreeData) {
   std::mt19937_64 rng(1);
   for (int n : {6, 7, 10, 50}) {
     for (int trial = 0; trial < 50; ++trial) {
-      const testing::PoseScene scene = RandomScene(rng, n, SceneShape::kVolume);
+      const testing::PointView scene = RandomScene(rng, n, PointShape::kVolume);
       const LinearPoseResult result = LinearPose(scene.object_points, scene.pixels, scene.camera);
       EXPECT_LT(RotationError(result.T_camera_target, scene.T_camera_target), 1e-8) << n;
       EXPECT_LT((result.T_camera_target.translation() - scene.T_camera_target.translation()).norm(),
@@ -85,8 +85,8 @@ TEST(LinearPose, IsThePapersEstimatorOnNoisyData) {
   std::mt19937_64 rng(2);
   const double F = 1200.0;
   for (int trial = 0; trial < 100; ++trial) {
-    const testing::PoseScene scene =
-        RandomScene(rng, 12, SceneShape::kVolume, CameraModel::Pinhole(F));
+    const testing::PointView scene =
+        RandomScene(rng, 12, PointShape::kVolume, CameraModel::Pinhole(F));
     const std::vector<Eigen::Vector2d> noisy = testing::AddPixelNoise(rng, scene.pixels, 1.0);
     const Pose paper = PaperEstimate(scene.object_points, noisy, F);
     const Pose ours =
@@ -100,7 +100,7 @@ TEST(LinearPose, IsThePapersEstimatorOnNoisyData) {
 
 TEST(LinearPose, ObjectUnitOnlyScalesTheTranslation) {
   std::mt19937_64 rng(3);
-  const testing::PoseScene scene = RandomScene(rng, 15, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 15, PointShape::kVolume);
   const std::vector<Eigen::Vector2d> noisy = testing::AddPixelNoise(rng, scene.pixels, 0.5);
   std::vector<Eigen::Vector3d> millimetres;
   for (const Eigen::Vector3d& P : scene.object_points) millimetres.push_back(1000.0 * P);
@@ -116,7 +116,7 @@ TEST(LinearPose, ObjectUnitOnlyScalesTheTranslation) {
 TEST(LinearPose, PlanePlusOnePointIsRefusedPlusTwoIsExact) {
   std::mt19937_64 rng(4);
   for (int trial = 0; trial < 20; ++trial) {
-    const testing::PoseScene board = RandomScene(rng, 12, SceneShape::kPlane);
+    const testing::PointView board = RandomScene(rng, 12, PointShape::kPlane);
     const auto pixel = [&](const Eigen::Vector3d& P) {
       return Project(board.camera, board.T_camera_target * P);
     };
@@ -142,7 +142,7 @@ TEST(LinearPose, PlanePlusOnePointIsRefusedPlusTwoIsExact) {
 
 TEST(LinearPose, RefusesCoplanarPointsAndSuggestsOtherMethods) {
   std::mt19937_64 rng(5);
-  testing::PoseScene scene = RandomScene(rng, 20, SceneShape::kPlane);
+  testing::PointView scene = RandomScene(rng, 20, PointShape::kPlane);
   const std::string planar =
       DegenerateMessage([&] { LinearPose(scene.object_points, scene.pixels, scene.camera); });
   EXPECT_NE(planar.find("the linear method"), std::string::npos) << planar;
@@ -158,7 +158,7 @@ TEST(LinearPose, RefusesCoplanarPointsAndSuggestsOtherMethods) {
 
 TEST(LinearPose, RefusesFewerThanSixPoints) {
   std::mt19937_64 rng(6);
-  const testing::PoseScene scene = RandomScene(rng, 5, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 5, PointShape::kVolume);
   const std::string message =
       DegenerateMessage([&] { LinearPose(scene.object_points, scene.pixels, scene.camera); });
   EXPECT_NE(message.find("at least 6"), std::string::npos) << message;
@@ -176,7 +176,7 @@ TEST(LinearPose, RefusesAnObjectWithoutExtentInTheImage) {
 
 TEST(LinearPose, RejectsMismatchedOrNonFiniteInput) {
   std::mt19937_64 rng(8);
-  testing::PoseScene scene = RandomScene(rng, 8, SceneShape::kVolume);
+  testing::PointView scene = RandomScene(rng, 8, PointShape::kVolume);
   std::vector<Eigen::Vector2d> fewer(scene.pixels.begin(), scene.pixels.end() - 1);
   EXPECT_THROW(LinearPose(scene.object_points, fewer, scene.camera), InputError);
   scene.object_points[3].y() = std::nan("");

@@ -39,13 +39,13 @@ Pose OpenCvMaximumLikelihood(const std::vector<Eigen::Vector3d>& object_points,
 
 TEST(PoseMethodOpenCv, RefinedMethodsMatchOpenCvIterative) {
   std::mt19937_64 rng(1);
-  for (testing::SceneShape shape : {testing::SceneShape::kVolume, testing::SceneShape::kPlane}) {
+  for (testing::PointShape shape : {testing::PointShape::kVolume, testing::PointShape::kPlane}) {
     for (int trial = 0; trial < 20; ++trial) {
-      const testing::PoseScene scene = testing::RandomScene(rng, 20, shape);
+      const testing::PointView scene = testing::RandomScene(rng, 20, shape);
       const std::vector<Eigen::Vector2d> noisy = testing::AddPixelNoise(rng, scene.pixels, 1.0);
       const Pose peer = OpenCvMaximumLikelihood(scene.object_points, noisy, scene.camera);
       for (PoseMethod method : {PoseMethod::kLinear, PoseMethod::kDlt}) {
-        if (method == PoseMethod::kLinear && shape == testing::SceneShape::kPlane) continue;
+        if (method == PoseMethod::kLinear && shape == testing::PointShape::kPlane) continue;
         const Pose ours =
             EstimatePose(method, scene.object_points, noisy, scene.camera).T_camera_target;
         EXPECT_LT(Eigen::AngleAxisd(ours.linear().transpose() * peer.linear()).angle(), 1e-7)

@@ -18,8 +18,8 @@
 namespace hecal::pose {
 namespace {
 
+using testing::PointShape;
 using testing::RandomScene;
-using testing::SceneShape;
 
 double RotationError(const Pose& a, const Pose& b) {
   return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
@@ -39,7 +39,7 @@ TEST(PoseMethod, NamesRoundTrip) {
 
 TEST(PoseMethod, LinearRawIsTheSeedMethodAlone) {
   std::mt19937_64 rng(1);
-  const testing::PoseScene scene = RandomScene(rng, 10, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 10, PointShape::kVolume);
   const std::vector<Eigen::Vector2d> noisy = testing::AddPixelNoise(rng, scene.pixels, 1.0);
   const PoseEstimate raw =
       EstimatePose(PoseMethod::kLinearRaw, scene.object_points, noisy, scene.camera);
@@ -54,7 +54,7 @@ TEST(PoseMethod, LinearRawIsTheSeedMethodAlone) {
 TEST(PoseMethod, RefinedMethodsReachTheSameMaximumLikelihoodPose) {
   std::mt19937_64 rng(2);
   for (int trial = 0; trial < 30; ++trial) {
-    const testing::PoseScene scene = RandomScene(rng, 12, SceneShape::kVolume);
+    const testing::PointView scene = RandomScene(rng, 12, PointShape::kVolume);
     const std::vector<Eigen::Vector2d> noisy = testing::AddPixelNoise(rng, scene.pixels, 1.0);
     PoseOptions options;
     options.refinement.pixel_sigma = 1.0;
@@ -81,7 +81,7 @@ TEST(PoseMethod, RefinedMethodsReachTheSameMaximumLikelihoodPose) {
 
 TEST(PoseMethod, DltHandlesPlanarTargetsThatLinearRefuses) {
   std::mt19937_64 rng(3);
-  const testing::PoseScene scene = RandomScene(rng, 20, SceneShape::kPlane);
+  const testing::PointView scene = RandomScene(rng, 20, PointShape::kPlane);
   const std::vector<Eigen::Vector2d> noisy = testing::AddPixelNoise(rng, scene.pixels, 0.3);
   const PoseEstimate dlt = EstimatePose(PoseMethod::kDlt, scene.object_points, noisy, scene.camera);
   EXPECT_LT(RotationError(dlt.T_camera_target, scene.T_camera_target), 5e-3);
@@ -98,7 +98,7 @@ TEST(PoseMethod, DltHandlesPlanarTargetsThatLinearRefuses) {
 
 TEST(PoseMethod, WarnsWhenTheSeedEstimateIsUnreliable) {
   std::mt19937_64 rng(5);
-  const testing::PoseScene scene = RandomScene(rng, 8, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 8, PointShape::kVolume);
   for (PoseMethod method : {PoseMethod::kLinear, PoseMethod::kLinearRaw, PoseMethod::kDlt}) {
     EXPECT_TRUE(
         EstimatePose(method, scene.object_points, scene.pixels, scene.camera).warnings.empty());
@@ -119,7 +119,7 @@ TEST(PoseMethod, WarnsWhenTheSeedEstimateIsUnreliable) {
 
 TEST(PoseMethod, FinishPoseWithoutRefinementKeepsTheStart) {
   std::mt19937_64 rng(4);
-  const testing::PoseScene scene = RandomScene(rng, 8, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 8, PointShape::kVolume);
   const PoseEstimate kept = FinishPose("ippe", scene.T_camera_target, false, scene.object_points,
                                        scene.pixels, scene.camera);
   EXPECT_EQ(kept.method, "ippe");

@@ -19,8 +19,8 @@
 namespace hecal::pose {
 namespace {
 
+using testing::PointShape;
 using testing::RandomScene;
-using testing::SceneShape;
 
 double RotationError(const Pose& a, const Pose& b) {
   return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
@@ -36,9 +36,9 @@ Pose Perturbed(std::mt19937_64& rng, const Pose& T, double angle, double offset)
 
 TEST(PoseRefinement, ConvergesToTheTruthOnNoiseFreeDataFromPoorStarts) {
   std::mt19937_64 rng(1);
-  for (SceneShape shape : {SceneShape::kVolume, SceneShape::kPlane}) {
+  for (PointShape shape : {PointShape::kVolume, PointShape::kPlane}) {
     for (int trial = 0; trial < 40; ++trial) {
-      const testing::PoseScene scene = RandomScene(rng, 12, shape);
+      const testing::PointView scene = RandomScene(rng, 12, shape);
       // Up to 0.5 rad and 0.1 m off, but every point still in front of the camera.
       const Pose start = Perturbed(rng, scene.T_camera_target, 0.5 * (trial % 5 + 1) / 5.0, 0.1);
       const RefinementResult result =
@@ -54,7 +54,7 @@ TEST(PoseRefinement, ConvergesToTheTruthOnNoiseFreeDataFromPoorStarts) {
 
 TEST(PoseRefinement, ResidualsAreTheReprojectionErrorsAtTheResult) {
   std::mt19937_64 rng(2);
-  const testing::PoseScene scene = RandomScene(rng, 20, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 20, PointShape::kVolume);
   const std::vector<Eigen::Vector2d> noisy = testing::AddPixelNoise(rng, scene.pixels, 0.7);
   const RefinementResult result =
       RefinePose(scene.T_camera_target, scene.object_points, noisy, scene.camera);
@@ -86,9 +86,9 @@ TEST(PoseRefinement, ResidualsAreTheReprojectionErrorsAtTheResult) {
 TEST(PoseRefinement, PredictedCovarianceMatchesTheEmpiricalOne) {
   constexpr int kTrials = 400;
   constexpr double kSigma = 0.5;
-  for (SceneShape shape : {SceneShape::kVolume, SceneShape::kPlane}) {
-    std::mt19937_64 rng(shape == SceneShape::kVolume ? 3 : 4);
-    const testing::PoseScene scene = RandomScene(rng, 15, shape);
+  for (PointShape shape : {PointShape::kVolume, PointShape::kPlane}) {
+    std::mt19937_64 rng(shape == PointShape::kVolume ? 3 : 4);
+    const testing::PointView scene = RandomScene(rng, 15, shape);
     RefinementOptions options;
     options.pixel_sigma = kSigma;
     double mahalanobis = 0.0;
@@ -124,7 +124,7 @@ TEST(PoseRefinement, EstimatedSigmaIsUnbiasedAndScalesTheCovariance) {
   constexpr int kTrials = 400, kPoints = 30;
   constexpr double kSigma = 0.8;
   std::mt19937_64 rng(5);
-  const testing::PoseScene scene = RandomScene(rng, kPoints, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, kPoints, PointShape::kVolume);
   double mahalanobis = 0.0, variance_ratio = 0.0;
   for (int trial = 0; trial < kTrials; ++trial) {
     const RefinementResult result =
@@ -142,7 +142,7 @@ TEST(PoseRefinement, EstimatedSigmaIsUnbiasedAndScalesTheCovariance) {
 
 TEST(PoseRefinement, RefusesAStartWithPointsBehindTheCamera) {
   std::mt19937_64 rng(6);
-  const testing::PoseScene scene = RandomScene(rng, 10, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 10, PointShape::kVolume);
   const Pose behind = MakePose(scene.T_camera_target.linear(),
                                scene.T_camera_target.translation() - Eigen::Vector3d(0, 0, 2));
   EXPECT_THROW(RefinePose(behind, scene.object_points, scene.pixels, scene.camera),
@@ -163,7 +163,7 @@ TEST(PoseRefinement, RefusesPointsOnALine) {
 
 TEST(PoseRefinement, SigmaNeedsRedundancyUnlessGiven) {
   std::mt19937_64 rng(7);
-  const testing::PoseScene scene = RandomScene(rng, 3, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 3, PointShape::kVolume);
   EXPECT_THROW(RefinePose(scene.T_camera_target, scene.object_points, scene.pixels, scene.camera),
                DegenerateError);
   RefinementOptions options;
@@ -176,7 +176,7 @@ TEST(PoseRefinement, SigmaNeedsRedundancyUnlessGiven) {
 
 TEST(PoseRefinement, RejectsInvalidOptions) {
   std::mt19937_64 rng(8);
-  const testing::PoseScene scene = RandomScene(rng, 10, SceneShape::kVolume);
+  const testing::PointView scene = RandomScene(rng, 10, PointShape::kVolume);
   RefinementOptions options;
   std::string why;
   EXPECT_TRUE(options.IsValid(&why));

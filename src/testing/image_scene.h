@@ -14,8 +14,19 @@
 // 0.4 m cube, tilted up to ±20° with a free spin, looking at a 9 × 6 grid of 30 mm pitch
 // centred on the target origin, so that every grid point is in front of every camera and in
 // the image.
+//
+// MakePointView draws one view for the pose-from-known-points methods (pose/*.h), no stations:
+// from the caller's generator, first per object point z (a volume only), y, x, uniform in a cube
+// of side `side` centred on the target origin (z = 0 for a plane, OpenCV's board frame); then the
+// rotation (uniform on SO(3) for a volume; for a plane a heading, a free spin about the normal
+// and a tilt in [0, max_tilt] about the in-plane axis at that heading, R = R_tilt · R_spin); then
+// y, x of the target origin's lateral offset (uniform in ±lateral; z = distance) in the camera
+// frame. The pixels are exact projections; AddPixelNoise draws y then x per pixel from the same
+// generator.
 #pragma once
 
+#include <Eigen/Geometry>
+#include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <random>
@@ -23,6 +34,7 @@
 
 #include "hecal/geometry/types.h"
 #include "hecal/pose/camera_model.h"
+#include "testing/random_poses.h"
 #include "testing/scene.h"
 
 namespace hecal::testing {
@@ -128,6 +140,76 @@ inline ImageScene MakeImageScene(const ImageSceneOptions& options) {
     scene.images.push_back(std::move(image));
   }
   return scene;
+}
+
+// One view of N known object points (see the header for the draws).
+enum class PointShape { kVolume, kPlane };
+
+struct PointViewOptions {
+  pose::CameraModel camera = DefaultCamera();
+  int points = 10;
+  PointShape shape = PointShape::kVolume;
+  double side = 0.4;      // m, the cube (or square) holding the points
+  double distance = 1.0;  // m, the target origin's depth in the camera frame
+  double lateral = 0.1;   // m, the largest x and y offset of the target origin
+  double max_tilt = 40.0 * std::numbers::pi / 180.0;  // rad, a plane's tilt from frontal
+};
+
+struct PointView {
+  pose::CameraModel camera;
+  Pose T_camera_target = Pose::Identity();  // the truth
+  std::vector<Eigen::Vector3d> object_points;
+  std::vector<Eigen::Vector2d> pixels;  // exact projections
+};
+
+inline PointView MakePointView(const PointViewOptions& options, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> side(-options.side / 2, options.side / 2),
+      lateral(-options.lateral, options.lateral), tilt(0.0, options.max_tilt),
+      spin(-std::numbers::pi, std::numbers::pi);
+  const bool volume = options.shape == PointShape::kVolume;
+  PointView view;
+  view.camera = options.camera;
+  for (int k = 0; k < options.points; ++k) {
+    const double z = volume ? side(rng) : 0.0;
+    const double y = side(rng);
+    const double x = side(rng);
+    view.object_points.emplace_back(x, y, z);
+  }
+  Eigen::Matrix3d R;
+  if (volume) {
+    R = RandomRotation(rng);
+  } else {
+    const double heading = spin(rng);
+    const Eigen::Vector3d in_plane_axis(std::cos(heading), std::sin(heading), 0.0);
+    const double turn = spin(rng);
+    const double angle = tilt(rng);
+    R = Eigen::AngleAxisd(angle, in_plane_axis).toRotationMatrix() *
+        Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  }
+  const double offset_y = lateral(rng);
+  const double offset_x = lateral(rng);
+  view.T_camera_target = MakePose(R, Eigen::Vector3d(offset_x, offset_y, options.distance));
+  for (const Eigen::Vector3d& P : view.object_points) {
+    view.pixels.push_back(pose::Project(options.camera, view.T_camera_target * P));
+  }
+  return view;
+}
+
+// `pixels` plus isotropic Gaussian noise of `sigma` px per coordinate from `rng` (nothing drawn
+// when sigma is zero).
+inline std::vector<Eigen::Vector2d> AddPixelNoise(std::mt19937_64& rng,
+                                                  const std::vector<Eigen::Vector2d>& pixels,
+                                                  double sigma) {
+  std::vector<Eigen::Vector2d> noisy = pixels;
+  if (sigma > 0.0) {
+    std::normal_distribution<double> normal(0.0, sigma);
+    for (Eigen::Vector2d& u : noisy) {
+      const double dy = normal(rng);
+      const double dx = normal(rng);
+      u += Eigen::Vector2d(dx, dy);
+    }
+  }
+  return noisy;
 }
 
 }  // namespace hecal::testing

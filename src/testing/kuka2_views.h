@@ -28,15 +28,13 @@ inline pose::TargetSpec Target() {
 }
 
 inline pose::CameraModel Camera() {
-  pose::CameraModel camera;
-  camera.fx = 1056.2855;
-  camera.fy = 1056.4172;
-  camera.cx = 958.7994;
-  camera.cy = 586.9487;
-  camera.width = 1920;
-  camera.height = 1200;
-  camera.distortion = {-0.131337, 0.099230, 0.000133, 0.000312, -0.049132};
-  return camera;
+  return {.fx = 1056.2855,
+          .fy = 1056.4172,
+          .cx = 958.7994,
+          .cy = 586.9487,
+          .width = 1920,
+          .height = 1200,
+          .distortion = {-0.131337, 0.099230, 0.000133, 0.000312, -0.049132}};
 }
 
 // SOURCE.md's reference X = T_gripper_camera (OpenCV PARK, confirmed by four other methods).

@@ -24,15 +24,13 @@ inline constexpr double kDeg = std::numbers::pi / 180.0;
 // 800 × 600 px, f = 700 px, principal point off-centre, radial and tangential distortion of a
 // typical machine-vision lens.
 inline pose::CameraModel TestCamera() {
-  pose::CameraModel camera;
-  camera.fx = 700.0;
-  camera.fy = 702.0;
-  camera.cx = 401.3;
-  camera.cy = 297.8;
-  camera.width = 800;
-  camera.height = 600;
-  camera.distortion = {-0.12, 0.05, 0.0008, -0.0005, 0.0};
-  return camera;
+  return {.fx = 700.0,
+          .fy = 702.0,
+          .cx = 401.3,
+          .cy = 297.8,
+          .width = 800,
+          .height = 600,
+          .distortion = {-0.12, 0.05, 0.0008, -0.0005, 0.0}};
 }
 
 // The centre of the target's points (target frame).

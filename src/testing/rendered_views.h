@@ -47,15 +47,13 @@ inline pose::TargetSpec Tag() {
 }
 
 inline pose::CameraModel TrueCamera() {
-  pose::CameraModel camera;
-  camera.fx = 620.0;
-  camera.fy = 622.0;
-  camera.cx = 321.5;
-  camera.cy = 238.0;
-  camera.width = 640;
-  camera.height = 480;
-  camera.distortion = {-0.12, 0.05, 0.0, 0.0, 0.0};
-  return camera;
+  return {.fx = 620.0,
+          .fy = 622.0,
+          .cx = 321.5,
+          .cy = 238.0,
+          .width = 640,
+          .height = 480,
+          .distortion = {-0.12, 0.05, 0.0, 0.0, 0.0}};
 }
 
 using ::hecal::testing::CameraYaml;
@@ -72,25 +70,22 @@ inline Pose ViewPose(double distance, double tilt, double azimuth, double pan_x,
   return vision::testing::LookAt(eye, centre, Eigen::Vector2d(pan_x, pan_y));
 }
 
-// `count` views of the board, tilted 15–35° in directions 60° apart, spread over the image.
-inline std::vector<Pose> Views(int count = 6) {
+// `count` views of a target centred at `centre` (the board's by default), tilted 15–35° in
+// directions 60° apart, spread over the image, from `nearest` + (0, 1, 2)·`step` metres.
+inline std::vector<Pose> Views(int count = 6, double nearest = 0.38, double step = 0.02,
+                               const Eigen::Vector3d& centre = Eigen::Vector3d(0.1, 0.0625, 0.0)) {
   std::vector<Pose> views;
   for (int k = 0; k < count; ++k) {
-    views.push_back(ViewPose(0.38 + 0.02 * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg, k * 60.0 * kDeg,
-                             (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12)));
+    views.push_back(ViewPose(nearest + step * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg,
+                             k * 60.0 * kDeg, (k % 2 == 0 ? 0.08 : -0.08),
+                             (k % 4 < 2 ? 0.12 : -0.12), centre));
   }
   return views;
 }
 
 // The same for the tag (Tag()), from 0.3–0.4 m: the tag is 150–200 px across.
 inline std::vector<Pose> TagViews(int count) {
-  std::vector<Pose> views;
-  for (int k = 0; k < count; ++k) {
-    views.push_back(ViewPose(0.3 + 0.05 * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg, k * 60.0 * kDeg,
-                             (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12),
-                             Eigen::Vector3d::Zero()));
-  }
-  return views;
+  return Views(count, 0.3, 0.05, Eigen::Vector3d::Zero());
 }
 
 // Renders `target` (the board by default) seen from T_camera_target into `path` (slight blur and

@@ -23,15 +23,13 @@ using testing::Project;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 pose::CameraModel TrueCamera() {
-  pose::CameraModel camera;
-  camera.fx = 1000.0;
-  camera.fy = 1003.0;
-  camera.cx = 652.3;
-  camera.cy = 471.8;
-  camera.width = 1280;
-  camera.height = 960;
-  camera.distortion = {-0.18, 0.07, 0.0009, -0.0006, -0.012};
-  return camera;
+  return {.fx = 1000.0,
+          .fy = 1003.0,
+          .cx = 652.3,
+          .cy = 471.8,
+          .width = 1280,
+          .height = 960,
+          .distortion = {-0.18, 0.07, 0.0009, -0.0006, -0.012}};
 }
 
 // An 11 × 8 board with 40 mm squares (0.4 × 0.28 m), centre (0.2, 0.14, 0).

@@ -22,15 +22,13 @@ constexpr double kNoisePx = 0.05;
 
 // A 1920 × 1200 machine-vision camera (the kind of data/rwhe-kuka2).
 pose::CameraModel WideCamera() {
-  pose::CameraModel camera;
-  camera.fx = 1056.0;
-  camera.fy = 1057.0;
-  camera.cx = 958.8;
-  camera.cy = 586.9;
-  camera.width = 1920;
-  camera.height = 1200;
-  camera.distortion = {-0.13, 0.10, 0.0001, 0.0003, -0.05};
-  return camera;
+  return {.fx = 1056.0,
+          .fy = 1057.0,
+          .cx = 958.8,
+          .cy = 586.9,
+          .width = 1920,
+          .height = 1200,
+          .distortion = {-0.13, 0.10, 0.0001, 0.0003, -0.05}};
 }
 
 // 8 views of `points` (a planar target around `centre`) from 0.45–0.6 m, tilted 15–35° towards

@@ -22,15 +22,13 @@ using testing::RotationError;
 using testing::TranslationError;
 
 pose::CameraModel TestCamera() {
-  pose::CameraModel camera;
-  camera.fx = 900.0;
-  camera.fy = 905.0;
-  camera.cx = 645.0;
-  camera.cy = 478.0;
-  camera.width = 1280;
-  camera.height = 960;
-  camera.distortion = {-0.21, 0.09, 0.0012, -0.0007, -0.015};
-  return camera;
+  return {.fx = 900.0,
+          .fy = 905.0,
+          .cx = 645.0,
+          .cy = 478.0,
+          .width = 1280,
+          .height = 960,
+          .distortion = {-0.21, 0.09, 0.0012, -0.0007, -0.015}};
 }
 
 // The inner corners of a 9 × 6 chessboard of 30 mm squares, the first corner the origin.
