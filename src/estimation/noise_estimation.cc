@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/uncertainty/consistency.h"
 
 namespace hecal::estimation {
 namespace {
@@ -355,15 +356,39 @@ double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
 
 std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
                                       const std::vector<bool>& included,
-                                      const NoiseVariances& theta) {
+                                      const NoiseVariances& theta,
+                                      const StationTestOptions& options) {
   const Refit refit = LinearRefit(stations, included, theta);
   std::vector<StationTest> tests(stations.size());
+  std::vector<Vector6d> r_hat(stations.size());
+  double energy = 0.0;  // Ω (header)
+  int included_count = 0;
+  for (size_t i = 0; i < stations.size(); ++i) {
+    r_hat[i] = stations[i].residual - stations[i].jacobian * refit.delta;
+    if (!included[i]) continue;
+    energy += r_hat[i].dot(refit.inverse_covariance[i] * r_hat[i]);
+    ++included_count;
+  }
+  const double nu = 6.0 * included_count - 12.0;
+  // Thresholds on T_i per degrees of freedom d = 1..6, [0] included, [1] excluded; 0: untestable.
+  double threshold[7][2] = {};
+  const double p = 1.0 - options.false_alarm;
+  for (int d = 1; d <= 6; ++d) {
+    if (!options.estimated) {
+      threshold[d][0] = threshold[d][1] = options.false_alarm == kThreeSigmaFalseAlarm
+                                              ? ThreeSigmaChiSquare(d)
+                                              : uncertainty::ChiSquareQuantile(p, d);
+    } else if (nu > d && energy > 0.0) {
+      const double q_included = uncertainty::FisherQuantile(p, d, nu - d);
+      threshold[d][0] = q_included * energy * d / (nu - d + q_included * d);
+      threshold[d][1] = uncertainty::FisherQuantile(p, d, nu) * energy * d / nu;
+    }
+  }
   for (size_t i = 0; i < stations.size(); ++i) {
     const StationLinearization& s = stations[i];
     const Matrix6d& W = refit.inverse_covariance[i];
     StationTest& test = tests[i];
     test.chi2 = s.residual.dot(W * s.residual);
-    const Vector6d r_hat = s.residual - s.jacobian * refit.delta;
     const Matrix6d leverage = s.jacobian * refit.N_inverse * s.jacobian.transpose();
     const Matrix6d sigma = CombineComponents(s.components, theta);
     const Matrix6d C = included[i] ? Matrix6d(sigma - leverage) : Matrix6d(sigma + leverage);
@@ -372,7 +397,7 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
     const Eigen::LLT<Matrix6d> llt(sigma);
     const Matrix6d L_inverse = llt.matrixL().solve(Matrix6d::Identity());
     const Matrix6d C_white = L_inverse * C * L_inverse.transpose();
-    const Vector6d r_white = L_inverse * r_hat;
+    const Vector6d r_white = L_inverse * r_hat[i];
     const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(0.5 * (C_white + C_white.transpose()));
     double statistic = 0.0;
     int dof = 0;
@@ -385,7 +410,8 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
     }
     test.statistic = statistic;
     test.dof = dof;
-    test.outlier = dof > 0 && statistic > ThreeSigmaChiSquare(dof);
+    test.threshold = threshold[dof][included[i] ? 0 : 1];
+    test.outlier = dof > 0 && test.threshold > 0.0 && statistic > test.threshold;
   }
   return tests;
 }

@@ -107,14 +107,32 @@
 // Outlier test (Baarda's data snooping, multivariate form). Station i's statistic is
 //   included:  T_i = r̂_iᵀ C_i⁺ r̂_i,  C_i = Σ_i − J_i N⁻¹ J_iᵀ  (its residual covariance)
 //   excluded:  T_i = r̂_iᵀ (Σ_i + J_i N⁻¹ J_iᵀ)⁻¹ r̂_i   (prediction from the other stations)
-// ~ χ²(rank C_i) under the model. The station is an outlier when T_i exceeds the χ² quantile of
-// the two-sided 3σ level (p = 0.0027; 20.06 for 6 degrees of freedom). Flagged stations are
+// ~ χ²(d), d = rank C_i, when the variances are known. The station is an outlier when T_i
+// exceeds the quantile of the false-alarm probability α per station (default: the two-sided 3σ
+// level, α = 0.0027; χ² 20.06 for 6 degrees of freedom). Flagged stations are
 // excluded from the noise estimate and the test is repeated until the flags are stable, so a
 // gross outlier cannot inflate the estimated sigmas and hide itself (at most (n − 3)/2 stations
 // are excluded; beyond that the flags are reported but nothing is excluded). "Stable" is: fewer
 // than n · kStableFlagsFraction flags changed — no change at all below 1000 stations; at 10⁵
 // inliers the 3σ level flags ~270 and the next round changes ~28, each later round costing a
 // full variance iteration for a change in σ of order 10⁻⁵.
+// Estimated variances (StationTestOptions::estimated; station_selection.h uses it). When the
+// variances were estimated from the included stations, T_i is judged against a scale that is
+// itself a random variable with ν = 6m − 12 degrees of freedom (m included stations) — at 8
+// stations only 30–36 — and the χ² quantile is too small: a good station left out by the
+// consensus (which leaves out the largest residuals) and tested against the scale of the 7
+// others was rejected in 4.5% of clean 8-station sets instead of the 0.27% per station the
+// level promises (README "Uncertainty"). With one common scale factor the exact reference is
+// Fisher's F (Koch 1999, §4.4; Pope's τ test, 1976): with Ω = Σ_included r̂ᵀ Σ⁻¹ r̂ the weighted
+// residual energy at the same variances,
+//   excluded:  (T_i / d) / (Ω / ν) ~ F(d, ν)                    (the scale from the others)
+//   included:  (T_i / d) / ((Ω − T_i) / (ν − d)) ~ F(d, ν − d)   (the same, leave-one-out:
+//              the externally studentised statistic, scale without station i)
+// Both ratios are free of the variances' common scale, so they hold for the REML point and the
+// posterior mean alike. With several variance groups there is no single scale factor; the F
+// reference with the total ν is then an approximation (a group resting on fewer degrees of
+// freedom has heavier tails) that is exact when one group dominates the station's residual.
+// StationTest::threshold is the T_i at which the test fires.
 #pragma once
 
 #include <array>
@@ -129,6 +147,8 @@
 namespace hecal::estimation {
 
 inline constexpr double kStableFlagsFraction = 1e-3;
+// 1 − erf(3/√2): the two-sided 3σ level, the outlier test's default false-alarm probability.
+inline constexpr double kThreeSigmaFalseAlarm = 1.0 - 0.99730020393673979;
 // The richer models above: fewest stations.
 inline constexpr size_t kAnisotropicMinStations = 8;
 
@@ -167,7 +187,14 @@ struct StationTest {
   double chi2 = 0.0;       // r_iᵀ Σ_i⁻¹ r_i at the linearisation point
   double statistic = 0.0;  // T_i above
   int dof = 0;             // its degrees of freedom
-  bool outlier = false;    // T_i > χ²_dof(0.9973)
+  double threshold = 0.0;  // T_i beyond which the station is an outlier (header)
+  bool outlier = false;    // T_i > threshold
+};
+
+// The outlier test's level and reference distribution (header, "Outlier test").
+struct StationTestOptions {
+  double false_alarm = kThreeSigmaFalseAlarm;  // α per station
+  bool estimated = false;  // variances estimated from the included stations: F, not χ²
 };
 
 struct NoiseEstimate {
@@ -196,7 +223,8 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
 // the prediction from the others for excluded ones.
 std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
                                       const std::vector<bool>& included,
-                                      const NoiseVariances& variances);
+                                      const NoiseVariances& variances,
+                                      const StationTestOptions& options = {});
 
 // Starting values for the estimated variances of `spec` (known ones copied) from the raw
 // residual energies: a rotation group gets Σ|ω_i|² / Σ tr(ω block of Q_ik); a translation group
