@@ -33,6 +33,9 @@ constexpr int kFineGridPoints = 24;
 constexpr double kPosteriorGridLow = 1e-6;
 constexpr double kPosteriorGridHigh = 4.0;
 constexpr size_t kPosteriorMaxStations = 100;
+// A richer model is eligible only when each of its groups rests on more effective degrees of
+// freedom than this (header, "Richer noise models").
+constexpr double kMinGroupDof = 2.0;
 
 bool IsRotation(int k) {
   return k == kRobotRotation || k == kCameraRotation || k == kCameraTiltExcess;
@@ -135,7 +138,8 @@ void InitialVariances(const std::vector<StationLinearization>& stations,
 // One Fisher-scoring (Helmert) step for the estimated groups; returns the new variances.
 NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
                             const std::vector<bool>& included, const NoiseSpec& spec,
-                            const NoiseVariances& theta, double length_scale) {
+                            const NoiseVariances& theta, double length_scale,
+                            std::array<double, kMaxGroups>* dof = nullptr) {
   const int G = spec.NumGroups();
   const Refit refit = LinearRefit(stations, included, theta);
   const Matrix12d& Ni = refit.N_inverse;
@@ -188,6 +192,18 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
   for (int g = 0; g < G; ++g) {
     rhs(g) = q[g] - trace_PQPQ(g, G);
     for (int h = 0; h < G; ++h) S(g, h) = trace_PQPQ(g, h);
+  }
+  if (dof != nullptr) {
+    // Var(θ̂_g) = 2 (S⁻¹)_gg (REML's Fisher information is S / 2); a χ²(ν) estimate has
+    // Var = 2 θ² / ν, so ν_g = θ_g² / (S⁻¹)_gg.
+    const Eigen::MatrixXd S_inverse =
+        Eigen::MatrixXd(S.topLeftCorner(G, G)).completeOrthogonalDecomposition().pseudoInverse();
+    for (int g = 0; g < G; ++g) {
+      double value = 0.0;
+      for (int k = 0; k < kNumNoiseComponents; ++k)
+        if (spec.group[k] == g) value = theta[k];
+      (*dof)[g] = S_inverse(g, g) > 0.0 ? value * value / S_inverse(g, g) : 0.0;
+    }
   }
   GroupVector solution = GroupVector::Zero();
   solution.head(G) = S.topLeftCorner(G, G).colPivHouseholderQr().solve(rhs.head(G));
@@ -495,7 +511,7 @@ constexpr double kChiSquare95[4] = {0.0, 3.841, 5.991, 7.815};
 // last variance estimate used.
 NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations,
                                const NoiseSpec& spec, double length_scale,
-                               std::vector<bool>* final_included) {
+                               std::vector<bool>* final_included, double* min_dof = nullptr) {
   const size_t n = stations.size();
   NoiseEstimate estimate;
   estimate.variances = estimate.reml_variances = spec.variances;
@@ -534,6 +550,11 @@ NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations
         }
       }
       estimate.reml_variances = estimate.variances;
+      if (min_dof != nullptr) {
+        std::array<double, kMaxGroups> dof{};
+        VarianceStep(stations, included, spec, estimate.variances, length_scale, &dof);
+        *min_dof = *std::min_element(dof.begin(), dof.begin() + spec.NumGroups());
+      }
       if (spec.posterior_mean && n <= kPosteriorMaxStations) {
         estimate.variances = PosteriorMean(stations, included, spec, estimate.reml_variances);
       }
@@ -622,7 +643,10 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
   double best_score = isotropic_likelihood;
   for (const Candidate& candidate : candidates) {
     std::vector<bool> rich_included;
-    NoiseEstimate fit = EstimateOneModel(stations, candidate.spec, length_scale, &rich_included);
+    double min_dof = 0.0;
+    NoiseEstimate fit =
+        EstimateOneModel(stations, candidate.spec, length_scale, &rich_included, &min_dof);
+    if (!(min_dof > kMinGroupDof)) continue;  // a variance the data do not determine (header)
     const double likelihood = LinearRefit(stations, included, fit.reml_variances).log_likelihood;
     const double ratio = 2.0 * (likelihood - isotropic_likelihood);
     if (!std::isfinite(ratio)) continue;
