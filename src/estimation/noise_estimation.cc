@@ -33,8 +33,8 @@ constexpr int kFineGridPoints = 24;
 constexpr double kPosteriorGridLow = 1e-6;
 constexpr double kPosteriorGridHigh = 4.0;
 constexpr size_t kPosteriorMaxStations = 100;
-// A richer model is eligible only when each of its groups rests on more effective degrees of
-// freedom than this (header, "Richer noise models").
+// A richer model is eligible only when each group it shares with the isotropic model rests on
+// more effective degrees of freedom than this (header, "Richer noise models").
 constexpr double kMinGroupDof = 2.0;
 
 bool IsRotation(int k) {
@@ -511,7 +511,8 @@ constexpr double kChiSquare95[4] = {0.0, 3.841, 5.991, 7.815};
 // last variance estimate used.
 NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations,
                                const NoiseSpec& spec, double length_scale,
-                               std::vector<bool>* final_included, double* min_dof = nullptr) {
+                               std::vector<bool>* final_included,
+                               std::array<double, kMaxGroups>* dof = nullptr) {
   const size_t n = stations.size();
   NoiseEstimate estimate;
   estimate.variances = estimate.reml_variances = spec.variances;
@@ -550,11 +551,8 @@ NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations
         }
       }
       estimate.reml_variances = estimate.variances;
-      if (min_dof != nullptr) {
-        std::array<double, kMaxGroups> dof{};
-        VarianceStep(stations, included, spec, estimate.variances, length_scale, &dof);
-        *min_dof = *std::min_element(dof.begin(), dof.begin() + spec.NumGroups());
-      }
+      if (dof != nullptr)
+        VarianceStep(stations, included, spec, estimate.variances, length_scale, dof);
       if (spec.posterior_mean && n <= kPosteriorMaxStations) {
         estimate.variances = PosteriorMean(stations, included, spec, estimate.reml_variances);
       }
@@ -643,10 +641,12 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
   double best_score = isotropic_likelihood;
   for (const Candidate& candidate : candidates) {
     std::vector<bool> rich_included;
-    double min_dof = 0.0;
+    std::array<double, kMaxGroups> dof{};
     NoiseEstimate fit =
-        EstimateOneModel(stations, candidate.spec, length_scale, &rich_included, &min_dof);
-    if (!(min_dof > kMinGroupDof)) continue;  // a variance the data do not determine (header)
+        EstimateOneModel(stations, candidate.spec, length_scale, &rich_included, &dof);
+    // Groups 0 … G − 1 are the isotropic model's: none may be left undetermined (header).
+    if (!std::all_of(dof.begin(), dof.begin() + G, [](double v) { return v > kMinGroupDof; }))
+      continue;
     const double likelihood = LinearRefit(stations, included, fit.reml_variances).log_likelihood;
     const double ratio = 2.0 * (likelihood - isotropic_likelihood);
     if (!std::isfinite(ratio)) continue;

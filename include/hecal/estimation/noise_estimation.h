@@ -88,27 +88,30 @@
 // under the isotropic model the null distribution is a χ̄² mixture and the real level is lower,
 // about 2% for the excess), and of the eligible ones the largest ℓ_R − (extra variances) wins
 // (Akaike). On isotropic, equally split data a richer model is chosen about one time in 20–50.
-// Identifiability on the data set at hand: a richer model is eligible only when each of its
-// groups rests on more than 2 effective degrees of freedom at its REML point, ν_g = θ_g² /
+// Identifiability on the data set at hand: a richer model is eligible only when each group it
+// shares with the isotropic model (the rotation and translation variances it splits or adds to)
+// rests on more than 2 effective degrees of freedom at its REML point, ν_g = θ_g² /
 // (S⁻¹)_gg with S_gh = tr(P Q_g P Q_h) (Var θ̂_g = 2 (S⁻¹)_gg, and a χ²(ν) estimate has
 // Var = 2θ²/ν). Below 2 the inverse-gamma posterior of that variance has no mean: the data
 // cannot bound it, and the REML point sits on a boundary that the likelihood-ratio test then
-// rewards. Measured: on the 8-station data set whose translation sigma collapsed (README
-// "Uncertainty", trial 182 of (b)) the model with the camera excess and the robot's rotation
-// apart had ν = 0.00 for the shared translation variance (the depth excess takes the same
-// residuals) and 0.11 for the depth excess; it gave σ_t = 0.062 mm for a translation-equivalent
-// truth of 0.72 mm and X's NEES 509. Without it the isotropic model is chosen: σ_t 0.174 mm, NEES
-// 73 — still low, because the isotropic translation group itself rests on ν ≈ 2 there.
-// The minimum of kAnisotropicMinStations: up to five variances from 6n − 12 residual degrees of
-// freedom; at n = 8 that is 36, 7–9 per variance, the fewest at which the REML estimates are
-// bounded away from "anything" (relative σ error √(1/(2ν)) ≈ 0.25) and the likelihood-ratio
-// statistic is near its χ² limit. Every estimated group is a posterior mean like the isotropic
-// ones: with more than two groups a joint grid is too costly (16⁵ points), so each group's
-// posterior mean is taken with the others held at their REML values (a conditional posterior
-// mean, narrower than the marginal). Where that matters was measured: on the 8-station data set
-// whose translation sigma collapsed with a richer model (README "Uncertainty": 0.062 mm for a
-// translation-equivalent truth of ≈ 0.7 mm), the joint mean over a 16³ + 24³ grid was 0.071 mm —
-// the posterior itself sat there (that model is now ineligible, above), so the joint grid, 7×
+// rewards. The extra variances themselves are not held to it: a small robot rotation variance
+// beside a large camera one (camodocal-artag, README "Uncertainty") has few effective degrees of
+// freedom because it is near zero, and that is what the model says. Measured: on the 8-station data
+// set whose translation sigma collapsed (README "Uncertainty", trial 182 of (b)) the model with the
+// camera excess and the robot's rotation apart had ν = 0.00 for the shared translation variance
+// (the depth excess takes the same residuals) and 0.11 for the depth excess; it gave σ_t = 0.062 mm
+// for a translation-equivalent truth of 0.72 mm and X's NEES 509. Without it the isotropic model is
+// chosen: σ_t 0.174 mm, NEES 73 — still low, because the isotropic translation group itself rests
+// on ν ≈ 2 there. The minimum of kAnisotropicMinStations: up to five variances from 6n − 12
+// residual degrees of freedom; at n = 8 that is 36, 7–9 per variance, the fewest at which the REML
+// estimates are bounded away from "anything" (relative σ error √(1/(2ν)) ≈ 0.25) and the
+// likelihood-ratio statistic is near its χ² limit. Every estimated group is a posterior mean like
+// the isotropic ones: with more than two groups a joint grid is too costly (16⁵ points), so each
+// group's posterior mean is taken with the others held at their REML values (a conditional
+// posterior mean, narrower than the marginal). Where that matters was measured: on the 8-station
+// data set whose translation sigma collapsed with a richer model (README "Uncertainty": 0.062 mm
+// for a translation-equivalent truth of ≈ 0.7 mm), the joint mean over a 16³ + 24³ grid was 0.071
+// mm — the posterior itself sat there (that model is now ineligible, above), so the joint grid, 7×
 // the cost, is not used. NoiseEstimate::richer says a
 // richer model was chosen; robot() and camera() then report the separate rotation sigmas,
 // camera_excess() the excess. Not used when the camera noise is given (--camera-sigma). Cost: up to
