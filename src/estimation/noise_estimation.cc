@@ -386,18 +386,19 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
     ++included_count;
   }
   const double nu = 6.0 * included_count - 12.0;
-  // Thresholds on T_i per degrees of freedom d = 1..6, [0] included, [1] excluded; 0: untestable.
+  // Thresholds on T_i per degrees of freedom d = 1..6, [0] included, [1] excluded.
   double threshold[7][2] = {};
   const double p = 1.0 - options.false_alarm;
   for (int d = 1; d <= 6; ++d) {
-    if (!options.estimated) {
-      threshold[d][0] = threshold[d][1] = options.false_alarm == kThreeSigmaFalseAlarm
-                                              ? ThreeSigmaChiSquare(d)
-                                              : uncertainty::ChiSquareQuantile(p, d);
-    } else if (nu > d && energy > 0.0) {
+    const double chi2 = options.false_alarm == kThreeSigmaFalseAlarm
+                            ? ThreeSigmaChiSquare(d)
+                            : uncertainty::ChiSquareQuantile(p, d);
+    threshold[d][0] = threshold[d][1] = chi2;
+    // Never below χ² (header): a known part of Σ that overstates the noise makes Ω small.
+    if (options.estimated && nu > d && energy > 0.0) {
       const double q_included = uncertainty::FisherQuantile(p, d, nu - d);
-      threshold[d][0] = q_included * energy * d / (nu - d + q_included * d);
-      threshold[d][1] = uncertainty::FisherQuantile(p, d, nu) * energy * d / nu;
+      threshold[d][0] = std::max(chi2, q_included * energy * d / (nu - d + q_included * d));
+      threshold[d][1] = std::max(chi2, uncertainty::FisherQuantile(p, d, nu) * energy * d / nu);
     }
   }
   for (size_t i = 0; i < stations.size(); ++i) {

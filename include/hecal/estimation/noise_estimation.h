@@ -150,7 +150,11 @@
 // freedom has heavier tails) that is exact when one group dominates the station's residual;
 // measured: eye-in-hand, noise estimated on both sides, 2.5% of clean sets at n = 8 and 15
 // against the 1% asked (the translation group rests on a few effective degrees of freedom).
-// StationTest::threshold is the T_i at which the test fires.
+// The threshold is never below the χ² one: when part of Σ is known (the PnP covariances of
+// `calibrate --images`) and overstates the real noise, Ω is small and the scale-free F would
+// shrink the threshold below what the known part alone allows (it rejected 2 of 8 good views of
+// a rendered set whose robot poses are exact). StationTest::threshold is the T_i at which the
+// test fires.
 #pragma once
 
 #include <array>
