@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/uncertainty/consistency.h"
 
 namespace hecal::estimation {
 namespace {
@@ -32,6 +33,9 @@ constexpr int kFineGridPoints = 24;
 constexpr double kPosteriorGridLow = 1e-6;
 constexpr double kPosteriorGridHigh = 4.0;
 constexpr size_t kPosteriorMaxStations = 100;
+// A richer model is eligible only when each group it shares with the isotropic model rests on
+// more effective degrees of freedom than this (header, "Richer noise models").
+constexpr double kMinGroupDof = 2.0;
 
 bool IsRotation(int k) {
   return k == kRobotRotation || k == kCameraRotation || k == kCameraTiltExcess;
@@ -134,7 +138,8 @@ void InitialVariances(const std::vector<StationLinearization>& stations,
 // One Fisher-scoring (Helmert) step for the estimated groups; returns the new variances.
 NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
                             const std::vector<bool>& included, const NoiseSpec& spec,
-                            const NoiseVariances& theta, double length_scale) {
+                            const NoiseVariances& theta, double length_scale,
+                            std::array<double, kMaxGroups>* dof = nullptr) {
   const int G = spec.NumGroups();
   const Refit refit = LinearRefit(stations, included, theta);
   const Matrix12d& Ni = refit.N_inverse;
@@ -187,6 +192,18 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
   for (int g = 0; g < G; ++g) {
     rhs(g) = q[g] - trace_PQPQ(g, G);
     for (int h = 0; h < G; ++h) S(g, h) = trace_PQPQ(g, h);
+  }
+  if (dof != nullptr) {
+    // Var(θ̂_g) = 2 (S⁻¹)_gg (REML's Fisher information is S / 2); a χ²(ν) estimate has
+    // Var = 2 θ² / ν, so ν_g = θ_g² / (S⁻¹)_gg.
+    const Eigen::MatrixXd S_inverse =
+        Eigen::MatrixXd(S.topLeftCorner(G, G)).completeOrthogonalDecomposition().pseudoInverse();
+    for (int g = 0; g < G; ++g) {
+      double value = 0.0;
+      for (int k = 0; k < kNumNoiseComponents; ++k)
+        if (spec.group[k] == g) value = theta[k];
+      (*dof)[g] = S_inverse(g, g) > 0.0 ? value * value / S_inverse(g, g) : 0.0;
+    }
   }
   GroupVector solution = GroupVector::Zero();
   solution.head(G) = S.topLeftCorner(G, G).colPivHouseholderQr().solve(rhs.head(G));
@@ -355,15 +372,40 @@ double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
 
 std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
                                       const std::vector<bool>& included,
-                                      const NoiseVariances& theta) {
+                                      const NoiseVariances& theta,
+                                      const StationTestOptions& options) {
   const Refit refit = LinearRefit(stations, included, theta);
   std::vector<StationTest> tests(stations.size());
+  std::vector<Vector6d> r_hat(stations.size());
+  double energy = 0.0;  // Ω (header)
+  int included_count = 0;
+  for (size_t i = 0; i < stations.size(); ++i) {
+    r_hat[i] = stations[i].residual - stations[i].jacobian * refit.delta;
+    if (!included[i]) continue;
+    energy += r_hat[i].dot(refit.inverse_covariance[i] * r_hat[i]);
+    ++included_count;
+  }
+  const double nu = 6.0 * included_count - 12.0;
+  // Thresholds on T_i per degrees of freedom d = 1..6, [0] included, [1] excluded.
+  double threshold[7][2] = {};
+  const double p = 1.0 - options.false_alarm;
+  for (int d = 1; d <= 6; ++d) {
+    const double chi2 = options.false_alarm == kThreeSigmaFalseAlarm
+                            ? ThreeSigmaChiSquare(d)
+                            : uncertainty::ChiSquareQuantile(p, d);
+    threshold[d][0] = threshold[d][1] = chi2;
+    // Never below χ² (header): a known part of Σ that overstates the noise makes Ω small.
+    if (options.estimated && nu > d && energy > 0.0) {
+      const double q_included = uncertainty::FisherQuantile(p, d, nu - d);
+      threshold[d][0] = std::max(chi2, q_included * energy * d / (nu - d + q_included * d));
+      threshold[d][1] = std::max(chi2, uncertainty::FisherQuantile(p, d, nu) * energy * d / nu);
+    }
+  }
   for (size_t i = 0; i < stations.size(); ++i) {
     const StationLinearization& s = stations[i];
     const Matrix6d& W = refit.inverse_covariance[i];
     StationTest& test = tests[i];
     test.chi2 = s.residual.dot(W * s.residual);
-    const Vector6d r_hat = s.residual - s.jacobian * refit.delta;
     const Matrix6d leverage = s.jacobian * refit.N_inverse * s.jacobian.transpose();
     const Matrix6d sigma = CombineComponents(s.components, theta);
     const Matrix6d C = included[i] ? Matrix6d(sigma - leverage) : Matrix6d(sigma + leverage);
@@ -372,7 +414,7 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
     const Eigen::LLT<Matrix6d> llt(sigma);
     const Matrix6d L_inverse = llt.matrixL().solve(Matrix6d::Identity());
     const Matrix6d C_white = L_inverse * C * L_inverse.transpose();
-    const Vector6d r_white = L_inverse * r_hat;
+    const Vector6d r_white = L_inverse * r_hat[i];
     const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(0.5 * (C_white + C_white.transpose()));
     double statistic = 0.0;
     int dof = 0;
@@ -385,7 +427,8 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
     }
     test.statistic = statistic;
     test.dof = dof;
-    test.outlier = dof > 0 && statistic > ThreeSigmaChiSquare(dof);
+    test.threshold = threshold[dof][included[i] ? 0 : 1];
+    test.outlier = dof > 0 && test.threshold > 0.0 && statistic > test.threshold;
   }
   return tests;
 }
@@ -469,7 +512,8 @@ constexpr double kChiSquare95[4] = {0.0, 3.841, 5.991, 7.815};
 // last variance estimate used.
 NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations,
                                const NoiseSpec& spec, double length_scale,
-                               std::vector<bool>* final_included) {
+                               std::vector<bool>* final_included,
+                               std::array<double, kMaxGroups>* dof = nullptr) {
   const size_t n = stations.size();
   NoiseEstimate estimate;
   estimate.variances = estimate.reml_variances = spec.variances;
@@ -508,6 +552,8 @@ NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations
         }
       }
       estimate.reml_variances = estimate.variances;
+      if (dof != nullptr)
+        VarianceStep(stations, included, spec, estimate.variances, length_scale, dof);
       if (spec.posterior_mean && n <= kPosteriorMaxStations) {
         estimate.variances = PosteriorMean(stations, included, spec, estimate.reml_variances);
       }
@@ -596,7 +642,12 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
   double best_score = isotropic_likelihood;
   for (const Candidate& candidate : candidates) {
     std::vector<bool> rich_included;
-    NoiseEstimate fit = EstimateOneModel(stations, candidate.spec, length_scale, &rich_included);
+    std::array<double, kMaxGroups> dof{};
+    NoiseEstimate fit =
+        EstimateOneModel(stations, candidate.spec, length_scale, &rich_included, &dof);
+    // Groups 0 … G − 1 are the isotropic model's: none may be left undetermined (header).
+    if (!std::all_of(dof.begin(), dof.begin() + G, [](double v) { return v > kMinGroupDof; }))
+      continue;
     const double likelihood = LinearRefit(stations, included, fit.reml_variances).log_likelihood;
     const double ratio = 2.0 * (likelihood - isotropic_likelihood);
     if (!std::isfinite(ratio)) continue;

@@ -1,6 +1,7 @@
 #include "hecal/estimation/station_selection.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/initialization.h"
@@ -86,6 +87,13 @@ StationSelection SelectStations(const handeye::Problem& problem,
   // A consensus that leaves out more than may be rejected is no basis: test from all stations.
   if (CountUnused(candidate) > max_rejected) candidate.assign(n, true);
 
+  // The level per data set (header): α per station from 1 − (1 − α)ⁿ = kFalseRejection; F
+  // instead of χ² when the noise is estimated from the candidate set.
+  StationTestOptions test_options;
+  test_options.false_alarm = -std::expm1(std::log1p(-kFalseRejection) / static_cast<double>(n));
+  test_options.estimated = options.camera_covariances.empty()
+                               ? !(options.robot_sigma && options.camera_sigma)
+                               : !options.robot_sigma;
   MlOptions ml_options;
   ml_options.robot_sigma = options.robot_sigma;
   ml_options.camera_sigma = options.camera_sigma;
@@ -102,7 +110,7 @@ StationSelection SelectStations(const handeye::Problem& problem,
     if (!options.camera_covariances.empty()) {
       variances = WithCameraCovariances(options, candidate, handeye::LengthScale(set), &stations);
     }
-    selection.tests = TestStations(stations, candidate, variances);
+    selection.tests = TestStations(stations, candidate, variances, test_options);
     selection.used = candidate;
     selection.rounds = round + 1;
     std::vector<bool> next(n);

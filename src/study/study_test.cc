@@ -5,12 +5,17 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <utility>
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/estimation/calibrate.h"
+#include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
+#include "hecal/sim/thesis_protocol.h"
 #include "hecal/study/study_csv.h"
+#include "hecal/uncertainty/consistency.h"
 
 namespace hecal::study {
 namespace {
@@ -293,6 +298,43 @@ TEST(RunStudy, RicherNoiseModelsAndTheModelCheckCoverWhenTheIsotropicModelIsWron
     EXPECT_GE(reported.sd_ratio.minCoeff(), 0.85);
     EXPECT_GT(s.check_used, 20);
   }
+}
+
+// The data set on which the estimated translation noise collapsed (README "Uncertainty"): trial
+// 182 of `hecal simulate --stations 8 --setup eye-in-hand --sigma 0.2 --robot-scale 5
+// --estimate-noise --method ml` (seed 1), robot 1 mm / 1°, camera 0.2 mm / 0.2°. The model with
+// the camera's tilt/depth excess and the robot's rotation apart was chosen there, its shared
+// translation variance resting on ~0 effective degrees of freedom (the depth excess takes the
+// same residuals): σ_t 0.062 mm, X's NEES 509. Such a model is no longer eligible
+// (noise_estimation.h, "Richer noise models"). Asserted: the translation sigma within a factor
+// 5 of the equal-split truth √((1² + 0.2²)/2) = 0.72 mm — the isotropic translation group
+// rests on ≈ 2 effective degrees of freedom here, under which a factor 4 low happens in ~6% of
+// data sets (χ²₂/2 < 1/16), a factor 5 in ~4%, so no tighter factor is honest (measured: 0.174
+// mm, 4.1 low) — and X's NEES under the reported covariance below 100 (measured 72.8; it is
+// still far above χ²(6)'s 3σ quantile 20.06: the isotropic translation sigma is itself 4× low
+// on this data set, which no rule here corrects — README "Uncertainty", "Out of reach").
+TEST(RunStudy, TheTranslationNoiseOfTrial182DoesNotCollapse) {
+  std::mt19937_64 rng(TrialSeed(1, handeye::Setup::kEyeInHand, 8, 182));
+  sim::ProtocolOptions protocol;
+  protocol.setup = handeye::Setup::kEyeInHand;
+  protocol.stations = 8;
+  sim::NoiseModel robot, camera;
+  robot.rotation_sigma = kDeg;
+  robot.translation_sigma = 1e-3;
+  camera.rotation_sigma = 0.2 * kDeg;
+  camera.translation_sigma = 0.2e-3;
+  const sim::SimulatedData data = sim::SimulateThesisProtocol(protocol, robot, camera, rng);
+  estimation::CalibrateOptions options;
+  options.covariance.method = estimation::CovarianceMethod::kLinear;
+  const estimation::CalibrationResult result =
+      estimation::Calibrate(data.MeasuredProblem(), options);
+  const double truth = std::sqrt((1.0 + 0.04) / 2.0) * 1e-3;
+  EXPECT_GT(result.robot_sigma.translation, truth / 5.0);
+  EXPECT_LT(result.robot_sigma.translation, truth * 5.0);
+  ASSERT_TRUE(result.covariance.has_value());
+  const Matrix6d covariance = result.covariance->covariance.topLeftCorner<6, 6>();
+  const double nees = uncertainty::Nees(se3::Log(result.X.inverse() * data.X), covariance);
+  EXPECT_LT(nees, 100.0);
 }
 
 // The same check catches an optimistic covariance: the study's errors against covariances a

@@ -15,16 +15,39 @@ double ChiSquareCdf(double x, double dof) {
   return Eigen::numext::igamma(0.5 * dof, 0.5 * x);
 }
 
+namespace {
+
+// x ≥ 0 with cdf(x) = p for an increasing cdf on [0, ∞): bracketing, then bisection.
+template <typename Cdf>
+double Quantile(const Cdf& cdf, double p, double start) {
+  double low = 0.0, high = std::max(1.0, start);
+  while (cdf(high) < p) high *= 2.0;
+  for (int i = 0; i < 200 && high - low > 1e-12 * high; ++i) {
+    const double mid = 0.5 * (low + high);
+    (cdf(mid) < p ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+}  // namespace
+
 double ChiSquareQuantile(double p, double dof) {
   if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("ChiSquareQuantile: p must be in (0, 1)");
   if (!(dof > 0.0)) throw std::invalid_argument("ChiSquareQuantile: dof must be positive");
-  double low = 0.0, high = std::max(1.0, dof);
-  while (ChiSquareCdf(high, dof) < p) high *= 2.0;
-  for (int i = 0; i < 200 && high - low > 1e-12 * high; ++i) {
-    const double mid = 0.5 * (low + high);
-    (ChiSquareCdf(mid, dof) < p ? low : high) = mid;
-  }
-  return 0.5 * (low + high);
+  return Quantile([dof](double x) { return ChiSquareCdf(x, dof); }, p, dof);
+}
+
+double FisherCdf(double x, double d1, double d2) {
+  if (!(d1 > 0.0 && d2 > 0.0)) throw std::invalid_argument("FisherCdf: dof must be positive");
+  if (!(x > 0.0)) return 0.0;
+  if (std::isinf(x)) return 1.0;
+  return Eigen::numext::betainc(0.5 * d1, 0.5 * d2, d1 * x / (d1 * x + d2));
+}
+
+double FisherQuantile(double p, double d1, double d2) {
+  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("FisherQuantile: p must be in (0, 1)");
+  if (!(d1 > 0.0 && d2 > 0.0)) throw std::invalid_argument("FisherQuantile: dof must be positive");
+  return Quantile([d1, d2](double x) { return FisherCdf(x, d1, d2); }, p, 1.0);
 }
 
 double SigmaProbability(double k) {

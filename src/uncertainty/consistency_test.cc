@@ -4,6 +4,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -28,6 +29,20 @@ TEST(ChiSquare, ClosedFormsAndReferenceValues) {
   EXPECT_EQ(ChiSquareCdf(0.0, 3), 0.0);
   EXPECT_THROW(ChiSquareQuantile(1.0, 3), std::invalid_argument);
   EXPECT_THROW(ChiSquareCdf(1.0, 0.0), std::invalid_argument);
+}
+
+TEST(Fisher, ClosedFormsAndLimits) {
+  // F(2, 2): CDF = x / (1 + x). F(1, 1) is the square of a Cauchy (Student-t with 1 dof)
+  // variable: its p quantile is tan(π p / 2)².
+  for (double x : {0.1, 1.0, 3.0, 10.0}) EXPECT_NEAR(FisherCdf(x, 2, 2), x / (1.0 + x), 1e-14);
+  EXPECT_NEAR(FisherQuantile(0.9, 2, 2), 9.0, 1e-9);
+  const double t = std::tan(0.95 * std::numbers::pi / 2.0);
+  EXPECT_NEAR(FisherQuantile(0.95, 1, 1), t * t, 1e-8 * t * t);
+  // d2 → ∞: d1 F → χ²(d1).
+  EXPECT_NEAR(6.0 * FisherQuantile(0.9973, 6, 1e8), ChiSquareQuantile(0.9973, 6), 1e-5);
+  EXPECT_EQ(FisherCdf(0.0, 3, 4), 0.0);
+  EXPECT_THROW(FisherQuantile(0.0, 3, 4), std::invalid_argument);
+  EXPECT_THROW(FisherCdf(1.0, 3, 0.0), std::invalid_argument);
 }
 
 TEST(MeanNeesBand, SixDofTwoHundredTrials) {

@@ -88,17 +88,31 @@
 // under the isotropic model the null distribution is a χ̄² mixture and the real level is lower,
 // about 2% for the excess), and of the eligible ones the largest ℓ_R − (extra variances) wins
 // (Akaike). On isotropic, equally split data a richer model is chosen about one time in 20–50.
-// The minimum of kAnisotropicMinStations: up to five variances from 6n − 12 residual degrees of
-// freedom; at n = 8 that is 36, 7–9 per variance, the fewest at which the REML estimates are
-// bounded away from "anything" (relative σ error √(1/(2ν)) ≈ 0.25) and the likelihood-ratio
-// statistic is near its χ² limit. Every estimated group is a posterior mean like the isotropic
-// ones: with more than two groups a joint grid is too costly (16⁵ points), so each group's
-// posterior mean is taken with the others held at their REML values (a conditional posterior
-// mean, narrower than the marginal). Where that matters was measured: on the 8-station data set
-// whose translation sigma collapses with three groups (README "Uncertainty": 0.062 mm for a
-// translation-equivalent truth of ≈ 0.7 mm), the joint mean over a 16³ + 24³ grid is 0.071 mm —
-// the posterior itself sits there (the translation noise rests on a few degrees of freedom
-// along the lever arms), so the joint grid, 7× the cost, is not used. NoiseEstimate::richer says a
+// Identifiability on the data set at hand: a richer model is eligible only when each group it
+// shares with the isotropic model (the rotation and translation variances it splits or adds to)
+// rests on more than 2 effective degrees of freedom at its REML point, ν_g = θ_g² /
+// (S⁻¹)_gg with S_gh = tr(P Q_g P Q_h) (Var θ̂_g = 2 (S⁻¹)_gg, and a χ²(ν) estimate has
+// Var = 2θ²/ν). Below 2 the inverse-gamma posterior of that variance has no mean: the data
+// cannot bound it, and the REML point sits on a boundary that the likelihood-ratio test then
+// rewards. The extra variances themselves are not held to it: a small robot rotation variance
+// beside a large camera one (camodocal-artag, README "Uncertainty") has few effective degrees of
+// freedom because it is near zero, and that is what the model says. Measured: on the 8-station data
+// set whose translation sigma collapsed (README "Uncertainty", trial 182 of (b)) the model with the
+// camera excess and the robot's rotation apart had ν = 0.00 for the shared translation variance
+// (the depth excess takes the same residuals) and 0.11 for the depth excess; it gave σ_t = 0.062 mm
+// for a translation-equivalent truth of 0.72 mm and X's NEES 509. Without it the isotropic model is
+// chosen: σ_t 0.174 mm, NEES 73 — still low, because the isotropic translation group itself rests
+// on ν ≈ 2 there. The minimum of kAnisotropicMinStations: up to five variances from 6n − 12
+// residual degrees of freedom; at n = 8 that is 36, 7–9 per variance, the fewest at which the REML
+// estimates are bounded away from "anything" (relative σ error √(1/(2ν)) ≈ 0.25) and the
+// likelihood-ratio statistic is near its χ² limit. Every estimated group is a posterior mean like
+// the isotropic ones: with more than two groups a joint grid is too costly (16⁵ points), so each
+// group's posterior mean is taken with the others held at their REML values (a conditional
+// posterior mean, narrower than the marginal). Where that matters was measured: on the 8-station
+// data set whose translation sigma collapsed with a richer model (README "Uncertainty": 0.062 mm
+// for a translation-equivalent truth of ≈ 0.7 mm), the joint mean over a 16³ + 24³ grid was 0.071
+// mm — the posterior itself sat there (that model is now ineligible, above), so the joint grid, 7×
+// the cost, is not used. NoiseEstimate::richer says a
 // richer model was chosen; robot() and camera() then report the separate rotation sigmas,
 // camera_excess() the excess. Not used when the camera noise is given (--camera-sigma). Cost: up to
 // three more REML fits per estimate (`hecal simulate --stations 2000 --trials 2 --method ml
@@ -107,14 +121,40 @@
 // Outlier test (Baarda's data snooping, multivariate form). Station i's statistic is
 //   included:  T_i = r̂_iᵀ C_i⁺ r̂_i,  C_i = Σ_i − J_i N⁻¹ J_iᵀ  (its residual covariance)
 //   excluded:  T_i = r̂_iᵀ (Σ_i + J_i N⁻¹ J_iᵀ)⁻¹ r̂_i   (prediction from the other stations)
-// ~ χ²(rank C_i) under the model. The station is an outlier when T_i exceeds the χ² quantile of
-// the two-sided 3σ level (p = 0.0027; 20.06 for 6 degrees of freedom). Flagged stations are
+// ~ χ²(d), d = rank C_i, when the variances are known. The station is an outlier when T_i
+// exceeds the quantile of the false-alarm probability α per station (default: the two-sided 3σ
+// level, α = 0.0027; χ² 20.06 for 6 degrees of freedom). Flagged stations are
 // excluded from the noise estimate and the test is repeated until the flags are stable, so a
 // gross outlier cannot inflate the estimated sigmas and hide itself (at most (n − 3)/2 stations
 // are excluded; beyond that the flags are reported but nothing is excluded). "Stable" is: fewer
 // than n · kStableFlagsFraction flags changed — no change at all below 1000 stations; at 10⁵
 // inliers the 3σ level flags ~270 and the next round changes ~28, each later round costing a
 // full variance iteration for a change in σ of order 10⁻⁵.
+// Estimated variances (StationTestOptions::estimated; station_selection.h uses it). When the
+// variances were estimated from the included stations, T_i is judged against a scale that is
+// itself a random variable with ν = 6m − 12 degrees of freedom (m included stations) — at 8
+// stations only 30–36 — and the χ² quantile is too small: a good station left out by the
+// consensus (which leaves out the largest residuals) and tested against the scale of the 7
+// others made 4.5% of clean 8-station sets lose a station instead of the 2.1% that 0.27% per
+// station gives (README "Uncertainty", "Outlier test at few stations"; with F and a level of 1%
+// per set, station_selection.h: 2.0%). With one common scale factor the exact reference is
+// Fisher's F (Koch 1999; Pope's τ test, A. J. Pope, "The statistics of residuals and the detection
+// of outliers", NOAA TR NOS 65 NGS 1, 1976): with Ω = Σ_included r̂ᵀ Σ⁻¹ r̂ the weighted residual
+// energy at the same variances,
+//   excluded:  (T_i / d) / (Ω / ν) ~ F(d, ν)                    (the scale from the others)
+//   included:  (T_i / d) / ((Ω − T_i) / (ν − d)) ~ F(d, ν − d)   (the same, leave-one-out:
+//              the externally studentised statistic, scale without station i)
+// Both ratios are free of the variances' common scale, so they hold for the REML point and the
+// posterior mean alike. With several variance groups there is no single scale factor; the F
+// reference with the total ν is then an approximation (a group resting on fewer degrees of
+// freedom has heavier tails) that is exact when one group dominates the station's residual;
+// measured: eye-in-hand, noise estimated on both sides, 2.5% of clean sets at n = 8 and 15
+// against the 1% asked (the translation group rests on a few effective degrees of freedom).
+// The threshold is never below the χ² one: when part of Σ is known (the PnP covariances of
+// `calibrate --images`) and overstates the real noise, Ω is small and the scale-free F would
+// shrink the threshold below what the known part alone allows (it rejected 2 of 8 good views of
+// a rendered set whose robot poses are exact). StationTest::threshold is the T_i at which the
+// test fires.
 #pragma once
 
 #include <array>
@@ -129,6 +169,8 @@
 namespace hecal::estimation {
 
 inline constexpr double kStableFlagsFraction = 1e-3;
+// 1 − erf(3/√2): the two-sided 3σ level, the outlier test's default false-alarm probability.
+inline constexpr double kThreeSigmaFalseAlarm = 1.0 - 0.99730020393673979;
 // The richer models above: fewest stations.
 inline constexpr size_t kAnisotropicMinStations = 8;
 
@@ -167,7 +209,14 @@ struct StationTest {
   double chi2 = 0.0;       // r_iᵀ Σ_i⁻¹ r_i at the linearisation point
   double statistic = 0.0;  // T_i above
   int dof = 0;             // its degrees of freedom
-  bool outlier = false;    // T_i > χ²_dof(0.9973)
+  double threshold = 0.0;  // T_i beyond which the station is an outlier (header)
+  bool outlier = false;    // T_i > threshold
+};
+
+// The outlier test's level and reference distribution (header, "Outlier test").
+struct StationTestOptions {
+  double false_alarm = kThreeSigmaFalseAlarm;  // α per station
+  bool estimated = false;  // variances estimated from the included stations: F, not χ²
 };
 
 struct NoiseEstimate {
@@ -196,7 +245,8 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
 // the prediction from the others for excluded ones.
 std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
                                       const std::vector<bool>& included,
-                                      const NoiseVariances& variances);
+                                      const NoiseVariances& variances,
+                                      const StationTestOptions& options = {});
 
 // Starting values for the estimated variances of `spec` (known ones copied) from the raw
 // residual energies: a rotation group gets Σ|ω_i|² / Σ tr(ω block of Q_ik); a translation group

@@ -13,7 +13,10 @@
 //  - Standard deviation ratio per axis j: sqrt(mean_t Σ_t,jj) / sqrt(mean_t e_t,j²) — predicted
 //    over empirical RMS; > 1 is pessimistic, < 1 optimistic.
 // χ² from the regularised incomplete gamma function P(d/2, x/2) (Eigen's SpecialFunctions), its
-// quantile by bracketing and bisection to 1e-12 relative.
+// quantile by bracketing and bisection to 1e-12 relative. Fisher's F(d1, d2) (the ratio of two
+// independent χ² over their degrees of freedom; the distribution of a test statistic whose scale
+// is estimated from d2 degrees of freedom) from the regularised incomplete beta function
+// I_{d1 x / (d1 x + d2)}(d1/2, d2/2), its quantile the same way.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +28,10 @@ namespace hecal::uncertainty {
 double ChiSquareCdf(double x, double dof);
 // x with ChiSquareCdf(x, dof) = p, p in (0, 1).
 double ChiSquareQuantile(double p, double dof);
+// P(X ≤ x) for X ~ F(d1, d2), d1, d2 > 0.
+double FisherCdf(double x, double d1, double d2);
+// x with FisherCdf(x, d1, d2) = p, p in (0, 1).
+double FisherQuantile(double p, double d1, double d2);
 // erf(k/√2): the probability within ±k standard deviations of a 1-D Gaussian.
 double SigmaProbability(double k);
 
