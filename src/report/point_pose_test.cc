@@ -89,8 +89,8 @@ TEST_F(PointPoseFiles, PairsByIdAndRecoversTheTruePose) {
   camera.cx = 600.0;
   camera.cy = 450.0;
   std::mt19937_64 rng(3);
-  const testing::PoseScene scene =
-      testing::RandomScene(rng, 12, testing::SceneShape::kVolume, camera);
+  const testing::PointView scene =
+      testing::RandomScene(rng, 12, testing::PointShape::kVolume, camera);
   std::ostringstream object, image;
   object << std::setprecision(17) << "id,x_mm,y_mm,z_mm\n";
   for (std::size_t k = 0; k < scene.object_points.size(); ++k) {
