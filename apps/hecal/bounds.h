@@ -19,9 +19,8 @@
 //   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma)
 //   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px
 //   contour study                 contour::ContourStudyOptions::IsValid (contour/contour_study.h)
-//   contour render                --frames 1 … 10000, --size 8 … 20000 px a side, at most
-//                                 10^8 pixels a frame and 2·10^9 over the sequence,
-//                                 --noise 0 … 255 grey levels
+//   contour track, render         contour::SequenceTrackingOptions::IsValid,
+//                                 contour::SequenceRenderOptions::IsValid (contour/sequence.h)
 //   images read                   at most 10^8 pixels (checked in the file header before
 //                                 decoding), at least 16 × 16 for detection
 //                                 (io/image_files.h, vision/image_read.h)
@@ -41,10 +40,6 @@ using estimation::kMaxCovarianceSamples;
 using estimation::kMaxPixelSigma;
 constexpr double kMaxSigmaMm = estimation::kMaxSigmaTranslation * 1000.0;
 constexpr double kMaxSigmaDeg = 180.0;  // estimation::kMaxSigmaRotation in degrees
-constexpr int kMaxFrames = 10000;
-constexpr int kMaxRenderSide = 20000;
-constexpr std::int64_t kMaxSequencePixels = 2000000000;
-constexpr double kMaxGreyNoise = 255.0;
 
 // A whole number in [min, max] written in decimal ("12", "-3"); InputError with the range
 // otherwise. `what` says what the number is, for the fix ("the number of trials").

@@ -84,18 +84,6 @@ double ParseNumber(const std::string& flag, const std::string& text, const std::
   return ParseNumberList(flag, text, 1, what).front();
 }
 
-int ParseCount(const std::string& flag, const std::string& text, int min, int max,
-               const std::string& what) {
-  const double value = ParseNumber(flag, text, what);
-  if (value != std::floor(value) || value < min || value > max) {
-    throw InputError(flag, 0,
-                     "must be a whole number from " + std::to_string(min) + " to " +
-                         std::to_string(max) + ", got '" + text + "'",
-                     "give " + what);
-  }
-  return static_cast<int>(value);
-}
-
 contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0) {
   contour::ContourCamera camera;
   camera.focal = ParseNumber("--focal", focal, "the focal length");

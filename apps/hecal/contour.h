@@ -12,7 +12,7 @@
 //     "parameters", "ut_mean", "bias" (docs/contour.md#the-bias-check). The job is
 //     contour/shape_pose.h, the JSON report/contour_pose_file.h.
 //   hecal contour study --motion tx|ty|tz|rx|ry|rz --from A --to B --steps N … (contour_study.h)
-//   hecal contour track / render: contour_track.h.
+//   hecal contour track / render: contour_track.cc.
 // Errors: bad flags → InputError, a singular shape vector (det M ≤ 0: the plane edge-on or a
 // reflection) → DegenerateError; both exit 2.
 #pragma once
@@ -33,9 +33,6 @@ std::vector<double> ParseNumberList(const std::string& flag, const std::string& 
 
 // One finite number (ParseNumberList with count 1).
 double ParseNumber(const std::string& flag, const std::string& text, const std::string& what);
-// A whole number in [min, max] (InputError naming the flag otherwise).
-int ParseCount(const std::string& flag, const std::string& text, int min, int max,
-               const std::string& what);
 // The camera of the contour commands from --focal and --z0 (contour::ValidateContourCamera).
 contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0);
 

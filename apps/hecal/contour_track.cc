@@ -1,36 +1,83 @@
-// `hecal contour track` and `hecal contour render`: see contour_track.h.
-#include "contour_track.h"
-
+// `hecal contour track` and `hecal contour render` (docs/contour.md): follow a
+// planar contour through an image sequence with the shape-space Kalman filter
+// (contour/shape_tracker.h) and turn every shape vector into the camera motion with its UT
+// covariance (contour/pose_uncertainty.h); and render synthetic sequences with known motion to
+// try it on (contour/render.h). The jobs are contour::SequenceTracker and
+// contour::RenderSequence (contour/sequence.h) over options that validate themselves, with the
+// images read and encoded by vision/contour_images.h and the text files written by
+// report/contour_track_file.h and report/contour_render_file.h; these commands bind the flags,
+// print and write the files.
+//
+// hecal contour track --images DIR --init contour.csv --focal F_PX --z0 Z0
+//                     [--principal-point CX,CY] [--init-points control|curve]
+//                     [--subspace full|similarity|translation-scale|planar-robot|translation]
+//                     [--rotation zyx|zxz] [--measurement-sigma PX] [--search-range PX]
+//                     [--output track.csv|track.json]
+//   Images: every *.png, *.jpg, *.jpeg, *.bmp, *.tif, *.tiff in DIR (not recursive), sorted by
+//   file name, read as 8-bit grey (OpenCV: needs the vision layer), all of one size. The first
+//   is the template view: the plane fronto-parallel at Z0 on the optical axis (affine_pose.h).
+//   contour.csv: header `x,y`, pixel coordinates in the first image (origin at the centre of
+//   the top-left pixel), the control points of a closed cubic B-spline (--init-points control,
+//   default) or points on the curve (curve: the B-spline through them). The principal point
+//   defaults to the centroid of the control points (the target origin in the first view).
+//   --measurement-sigma: the edge-location σ in px (default: estimated from the residuals of
+//   every frame); --search-range: ±px searched along each normal (default 10).
+//   Output (stdout): one line per frame. --output writes, atomically, CSV (one row per frame:
+//   frame, image, status, edges, σ, residual RMS, S, sd(S), the pose and its sd, the bias flag)
+//   or JSON (full 6 × 6 covariances), chosen by the extension. Units: tx, ty and their sd in px;
+//   M entries dimensionless; translation in the unit of --z0; angles in degrees in the CSV and
+//   in the JSON's *_deg fields, radians in the JSON's covariance (stated in "units"); both
+//   written by report/contour_track_file.h.
+//   status: tracked | lost (too few edges: the prediction is kept) | singular (det M ≤ 0: no
+//   pose). bias: the bias check (UT mean vs the pose of the mean shape) flagged a
+//   parameter — expected while the tilt is small (Necker fold).
+//
+// hecal contour render --output DIR --frames N --from TX,TY,TZ,RX,RY,RZ --to TX,TY,TZ,RX,RY,RZ
+//                      --focal F_PX --z0 Z0 --size W,H [--contour target.csv] [--noise GREY]
+//                      [--blur PX] [--seed S]
+//   The target (control points x,y in its plane, Z0's unit; default: the built-in 12-point
+//   irregular contour of contour_study.h, ≈ 250 × 180 mm) under the motion interpolated
+//   linearly from --from to --to (mm and degrees; R = Rz Ry Rx, x_camera = R p + (Tx, Ty,
+//   Z0 + Tz)), seen by a true pinhole with the principal point at the image centre
+//   ((W − 1)/2, (H − 1)/2): bright (180) on dark (60), area-coverage anti-aliasing, Gaussian
+//   optics blur (--blur, default 0.7 px), pixel noise (--noise, default 3 grey levels; --seed,
+//   default 1), 8-bit. Writes DIR/frame_0000.png …, DIR/truth.csv (per frame: the motion, and
+//   the weak-perspective S = ShapeFromPose of it) and DIR/init.csv (x,y: the control points of
+//   the first view in pixels, ready for `track --init`), and records --seed in truth.csv. DIR
+//   is created when missing. Every file is staged in DIR and renamed when all are rendered: a
+//   failure (a frame with the target behind the camera, a file that cannot be written) leaves
+//   none of them, and removes DIR when it was created. Bounds: contour::SequenceRenderOptions::
+//   IsValid (1 … 10000 frames, 8 … 20000 px a side, ≤ 10^8 pixels a frame and 2·10^9 in all,
+//   --noise 0 … 255, --blur 0 … 20); track's: contour::SequenceTrackingOptions::IsValid.
+// Errors: bad flags or files (with file:line), a missing or empty folder, an unreadable image
+// (vision/image_read.h: larger than 10^8 pixels, smaller than 8 × 8, cut short or corrupt), an
+// --output that is --init or not a regular file (io/atomic_file.h), images of different sizes, a
+// collinear init contour (DegenerateError) → exit 2; no output file is written then (track writes
+// its output only when every frame is done).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "bounds.h"
 #include "contour.h"
-#include "hecal/contour/affine_pose.h"
 #include "hecal/contour/bspline.h"
 #include "hecal/contour/contour_study.h"
-#include "hecal/contour/pose_uncertainty.h"
-#include "hecal/contour/render.h"
 #include "hecal/contour/sequence.h"
-#include "hecal/contour/shape_space.h"
-#include "hecal/contour/shape_tracker.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
-#include "hecal/io/delimited_text.h"
-#include "hecal/io/image_files.h"
+#include "hecal/report/contour_render_file.h"
 #include "hecal/report/contour_track_file.h"
-#include "hecal/version.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "hecal/vision/contour_images.h"
 #endif
@@ -40,20 +87,6 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-double ParsePositive(const std::string& flag, const std::string& text, const std::string& what) {
-  const double value = ParseNumber(flag, text, what);
-  if (!(value > 0.0)) {
-    throw InputError(flag, 0, "must be positive, got '" + text + "'", "give " + what);
-  }
-  return value;
-}
-
-std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 #if !defined(HECAL_HAVE_OPENCV_PEERS)
 [[noreturn]] void NeedsVision(const std::string& flag) {
@@ -68,83 +101,45 @@ enum class OutputKind { kNone, kCsv, kJson };
 
 OutputKind ParseOutputKind(const std::string& output) {
   if (output.empty()) return OutputKind::kNone;
-  const std::string extension = Lower(fs::path(output).extension().string());
+  std::string extension = fs::path(output).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".csv") return OutputKind::kCsv;
   if (extension == ".json") return OutputKind::kJson;
   throw InputError("--output", 0, "unknown output format '" + output + "'",
                    "name the file *.csv (one row per frame) or *.json (full covariances)");
 }
 
-// The pose model --pose-model selects (auto: perspective when the principal point is given).
-bool UsesPerspectivePose(const ContourTrackOptions& options) {
-  return options.pose_model == "perspective" ||
-         (options.pose_model == "auto" && !options.principal_point.empty());
-}
+struct TrackCommand {
+  contour::SequenceTrackingOptions options;  // control and principal point: from the files
+  std::string images, init, output;
+  bool curve = false;                        // --init-points curve
+  std::optional<Eigen::Vector2d> principal;  // --principal-point
+  std::optional<bool> perspective;           // --pose-model; auto: with --principal-point
+};
 
-}  // namespace
-
-void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
-  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
-  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
-  if (!form) {
-    throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
-                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
-  }
-  contour::ShapeTrackerOptions tracker_options;
-  const std::optional<contour::ShapeSubspace> subspace =
-      contour::ParseShapeSubspace(options.subspace);
-  if (!subspace) {
-    throw InputError("--subspace", 0, "unknown shape subspace '" + options.subspace + "'",
-                     "use full, similarity, translation-scale, planar-robot or translation");
-  }
-  tracker_options.subspace = *subspace;
-  if (!options.measurement_sigma.empty()) {
-    tracker_options.measurement_sigma =
-        ParsePositive("--measurement-sigma", options.measurement_sigma, "σ in pixels");
-    CheckPixelSigma("--measurement-sigma", *tracker_options.measurement_sigma);
-  }
-  tracker_options.search.range =
-      ParsePositive("--search-range", options.search_range, "the search range in pixels");
-  if (tracker_options.search.range < 2.0 || tracker_options.search.range > 200.0) {
-    throw InputError("--search-range", 0, "must be 2 … 200 px, got '" + options.search_range + "'",
-                     "give the largest expected motion of the contour per frame, in pixels");
-  }
-  if (options.init_points != "control" && options.init_points != "curve") {
-    throw InputError("--init-points", 0, "unknown kind '" + options.init_points + "'",
-                     "use control (B-spline control points) or curve (points on the contour)");
-  }
-  const OutputKind output_kind = ParseOutputKind(options.output);
-  io::CheckOutputs({{"--output", options.output}}, {{"--init", options.init}});
-
-  Eigen::Matrix2Xd control = ReadContourFile(options.init);
-  if (options.init_points == "curve") {
-    control = contour::ClosedBSpline::Interpolating(control).control_points();
-  }
-  const Eigen::Vector2d principal =
-      options.principal_point.empty() ? Eigen::Vector2d(control.rowwise().mean()) : [&] {
-        const std::vector<double> p =
-            ParseNumberList("--principal-point", options.principal_point, 2, "CX,CY (px)");
-        return Eigen::Vector2d(p[0], p[1]);
-      }();
+void RunTrack(TrackCommand command, const Io& io) {
+  contour::SequenceTrackingOptions& tracking = command.options;
   // The pose model: the contour paper's weak perspective, or the perspective correction
   // (contour/perspective_pose.h), which needs the true principal point; auto picks it when
   // --principal-point is given.
-  if (options.pose_model != "auto" && options.pose_model != "weak" &&
-      options.pose_model != "perspective") {
-    throw InputError("--pose-model", 0, "unknown pose model '" + options.pose_model + "'",
-                     "use auto, weak or perspective");
+  tracking.perspective = command.perspective.value_or(command.principal.has_value());
+  RequireValid(tracking);
+  const OutputKind output_kind = ParseOutputKind(command.output);
+  io::CheckOutputs({{"--output", command.output}}, {{"--init", command.init}});
+
+  tracking.control = ReadContourFile(command.init);
+  if (command.curve) {
+    tracking.control = contour::ClosedBSpline::Interpolating(tracking.control).control_points();
   }
-  const bool perspective = UsesPerspectivePose(options);
-  const contour::SequenceTrackingOptions tracking{control, principal,   camera,
-                                                  *form,   perspective, tracker_options};
+  tracking.principal = command.principal.value_or(tracking.control.rowwise().mean());
   contour::SequenceTracker tracker(tracking);
   io.out << "pose model: "
-         << (perspective
+         << (tracking.perspective
                  ? "perspective (weak-perspective bias removed, principal point given)"
                  : "weak perspective (the contour paper's; give --principal-point for perspective)")
          << "\n";
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
+  const std::array<std::string_view, 6> names = contour::PoseParameterNames(tracking.form);
   // One line per frame on stdout, as it is tracked.
   const auto print = [&](const vision::TrackedImage& image) {
     const contour::SequenceFrame& frame = image.frame;
@@ -164,11 +159,11 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
     io.out << "\n";
   };
   const std::vector<vision::TrackedImage> frames =
-      vision::TrackImageSequence(options.images, &tracker, print);
+      vision::TrackImageSequence(command.images, &tracker, print);
   if (output_kind != OutputKind::kNone) {
     const report::ContourTrack track{tracking, tracker.tracker().template_shape(),
                                      tracker.tracker().polarity(), frames};
-    io::WriteFileAtomically(options.output, output_kind == OutputKind::kCsv
+    io::WriteFileAtomically(command.output, output_kind == OutputKind::kCsv
                                                 ? report::ContourTrackCsv(track)
                                                 : report::ContourTrackJson(track));
   }
@@ -180,9 +175,12 @@ void RunContourTrack(const ContourTrackOptions& options, const Io& io) {
 
 // ---- render ------------------------------------------------------------------------------------
 
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-namespace {
+struct RenderCommand {
+  contour::SequenceRenderOptions options;
+  std::string output, contour;  // --contour: the target's control points, read into options
+};
 
+#if defined(HECAL_HAVE_OPENCV_PEERS)
 // Creates the output folder of `contour render` when it is missing; returns the topmost folder
 // created (to remove on failure), nullopt when it existed. An existing path that is not a folder
 // is an InputError.
@@ -209,141 +207,50 @@ std::optional<fs::path> CreateFolder(const std::string& output) {
   return topmost;
 }
 
-std::string FrameName(int t) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%04d.png", t);
-  return name;
-}
-
-// truth.csv: the motion of every frame and the weak-perspective S of it.
-std::string TruthCsv(const contour::SequenceRenderOptions& options,
-                     const contour::RenderedSequence& rendered) {
-  std::string truth =
-      "# hecal " + std::string(kVersion) +
-      " contour render: x_camera = R p + (Tx, Ty, Z0 + Tz), R = Rz(Rz) Ry(Ry) Rx(Rx); Z0 = " +
-      io::FormatDouble(options.camera.z0) + ", f = " + io::FormatDouble(options.camera.focal) +
-      " px, principal point " + io::FormatDouble(rendered.principal.x()) + "," +
-      io::FormatDouble(rendered.principal.y()) +
-      "; tx..m12: the weak-perspective shape vector of the motion (tx, ty in px); noise seed " +
-      std::to_string(options.seed) +
-      "\n"
-      "frame,image,Tx,Ty,Tz,Rx_deg,Ry_deg,Rz_deg,tx,ty,m11m1,m22m1,m21,m12\n";
-  for (const contour::RenderedFrame& frame : rendered.frames) {
-    truth += std::to_string(frame.index) + "," + FrameName(frame.index);
-    for (int i = 0; i < 6; ++i) {
-      truth += ",";
-      io::AppendDouble(frame.motion(i), &truth);
-    }
-    for (int i = 0; i < 6; ++i) {
-      truth += ",";
-      io::AppendDouble(frame.shape(i), &truth);
-    }
-    truth += "\n";
-  }
-  return truth;
-}
-
-// init.csv: the control points of the first view, ready for `track --init`.
-std::string InitCsv(const contour::RenderedSequence& rendered) {
-  std::string init = "# hecal contour render: control points of the first view (px)\nx,y\n";
-  for (Eigen::Index i = 0; i < rendered.first_view.cols(); ++i) {
-    io::AppendDouble(rendered.first_view(0, i), &init);
-    init += ",";
-    io::AppendDouble(rendered.first_view(1, i), &init);
-    init += "\n";
-  }
-  return init;
-}
-
 // Renders the sequence into the output folder (created before the first frame is written):
 // every file is staged and renamed when all are rendered (io/atomic_file.h). `created` receives
 // the topmost folder created, to remove on failure.
-void RenderFrames(const ContourRenderOptions& options,
-                  const contour::SequenceRenderOptions& sequence, std::optional<fs::path>* created,
-                  const Io& io) {
+void RenderFrames(const RenderCommand& command, std::optional<fs::path>* created, const Io& io) {
+  const contour::SequenceRenderOptions& sequence = command.options;
+  const fs::path folder(command.output);
   io::StagedFiles staged;
   bool folder_ready = false;
   const contour::RenderedSequence rendered = contour::RenderSequence(
       sequence, [&](const contour::RenderedFrame& frame, const contour::GrayImage& image) {
         if (!folder_ready) {
-          *created = CreateFolder(options.output);
+          *created = CreateFolder(command.output);
           folder_ready = true;
         }
-        const std::string path = (fs::path(options.output) / FrameName(frame.index)).string();
+        const std::string path = (folder / report::RenderedFrameName(frame.index)).string();
         staged.Stage("--output", path, vision::EncodePng(image, path));
       });
-  staged.Stage("--output", (fs::path(options.output) / "init.csv").string(), InitCsv(rendered));
-  staged.Stage("--output", (fs::path(options.output) / "truth.csv").string(),
-               TruthCsv(sequence, rendered));
+  staged.Stage("--output", (folder / "init.csv").string(), report::RenderInitCsv(rendered));
+  staged.Stage("--output", (folder / "truth.csv").string(),
+               report::RenderTruthCsv(sequence, rendered));
   staged.Commit();
   io.out << "rendered " << sequence.frames << " frames (" << sequence.width << "×"
-         << sequence.height << ") to " << options.output << "\n";
+         << sequence.height << ") to " << command.output << "\n";
   if (rendered.outside > 0) {
     io.err << "hecal: warning: the target leaves the image in " << rendered.outside
            << " frame(s); the tracker cannot follow it there (fix: a smaller motion or a larger "
               "--size)\n";
   }
 }
-}  // namespace
 #endif
 
-void RunContourRender(const ContourRenderOptions& options, const Io& io) {
-  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
-  const int frames = ParseCount("--frames", options.frames, 1, kMaxFrames, "the number of frames");
-  const std::vector<double> from =
-      ParseNumberList("--from", options.from, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
-  const std::vector<double> to =
-      ParseNumberList("--to", options.to, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
-  const std::vector<double> size = ParseNumberList("--size", options.size, 2, "W,H (px)");
-  for (double v : size) {
-    if (v != std::floor(v) || v < io::kMinImageSide || v > kMaxRenderSide) {
-      throw InputError("--size", 0,
-                       "W and H must be whole numbers from " + std::to_string(io::kMinImageSide) +
-                           " to " + std::to_string(kMaxRenderSide),
-                       "give the image size in pixels, e.g. 768,576");
-    }
-  }
-  const int width = static_cast<int>(size[0]), height = static_cast<int>(size[1]);
-  const std::int64_t pixels = std::int64_t{width} * height;
-  if (pixels > io::kMaxImagePixels || pixels * frames > kMaxSequencePixels) {
-    throw InputError("--size", 0,
-                     std::to_string(frames) + " frames of " + std::to_string(width) + "×" +
-                         std::to_string(height) + " px are more than " +
-                         std::to_string(io::kMaxImagePixels) + " pixels a frame or " +
-                         std::to_string(kMaxSequencePixels) + " in all",
-                     "give a smaller --size or fewer --frames");
-  }
-  contour::RenderOptions render;
-  render.noise_sigma = ParseNumber("--noise", options.noise, "the noise σ in grey levels");
-  if (!(render.noise_sigma >= 0.0 && render.noise_sigma <= kMaxGreyNoise)) {
-    throw InputError("--noise", 0, "must be 0 … 255 grey levels",
-                     "give the noise σ in grey levels (e.g. 3)");
-  }
-  render.blur_sigma = ParseNumber("--blur", options.blur, "the blur σ in pixels");
-  if (render.blur_sigma < 0.0 || render.blur_sigma > 20.0) {
-    throw InputError("--blur", 0, "must be 0 … 20 px", "give the optics blur σ (e.g. 0.7)");
-  }
-  contour::SequenceRenderOptions sequence;
-  sequence.seed = ParseSeed("--seed", options.seed);
-  render.quantize = true;
-  sequence.render = render;
+void RunRender(RenderCommand command, const Io& io) {
+  contour::SequenceRenderOptions& sequence = command.options;
   sequence.target =
-      options.contour.empty() ? contour::DefaultTarget() : ReadContourFile(options.contour);
-  sequence.camera = camera;
-  sequence.frames = frames;
-  sequence.from = Eigen::Map<const Vector6d>(from.data());
-  sequence.to = Eigen::Map<const Vector6d>(to.data());
-  sequence.width = width;
-  sequence.height = height;
+      command.contour.empty() ? contour::DefaultTarget() : ReadContourFile(command.contour);
+  RequireValid(sequence);
 #if !defined(HECAL_HAVE_OPENCV_PEERS)
   (void)io;
-  (void)sequence;
   NeedsVision("--output");
 #else
   // A folder created here is removed again when the command fails.
   std::optional<fs::path> created;
   try {
-    RenderFrames(options, sequence, &created, io);
+    RenderFrames(command, &created, io);
   } catch (...) {
     if (created) {
       std::error_code ignored;
@@ -354,57 +261,142 @@ void RunContourRender(const ContourRenderOptions& options, const Io& io) {
 #endif
 }
 
+// A motion TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees).
+Vector6d ParseMotion(const std::string& flag, const std::string& text) {
+  const std::vector<double> motion =
+      ParseNumberList(flag, text, 6, "TX,TY,TZ,RX,RY,RZ (Z0's unit, degrees)");
+  return Eigen::Map<const Vector6d>(motion.data());
+}
+
+}  // namespace
+
 // ---- registration ------------------------------------------------------------------------------
 
 void AddContourTrackCommand(CLI::App& contour, const Io& io) {
-  auto options = std::make_shared<ContourTrackOptions>();
+  auto command = std::make_shared<TrackCommand>();
+  contour::SequenceTrackingOptions& o = command->options;
   CLI::App* track = contour.add_subcommand(
       "track", "Track a planar contour through images (shape-space Kalman filter) → motion");
-  track->add_option("--images", options->images, "Folder of the image sequence (sorted by name)")
+  track->add_option("--images", command->images, "Folder of the image sequence (sorted by name)")
       ->required();
-  track->add_option("--init", options->init, "Initial contour in the first image: CSV x,y (px)")
+  track->add_option("--init", command->init, "Initial contour in the first image: CSV x,y (px)")
       ->required();
-  track->add_option("--focal", options->focal, "Focal length F (px)")->required();
-  track->add_option("--z0", options->z0, "Initial distance Z0 (the unit of the translation)")
+  track->add_option("--focal", o.camera.focal, "Focal length F (px)")->required();
+  track->add_option("--z0", o.camera.z0, "Initial distance Z0 (the unit of the translation)")
       ->required();
-  track->add_option("--pose-model", options->pose_model,
-                    "auto (default: perspective with --principal-point, else weak), weak (the "
-                    "contour paper's weak perspective) or perspective (its bias removed)");
-  track->add_option("--principal-point", options->principal_point,
-                    "CX,CY (px; default: centroid of the init control points)");
-  track->add_option("--init-points", options->init_points,
-                    "control (default: B-spline control points) or curve (points on it)");
-  track->add_option("--subspace", options->subspace,
-                    "full (default), similarity, translation-scale, planar-robot, translation");
-  track->add_option("--rotation", options->rotation, "zyx (default; roll–pitch–yaw) or zxz");
-  track->add_option("--measurement-sigma", options->measurement_sigma,
-                    "Edge-location σ (px; default: estimated per frame)");
-  track->add_option("--search-range", options->search_range,
+  track->add_option_function<std::string>(
+      "--pose-model",
+      [command](const std::string& text) {
+        if (text == "auto") {
+          command->perspective.reset();
+        } else if (text == "weak" || text == "perspective") {
+          command->perspective = text == "perspective";
+        } else {
+          throw InputError("--pose-model", 0, "unknown pose model '" + text + "'",
+                           "use auto, weak or perspective");
+        }
+      },
+      "auto (default: perspective with --principal-point, else weak), weak (the "
+      "contour paper's weak perspective) or perspective (its bias removed)");
+  track->add_option_function<std::string>(
+      "--principal-point",
+      [command](const std::string& text) {
+        const std::vector<double> p = ParseNumberList("--principal-point", text, 2, "CX,CY (px)");
+        command->principal = Eigen::Vector2d(p[0], p[1]);
+      },
+      "CX,CY (px; default: centroid of the init control points)");
+  track->add_option_function<std::string>(
+      "--init-points",
+      [command](const std::string& text) {
+        if (text != "control" && text != "curve") {
+          throw InputError(
+              "--init-points", 0, "unknown kind '" + text + "'",
+              "use control (B-spline control points) or curve (points on the contour)");
+        }
+        command->curve = text == "curve";
+      },
+      "control (default: B-spline control points) or curve (points on it)");
+  track->add_option_function<std::string>(
+      "--subspace",
+      [&o](const std::string& text) {
+        const std::optional<contour::ShapeSubspace> subspace = contour::ParseShapeSubspace(text);
+        if (!subspace) {
+          throw InputError("--subspace", 0, "unknown shape subspace '" + text + "'",
+                           "use full, similarity, translation-scale, planar-robot or translation");
+        }
+        o.tracker.subspace = *subspace;
+      },
+      "full (default), similarity, translation-scale, planar-robot, translation");
+  track->add_option_function<std::string>(
+      "--rotation",
+      [&o](const std::string& text) {
+        const std::optional<contour::RotationForm> form = contour::ParseRotationForm(text);
+        if (!form) {
+          throw InputError("--rotation", 0, "unknown rotation form '" + text + "'",
+                           "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
+        }
+        o.form = *form;
+      },
+      "zyx (default; roll–pitch–yaw) or zxz");
+  track->add_option_function<double>(
+      "--measurement-sigma", [&o](double sigma) { o.tracker.measurement_sigma = sigma; },
+      "Edge-location σ (px; default: estimated per frame)");
+  track->add_option("--search-range", o.tracker.search.range,
                     "± px searched along each normal (default 10)");
-  track->add_option("--output", options->output,
+  track->add_option("--output", command->output,
                     "track.csv (a row per frame) or track.json (full covariances), atomic");
-  track->callback([options, io] { RunContourTrack(*options, io); });
+  track->callback([command, io] { RunTrack(*command, io); });
 }
 
 void AddContourRenderCommand(CLI::App& contour, const Io& io) {
-  auto options = std::make_shared<ContourRenderOptions>();
+  auto command = std::make_shared<RenderCommand>();
+  contour::SequenceRenderOptions& o = command->options;
+  o.render.noise_sigma = 3.0;
+  o.render.quantize = true;
   CLI::App* render = contour.add_subcommand(
       "render", "Render a synthetic sequence of a moving planar contour target (known motion)");
-  render->add_option("--output", options->output, "Output folder (created when missing)")
+  render->add_option("--output", command->output, "Output folder (created when missing)")
       ->required();
-  render->add_option("--contour", options->contour,
+  render->add_option("--contour", command->contour,
                      "Target control points: CSV x,y in its plane (Z0's unit; default built-in)");
-  render->add_option("--frames", options->frames, "Number of frames (default 30)");
-  render->add_option("--from", options->from,
-                     "TX,TY,TZ,RX,RY,RZ of the first frame (Z0's unit, degrees; default 0)");
-  render->add_option("--to", options->to, "TX,TY,TZ,RX,RY,RZ of the last frame")->required();
-  render->add_option("--focal", options->focal, "Focal length F (px)")->required();
-  render->add_option("--z0", options->z0, "Initial distance Z0")->required();
-  render->add_option("--size", options->size, "W,H (px)")->required();
-  render->add_option("--noise", options->noise, "Pixel noise σ (grey levels; default 3)");
-  render->add_option("--blur", options->blur, "Optics blur σ (px; default 0.7)");
-  render->add_option("--seed", options->seed, "Noise seed (default 1)");
-  render->callback([options, io] { RunContourRender(*options, io); });
+  render->add_option("--frames", o.frames, "Number of frames (default 30)");
+  render->add_option_function<std::string>(
+      "--from", [&o](const std::string& text) { o.from = ParseMotion("--from", text); },
+      "TX,TY,TZ,RX,RY,RZ of the first frame (Z0's unit, degrees; default 0)");
+  render
+      ->add_option_function<std::string>(
+          "--to", [&o](const std::string& text) { o.to = ParseMotion("--to", text); },
+          "TX,TY,TZ,RX,RY,RZ of the last frame")
+      ->required();
+  render->add_option("--focal", o.camera.focal, "Focal length F (px)")->required();
+  render->add_option("--z0", o.camera.z0, "Initial distance Z0")->required();
+  render
+      ->add_option_function<std::string>(
+          "--size",
+          [&o](const std::string& text) {
+            const std::vector<double> size = ParseNumberList("--size", text, 2, "W,H (px)");
+            for (const double side : size) {
+              if (side != std::floor(side)) {
+                throw InputError("--size", 0, "W and H must be whole numbers, got '" + text + "'",
+                                 "give the image size in pixels, e.g. 768,576");
+              }
+            }
+            // Out of range sides are clamped to one past the range, for IsValid to refuse.
+            const auto side = [](double v) {
+              return static_cast<int>(
+                  std::clamp(v, -1.0, contour::SequenceRenderOptions::kMaxSide + 1.0));
+            };
+            o.width = side(size[0]);
+            o.height = side(size[1]);
+          },
+          "W,H (px)")
+      ->required();
+  render->add_option("--noise", o.render.noise_sigma, "Pixel noise σ (grey levels; default 3)");
+  render->add_option("--blur", o.render.blur_sigma, "Optics blur σ (px; default 0.7)");
+  render->add_option_function<std::string>(
+      "--seed", [&o](const std::string& text) { o.seed = ParseSeed("--seed", text); },
+      "Noise seed (default 1)");
+  render->callback([command, io] { RunRender(*command, io); });
 }
 
 }  // namespace hecal::cli

@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 64> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 68> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
@@ -69,6 +69,10 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 64> kFieldFl
     {"RenderOptions.blur_sigma", "--blur"},
     {"RenderOptions.noise_sigma", "--noise"},
     {"EdgeSearchOptions.range", "--search-range"},
+    {"ShapeTrackerOptions.measurement_sigma", "--measurement-sigma"},
+    {"SequenceRenderOptions.frames", "--frames"},
+    {"SequenceRenderOptions.size", "--size"},
+    {"SequenceRenderOptions.target", "--contour"},
     {"RefinementOptions.pixel_sigma", "--pixel-sigma"},
     {"PoseConversionOptions.input", "--input"},
     {"FeatureMatchOptions.pixel_sigma", "--pixel-sigma"},

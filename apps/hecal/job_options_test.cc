@@ -128,5 +128,64 @@ TEST_F(JobOptions, ContourStudyOptionsNameTheFlag) {
   ExpectRefused(with({"--ut-w0", "1.5"}), "--ut-w0", "", out);
 }
 
+// contour::SequenceRenderOptions::IsValid (hecal contour render), field by field.
+TEST_F(JobOptions, SequenceRenderOptionsNameTheFlag) {
+  const auto render = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"contour", "render", "--output", Path("frames"),
+                                     "--to=0,0,-100,3,2,4"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::vector<std::string> size = {"--size", "64,48"};
+  // The camera and the size, unless `extra` gives them.
+  const auto with = [&](std::vector<std::string> extra) {
+    const auto gives = [&](const std::string& flag) {
+      return std::find(extra.begin(), extra.end(), flag) != extra.end();
+    };
+    if (!gives("--focal")) extra.insert(extra.end(), {"--focal", "3000"});
+    if (!gives("--z0")) extra.insert(extra.end(), {"--z0", "5000"});
+    if (!gives("--size")) extra.insert(extra.end(), size.begin(), size.end());
+    return render(extra);
+  };
+  const std::string out = "frames";
+  ExpectRefused(with({"--focal", "0"}), "--focal", "must be a positive number", out);
+  ExpectRefused(with({"--z0", "-5"}), "--z0", "must be a positive number", out);
+  ExpectRefused(with({"--frames", "0"}), "--frames", "from 1 to 10000, got 0", out);
+  ExpectRefused(with({"--frames", "10001"}), "--frames", "from 1 to 10000, got 10001", out);
+  ExpectRefused(with({"--size", "7,48"}), "--size", "from 8 to 20000", out);
+  ExpectRefused(with({"--size", "64,3000000000"}), "--size", "from 8 to 20000", out);
+  ExpectRefused(with({"--size", "64.5,48"}), "--size", "whole numbers", out);
+  ExpectRefused(with({"--size", "20000,5001", "--frames", "1"}), "--size", "pixels a frame", out);
+  ExpectRefused(with({"--size", "500,500", "--frames", "10000"}), "--size", "in all", out);
+  ExpectRefused(with({"--noise", "256"}), "--noise", "0 … 255 grey levels", out);
+  ExpectRefused(with({"--blur", "-1"}), "--blur", "0 … 20 px", out);
+}
+
+// contour::SequenceTrackingOptions::IsValid (hecal contour track), field by field: refused
+// before the images or the init contour are read (neither exists here).
+TEST_F(JobOptions, SequenceTrackingOptionsNameTheFlag) {
+  const auto track = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"contour", "track",          "--images", Path("none"),
+                                     "--init",  Path("none.csv"), "--output", Path("track.csv")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::vector<std::string> camera = {"--focal", "3000", "--z0", "5000"};
+  const auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), camera.begin(), camera.end());
+    return track(extra);
+  };
+  const std::string out = "track.csv";
+  ExpectRefused(track({"--focal", "-1", "--z0", "5000"}), "--focal", "must be a positive number",
+                out);
+  ExpectRefused(track({"--focal", "3000", "--z0", "0"}), "--z0", "must be a positive number", out);
+  ExpectRefused(with({"--search-range", "1"}), "--search-range", "must be 2 … 200 px", out);
+  ExpectRefused(with({"--search-range", "201"}), "--search-range", "must be 2 … 200 px", out);
+  ExpectRefused(with({"--measurement-sigma", "0"}), "--measurement-sigma", "above 0 to 100 px",
+                out);
+  ExpectRefused(with({"--measurement-sigma", "101"}), "--measurement-sigma", "above 0 to 100 px",
+                out);
+}
+
 }  // namespace
 }  // namespace hecal::cli

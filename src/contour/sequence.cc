@@ -2,11 +2,13 @@
 #include "hecal/contour/sequence.h"
 
 #include <numbers>
+#include <sstream>
 
 #include "hecal/contour/bspline.h"
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
 
 namespace hecal::contour {
@@ -23,8 +25,94 @@ std::string_view FrameStatusName(FrameStatus status) {
   return "";
 }
 
+namespace {
+
+// ValidateContourCamera (affine_pose.h) as an IsValid step.
+bool CameraValid(const ContourCamera& camera, std::string* why) {
+  try {
+    ValidateContourCamera(camera);
+  } catch (const InputError& error) {
+    return Invalid(why, error.source(), error.problem(), error.fix());
+  }
+  return true;
+}
+
+std::string Text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// The options, once IsValid (for the constructor's initialiser list).
+const SequenceTrackingOptions& Validated(const SequenceTrackingOptions& options) {
+  RequireValid(options);
+  return options;
+}
+
+}  // namespace
+
+bool SequenceTrackingOptions::IsValid(std::string* why) const {
+  if (!CameraValid(camera, why)) return false;
+  const double range = tracker.search.range;
+  if (!(range >= kMinSearchRange && range <= kMaxSearchRange)) {
+    return Invalid(why, "EdgeSearchOptions.range", "must be 2 … 200 px, got " + Text(range),
+                   "give the largest expected motion of the contour per frame, in pixels");
+  }
+  if (tracker.measurement_sigma) {
+    const double sigma = *tracker.measurement_sigma;
+    if (!(sigma > 0.0 && sigma <= kMaxMeasurementSigma)) {
+      return Invalid(why, "ShapeTrackerOptions.measurement_sigma",
+                     "must be above 0 to 100 px, got " + Text(sigma),
+                     "give the edge-location σ in pixels, or leave it to be estimated");
+    }
+  }
+  return true;
+}
+
+bool SequenceRenderOptions::IsValid(std::string* why) const {
+  if (!CameraValid(camera, why)) return false;
+  if (frames < 1 || frames > kMaxFrames) {
+    return Invalid(why, "SequenceRenderOptions.frames",
+                   "must be a whole number from 1 to " + std::to_string(kMaxFrames) + ", got " +
+                       std::to_string(frames),
+                   "give the number of frames in that range");
+  }
+  for (const int side : {width, height}) {
+    if (side < kMinSide || side > kMaxSide) {
+      return Invalid(why, "SequenceRenderOptions.size",
+                     "W and H must be whole numbers from " + std::to_string(kMinSide) + " to " +
+                         std::to_string(kMaxSide),
+                     "give the image size in pixels, e.g. 768,576");
+    }
+  }
+  const std::int64_t pixels = std::int64_t{width} * height;
+  if (pixels > kMaxFramePixels || pixels * frames > kMaxSequencePixels) {
+    return Invalid(why, "SequenceRenderOptions.size",
+                   std::to_string(frames) + " frames of " + std::to_string(width) + "×" +
+                       std::to_string(height) + " px are more than " +
+                       std::to_string(kMaxFramePixels) + " pixels a frame or " +
+                       std::to_string(kMaxSequencePixels) + " in all",
+                   "give a smaller size or fewer frames");
+  }
+  if (!(render.noise_sigma >= 0.0 && render.noise_sigma <= kMaxNoise)) {
+    return Invalid(why, "RenderOptions.noise_sigma", "must be 0 … 255 grey levels",
+                   "give the noise σ in grey levels (e.g. 3)");
+  }
+  if (!(render.blur_sigma >= 0.0 && render.blur_sigma <= kMaxBlur)) {
+    return Invalid(why, "RenderOptions.blur_sigma", "must be 0 … 20 px",
+                   "give the optics blur σ (e.g. 0.7)");
+  }
+  if (target.cols() < 4) {
+    return Invalid(
+        why, "SequenceRenderOptions.target",
+        "a closed contour needs at least 4 control points, got " + std::to_string(target.cols()),
+        "give 4 or more points around the contour");
+  }
+  return true;
+}
+
 SequenceTracker::SequenceTracker(const SequenceTrackingOptions& options)
-    : options_(options), tracker_(options.control, options.principal, options.tracker) {
+    : options_(Validated(options)), tracker_(options.control, options.principal, options.tracker) {
   if (options.perspective) {
     perspective_.emplace(options.control.colwise() - options.principal, options.camera);
   }
@@ -51,6 +139,7 @@ RenderedSequence RenderSequence(
     const SequenceRenderOptions& options,
     const std::function<void(const RenderedFrame&, const GrayImage&)>& on_frame) {
   constexpr double kDegrees = 180.0 / std::numbers::pi;  // as the motion is given
+  RequireValid(options);
   const ClosedBSpline target(options.target);
   const ShapeSpace check(options.target);  // a collinear target has no affine deformation
   (void)check;

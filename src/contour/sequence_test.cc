@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "hecal/contour/contour_study.h"
+#include "hecal/core/error.h"
 
 namespace hecal::contour {
 namespace {
@@ -26,6 +28,78 @@ SequenceRenderOptions Options(int frames, const Vector6d& to) {
   options.render.noise_sigma = 3.0;
   options.render.quantize = true;
   return options;
+}
+
+// IsValid names the field that is out of its range, and only that one.
+void ExpectInvalid(const SequenceRenderOptions& options, const std::string& field) {
+  std::string why;
+  EXPECT_FALSE(options.IsValid(&why));
+  EXPECT_EQ(why.rfind(field + ": ", 0), 0u) << why;
+}
+
+TEST(SequenceRenderOptionsTest, IsValidNamesTheFieldOutOfRange) {
+  const SequenceRenderOptions good = Options(6, Vector6d::Zero());
+  std::string why;
+  EXPECT_TRUE(good.IsValid(&why)) << why;
+  const auto with = [&](auto change) {
+    SequenceRenderOptions options = good;
+    change(options);
+    return options;
+  };
+  ExpectInvalid(with([](auto& o) { o.camera.focal = 0.0; }), "ContourCamera.focal");
+  ExpectInvalid(with([](auto& o) { o.camera.z0 = -1.0; }), "ContourCamera.z0");
+  ExpectInvalid(with([](auto& o) { o.frames = 0; }), "SequenceRenderOptions.frames");
+  ExpectInvalid(with([](auto& o) { o.frames = 10001; }), "SequenceRenderOptions.frames");
+  EXPECT_TRUE(with([](auto& o) { o.frames = 10000; }).IsValid(nullptr));
+  ExpectInvalid(with([](auto& o) { o.width = 7; }), "SequenceRenderOptions.size");
+  ExpectInvalid(with([](auto& o) { o.height = 20001; }), "SequenceRenderOptions.size");
+  EXPECT_TRUE(with([](auto& o) { o.width = o.height = 8; }).IsValid(nullptr));
+  // 20000 × 5001 px is above 10^8 pixels a frame; 10000 frames of 500 × 500 above 2·10^9.
+  ExpectInvalid(with([](auto& o) { o.width = 20000, o.height = 5001, o.frames = 1; }),
+                "SequenceRenderOptions.size");
+  EXPECT_TRUE(
+      with([](auto& o) { o.width = 20000, o.height = 5000, o.frames = 1; }).IsValid(nullptr));
+  ExpectInvalid(with([](auto& o) { o.width = 500, o.height = 500, o.frames = 10000; }),
+                "SequenceRenderOptions.size");
+  ExpectInvalid(with([](auto& o) { o.render.noise_sigma = 256.0; }), "RenderOptions.noise_sigma");
+  ExpectInvalid(with([](auto& o) { o.render.noise_sigma = std::nan(""); }),
+                "RenderOptions.noise_sigma");
+  ExpectInvalid(with([](auto& o) { o.render.blur_sigma = -0.1; }), "RenderOptions.blur_sigma");
+  ExpectInvalid(with([](auto& o) { o.target = o.target.leftCols(3).eval(); }),
+                "SequenceRenderOptions.target");
+  // RenderSequence refuses what IsValid refuses, before any frame.
+  int rendered = 0;
+  EXPECT_THROW(RenderSequence(with([](auto& o) { o.frames = 0; }),
+                              [&](const RenderedFrame&, const GrayImage&) { ++rendered; }),
+               InputError);
+  EXPECT_EQ(rendered, 0);
+}
+
+TEST(SequenceTrackingOptionsTest, IsValidNamesTheFieldOutOfRange) {
+  SequenceTrackingOptions good;
+  good.camera = {3000.0, 5000.0};
+  std::string why;
+  EXPECT_TRUE(good.IsValid(&why)) << why;
+  SequenceTrackingOptions o = good;
+  o.camera.focal = std::nan("");
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_EQ(why.rfind("ContourCamera.focal: ", 0), 0u) << why;
+  for (const double range : {1.9, 200.1}) {
+    o = good;
+    o.tracker.search.range = range;
+    EXPECT_FALSE(o.IsValid(&why)) << range;
+    EXPECT_EQ(why.rfind("EdgeSearchOptions.range: ", 0), 0u) << why;
+  }
+  o.tracker.search.range = 200.0;
+  EXPECT_TRUE(o.IsValid(nullptr));
+  for (const double sigma : {0.0, 100.5}) {
+    o = good;
+    o.tracker.measurement_sigma = sigma;
+    EXPECT_FALSE(o.IsValid(&why)) << sigma;
+    EXPECT_EQ(why.rfind("ShapeTrackerOptions.measurement_sigma: ", 0), 0u) << why;
+  }
+  o.tracker.measurement_sigma = 100.0;
+  EXPECT_TRUE(o.IsValid(nullptr));
 }
 
 TEST(RenderSequenceTest, InterpolatesTheMotionLinearly) {

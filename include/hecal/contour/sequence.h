@@ -19,9 +19,18 @@
 // 8-bit). Each frame goes to a callback as it is rendered (a sequence may hold 2·10^9 pixels),
 // with its motion and the weak-perspective S of it (ShapeFromPose).
 //
-// Errors: hecal::InputError for bad tracker options or an empty image; hecal::DegenerateError
-// for a collinear contour (shape_space.h), from the constructor and from RenderSequence; an
-// exception thrown by the frame callback passes through.
+// Options validate themselves (core/options_check.h): IsValid names the field and the range;
+// SequenceTrackingOptions: the camera (ContourCamera.focal, .z0 finite and positive), the search
+// range EdgeSearchOptions.range 2 … 200 px, a given ShapeTrackerOptions.measurement_sigma above
+// 0 … 100 px; SequenceRenderOptions: the camera, frames 1 … 10000, width and height 8 … 20000 px
+// (8: io/image_files.h's smallest readable side), at most 10^8 pixels a frame (io/image_files.h's
+// largest readable image) and 2·10^9 over the sequence, RenderOptions.noise_sigma 0 … 255 grey
+// levels, RenderOptions.blur_sigma 0 … 20 px, at least 4 target control points. The ranges keep
+// any one sequence within a workstation's memory and time.
+//
+// Errors: hecal::InputError for options that are not IsValid or an empty image;
+// hecal::DegenerateError for a collinear contour (shape_space.h), from the constructor and from
+// RenderSequence; an exception thrown by the frame callback passes through.
 #pragma once
 
 #include <Eigen/Core>
@@ -49,6 +58,11 @@ struct SequenceTrackingOptions {
   RotationForm form = RotationForm::kZyx;
   bool perspective = false;  // the perspective pose model instead of weak perspective
   ShapeTrackerOptions tracker;
+
+  static constexpr double kMinSearchRange = 2.0;         // px
+  static constexpr double kMaxSearchRange = 200.0;       // px
+  static constexpr double kMaxMeasurementSigma = 100.0;  // px
+  bool IsValid(std::string* why) const;
 };
 
 enum class FrameStatus { kTracked, kLost, kSingular };
@@ -89,6 +103,15 @@ struct SequenceRenderOptions {
   int height = 0;
   RenderOptions render;  // noise, blur, quantisation; the seed is set per frame
   std::uint64_t seed = 1;
+
+  static constexpr int kMaxFrames = 10000;
+  static constexpr int kMinSide = 8;  // px
+  static constexpr int kMaxSide = 20000;
+  static constexpr std::int64_t kMaxFramePixels = 100000000;
+  static constexpr std::int64_t kMaxSequencePixels = 2000000000;
+  static constexpr double kMaxNoise = 255.0;  // grey levels
+  static constexpr double kMaxBlur = 20.0;    // px
+  bool IsValid(std::string* why) const;
 };
 
 struct RenderedFrame {
