@@ -10,9 +10,6 @@
 
 namespace hecal::vision {
 
-// A rendered frame (contour/sequence.h) is an image TrackImageSequence can read.
-static_assert(contour::SequenceRenderOptions::kMinSide >= io::kMinImageSide &&
-              contour::SequenceRenderOptions::kMaxFramePixels <= io::kMaxImagePixels);
 namespace {
 
 contour::GrayImage ReadGray(const std::filesystem::path& path) {

@@ -47,6 +47,7 @@
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/contour/render.h"
 #include "hecal/contour/shape_tracker.h"
+#include "hecal/core/limits.h"
 #include "hecal/geometry/types.h"
 
 namespace hecal::contour {
@@ -105,9 +106,9 @@ struct SequenceRenderOptions {
   std::uint64_t seed = 1;
 
   static constexpr int kMaxFrames = 10000;
-  static constexpr int kMinSide = 8;  // px
+  static constexpr int kMinSide = kMinImageSide;  // px (core/limits.h)
   static constexpr int kMaxSide = 20000;
-  static constexpr std::int64_t kMaxFramePixels = 100000000;
+  static constexpr std::int64_t kMaxFramePixels = kMaxImagePixels;
   static constexpr std::int64_t kMaxSequencePixels = 2000000000;
   static constexpr double kMaxNoise = 255.0;  // grey levels
   static constexpr double kMaxBlur = 20.0;    // px

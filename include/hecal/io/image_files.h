@@ -20,13 +20,13 @@
 #include <string>
 #include <vector>
 
+#include "hecal/core/limits.h"
+
 namespace hecal::io {
 
-// The largest image hecal reads or renders, in pixels (100 megapixels: 10^8 grey bytes).
-constexpr std::int64_t kMaxImagePixels = 100000000;
-// The smallest side of an image hecal reads or renders, in pixels (target detection needs more:
-// vision/image_read.h).
-constexpr int kMinImageSide = 8;
+// The image size bounds (core/limits.h).
+using hecal::kMaxImagePixels;
+using hecal::kMinImageSide;
 
 bool IsImageFile(const std::filesystem::path& path);
 
