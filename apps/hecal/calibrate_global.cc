@@ -319,7 +319,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   // The final X and covariance with the robot's pose error marginalised (the re-check above
   // treats pairs as independent, which only decides which pairs to keep).
   const estimation::RobotNoisePolish robot_noise =
-      estimation::PolishWithEstimatedRobotNoise(rechecked.inliers, rechecked.polish.X);
+      estimation::PolishWithEstimatedRobotNoise(rechecked.inliers, rechecked.polish.X, flags.reach);
   const estimation::EpipolarPolish& polish = robot_noise.polish;
   // The stage that removed each pair the re-check leaves out (pairs it re-admits are not listed).
   std::map<std::pair<int, int>, std::string> stage;

@@ -204,13 +204,21 @@ EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, cons
 }
 
 RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& problem,
-                                               const Pose& start) {
+                                               const Pose& start, double reach) {
   RobotNoisePolish result;
   result.stations = int(StationIndex(problem).size());
   result.noise = EstimateEpipolarNoise(problem, start);
   result.polish = PolishWithRobotNoise(problem, start, result.noise);
   result.noise = EstimateEpipolarNoise(problem, result.polish.X);
   result.polish = PolishWithRobotNoise(problem, result.polish.X, result.noise);
+  const EpipolarPolish& p = result.polish;
+  if (!p.X.matrix().allFinite() || !p.covariance.allFinite() ||
+      p.covariance.llt().info() != Eigen::Success || !(p.X.translation().norm() <= reach)) {
+    throw DegenerateError(
+        "the length of X's translation from these motions (the polish drifts without limit: "
+        "motions that rotate the hand about its own origin observe only its direction)",
+        "add motions in which the robot also translates, by a few centimetres or more");
+  }
   return result;
 }
 

@@ -107,5 +107,22 @@ TEST(PolishWithRobotNoise, RefusesTooFewPairs) {
   EXPECT_THROW(PolishWithEstimatedRobotNoise(scene.problem, scene.X), DegenerateError);
 }
 
+// Motions that only rotate the hand about its own origin (robot translation 0) observe the
+// direction of X's translation, not its length: the polish must refuse, not return a drifted X.
+TEST(PolishWithRobotNoise, RefusesMotionsThatDoNotObserveTheTranslationLength) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 8;
+  spec.pairs = 30;
+  spec.step = 0.0;
+  spec.pixel_sigma = 0.5;
+  spec.robot_rotation_sigma = 4e-4;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 5);
+  EXPECT_THROW(PolishWithEstimatedRobotNoise(scene.problem, scene.X, 2.0), DegenerateError);
+  // The same scene with translating motions is accepted.
+  spec.step = 0.3;
+  const testing::EpipolarScene moving = testing::MakeEpipolarScene(spec, 5);
+  EXPECT_NO_THROW(PolishWithEstimatedRobotNoise(moving.problem, moving.X, 2.0));
+}
+
 }  // namespace
 }  // namespace hecal::estimation

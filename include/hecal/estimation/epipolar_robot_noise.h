@@ -33,6 +33,8 @@
 // Errors: fewer than 7 pairs throw hecal::DegenerateError.
 #pragma once
 
+#include <limits>
+
 #include "hecal/estimation/epipolar_polish.h"
 #include "hecal/global/epipolar_problem.h"
 
@@ -59,8 +61,14 @@ struct RobotNoisePolish {
 };
 
 // Both, twice: the noise estimated at `start` (best: the plain polish's X), the GLS polish, the
-// noise re-estimated at its X, the GLS polish again.
-RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& problem,
-                                               const Pose& start);
+// noise re-estimated at its X, the GLS polish again. DegenerateError when the result is not an
+// answer: X not finite, its covariance not finite and positive definite, or |t| of X beyond
+// `reach` (metres; the search's translation bound). That happens when the motions do not observe
+// the length of X's translation — e.g. every motion a rotation of the hand about its own origin,
+// whose epipolar constraints are homogeneous in t: the information matrix is then singular and
+// the polish may drift without limit.
+RobotNoisePolish PolishWithEstimatedRobotNoise(
+    const global::EpipolarProblem& problem, const Pose& start,
+    double reach = std::numeric_limits<double>::infinity());
 
 }  // namespace hecal::estimation
