@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/io/delimited_text.h"
 
 namespace hecal::cli {
@@ -41,7 +42,9 @@ int ParseThreads(const std::string& flag, const std::string& text) {
 }
 
 int CheckThreads(const std::string& flag, int threads) {
-  return ParseThreads(flag, std::to_string(threads));
+  std::string why;
+  if (!ThreadCountValid(threads, flag, &why)) throw OptionsError(why);
+  return threads;
 }
 
 std::uint64_t ParseSeed(const std::string& flag, const std::string& text) {

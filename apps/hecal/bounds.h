@@ -52,7 +52,8 @@ int ParseInt(const std::string& flag, const std::string& text, int min, int max,
 
 // --threads: 0 … kMaxThreads.
 int ParseThreads(const std::string& flag, const std::string& text);
-// The same range for a thread count CLI11 has parsed; returns `threads`.
+// The same range for a thread count CLI11 has parsed (the library's rule, ThreadCountValid in
+// core/options_check.h); returns `threads`.
 int CheckThreads(const std::string& flag, int threads);
 
 // --seed: 0 … 2^64 − 1.
