@@ -299,11 +299,16 @@ void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& set
   data.camera_unit_named = camera.unit_named;
   data.robot_quaternions = HasQuaternionColumns(robot);
   data.camera_quaternions = HasQuaternionColumns(camera);
-  const ConventionCheck check =
-      CheckConventions(data, settings.setup,
-                       {flags.robot, flags.camera, flags.robot_inverse, flags.camera_inverse,
-                        !robot.rotation, !camera.rotation},
-                       options.consensus);
+  const handeye::ConventionCheck check =
+      handeye::CheckConventions(data, {.setup = settings.setup,
+                                       .consensus = options.consensus,
+                                       .robot_source = flags.robot,
+                                       .camera_source = flags.camera,
+                                       .robot_inverted = flags.robot_inverse,
+                                       .camera_inverted = flags.camera_inverse,
+                                       .robot_matrix_lines = !robot.rotation,
+                                       .camera_matrix_lines = !camera.rotation,
+                                       .words = ConventionFlagWords()});
   const handeye::Setup setup = check.setup;
   const handeye::Problem problem = handeye::MakeProblem(setup, stations.robot, stations.camera);
 

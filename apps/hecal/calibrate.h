@@ -7,9 +7,9 @@
 //   hecal calibrate --images DIR --target target.yaml [--intrinsics camera.yaml]
 //                   --robot robot.csv --setup ... [--pixel-sigma PX] [--threads N] ...
 // From pose tables (calibrate.cc): pairs stations (by id, else by order); refuses the same poses
-// given as robot and camera; checks the conventions (conventions.h: a wrong setup, an inverted
-// file or a wrong unit is named, never solved; --setup auto picks the setup); rejects gross
-// outliers (estimation/station_selection.h, unless --keep-outliers); solves with the chosen
+// given as robot and camera; checks the conventions (handeye/convention_check.h: a wrong setup, an
+// inverted file or a wrong unit is named, never solved; --setup auto picks the setup); rejects
+// gross outliers (estimation/station_selection.h, unless --keep-outliers); solves with the chosen
 // method(s) on the stations kept; adds the plausibility warnings (estimation/plausibility.h) and
 // the readers' notes; prints a readable summary and writes the result file (docs/result-file.md).
 // From images (calibrate_images.cc): see RunCalibrateImages below.

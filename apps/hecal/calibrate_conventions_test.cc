@@ -1,4 +1,4 @@
-// `hecal calibrate` on the mistakes real users make (apps/hecal/conventions.h,
+// `hecal calibrate` on the mistakes real users make (handeye/convention_check.h,
 // estimation/plausibility.h, estimation/station_selection.h): each ends in a refusal (exit 2, one
 // line naming the fix, no result file) or a result with a warning that names it — never a silent
 // wrong answer. Simulated data with known truth, and the bundled real sets (camodocal-artag,

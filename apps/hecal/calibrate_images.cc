@@ -145,12 +145,14 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   data.robot_unit_named = robot.unit_named;
   data.robot_quaternions = HasQuaternionColumns(robot);
   data.camera_from_images = true;
-  ConventionFlags convention_flags;
-  convention_flags.robot_file = flags.robot;
-  convention_flags.robot_inverse = flags.robot_inverse;
-  convention_flags.robot_matrix_lines = !robot.rotation;
-  const ConventionCheck check =
-      CheckConventions(data, settings.setup, convention_flags, settings.options.consensus);
+  handeye::ConventionCheckOptions convention;
+  convention.setup = settings.setup;
+  convention.consensus = settings.options.consensus;
+  convention.robot_source = flags.robot;
+  convention.robot_inverted = flags.robot_inverse;
+  convention.robot_matrix_lines = !robot.rotation;
+  convention.words = ConventionFlagWords();
+  const handeye::ConventionCheck check = handeye::CheckConventions(data, convention);
   input.notes = check.notes;
   input.notes.insert(input.notes.end(), robot.warnings.begin(), robot.warnings.end());
   input.intrinsics_source =
