@@ -7,7 +7,6 @@
 #include "hecal/core/error.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -15,6 +14,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/io/detection_output.h"
 #include "hecal/io/pose_table.h"
 #include "image_report.h"
 #endif
@@ -22,70 +22,41 @@
 namespace hecal::cli {
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-namespace {
-
-namespace fs = std::filesystem;
-
-std::string PointsCsv(const std::vector<ImageRecord>& images) {
-  std::string text =
-      "# hecal detect: detected target points, pixels (origin at the centre of the top-left "
-      "pixel)\nid,point_id,u,v\n";
-  for (const ImageRecord& image : images) {
-    if (!image.used()) continue;
-    const std::string id = io::QuoteField(image.id());
-    for (const vision::ImagePoint& p : image.detection.points) {
-      text += id;
-      text += ',';
-      text += std::to_string(p.id);
-      text += ',';
-      io::AppendDouble(p.pixel.x(), &text);
-      text += ',';
-      io::AppendDouble(p.pixel.y(), &text);
-      text += '\n';
-    }
-  }
-  return text;
-}
-
-// <output> without its extension: camera.csv → camera.
-std::string OutputStem(const std::string& output) {
-  return fs::path(output).replace_extension().string();
-}
-
-}  // namespace
-
 void RunDetect(const DetectFlags& flags, const Io& io) {
   const vision::ImageSetOptions options{flags.images, flags.target, flags.intrinsics, flags.threads,
                                         ImageUse::kPoses};
   RequireValid(options);
   // Every output is checked before the detection and written all or none after it.
-  const std::string stem = OutputStem(flags.output);
-  const std::string points_path = stem + ".points.csv";
-  const std::string camera_path = flags.intrinsics.empty() ? stem + ".camera.yaml" : "";
+  const io::DetectionOutputPaths paths = io::DetectionCompanionPaths(flags.output);
+  const std::string camera_path = flags.intrinsics.empty() ? paths.camera : "";
   io::CheckOutputs({{"--output", flags.output},
-                    {"--output (points)", points_path},
+                    {"--output (points)", paths.points},
                     {"--output (intrinsics)", camera_path}},
                    {{"--target", flags.target}, {"--intrinsics", flags.intrinsics}});
   const ImageSet set = DetectImageSet(options, "hecal detect", io);
 
   io::PoseTable table;
   table.source = flags.output;
+  std::vector<io::DetectedPoint> points;
   for (const ImageRecord& image : set.images) {
     if (!image.used()) continue;
     io::PoseRow row;
     row.pose = image.pose->T_camera_target;
     row.id = image.id();
     table.rows.push_back(row);
+    for (const vision::ImagePoint& p : image.detection.points) {
+      points.push_back({image.id(), p.id, p.pixel});
+    }
   }
   io::PoseWriteOptions write;
   write.comments = {
       "hecal detect: T_camera_target of each image (id = image file stem or sub-folder), metres",
       "images: " + flags.images + "; target: " + flags.target + " (" +
           vision::Describe(set.target) + ")",
-      "intrinsics: " + (set.estimated ? "estimated from the images, " + stem + ".camera.yaml"
-                                      : flags.intrinsics)};
+      "intrinsics: " +
+          (set.estimated ? "estimated from the images, " + paths.camera : flags.intrinsics)};
   const std::string pose_text = io::FormatPoseTable(table, write);
-  const std::string points_text = PointsCsv(set.images);
+  const std::string points_text = io::FormatDetectedPoints(points);
   std::string camera_text;
   if (set.estimated) {
     camera_text = io::FormatCameraYaml(
@@ -96,12 +67,12 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
          "RMS reprojection error " + io::FormatDouble(set.estimated->rms_px) + " px"});
   }
   std::vector<io::OutputFile> outputs = {{"--output", flags.output, pose_text},
-                                         {"--output (points)", points_path, points_text}};
+                                         {"--output (points)", paths.points, points_text}};
   if (set.estimated) outputs.push_back({"--output (intrinsics)", camera_path, camera_text});
   io::WriteFilesAtomically(outputs);
   io.out << "hecal: wrote " << table.rows.size() << " poses to " << flags.output
-         << " (T_camera_target, m, quaternion), points to " << stem << ".points.csv"
-         << (set.estimated ? ", intrinsics to " + stem + ".camera.yaml" : std::string()) << "\n";
+         << " (T_camera_target, m, quaternion), points to " << paths.points
+         << (set.estimated ? ", intrinsics to " + paths.camera : std::string()) << "\n";
 }
 
 #else

@@ -8,6 +8,7 @@
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import.h"
+#include "hecal/io/import_output.h"
 #include "hecal/io/pose_table.h"
 #include "hecal/io/units.h"
 #include "hecal/version.h"
@@ -39,17 +40,6 @@ Output: robot.csv = T_base_gripper, camera.csv = T_camera_target, quaternions qw
   '#' lines naming the source, the convention applied and the units, and '# note:' lines for
   rotations that were projected onto SO(3) or normalised (also printed as warnings).
 Errors: one line on stderr, exit code 2, and no output file is written or changed.)";
-
-std::string CsvText(const io::PoseTable& table, const std::vector<std::string>& notes,
-                    const std::string& format) {
-  io::PoseWriteOptions write;  // quaternion rotation (the default RotationFormat)
-  write.units = table.unit;
-  write.comments.push_back("written by hecal " + std::string(kVersion) + " import --format " +
-                           format);
-  write.comments.insert(write.comments.end(), notes.begin(), notes.end());
-  for (const std::string& warning : table.warnings) write.comments.push_back("note: " + warning);
-  return io::FormatPoseTable(table, write);
-}
 
 }  // namespace
 
@@ -95,27 +85,19 @@ void RunImport(const ImportCommandOptions& options, const Io& io) {
 
   const io::ImportedPoses imported = io::ImportFiles(*format, options.inputs, import_options);
 
+  const io::ImportTexts texts = io::FormatImportedPoses(
+      imported, "written by hecal " + std::string(kVersion) + " import --format " + options.format);
   std::vector<io::OutputFile> outputs;
-  outputs.push_back(
-      {"--robot", options.robot, CsvText(imported.robot, imported.robot_notes, options.format)});
-  if (imported.camera) {
-    outputs.push_back({"--camera", options.camera,
-                       CsvText(*imported.camera, imported.camera_notes, options.format)});
-  }
+  outputs.push_back({"--robot", options.robot, texts.robot});
+  if (texts.camera) outputs.push_back({"--camera", options.camera, *texts.camera});
   if (!options.intrinsics.empty()) {
-    if (!imported.intrinsics) {
+    if (!texts.intrinsics) {
       throw InputError(options.inputs.back(), 0,
                        "the images do not share one camera model (intrinsics differ between "
                        "lines), so no single camera.yaml can be written",
                        "drop --intrinsics");
     }
-    const std::vector<std::string> comments = {
-        "written by hecal " + std::string(kVersion) + " import --format " + options.format,
-        "source: " + imported.intrinsics->source +
-            " (K and plumb_bob distortion k1 k2 p1 p2 k3, pixels)",
-        "width and height are not in the source; add them if a tool needs them"};
-    outputs.push_back({"--intrinsics", options.intrinsics,
-                       io::FormatIntrinsicsYaml(*imported.intrinsics, comments)});
+    outputs.push_back({"--intrinsics", options.intrinsics, *texts.intrinsics});
   }
   std::vector<io::PathArgument> output_paths, inputs;
   for (const io::OutputFile& output : outputs) output_paths.push_back({output.flag, output.path});
