@@ -2,19 +2,16 @@
 #include "bench.h"
 
 #include <CLI/CLI.hpp>
-#include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 
 #include "bounds.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/report/bench_file.h"
+#include "hecal/report/study_text.h"
 #include "hecal/study/bench.h"
-#include "hecal/study/study_csv.h"
 #include "list_flags.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
 #include "hecal/peers/opencv_handeye.h"
@@ -22,87 +19,6 @@
 
 namespace hecal::cli {
 namespace {
-
-using study::BenchRow;
-using study::BenchStart;
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-std::string Format(const char* format, double value) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof(buffer), format, value);
-  return buffer;
-}
-
-std::string Pad(const std::string& text, size_t width, bool left_align = false) {
-  if (text.size() >= width) return text;
-  const std::string padding(width - text.size(), ' ');
-  return left_align ? text + padding : padding + text;
-}
-
-std::string ErrorText(const std::optional<double>& value, double scale) {
-  if (!value) return "-";
-  const double v = *value * scale;
-  return v != 0.0 && v < 1e-3 ? Format("%.1e", v) : Format("%.4f", v);
-}
-
-// The noise level as typed: "n" when millimetres and degrees agree, else "MM/DEG".
-std::string LevelText(const study::NoiseLevel& sigma) {
-  return sigma.mm == sigma.deg
-             ? study::FormatNumber(sigma.mm)
-             : study::FormatNumber(sigma.mm) + "/" + study::FormatNumber(sigma.deg);
-}
-
-void PrintTable(const study::BenchResult& result, const Io& io) {
-  const study::BenchOptions& o = result.options;
-  const std::vector<BenchRow>& rows = result.rows;
-  io.out << "hecal bench: thesis protocol, " << handeye::SetupName(o.setup) << ", Gaussian noise "
-         << LevelText(o.sigma) << " (mm/deg) on robot and camera, " << o.datasets
-         << " data sets per station count, seed " << o.seed
-         << "; errors of X are RMS over data sets; fail = threw, "
-            "non-finite or > 10 deg\n";
-  io.out << Pad("method", 18, true) << Pad("n", 4) << Pad("hecal us", 12) << Pad("opencv us", 12)
-         << Pad("speed-up", 10) << Pad("hecal deg", 11) << Pad("hecal mm", 10) << Pad("fail", 5)
-         << Pad("opencv deg", 12) << Pad("opencv mm", 11) << Pad("fail", 5) << "\n";
-  for (const BenchRow& row : rows) {
-    if (row.impl != "hecal" || row.start == BenchStart::kGood) continue;
-    const BenchRow* peer = nullptr;
-    for (const BenchRow& other : rows) {
-      if (other.impl == "opencv" && other.method == row.method && other.stations == row.stations) {
-        peer = &other;
-      }
-    }
-    io.out << Pad(std::string(handeye::Info(row.method).name), 18, true)
-           << Pad(std::to_string(row.stations), 4) << Pad(Format("%.2f", row.us_per_solve), 12)
-           << Pad(peer ? Format("%.2f", peer->us_per_solve) : "-", 12)
-           << Pad(peer ? Format("%.1fx", peer->us_per_solve / row.us_per_solve) : "-", 10)
-           << Pad(ErrorText(row.accuracy.rotation_error, kDeg), 11)
-           << Pad(ErrorText(row.accuracy.translation_error, 1000.0), 10)
-           << Pad(std::to_string(row.accuracy.failures), 5)
-           << Pad(peer ? ErrorText(peer->accuracy.rotation_error, kDeg) : "-", 12)
-           << Pad(peer ? ErrorText(peer->accuracy.translation_error, 1000.0) : "-", 11)
-           << Pad(peer ? std::to_string(peer->accuracy.failures) : "-", 5) << "\n";
-  }
-  io.out << "speed-up = OpenCV time / hecal time (> 1: hecal is faster)\n";
-  for (const BenchRow& row : rows) {
-    if (row.start != BenchStart::kGood) continue;
-    const BenchRow* multi = nullptr;
-    for (const BenchRow& other : rows) {
-      if (other.start == BenchStart::kClosedForm && other.method == row.method &&
-          other.stations == row.stations) {
-        multi = &other;
-      }
-    }
-    io.out << handeye::Info(row.method).name << " from a good start, n = " << row.stations << ": "
-           << Format("%.2f", row.us_per_solve) << " us per solve"
-           << (multi ? Format(", %.1fx faster than from the closed-form starts",
-                              multi->us_per_solve / row.us_per_solve)
-                     : std::string())
-           << " (X " << ErrorText(row.accuracy.rotation_error, kDeg) << " deg / "
-           << ErrorText(row.accuracy.translation_error, 1000.0) << " mm, " << row.accuracy.failures
-           << " fail)\n";
-  }
-}
 
 #ifdef HECAL_HAVE_OPENCV_PEERS
 // OpenCV's hand-eye functions on inputs converted once per data set (outside the timing),
@@ -142,7 +58,7 @@ void RunBench(const BenchCommand& command, const Io& io) {
   if (command.json) {
     io.out << report::BenchJson(result);
   } else {
-    PrintTable(result, io);
+    report::PrintBenchTable(io.out, result);
   }
 }
 

@@ -80,10 +80,6 @@ struct CalibrateSettings {
 // --intrinsics, --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 
-// The readable summary of one result: X, Z, their 1σ, the residuals of every station.
-void PrintSummary(std::ostream& out, const report::ResultDocument& document,
-                  const estimation::CalibrationResult& result);
-
 // `hecal calibrate --images`:
 //   1. the image front end of vision/image_set.h: detection, intrinsics (given or estimated),
 //      PnP poses with covariances, and the per-image report;

@@ -19,6 +19,7 @@
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/image_pairing.h"
 #include "hecal/report/image_calibration.h"
+#include "hecal/report/result_text.h"
 #include "image_report.h"
 #endif
 
@@ -174,7 +175,7 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
          << (result.X.translation() - report.pose_level.X.translation()).norm() * scale << " "
          << io::UnitName(document.unit) << "\n";
   io.out.unsetf(std::ios::floatfield);
-  PrintSummary(io.out, document, result);
+  report::PrintResultSummary(io.out, document, result);
   if (report.intrinsics_sigma) PrintRefinedIntrinsics(io.out, set.camera, report);
   PrintImageTable(io.out, document, report);
   if (!flags.output.empty()) {

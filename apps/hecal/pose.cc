@@ -6,29 +6,25 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <iomanip>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
-#include "hecal/geometry/so3.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/units.h"
 #include "hecal/pose/pose_method.h"
 #include "hecal/report/point_pose.h"
 #include "hecal/report/pose_file.h"
+#include "hecal/report/pose_text.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "hecal/vision/opencv_pnp.h"
 #endif
 
 namespace hecal::cli {
 namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 // --principal-point CX,CY (px).
 Eigen::Vector2d ParsePrincipalPoint(const std::string& text) {
@@ -92,43 +88,6 @@ void SetMethod(const std::string& method, report::PointPoseOptions& options) {
   throw InputError("--method", 0, "unknown method '" + method + "'", "use one of " + MethodList());
 }
 
-// ---- output ------------------------------------------------------------------------------------
-
-void Print(std::ostream& out, const pose::PoseEstimate& estimate, std::size_t points,
-           io::LengthUnit unit) {
-  const double scale = 1.0 / io::MetresPer(unit);
-  const std::string_view unit_name = io::UnitName(unit);
-  const Pose& T = estimate.T_camera_target;
-  const Eigen::Vector3d rvec = so3::Log(T.linear());
-  out << std::setprecision(6) << std::fixed;
-  out << "method " << estimate.method << " (" << points << " points)\n";
-  out << "T_camera_target (x_camera = R x_target + t)\n";
-  for (int r = 0; r < 3; ++r) {
-    out << "  [";
-    for (int c = 0; c < 3; ++c) out << std::setw(11) << T.linear()(r, c);
-    out << " |" << std::setw(12) << T.translation()(r) * scale << " ]\n";
-  }
-  out << "  t = (" << (T.translation() * scale).transpose() << ") " << unit_name << "\n";
-  out << "  rvec = (" << rvec.transpose() << ") rad, " << rvec.norm() * kDegrees << " deg\n";
-  if (estimate.covariance) {
-    const Vector6d sd = estimate.covariance->diagonal().cwiseSqrt();
-    out << "  1σ rotation (rx, ry, rz) = (" << sd.head<3>().transpose() * kDegrees << ") deg\n";
-    out << "  1σ translation (tx, ty, tz) = (" << sd.tail<3>().transpose() * scale << ") "
-        << unit_name << "\n";
-  }
-  out << std::setprecision(4) << "reprojection RMS " << estimate.rms_px << " px per point";
-  if (estimate.covariance) {
-    out << ", pixel σ " << estimate.sigma_px << " px per axis ("
-        << (estimate.sigma_source == pose::SigmaSource::kGiven ? "given"
-                                                               : "estimated from the residuals")
-        << ")";
-  } else {
-    out << " (no covariance: " << estimate.method << " is not refined)";
-  }
-  out << "\n";
-  out.unsetf(std::ios::floatfield);
-}
-
 struct PoseCommand {
   report::PointPoseOptions options;
   std::string output;
@@ -146,7 +105,7 @@ void RunPose(const PoseCommand& command, const Io& io) {
   for (const std::string& warning : result.estimate.warnings) {
     io.err << "hecal: warning: " << warning << "\n";
   }
-  Print(io.out, result.estimate, result.points, result.unit);
+  report::PrintPoseEstimate(io.out, result.estimate, result.points, result.unit);
   if (!command.output.empty()) {
     io::WriteFileAtomically(command.output,
                             report::PoseResultJson(result.estimate, result.point_ids, result.unit));

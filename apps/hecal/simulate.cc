@@ -2,26 +2,22 @@
 #include "simulate.h"
 
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 
 #include "bounds.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/report/study_text.h"
 #include "hecal/study/simulate.h"
 #include "hecal/study/study_csv.h"
 #include "list_flags.h"
 
 namespace hecal::cli {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 constexpr const char* kFooter =
     R"(The thesis study (docs/thesis-study.md): thesis-protocol data sets (random hand-eye
@@ -50,130 +46,6 @@ std::vector<study::NoiseLevel> ParseSigmaLevels(const std::string& text) {
     levels.push_back({level.mm, level.deg});
   }
   return levels;
-}
-
-std::string Fixed(double value, int precision) {
-  if (!std::isfinite(value)) return study::FormatNumber(value);
-  char buffer[48];
-  std::snprintf(buffer, sizeof(buffer), "%.*f", precision, value);
-  return buffer;
-}
-
-// Fixed-point for ordinary magnitudes, scientific for the tiny errors of noise-free data.
-std::string Readable(double value) {
-  if (std::isfinite(value) && value != 0.0 && std::abs(value) < 1e-3) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof(buffer), "%.2e", value);
-    return buffer;
-  }
-  return Fixed(value, 4);
-}
-
-std::string Pad(const std::string& text, size_t width, bool left_align = false) {
-  if (text.size() >= width) return text;
-  const std::string padding(width - text.size(), ' ');
-  return left_align ? text + padding : padding + text;
-}
-
-// Consistency of the predicted covariances of X (study.h), one line per method.
-void PrintConsistency(const study::StudyResult& result, size_t setting, std::ostream& out) {
-  bool header = false;
-  for (const study::MethodSummary& m : result.summaries) {
-    if (m.setting != static_cast<int>(setting) || !m.consistency) continue;
-    const uncertainty::Consistency& c = *m.consistency;
-    if (!header) {
-      out << "  consistency of the predicted covariance of X (NEES: 6 dof; coverage: 68.3% / "
-             "95.4% if consistent; sd: predicted/empirical)\n  "
-          << Pad("method", 18, true) << Pad("NEES", 8) << Pad("95% band", 16) << Pad("", 4)
-          << Pad("1σ cov", 9) << Pad("2σ cov", 9) << "  sd rx    ry    rz    tx    ty    tz\n";
-      header = true;
-    }
-    const bool in_band = c.band.Contains(c.mean_nees);
-    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
-        << Pad(Fixed(c.mean_nees, 2), 8)
-        << Pad("[" + Fixed(c.band.low, 2) + ", " + Fixed(c.band.high, 2) + "]", 16)
-        << Pad(in_band ? "ok" : "out", 4) << Pad(Fixed(100.0 * c.coverage_1sigma, 1) + "%", 9)
-        << Pad(Fixed(100.0 * c.coverage_2sigma, 1) + "%", 9) << " ";
-    for (Eigen::Index j = 0; j < c.sd_ratio.size(); ++j) out << Pad(Fixed(c.sd_ratio(j), 2), 6);
-    out << "\n";
-    if (m.consistency_model) {
-      const uncertainty::Consistency& o = *m.consistency_model;
-      out << "  " << Pad("  model only", 18, true) << Pad(Fixed(o.mean_nees, 2), 8) << Pad("", 16)
-          << Pad(o.band.Contains(o.mean_nees) ? "ok" : "out", 4)
-          << Pad(Fixed(100.0 * o.coverage_1sigma, 1) + "%", 9)
-          << Pad(Fixed(100.0 * o.coverage_2sigma, 1) + "%", 9) << " ";
-      for (Eigen::Index j = 0; j < o.sd_ratio.size(); ++j) out << Pad(Fixed(o.sd_ratio(j), 2), 6);
-      out << " (check inflated " << m.check_used << " of " << (m.trials - m.failures) << ")\n";
-    }
-  }
-}
-
-// Outlier rejection per method (with --reject-outliers or --outliers), one line per method.
-void PrintRejection(const study::StudyResult& result, size_t setting, std::ostream& out) {
-  const study::Setting& s = result.options.settings[setting];
-  if (!result.options.reject_outliers && s.gross_outliers == 0) return;
-  out << "  " << Pad("method", 18, true) << Pad("found", 9) << Pad("all found", 11)
-      << Pad("good rej", 10) << Pad("rmse clean", 12) << Pad("ratio", 7)
-      << Pad("rmse clean [mm]", 17) << Pad("ratio", 7) << "\n";
-  for (const study::MethodSummary& m : result.summaries) {
-    if (m.setting != static_cast<int>(setting)) continue;
-    const auto percent = [](int part, int whole) {
-      return whole > 0 ? Fixed(100.0 * part / whole, 1) + "%" : std::string("-");
-    };
-    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
-        << Pad(percent(m.outliers_rejected, m.outliers_injected), 9)
-        << Pad(percent(m.trials_all_found, m.trials - m.failures), 11)
-        << Pad(percent(m.good_rejected, m.good_stations), 10)
-        << Pad(Readable(m.rotation_rmse_clean * kDeg), 12)
-        << Pad(Fixed(m.rotation.rmse / m.rotation_rmse_clean, 3), 7)
-        << Pad(Readable(m.translation_rmse_clean * 1000.0), 17)
-        << Pad(Fixed(m.translation.rmse / m.translation_rmse_clean, 3), 7) << "\n";
-  }
-}
-
-void PrintTable(const study::StudyResult& result, std::ostream& out) {
-  const auto& settings = result.options.settings;
-  size_t row = 0;
-  for (size_t s = 0; s < settings.size(); ++s) {
-    const study::Setting& setting = settings[s];
-    out << handeye::SetupName(setting.setup) << ", " << setting.stations << " stations, "
-        << sim::NoiseKindName(setting.noise_kind) << " noise on "
-        << study::NoiseOnName(setting.noise_on) << ", sigma "
-        << study::FormatNumber(setting.translation_sigma * 1000.0) << " mm / "
-        << study::FormatNumber(setting.rotation_sigma * kDeg) << " deg, " << result.options.trials
-        << " trials";
-    if (setting.robot_scale != 1.0)
-      out << ", robot noise " << study::FormatNumber(setting.robot_scale) << "x";
-    if (setting.gross_outliers > 0) {
-      out << ", " << setting.gross_outliers << " gross outlier(s) per data set";
-    }
-    out << "\n";
-    const study::Bound& bound = result.setting_bounds[s];
-    out << "  first-order bound (ml at the truth): rotation RMSE "
-        << Readable(bound.rotation * kDeg) << " deg, translation RMSE "
-        << Readable(bound.translation * 1000.0) << " mm\n";
-    out << "  " << Pad("method", 18, true) << Pad("fail", 5) << Pad("outl", 5)
-        << Pad("rot median", 12) << Pad("rmse", 10) << Pad("p10", 10) << Pad("p90", 10)
-        << Pad("max [deg]", 11) << Pad("tra median", 12) << Pad("rmse", 10) << Pad("p10", 10)
-        << Pad("p90", 10) << Pad("max [mm]", 11) << "\n";
-    for (; row < result.summaries.size() && result.summaries[row].setting == static_cast<int>(s);
-         ++row) {
-      const study::MethodSummary& m = result.summaries[row];
-      out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
-          << Pad(std::to_string(m.failures), 5) << Pad(std::to_string(m.outliers), 5)
-          << Pad(Readable(m.rotation.median * kDeg), 12)
-          << Pad(Readable(m.rotation.rmse * kDeg), 10) << Pad(Readable(m.rotation.p10 * kDeg), 10)
-          << Pad(Readable(m.rotation.p90 * kDeg), 10) << Pad(Readable(m.rotation.max * kDeg), 11)
-          << Pad(Readable(m.translation.median * 1000.0), 12)
-          << Pad(Readable(m.translation.rmse * 1000.0), 10)
-          << Pad(Readable(m.translation.p10 * 1000.0), 10)
-          << Pad(Readable(m.translation.p90 * 1000.0), 10)
-          << Pad(Readable(m.translation.max * 1000.0), 11) << "\n";
-    }
-    PrintConsistency(result, s, out);
-    PrintRejection(result, s, out);
-    out << "\n";
-  }
 }
 
 // One item of --setup, --noise-on, --noise: `parse` or an InputError listing `choices`.
@@ -221,7 +93,7 @@ void RunSimulate(const SimulateCommand& command, const Io& io) {
   }
   io::WriteFilesAtomically(outputs);
   io.out << "hecal simulate: seed " << command.options.seed << "\n";
-  PrintTable(result, io.out);
+  report::PrintStudyTable(io.out, result);
   if (!command.output.empty()) {
     io.out << "hecal: wrote per-trial errors to " << command.output << "\n";
   }

@@ -1,0 +1,32 @@
+// The calibration result as readable text (what `hecal calibrate` prints; docs/cli.md), beside
+// the result file of result_file.h.
+//
+// Summary of one result: the method, setup and station count; X and Z as 3×4 matrices
+// [R | t] with their rotation (angle in degrees about the axis) and translation in the
+// document's unit; the covariance method and the 1σ of X and Z per axis (rotation in degrees,
+// translation in millimetres whatever the unit); the residual RMS; one line per station used
+// (rotation in degrees, translation in the unit, whitened residual, "> 3σ" flags) — every
+// station up to 200, above that the 20 largest whitened residuals — then the rejected stations
+// and the warnings.
+//
+// Comparison (`--method all`): one line per method with X's translation, the residual RMS, the
+// difference from ml (rotation angle in degrees, translation distance) when ml is among the
+// results, and the predicted RMS error of X (the square root of the trace of its rotation and
+// translation covariance blocks, degrees and millimetres), then the methods that refused.
+#pragma once
+
+#include <ostream>
+
+#include "hecal/estimation/calibrate.h"
+#include "hecal/report/result_file.h"
+
+namespace hecal::report {
+
+// `result` is one of document.results (its station ids: UsedStationIds(document)).
+void PrintResultSummary(std::ostream& out, const ResultDocument& document,
+                        const estimation::CalibrationResult& result);
+
+// Starts with a blank line.
+void PrintMethodComparison(std::ostream& out, const ResultDocument& document);
+
+}  // namespace hecal::report

@@ -1,0 +1,145 @@
+// The calibration result as readable text: see result_text.h.
+#include "hecal/report/result_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <numbers>
+#include <numeric>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hecal/geometry/rotation.h"
+#include "hecal/handeye/methods.h"
+#include "hecal/io/units.h"
+
+namespace hecal::report {
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+// The printout lists every station up to this many, else the largest residuals only.
+constexpr size_t kMaxPrintedStations = 200;
+constexpr size_t kLargestPrintedStations = 20;
+
+void PrintPose(std::ostream& out, std::string_view name, std::string_view frame, const Pose& T,
+               double scale, std::string_view unit) {
+  const AxisAngle aa = AxisAngleFromMatrix(T.linear());
+  out << name << " = " << frame << "\n";
+  for (int r = 0; r < 3; ++r) {
+    out << "  [";
+    for (int c = 0; c < 3; ++c) out << std::setw(11) << T.linear()(r, c);
+    out << " |" << std::setw(11) << T.translation()(r) * scale << " ]\n";
+  }
+  out << "  rotation " << aa.angle * kDegrees << " deg about (" << aa.axis.transpose()
+      << "), translation " << (T.translation() * scale).transpose() << " " << unit << "\n";
+}
+
+// 1σ per axis in degrees and millimetres, whatever the file unit (the result file has both).
+void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covariance) {
+  const Vector6d sd = covariance.diagonal().cwiseSqrt();
+  out << "  1σ " << name << ": rotation (" << sd.head<3>().transpose() * kDegrees
+      << ") deg, translation (" << sd.tail<3>().transpose() * 1000.0 << ") mm\n";
+}
+
+}  // namespace
+
+void PrintResultSummary(std::ostream& out, const ResultDocument& document,
+                        const estimation::CalibrationResult& result) {
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  const std::string_view unit = io::UnitName(document.unit);
+  out << std::fixed << std::setprecision(6);
+  out << "method " << handeye::Info(result.method).name << " ("
+      << handeye::SetupName(document.setup) << ", " << result.residuals.size() << " stations)\n";
+  PrintPose(out, "X", handeye::XFrameName(document.setup), result.X, scale, unit);
+  PrintPose(out, "Z", handeye::ZFrameName(document.setup), result.Z, scale, unit);
+  if (result.covariance) {
+    const estimation::CalibrationCovariance& c = *result.covariance;
+    out << "covariance: " << estimation::CovarianceMethodName(c.method);
+    if (c.method == estimation::CovarianceMethod::kMonteCarlo) {
+      out << " (" << c.samples << " samples)";
+    } else if (c.solves > 0) {
+      out << " (" << c.solves << " solves)";
+    }
+    out << "\n";
+    PrintSigma(out, "X", c.X());
+    PrintSigma(out, "Z", c.Z());
+  }
+  out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegrees << " deg, "
+      << result.translation_rms * scale << " " << unit << "\n";
+  out << "  station        rotation_deg   translation_" << unit << "   whitened\n";
+  const std::vector<std::string> used = UsedStationIds(document);
+  const size_t shown = std::min(used.size(), result.residuals.size());
+  // Every station up to kMaxPrintedStations; above, the largest whitened residuals (the file
+  // has them all).
+  std::vector<size_t> order(shown);
+  std::iota(order.begin(), order.end(), size_t{0});
+  if (shown > kMaxPrintedStations) {
+    std::partial_sort(order.begin(), order.begin() + kLargestPrintedStations, order.end(),
+                      [&](size_t a, size_t b) {
+                        return result.residuals[a].whitened > result.residuals[b].whitened;
+                      });
+    order.resize(kLargestPrintedStations);
+    out << "  (the " << kLargestPrintedStations << " largest of " << shown
+        << " stations; every station is in the result file)\n";
+  }
+  for (const size_t k : order) {
+    const estimation::StationResidual& r = result.residuals[k];
+    out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(12)
+        << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)
+        << r.whitened << (r.outlier ? "   > 3σ, check this station" : "") << "\n";
+  }
+  for (size_t k = 0; k < result.rejected_residuals.size(); ++k) {
+    const estimation::StationResidual& r = result.rejected_residuals[k];
+    const std::string id = k < result.rejected_ids.size() ? result.rejected_ids[k]
+                                                          : std::to_string(result.rejected[k] + 1);
+    out << "  " << std::left << std::setw(14) << id << std::right << std::setw(12)
+        << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)
+        << r.whitened << "   rejected: outlier, not used\n";
+  }
+  for (const std::string& warning : result.warnings) out << "warning: " << warning << "\n";
+  out.unsetf(std::ios::floatfield);
+}
+
+// `--method all`: one line per method, side by side, with the difference from ml and the
+// predicted RMS error of X (sqrt of the trace of its rotation and translation covariance).
+void PrintMethodComparison(std::ostream& out, const ResultDocument& document) {
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  const std::string_view unit = io::UnitName(document.unit);
+  const auto ml = std::find_if(document.results.begin(), document.results.end(),
+                               [](const auto& r) { return r.method == handeye::Method::kMl; });
+  const std::string length = "res_" + std::string(unit);
+  out << "\nside by side (X " << handeye::XFrameName(document.setup) << ")\n  " << std::left
+      << std::setw(16) << "method" << std::right << std::setw(11) << "tx" << std::setw(12) << "ty"
+      << std::setw(12) << "tz" << std::setw(12) << "res_deg" << std::setw(9) << length;
+  if (ml != document.results.end())
+    out << std::setw(12) << "vs_ml_deg" << std::setw(10) << "vs_ml_" + std::string(unit);
+  out << std::setw(11) << "1σ_deg" << std::setw(10) << "1σ_mm"
+      << "  covariance\n";
+  out << std::fixed;
+  for (const estimation::CalibrationResult& r : document.results) {
+    const Eigen::Vector3d t = r.X.translation() * scale;
+    out << "  " << std::left << std::setw(16) << handeye::Info(r.method).name << std::right
+        << std::setprecision(6) << std::setw(11) << t.x() << std::setw(12) << t.y() << std::setw(12)
+        << t.z() << std::setprecision(4) << std::setw(12) << r.rotation_rms * kDegrees
+        << std::setw(9) << r.translation_rms * scale;
+    if (ml != document.results.end()) {
+      const Pose d = ml->X.inverse() * r.X;
+      out << std::setw(12) << AxisAngleFromMatrix(d.linear()).angle * kDegrees << std::setw(10)
+          << (r.X.translation() - ml->X.translation()).norm() * scale;
+    }
+    if (r.covariance) {  // predicted RMS error of X: sqrt(trace) of each block
+      const Matrix6d C = r.covariance->X();
+      out << std::setw(10) << std::sqrt(C.topLeftCorner<3, 3>().trace()) * kDegrees << std::setw(9)
+          << std::sqrt(C.bottomRightCorner<3, 3>().trace()) * 1000.0 << "  "
+          << estimation::CovarianceMethodName(r.covariance->method);
+    }
+    out << "\n";
+  }
+  for (const MethodFailure& failure : document.failures)
+    out << "  " << std::left << std::setw(16) << handeye::Info(failure.method).name << std::right
+        << "refused: " << failure.message << "\n";
+  out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace hecal::report

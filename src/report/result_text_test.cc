@@ -1,0 +1,86 @@
+// The result text against lines written by hand for a result whose numbers are known: X a
+// quarter turn about z at (100, 200, 300) mm, two stations used, one rejected, in millimetres;
+// and the side-by-side comparison of two methods 1 mm apart.
+#include "hecal/report/result_text.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <sstream>
+#include <string>
+
+namespace hecal::report {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+estimation::CalibrationResult QuarterTurn(handeye::Method method, double tz_m) {
+  estimation::CalibrationResult result;
+  result.method = method;
+  Eigen::Matrix3d R;
+  R << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  result.X.linear() = R;
+  result.X.translation() = Eigen::Vector3d(0.1, 0.2, tz_m);
+  result.residuals = {{0.5 * kDeg, 1.25e-3, 0.8, false}, {2.0 * kDeg, 4e-3, 3.5, true}};
+  result.rotation_rms = 1.5 * kDeg;
+  result.translation_rms = 3e-3;
+  result.rejected = {1};
+  result.rejected_residuals = {{10.0 * kDeg, 0.05, 20.0, true}};
+  result.rejected_ids = {"s2"};
+  result.warnings = {"a warning"};
+  return result;
+}
+
+ResultDocument Document() {
+  ResultDocument document;
+  document.setup = handeye::Setup::kEyeInHand;
+  document.unit = io::LengthUnit::kMillimetre;
+  document.station_ids = {"s1", "s2", "s3"};
+  document.rejected = {1};
+  document.results = {QuarterTurn(handeye::Method::kMl, 0.3)};
+  return document;
+}
+
+TEST(ResultText, SummaryLines) {
+  const ResultDocument document = Document();
+  std::ostringstream out;
+  PrintResultSummary(out, document, document.results[0]);
+  const std::string text = out.str();
+  const auto has = [&](const std::string& line) {
+    EXPECT_NE(text.find(line + "\n"), std::string::npos) << "missing: " << line << "\n" << text;
+  };
+  EXPECT_EQ(text.rfind("method ml (eye-in-hand, 2 stations)\nX = T_gripper_camera\n", 0), 0u);
+  has("  [   0.000000  -1.000000   0.000000 | 100.000000 ]");
+  has("  [   1.000000   0.000000   0.000000 | 200.000000 ]");
+  has("  [   0.000000   0.000000   1.000000 | 300.000000 ]");
+  has("  rotation 90.000000 deg about (0.000000 0.000000 1.000000), translation 100.000000 "
+      "200.000000 300.000000 mm");
+  has("Z = T_base_target");
+  has("residual RMS: 1.5000 deg, 3.0000 mm");
+  has("  station        rotation_deg   translation_mm   whitened");
+  has("  s1                  0.5000           1.2500     0.8000");
+  has("  s3                  2.0000           4.0000     3.5000   > 3σ, check this station");
+  has("  s2                 10.0000          50.0000    20.0000   rejected: outlier, not used");
+  has("warning: a warning");
+  EXPECT_EQ(text.find("covariance"), std::string::npos);  // none computed
+}
+
+TEST(ResultText, ComparisonAgainstMl) {
+  ResultDocument document = Document();
+  document.all_methods = true;
+  document.results.push_back(QuarterTurn(handeye::Method::kTsaiLenz, 0.301));
+  document.failures = {{handeye::Method::kShah, "too few stations"}};
+  std::ostringstream out;
+  PrintMethodComparison(out, document);
+  const std::string text = out.str();
+  EXPECT_EQ(text.rfind("\nside by side (X T_gripper_camera)\n", 0), 0u) << text;
+  // tsai-lenz: the same rotation, 1 mm further along z than ml.
+  EXPECT_NE(text.find("  tsai-lenz        100.000000  200.000000  301.000000      1.5000   3.0000"
+                      "      0.0000    1.0000\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  shah            refused: too few stations\n"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace hecal::report
