@@ -15,9 +15,9 @@
 // accuracy, CPU-time timing) is study::RunBench (study/bench.h), with OpenCV's hand-eye functions
 // (peers/opencv_handeye.h) as its peer when vision is built (without it only hecal rows are
 // produced). A bad value is an InputError naming the flag (BenchOptions::IsValid, field_flags.h).
-// --json prints report::BenchJson (report/bench_file.h). The table shows both implementations
-// side by side and the speed-up OpenCV time / hecal time; below it one line per station count for
-// ml from a good start, with its speed-up over ml from the closed-form starts.
+// --json prints report::BenchJson (report/bench_file.h). The table (report/study_text.h) shows both
+// implementations side by side and the speed-up OpenCV time / hecal time; below it one line per
+// station count for ml from a good start, with its speed-up over ml from the closed-form starts.
 #pragma once
 
 #include "cli.h"

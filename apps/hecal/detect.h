@@ -10,8 +10,8 @@
 //      <output>                  pose table (io/pose_table.h): id (= the station: the image's
 //                                file stem, or its sub-folder's name),
 //                                x,y,z,qw,qx,qy,qz of T_camera_target, '#' lines saying how
-//      <output stem>.points.csv  id,point_id,u,v: the detected pixels of every used image
-//                                (point_id = the pose::ObjectPoints id)
+//      <output stem>.points.csv  id,point_id,u,v (io/detection_output.h): the detected pixels of
+//                                every used image (point_id = the pose::ObjectPoints id)
 //      <output stem>.camera.yaml only when the intrinsics were estimated
 //   The output stem is <output> without its extension (camera.csv → camera).
 //

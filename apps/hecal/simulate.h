@@ -31,8 +31,9 @@
 // whose IsValid checks every range (stations, outliers, trials, settings, trial rows, sigmas,
 // robot scales, threads, samples); a bad value is an InputError naming the flag (field_flags.h,
 // exit 2, one line on stderr). study::Simulate runs the study; this command prints the seed and
-// a table per setting (stdout); --output and --summary write the CSV files of study/study_csv.h,
-// both or neither (io/atomic_file.h; the paths are checked before the study runs).
+// a table per setting (stdout, report/study_text.h); --output and --summary write the CSV files of
+// study/study_csv.h, both or neither (io/atomic_file.h; the paths are checked before the study
+// runs).
 #pragma once
 
 #include "cli.h"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "hecal/io/delimited_text.h"
 #include "hecal/study/study_csv.h"
 
 namespace hecal::report {
@@ -21,10 +22,7 @@ std::string Printf(const char* format, double value) {
 }
 
 std::string Fixed(double value, int precision) {
-  if (!std::isfinite(value)) return study::FormatNumber(value);
-  char buffer[48];
-  std::snprintf(buffer, sizeof(buffer), "%.*f", precision, value);
-  return buffer;
+  return std::isfinite(value) ? io::FormatFixed(value, precision) : study::FormatNumber(value);
 }
 
 std::string Readable(double value) {

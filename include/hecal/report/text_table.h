@@ -13,7 +13,8 @@ std::string Pad(const std::string& text, std::size_t width, bool left_align = fa
 // One value through printf's `format` ("%.2f", "%.1fx"); at most 47 characters.
 std::string Printf(const char* format, double value);
 
-// "%.*f"; a value that is not finite as study::FormatNumber writes it ("nan", "inf", "-inf").
+// io::FormatFixed (`precision` digits after the point); a value that is not finite as
+// study::FormatNumber writes it ("nan", "inf", "-inf"), not as "-".
 std::string Fixed(double value, int precision);
 
 // Fixed(value, 4) for ordinary magnitudes, "%.2e" for the tiny non-zero errors of noise-free
