@@ -1,16 +1,19 @@
 // The polish with the robot's pose error in the model, against synthetic scenes with a known
 // robot error like a real arm's (0.03°, 0.25 mm per pose; rwhe-kuka2's SOURCE.md): the noise
-// levels it estimates, and the covariance of X over many scenes (NEES against the truth).
+// levels it estimates, and the covariance of X over many scenes (NEES against the truth), also
+// per axis on rwhe-kuka2's near-degenerate motions (testing/kuka2_scene.h).
 #include "hecal/estimation/epipolar_robot_noise.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
 #include "testing/epipolar_scenes.h"
+#include "testing/kuka2_scene.h"
 
 namespace hecal::estimation {
 namespace {
@@ -29,6 +32,16 @@ testing::EpipolarSceneSpec ArmLikeSpec() {
   spec.robot_rotation_sigma = 0.03 * kDegree;
   spec.robot_translation_sigma = 0.25e-3;
   return spec;
+}
+
+std::string Fmt(const Eigen::VectorXd& v) {
+  std::string out = "(";
+  for (Eigen::Index k = 0; k < v.size(); ++k) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%s%.2f", k > 0 ? ", " : "", v[k]);
+    out += buffer;
+  }
+  return out + ")";
 }
 
 double Nees(const EpipolarPolish& polish, const Pose& truth) {
@@ -69,6 +82,39 @@ TEST(PolishWithEstimatedRobotNoise, CovarianceHoldsOverManyScenesWhereTheIndepen
               0.3 * spec.robot_translation_sigma);
   EXPECT_NEAR(ray_sigma_sum / trials, spec.pixel_sigma / spec.focal,
               0.3 * spec.pixel_sigma / spec.focal);
+}
+
+// rwhe-kuka2's motions (18 of 27 pure rotations about the gripper's x axis, which leave t's x
+// component to the 9 translating ones): the covariance must hold per axis, not only on average.
+// Read t in the gripper frame (Cov t = R̂ Cov(v) R̂ᵀ): the camera's z axis is the gripper's x
+// here, so the per-axis σ of v (the camera frame) is not the σ of t's x component.
+TEST(PolishWithEstimatedRobotNoise, CovarianceHoldsPerAxisOnKuka2ShapedMotions) {
+  const testing::kuka2::SceneSpec spec;
+  const int trials = 20;
+  Vector6d z2 = Vector6d::Zero();  // mean z² per axis of δ = (ω, v)
+  Eigen::Vector3d z2_gripper = Eigen::Vector3d::Zero();
+  double translation_sigma_sum = 0.0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const testing::kuka2::Scene scene = testing::kuka2::MakeScene(spec, 40 + trial);
+    const EpipolarPolish plain = PolishEpipolar(scene.problem, scene.X);
+    const RobotNoisePolish robot = PolishWithEstimatedRobotNoise(scene.problem, plain.X, 2.0);
+    const Matrix6d& C = robot.polish.covariance;
+    const Vector6d error = se3::Log(robot.polish.X.inverse() * scene.X);
+    z2 += error.cwiseAbs2().cwiseQuotient(C.diagonal()) / trials;
+    const Eigen::Matrix3d R = robot.polish.X.linear();
+    const Eigen::Matrix3d C_t = R * C.bottomRightCorner<3, 3>() * R.transpose();
+    const Eigen::Vector3d dt = robot.polish.X.translation() - scene.X.translation();
+    z2_gripper += dt.cwiseAbs2().cwiseQuotient(C_t.diagonal()) / trials;
+    translation_sigma_sum += robot.noise.robot_translation_sigma;
+  }
+  std::printf("%d kuka2-shaped scenes: mean z2 of delta %s; of t, gripper frame %s\n", trials,
+              Fmt(z2).c_str(), Fmt(z2_gripper).c_str());
+  // The mean of 20 χ²₁ values: standard deviation sqrt(2/20) = 0.32; a band of 4 of them.
+  const double band = 4.0 * std::sqrt(2.0 / trials);
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(z2[k], 1.0, band) << "axis " << k;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(z2_gripper[k], 1.0, band) << "gripper axis " << k;
+  EXPECT_NEAR(translation_sigma_sum / trials, spec.robot_translation_sigma,
+              0.2 * spec.robot_translation_sigma);
 }
 
 TEST(PolishWithRobotNoise, WithoutRobotNoiseIsThePlainPolish) {

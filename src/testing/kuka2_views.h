@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "hecal/geometry/so3.h"
 #include "hecal/geometry/types.h"
 #include "hecal/vision/detection.h"
+#include "testing/kuka2_scene.h"
 #include "testing/render_views.h"
 
 namespace hecal::vision::kuka2 {
@@ -56,14 +56,7 @@ inline std::string Directory() {
 
 // Detects the board in images `numbers` (1-based) and reads their robot poses.
 inline Views Load(const std::vector<int>& numbers) {
-  std::vector<Pose> robot;
-  std::ifstream file(Directory() + "RobotPosesVec.txt");
-  Eigen::Matrix4d M;
-  while (true) {
-    for (int k = 0; k < 16; ++k) file >> M(k / 4, k % 4);
-    if (!file) break;
-    robot.emplace_back(M);
-  }
+  const std::vector<Pose> robot = hecal::testing::kuka2::RobotPoses();
   Views views;
   for (const int number : numbers) {
     const std::string name =
