@@ -9,6 +9,7 @@
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/json_matrix.h"
+#include "hecal/report/translation_sigma.h"
 #include "hecal/version.h"
 
 namespace hecal::report {
@@ -46,7 +47,10 @@ json SigmaJson(const Vector6d& sd, double scale) {
   return {{"rotation_deg", {r.x(), r.y(), r.z()}}, {"translation", {t.x(), t.y(), t.z()}}};
 }
 
-json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double scale) {
+// sigma.X / sigma.Z along the poses' own axes, and translation_in_parent along the axes their
+// translations are written in (translation_sigma.h).
+json CovarianceSectionJson(const estimation::CalibrationCovariance& c, handeye::Setup setup,
+                           const Pose& X, const Pose& Z, double scale) {
   Eigen::Matrix<double, 12, 1> s;
   s << 1.0, 1.0, 1.0, scale, scale, scale, 1.0, 1.0, 1.0, scale, scale, scale;
   const Eigen::Matrix<double, 12, 12> scaled = s.asDiagonal() * c.covariance * s.asDiagonal();
@@ -59,6 +63,10 @@ json CovarianceSectionJson(const estimation::CalibrationCovariance& c, double sc
                   {"sigma",
                    {{"X", SigmaJson(c.X().diagonal().cwiseSqrt(), scale)},
                     {"Z", SigmaJson(c.Z().diagonal().cwiseSqrt(), scale)}}}};
+  section["sigma"]["X"]["translation_in_parent"] =
+      TranslationSigmaInParentJson(handeye::XFrameName(setup), X, c.X(), scale);
+  section["sigma"]["Z"]["translation_in_parent"] =
+      TranslationSigmaInParentJson(handeye::ZFrameName(setup), Z, c.Z(), scale);
   if (c.method == estimation::CovarianceMethod::kMonteCarlo) {
     section["samples"] = c.samples;
     section["failed_samples"] = c.failures;
@@ -167,7 +175,8 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
       {"Z", PoseJson(result.Z, handeye::ZFrameName(document.setup), scale)},
   };
   if (result.covariance) {
-    object["covariance"] = CovarianceSectionJson(*result.covariance, scale);
+    object["covariance"] =
+        CovarianceSectionJson(*result.covariance, document.setup, result.X, result.Z, scale);
     if (result.model_check) {
       object["covariance"]["model_check"] = ModelCheckJson(*result.model_check, scale);
       if (result.model_check->used)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -27,7 +28,8 @@ ResultDocument MakeDocument() {
   result.X = se3::Exp((Vector6d() << 0.1, 0.2, -0.3, 1.0, -2.0, 0.5).finished());
   result.Z = se3::Exp((Vector6d() << -0.5, 0.0, 0.25, 0.01, 0.02, 0.03).finished());
   Matrix6d covariance = Matrix6d::Identity() * 1e-6;
-  covariance(3, 4) = covariance(4, 3) = 2e-6;  // m², must become 2 mm²
+  // m², must become 0.5 mm² (a correlation of 0.5: the covariance is positive definite)
+  covariance(3, 4) = covariance(4, 3) = 0.5e-6;
   estimation::CalibrationCovariance joint;
   joint.method = estimation::CovarianceMethod::kUnscented;
   joint.solves = 13;
@@ -71,7 +73,7 @@ TEST(ResultFile, JsonFollowsTheContract) {
   // Covariance: rotation block unchanged, translation block scaled to mm².
   EXPECT_NEAR(j["covariance"]["X"][0][0].get<double>(), 1e-6, 1e-18);
   EXPECT_NEAR(j["covariance"]["X"][3][3].get<double>(), 1.0, 1e-12);
-  EXPECT_NEAR(j["covariance"]["X"][3][4].get<double>(), 2.0, 1e-12);
+  EXPECT_NEAR(j["covariance"]["X"][3][4].get<double>(), 0.5, 1e-12);
   EXPECT_EQ(j["covariance"]["parameterization"], "right, (rx,ry,rz,tx,ty,tz)");
   EXPECT_EQ(j["covariance"]["method"], "unscented");
   EXPECT_EQ(j["covariance"]["solves"], 13);
@@ -80,6 +82,20 @@ TEST(ResultFile, JsonFollowsTheContract) {
   EXPECT_NEAR(j["covariance"]["sigma"]["X"]["rotation_deg"][2].get<double>(),
               1e-3 * 180.0 / std::numbers::pi, 1e-12);
   EXPECT_NEAR(j["covariance"]["sigma"]["Z"]["translation"][0].get<double>(), 1.0, 1e-12);
+  // t's 1σ along the parent frame's axes (eye-to-hand: X's is the base, Z's the gripper):
+  // sqrt of the diagonal of R̂ C_vv R̂ᵀ, in mm.
+  const Eigen::Matrix3d C_vv = document.results[0].covariance->X().bottomRightCorner<3, 3>();
+  const auto& in_parent_x = j["covariance"]["sigma"]["X"]["translation_in_parent"];
+  const auto& in_parent_z = j["covariance"]["sigma"]["Z"]["translation_in_parent"];
+  EXPECT_EQ(in_parent_x["frame"], "base");
+  EXPECT_EQ(in_parent_z["frame"], "gripper");
+  const Eigen::Matrix3d C_x = X.linear() * C_vv * X.linear().transpose();
+  const Eigen::Matrix3d& R_z = document.results[0].Z.linear();
+  const Eigen::Matrix3d C_z = R_z * C_vv * R_z.transpose();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(in_parent_x["translation"][k].get<double>(), 1e3 * std::sqrt(C_x(k, k)), 1e-9);
+    EXPECT_NEAR(in_parent_z["translation"][k].get<double>(), 1e3 * std::sqrt(C_z(k, k)), 1e-9);
+  }
   EXPECT_FALSE(j["covariance"].contains("samples"));  // Monte Carlo only
   // Residuals skip the rejected station; rotation in degrees, translation in mm.
   EXPECT_EQ(j["stations"]["used"], json({"a", "c"}));

@@ -13,6 +13,7 @@
 #include "hecal/geometry/rotation.h"
 #include "hecal/handeye/methods.h"
 #include "hecal/io/units.h"
+#include "hecal/report/translation_sigma.h"
 
 namespace hecal::report {
 namespace {
@@ -35,7 +36,8 @@ void PrintPose(std::ostream& out, std::string_view name, std::string_view frame,
       << "), translation " << (T.translation() * scale).transpose() << " " << unit << "\n";
 }
 
-// 1σ per axis in degrees and millimetres, whatever the file unit (the result file has both).
+// 1σ per axis in degrees and millimetres, whatever the file unit (the result file has both),
+// along the pose's own axes (the covariance's; translation_sigma.h gives t's parent-frame σ).
 void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covariance) {
   const Vector6d sd = covariance.diagonal().cwiseSqrt();
   out << "  1σ " << name << ": rotation (" << sd.head<3>().transpose() * kDegrees
@@ -63,7 +65,9 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
     }
     out << "\n";
     PrintSigma(out, "X", c.X());
+    PrintTranslationSigmaInParent(out, "X", handeye::XFrameName(document.setup), result.X, c.X());
     PrintSigma(out, "Z", c.Z());
+    PrintTranslationSigmaInParent(out, "Z", handeye::ZFrameName(document.setup), result.Z, c.Z());
   }
   out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegrees << " deg, "
       << result.translation_rms * scale << " " << unit << "\n";

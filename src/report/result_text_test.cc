@@ -65,6 +65,28 @@ TEST(ResultText, SummaryLines) {
   EXPECT_EQ(text.find("covariance"), std::string::npos);  // none computed
 }
 
+// X turns the camera's x into the gripper's y: σ (1, 2, 3) mm along the camera's axes is
+// (2, 1, 3) mm along the gripper's. Z is the identity rotation: its two lines agree.
+TEST(ResultText, SigmaAlongBothFrames) {
+  ResultDocument document = Document();
+  estimation::CalibrationCovariance covariance;
+  covariance.covariance.setZero();
+  covariance.covariance.diagonal() << 1e-6, 1e-6, 1e-6, 1e-6, 4e-6, 9e-6, 1e-6, 1e-6, 1e-6, 16e-6,
+      25e-6, 36e-6;
+  covariance.covariance(0, 4) = covariance.covariance(4, 0) = 1e-6;  // must not enter
+  document.results[0].covariance = covariance;
+  std::ostringstream out;
+  PrintResultSummary(out, document, document.results[0]);
+  const std::string text = out.str();
+  const auto has = [&](const std::string& line) {
+    EXPECT_NE(text.find(line + "\n"), std::string::npos) << "missing: " << line << "\n" << text;
+  };
+  has("  1σ X: rotation (0.057296 0.057296 0.057296) deg, translation (1.000000 2.000000 "
+      "3.000000) mm");
+  has("  1σ of X's translation along the gripper's axes: (2.000000 1.000000 3.000000) mm");
+  has("  1σ of Z's translation along the base's axes: (4.000000 5.000000 6.000000) mm");
+}
+
 TEST(ResultText, ComparisonAgainstMl) {
   ResultDocument document = Document();
   document.all_methods = true;
