@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_test_util.h"
@@ -135,6 +136,30 @@ TEST_F(CalibrateCommand, MoveItResultFileFollowsTheContract) {
       ASSERT_EQ(C[r].size(), 6u);
       EXPECT_GT(C[r][r].get<double>(), 0.0);
       for (int c = 0; c < 6; ++c) EXPECT_DOUBLE_EQ(C[r][c].get<double>(), C[c][r].get<double>());
+    }
+  }
+  // t's 1σ along the parent frame's axes (eye-to-hand: X = T_base_camera in the base's, Z =
+  // T_gripper_target in the gripper's): sqrt of the diagonal of R̂ C_tt R̂ᵀ from the file's own
+  // matrix and covariance, written in the file's unit and printed in millimetres.
+  for (const auto& [block, parent] : {std::pair{"X", "base"}, std::pair{"Z", "gripper"}}) {
+    const json& in_parent = result["covariance"]["sigma"][block]["translation_in_parent"];
+    EXPECT_EQ(in_parent["frame"], parent);
+    Eigen::Matrix3d C_tt;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) C_tt(r, c) = result["covariance"][block][3 + r][3 + c];
+    }
+    const Eigen::Matrix3d R = PoseOf(result[block]).linear();
+    const Eigen::Vector3d expected = (R * C_tt * R.transpose()).diagonal().cwiseSqrt();
+    std::ostringstream line;
+    line << "  1σ of " << block << "'s translation along the " << parent << "'s axes: (";
+    const size_t at = run.out.find(line.str());
+    ASSERT_NE(at, std::string::npos) << run.out;
+    std::istringstream printed(run.out.substr(at + line.str().size()));
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(in_parent["translation"][k].get<double>(), expected(k), 1e-12 * expected(k));
+      double mm = 0.0;
+      printed >> mm;
+      EXPECT_NEAR(mm, 1e3 * expected(k), 1e-6) << block << " axis " << k;
     }
   }
   // Residuals and stations: one per station, ids from the import.
