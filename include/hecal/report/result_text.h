@@ -4,10 +4,11 @@
 // Summary of one result: the method, setup and station count; X and Z as 3×4 matrices
 // [R | t] with their rotation (angle in degrees about the axis) and translation in the
 // document's unit; the covariance method and the 1σ of X and Z per axis (rotation in degrees,
-// translation in millimetres whatever the unit); the residual RMS; one line per station used
-// (rotation in degrees, translation in the unit, whitened residual, "> 3σ" flags) — every
-// station up to 200, above that the 20 largest whitened residuals — then the rejected stations
-// and the warnings.
+// translation in millimetres whatever the unit), each followed by the 1σ of its translation
+// along its parent frame's axes, the axes the translation is printed in (translation_sigma.h);
+// the residual RMS; one line per station used (rotation in degrees, translation in the unit,
+// whitened residual, "> 3σ" flags) — every station up to 200, above that the 20 largest
+// whitened residuals — then the rejected stations and the warnings.
 //
 // Comparison (`--method all`): one line per method with X's translation, the residual RMS, the
 // difference from ml (rotation angle in degrees, translation distance) when ml is among the
