@@ -31,25 +31,6 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 constexpr size_t kMaxPrintedStations = 200;
 constexpr size_t kLargestPrintedStations = 20;
 
-// "MM,DEG" → PoseSigma in metres and radians (its range is CalibrateOptions::IsValid's).
-estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
-  const size_t comma = text.find(',');
-  double values[2] = {0.0, 0.0};
-  bool ok = comma != std::string::npos;
-  const std::string parts[2] = {text.substr(0, comma), ok ? text.substr(comma + 1) : std::string()};
-  for (int k = 0; ok && k < 2; ++k) {
-    const auto [end, error] =
-        std::from_chars(parts[k].data(), parts[k].data() + parts[k].size(), values[k]);
-    ok = error == std::errc() && end == parts[k].data() + parts[k].size() &&
-         std::isfinite(values[k]);
-  }
-  if (!ok) {
-    throw InputError(flag, 0, "expected two numbers MM,DEG, got '" + text + "'",
-                     "write e.g. " + flag + " 0.5,0.1 for 0.5 mm and 0.1 degree per axis");
-  }
-  return {values[1] / kDegrees, values[0] * 1e-3};
-}
-
 void PrintPose(std::ostream& out, std::string_view name, std::string_view frame, const Pose& T,
                double scale, std::string_view unit) {
   const AxisAngle aa = AxisAngleFromMatrix(T.linear());
@@ -71,6 +52,24 @@ void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covari
 }
 
 }  // namespace
+
+estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
+  const size_t comma = text.find(',');
+  double values[2] = {0.0, 0.0};
+  bool ok = comma != std::string::npos;
+  const std::string parts[2] = {text.substr(0, comma), ok ? text.substr(comma + 1) : std::string()};
+  for (int k = 0; ok && k < 2; ++k) {
+    const auto [end, error] =
+        std::from_chars(parts[k].data(), parts[k].data() + parts[k].size(), values[k]);
+    ok = error == std::errc() && end == parts[k].data() + parts[k].size() &&
+         std::isfinite(values[k]);
+  }
+  if (!ok) {
+    throw InputError(flag, 0, "expected two numbers MM,DEG, got '" + text + "'",
+                     "write e.g. " + flag + " 0.5,0.1 for 0.5 mm and 0.1 degree per axis");
+  }
+  return {values[1] / kDegrees, values[0] * 1e-3};
+}
 
 void PrintSummary(std::ostream& out, const report::ResultDocument& document,
                   const estimation::CalibrationResult& result) {

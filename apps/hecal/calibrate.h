@@ -80,6 +80,10 @@ struct CalibrateSettings {
 // --intrinsics, --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 
+// "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
+// `flag` when it is not two numbers (the range is the options' IsValid's).
+estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text);
+
 // The readable summary of one result: X, Z, their 1σ, the residuals of every station.
 void PrintSummary(std::ostream& out, const report::ResultDocument& document,
                   const estimation::CalibrationResult& result);

@@ -154,9 +154,10 @@ void PrintSummary(const report::GlobalCalibrationResult& result, const std::stri
       << (X.translation() / metres).transpose() << "\n"
       << "  1 sigma: rotation [rad] " << sd.head<3>().transpose() << ", translation [" << units
       << "] " << (sd.tail<3>() / metres).transpose() << "\n"
-      << "  noise (estimated): ray [rad] " << noise.ray_sigma << ", robot per pose: rotation [rad] "
-      << noise.robot_rotation_sigma << ", translation [" << units << "] "
-      << noise.robot_translation_sigma / metres << "\n"
+      << (result.robot_noise.robot_given ? "  noise (robot given, ray estimated): ray [rad] "
+                                         : "  noise (estimated): ray [rad] ")
+      << noise.ray_sigma << ", robot per pose: rotation [rad] " << noise.robot_rotation_sigma
+      << ", translation [" << units << "] " << noise.robot_translation_sigma / metres << "\n"
       << std::setprecision(4) << "certificate: max ray error in [" << c.lower << ", " << c.upper
       << "] rad" << (c.certified ? " (certified)" : " (gap not closed)") << ", " << c.cubes
       << " cubes, " << c.lps << " LPs, " << c.seconds << " s\n"
@@ -188,6 +189,8 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                        "give the pixel noise per axis in pixels, e.g. 0.5");
     }
   }
+  if (!flags.robot_sigma.empty())
+    options.robot_sigma = ParseSigma("--robot-sigma", flags.robot_sigma);
   RequireValid(options);
   if (flags.features != "sift" && flags.features != "orb") {
     throw InputError("--features", 0, "unknown feature kind '" + flags.features + "'",

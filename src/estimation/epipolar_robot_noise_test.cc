@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
@@ -67,6 +68,33 @@ TEST(PolishWithEstimatedRobotNoise, CovarianceHoldsOverManyScenesWhereTheIndepen
               0.3 * spec.robot_rotation_sigma);
   EXPECT_NEAR(translation_sigma_sum / trials, spec.robot_translation_sigma,
               0.3 * spec.robot_translation_sigma);
+  EXPECT_NEAR(ray_sigma_sum / trials, spec.pixel_sigma / spec.focal,
+              0.3 * spec.pixel_sigma / spec.focal);
+}
+
+// The robot's noise given (as --robot-sigma gives it) and held: only the ray σ is estimated, and
+// the covariance of X is consistent with the truth over many scenes.
+TEST(PolishWithEstimatedRobotNoise, CovarianceWithTheRobotNoiseGivenHoldsOverManyScenes) {
+  const testing::EpipolarSceneSpec spec = ArmLikeSpec();
+  const PoseSigma robot{spec.robot_rotation_sigma, spec.robot_translation_sigma};
+  const int trials = 30;
+  double nees_sum = 0.0, ray_sigma_sum = 0.0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 700 + trial);
+    const EpipolarPolish plain = PolishEpipolar(scene.problem, scene.X);
+    const RobotNoisePolish given = PolishWithEstimatedRobotNoise(
+        scene.problem, plain.X, std::numeric_limits<double>::infinity(), robot);
+    EXPECT_TRUE(given.robot_given);
+    EXPECT_EQ(given.noise.robot_rotation_sigma, robot.rotation);
+    EXPECT_EQ(given.noise.robot_translation_sigma, robot.translation);
+    nees_sum += Nees(given.polish, scene.X);
+    ray_sigma_sum += given.noise.ray_sigma;
+  }
+  const double mean_nees = nees_sum / trials;
+  std::printf("%d scenes, robot noise given: mean NEES %.2f, mean ray %.3f px\n", trials, mean_nees,
+              ray_sigma_sum / trials * spec.focal);
+  // The mean of 30 χ²₆ values: standard deviation sqrt(12/30) = 0.63; a band of 4 of them.
+  EXPECT_NEAR(mean_nees, 6.0, 4.0 * std::sqrt(12.0 / trials));
   EXPECT_NEAR(ray_sigma_sum / trials, spec.pixel_sigma / spec.focal,
               0.3 * spec.pixel_sigma / spec.focal);
 }

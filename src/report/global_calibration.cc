@@ -59,7 +59,7 @@ bool GlobalCalibrationOptions::IsValid(std::string* why) const {
     return Invalid(why, Field("pixel_sigma"), std::string("must be above 0 to 100 px, got ") + got,
                    "give the noise of one image coordinate in pixels, e.g. 0.5");
   }
-  return true;
+  return estimation::SigmaIsValid(robot_sigma, Field("robot_sigma"), why);
 }
 
 GlobalMatches ReadGlobalMatches(const std::string& robot_file, const io::PoseReadOptions& read,
@@ -156,8 +156,8 @@ GlobalCalibrationResult CalibrateGlobal(const GlobalMatches& matches,
   result.options = options;
   // The final X and covariance with the robot's pose error marginalised (the re-check above
   // treats pairs as independent, which only decides which pairs to keep).
-  result.robot_noise = estimation::PolishWithEstimatedRobotNoise(rechecked.inliers,
-                                                                 rechecked.polish.X, options.reach);
+  result.robot_noise = estimation::PolishWithEstimatedRobotNoise(
+      rechecked.inliers, rechecked.polish.X, options.reach, options.robot_sigma);
   result.independent_covariance = rechecked.polish.covariance;
   result.certificate = robust.solution.certificate;
   result.l_infinity_X = robust.solution.X;
@@ -210,6 +210,7 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
                        {"ray_sigma_rad", noise.ray_sigma},
                        {"robot_rotation_sigma_rad", noise.robot_rotation_sigma},
                        {"robot_translation_sigma_m", noise.robot_translation_sigma},
+                       {"robot_sigma", result.robot_noise.robot_given ? "given" : "estimated"},
                        {"independent_pairs_X", JsonRows(result.independent_covariance)}};
   doc["polish"] = {{"rms_rad", polish.rms}, {"pairs", polish.pairs}};
   doc["matches"] = {{"inliers", result.inliers},

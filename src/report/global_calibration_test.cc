@@ -118,6 +118,9 @@ TEST(GlobalCalibrationOptions, NameTheBadField) {
                                      [](O& o) { o.pixel_sigma = 0.0; }));
   EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.pixel_sigma",
                                      [](O& o) { o.pixel_sigma = 101.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.robot_sigma", [](O& o) {
+    o.robot_sigma = estimation::PoseSigma{-1.0, 0.0};
+  }));
 }
 
 class GlobalFiles : public ::testing::Test {

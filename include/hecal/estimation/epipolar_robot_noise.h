@@ -24,6 +24,8 @@
 // maximised by golden-section searches over the log-variances, one at a time, repeated until
 // none moves by more than 0.5% in σ (at most 8 rounds). A zero
 // robot noise is allowed (σ_r, σ_t then come out negligibly small).
+// When the robot's noise is known (`robot`, the pose_sigma.h model of --robot-sigma: σ_r, σ_t per
+// axis), σ_r and σ_t are held at it and only σ is estimated, by the same search.
 //
 // Polish (PolishWithRobotNoise): generalised least squares with the nuisances marginalised, by
 // Gauss–Newton: δ = −(Jᵀ V⁻¹ J)⁻¹ Jᵀ V⁻¹ r̂, X ← X (Exp(ω), τ), until δ is below 1e-12; the
@@ -34,8 +36,10 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 
 #include "hecal/estimation/epipolar_polish.h"
+#include "hecal/estimation/pose_sigma.h"
 #include "hecal/global/epipolar_problem.h"
 
 namespace hecal::estimation {
@@ -46,8 +50,10 @@ struct EpipolarNoise {
   double robot_translation_sigma = 0.0;  // σ_t: metres per axis, per hand pose
 };
 
-// REML estimate of the three noise levels from the residuals at X.
-EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X);
+// REML estimate of the three noise levels from the residuals at X (of σ alone when `robot` is
+// given: the result's robot levels are then robot's).
+EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X,
+                                    const std::optional<PoseSigma>& robot = std::nullopt);
 
 // The GLS polish from `start` for the given noise. The result's ray_sigma is noise.ray_sigma and
 // its rms the RMS residual at the polished X.
@@ -57,7 +63,8 @@ EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, cons
 struct RobotNoisePolish {
   EpipolarPolish polish;
   EpipolarNoise noise;
-  int stations = 0;  // distinct hand poses in the problem
+  bool robot_given = false;  // σ_r, σ_t were given, not estimated
+  int stations = 0;          // distinct hand poses in the problem
 };
 
 // Both, twice: the noise estimated at `start` (best: the plain polish's X), the GLS polish, the
@@ -67,8 +74,10 @@ struct RobotNoisePolish {
 // the length of X's translation — e.g. every motion a rotation of the hand about its own origin,
 // whose epipolar constraints are homogeneous in t: the information matrix is then singular and
 // the polish may drift without limit.
+// With `robot`, the robot's noise is held at it (EstimateEpipolarNoise).
 RobotNoisePolish PolishWithEstimatedRobotNoise(
     const global::EpipolarProblem& problem, const Pose& start,
-    double reach = std::numeric_limits<double>::infinity());
+    double reach = std::numeric_limits<double>::infinity(),
+    const std::optional<PoseSigma>& robot = std::nullopt);
 
 }  // namespace hecal::estimation

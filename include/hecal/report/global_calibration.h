@@ -4,7 +4,8 @@
 // L∞ optimum (global/outlier_removal.h, global/branch_and_bound.h); estimation::PolishAndRecheck
 // polishes it in L2 and re-checks the removed pairs at the polished X; the final X and its
 // covariance come from the polish with the robot's pose error marginalised
-// (estimation/epipolar_robot_noise.h: the three noise levels estimated).
+// (estimation/epipolar_robot_noise.h: the three noise levels estimated, or the robot's held at
+// `robot_sigma` when given and only the ray noise estimated).
 //
 // Inputs (GlobalMatches): the hand pose of every station (T_base_gripper, metres), the motions
 // as pairs of station indices with their names and the matched rays; `focal` (pixels) turns the
@@ -18,9 +19,9 @@
 // global/epipolar_problem.h); metres and radians; covariance in the right perturbation
 // (ω, v) of X.
 // Result file (WriteGlobalResult, JSON, docs/global.md "Command"): method, setup, X,
-// certificate, l_infinity_X, covariance (with the noise levels and the independent-pairs
-// covariance), polish, matches (inliers, thresholds, removed pairs with the stage that removed
-// them).
+// certificate, l_infinity_X, covariance (with the noise levels, `robot_sigma`: "given" or
+// "estimated", and the independent-pairs covariance), polish, matches (inliers, thresholds, removed
+// pairs with the stage that removed them).
 //
 // Errors: InputError naming the options field (GlobalCalibrationOptions::IsValid), the files
 // with line (ReadGlobalMatches: a station the robot file does not have, pixels without
@@ -30,6 +31,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,8 +52,11 @@ struct GlobalCalibrationOptions {
   int threads = 0;              // 0: every core (core/limits.h)
   std::uint64_t seed = 1;       // of the outlier consensus
   double pixel_sigma = 0.5;     // pixels per axis (radians for bearings), above 0 to 100
+  // The robot's pose noise per axis when known (estimation/pose_sigma.h); nullopt: estimated.
+  std::optional<estimation::PoseSigma> robot_sigma;
 
-  // core/options_check.h: false naming GlobalCalibrationOptions.<field> outside the ranges above.
+  // core/options_check.h: false naming GlobalCalibrationOptions.<field> outside the ranges above
+  // (robot_sigma: estimation::SigmaIsValid).
   bool IsValid(std::string* why) const;
 };
 
