@@ -144,7 +144,7 @@ void PrintSummary(const report::GlobalCalibrationResult& result, const std::stri
                   double metres, std::ostream& out) {
   const handeye::Setup setup = result.options.setup;
   const estimation::EpipolarPolish& polish = result.robot_noise.polish;
-  const estimation::EpipolarNoise& noise = result.robot_noise.noise;
+  const estimation::EpipolarNoise& noise = result.noise;
   const global::Certificate& c = result.certificate;
   const Pose& X = polish.X;
   const Vector6d sd = polish.covariance.diagonal().cwiseSqrt();

@@ -214,6 +214,14 @@ EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, cons
   return polish;
 }
 
+PoseSigma HandPoseSigma(handeye::Setup setup, const PoseSigma& robot,
+                        double mean_squared_distance) {
+  if (setup == handeye::Setup::kEyeInHand) return robot;
+  return {robot.rotation,
+          std::sqrt(robot.translation * robot.translation +
+                    2.0 / 3.0 * robot.rotation * robot.rotation * mean_squared_distance)};
+}
+
 RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& problem,
                                                const Pose& start, double reach,
                                                const std::optional<PoseSigma>& robot) {

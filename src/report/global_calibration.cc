@@ -7,6 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <utility>
 
 #include "hecal/core/error.h"
@@ -156,8 +157,26 @@ GlobalCalibrationResult CalibrateGlobal(const GlobalMatches& matches,
   result.options = options;
   // The final X and covariance with the robot's pose error marginalised (the re-check above
   // treats pairs as independent, which only decides which pairs to keep).
+  std::optional<estimation::PoseSigma> hand_sigma;
+  if (options.robot_sigma) {
+    std::set<int> used;
+    for (const GlobalMotion& motion : matches.motions) used.insert({motion.first, motion.second});
+    double mean_squared_distance = 0.0;
+    for (const int station : used) {
+      mean_squared_distance +=
+          matches.T_base_gripper[std::size_t(station)].translation().squaredNorm() /
+          double(used.size());
+    }
+    hand_sigma =
+        estimation::HandPoseSigma(options.setup, *options.robot_sigma, mean_squared_distance);
+  }
   result.robot_noise = estimation::PolishWithEstimatedRobotNoise(
-      rechecked.inliers, rechecked.polish.X, options.reach, options.robot_sigma);
+      rechecked.inliers, rechecked.polish.X, options.reach, hand_sigma);
+  result.noise = result.robot_noise.noise;
+  if (options.robot_sigma) {
+    result.noise.robot_rotation_sigma = options.robot_sigma->rotation;
+    result.noise.robot_translation_sigma = options.robot_sigma->translation;
+  }
   result.independent_covariance = rechecked.polish.covariance;
   result.certificate = robust.solution.certificate;
   result.l_infinity_X = robust.solution.X;
@@ -182,7 +201,7 @@ GlobalCalibrationResult CalibrateGlobal(const GlobalMatches& matches,
 std::string GlobalResultJson(const GlobalCalibrationResult& result) {
   const GlobalCalibrationOptions& options = result.options;
   const estimation::EpipolarPolish& polish = result.robot_noise.polish;
-  const estimation::EpipolarNoise& noise = result.robot_noise.noise;
+  const estimation::EpipolarNoise& noise = result.noise;
   const global::Certificate& c = result.certificate;
   nlohmann::json doc;
   doc["method"] = "global";

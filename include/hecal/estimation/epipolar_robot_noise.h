@@ -24,8 +24,15 @@
 // maximised by golden-section searches over the log-variances, one at a time, repeated until
 // none moves by more than 0.5% in σ (at most 8 rounds). A zero
 // robot noise is allowed (σ_r, σ_t then come out negligibly small).
-// When the robot's noise is known (`robot`, the pose_sigma.h model of --robot-sigma: σ_r, σ_t per
-// axis), σ_r and σ_t are held at it and only σ is estimated, by the same search.
+// When the robot's noise is known (`robot`: σ_r, σ_t per axis of the nuisance η_j above), σ_r and
+// σ_t are held at it and only σ is estimated, by the same search.
+//
+// Eye-to-hand (H = T_base_gripper⁻¹): the robot's error is a right perturbation δ of its pose
+// G = T_base_gripper (pose_sigma.h), so H̃ = Exp(−δ)·G⁻¹ = H·Exp(−Ad(G) δ): as a nuisance of H the
+// same rotation noise (rotated by R_G) and a translation noise R_G v + [t_G]× R_G ω — the
+// robot's σ_t plus the lever arm of the gripper's position, correlated with the rotation. The
+// model takes it isotropic and uncorrelated: HandPoseSigma below maps a known robot noise to
+// it, and an estimated σ_t is that of H (larger than the robot's own by the lever arm).
 //
 // Polish (PolishWithRobotNoise): generalised least squares with the nuisances marginalised, by
 // Gauss–Newton: δ = −(Jᵀ V⁻¹ J)⁻¹ Jᵀ V⁻¹ r̂, X ← X (Exp(ω), τ), until δ is below 1e-12; the
@@ -59,6 +66,11 @@ EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, cons
 // its rms the RMS residual at the polished X.
 EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, const Pose& start,
                                     const EpipolarNoise& noise);
+
+// The robot's pose noise (pose_sigma.h, right perturbation of T_base_gripper) as the nuisance of
+// H above: eye-in-hand the same; eye-to-hand σ_r and sqrt(σ_t² + ⅔ σ_r² d²), d² the mean |t|² of
+// the stations' T_base_gripper in metres² (σ_r² (|t|² I − t tᵀ) averaged over the axes).
+PoseSigma HandPoseSigma(handeye::Setup setup, const PoseSigma& robot, double mean_squared_distance);
 
 struct RobotNoisePolish {
   EpipolarPolish polish;

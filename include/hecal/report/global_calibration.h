@@ -5,7 +5,8 @@
 // polishes it in L2 and re-checks the removed pairs at the polished X; the final X and its
 // covariance come from the polish with the robot's pose error marginalised
 // (estimation/epipolar_robot_noise.h: the three noise levels estimated, or the robot's held at
-// `robot_sigma` when given and only the ray noise estimated).
+// `robot_sigma` when given — eye-to-hand widened by the lever arm of the gripper positions,
+// estimation::HandPoseSigma — and only the ray noise estimated).
 //
 // Inputs (GlobalMatches): the hand pose of every station (T_base_gripper, metres), the motions
 // as pairs of station indices with their names and the matched rays; `focal` (pixels) turns the
@@ -89,7 +90,10 @@ struct RemovedMatch {
 
 struct GlobalCalibrationResult {
   GlobalCalibrationOptions options;
-  estimation::RobotNoisePolish robot_noise;  // the final X, covariance and noise levels
+  estimation::RobotNoisePolish robot_noise;  // the final X, covariance and the model's noise
+  // As reported: the ray σ estimated; the robot's σ_r, σ_t as given (robot_sigma), else as
+  // estimated (those of the hand pose H, estimation/epipolar_robot_noise.h).
+  estimation::EpipolarNoise noise;
   Matrix6d independent_covariance =
       Matrix6d::Zero();                  // of the re-check's polish (pairs independent)
   global::Certificate certificate;       // of the last global solve
