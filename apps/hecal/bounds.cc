@@ -74,14 +74,4 @@ void CheckNoiseLevel(const std::string& flag, double mm, double deg) {
   }
 }
 
-void CheckPixelSigma(const std::string& flag, double px, bool zero_allowed) {
-  const bool low_ok = zero_allowed ? px >= 0.0 : px > 0.0;
-  if (!(low_ok && px <= kMaxPixelSigma)) {
-    throw InputError(flag, 0,
-                     "must be " + std::string(zero_allowed ? "0" : "above 0") + " to " +
-                         Number(kMaxPixelSigma) + " px, got " + Number(px),
-                     "give the noise of one image coordinate in pixels, e.g. " + flag + " 0.5");
-  }
-}
-
 }  // namespace hecal::cli

@@ -37,7 +37,6 @@
 namespace hecal::cli {
 
 using estimation::kMaxCovarianceSamples;
-using estimation::kMaxPixelSigma;
 constexpr double kMaxSigmaMm = estimation::kMaxSigmaTranslation * 1000.0;
 constexpr double kMaxSigmaDeg = 180.0;  // estimation::kMaxSigmaRotation in degrees
 
@@ -61,8 +60,5 @@ std::uint64_t ParseSeed(const std::string& flag, const std::string& text);
 
 // A noise level per axis: millimetres in [0, kMaxSigmaMm], degrees in [0, kMaxSigmaDeg].
 void CheckNoiseLevel(const std::string& flag, double mm, double deg);
-
-// A pixel noise σ in (0, kMaxPixelSigma] (or [0, …] with `zero_allowed`).
-void CheckPixelSigma(const std::string& flag, double px, bool zero_allowed = false);
 
 }  // namespace hecal::cli

@@ -24,7 +24,8 @@ namespace {
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
-// "MM,DEG" → PoseSigma in metres and radians (its range is CalibrateOptions::IsValid's).
+}  // namespace
+
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
   const size_t comma = text.find(',');
   double values[2] = {0.0, 0.0};
@@ -42,8 +43,6 @@ estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& tex
   }
   return {values[1] / kDegrees, values[0] * 1e-3};
 }
-
-}  // namespace
 
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   CalibrateSettings settings;

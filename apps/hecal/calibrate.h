@@ -80,6 +80,10 @@ struct CalibrateSettings {
 // --intrinsics, --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 
+// "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
+// `flag` when it is not two numbers (the range is the options' IsValid's).
+estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text);
+
 // `hecal calibrate --images`:
 //   1. the image front end of vision/image_set.h: detection, intrinsics (given or estimated),
 //      PnP poses with covariances, and the per-image report;
@@ -111,22 +115,16 @@ std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const vision::Im
 
 // `hecal calibrate --method global --correspondences FILE --intrinsics camera.yaml --robot
 // robot.csv --setup eye-in-hand|eye-to-hand [--pixel-sigma PX] [--epsilon RAD] [--reach M]`
-// (docs/global.md): reads the robot poses and the point matches (io/correspondence_file.h;
-// pixels are undistorted through the intrinsics, bearings are taken as they are) — or, with
-// `--images DIR --target target.yaml --intrinsics camera.yaml` instead of the file, the target
-// corners detected in the images (vision/image_set.h), matched by their ids between consecutive
-// usable stations (the target's geometry is not used), or with `--target none` SIFT matches
-// between consecutive station images (vision/feature_matches.h); then removes
-// wrong matches (global/outlier_removal.h, threshold 4√2 · pixel sigma / focal length; pixel
-// sigma 0.5 px unless given), certifies the L∞ optimum (global/branch_and_bound.h), polishes
-// it in L2 with a covariance (estimation/epipolar_polish.h), prints a summary and writes the
-// result file (JSON): X, `certificate` {lower, upper, cubes, lps, seconds, certified, epsilon},
-// the inliers, the removed matches with their ids, `covariance` of X (ω, v right perturbation).
-// Errors (InputError, exit 2, nothing written): a missing or unreadable file, a station the
-// robot file does not have, pixels without --intrinsics, a pixel that cannot be undistorted,
-// --setup auto, --camera, --images with --correspondences, --images without --intrinsics or
-// with --target none (generic feature matching is not built), the image front end's errors, a
-// non-positive --epsilon or --reach, too few matches.
+// (docs/global.md): the flags become report::GlobalCalibrationOptions (report/
+// global_calibration.h; its IsValid holds the ranges, named here by flag); the matches come
+// from report::ReadGlobalMatches (the correspondence file), or with `--images DIR --target
+// target.yaml --intrinsics camera.yaml` from the target corners detected in the images
+// (vision/image_set.h, vision/corner_matches.h), or with `--target none` from SIFT/ORB matches
+// between consecutive station images (vision/feature_matches.h); report::CalibrateGlobal runs
+// the job; the summary is printed and report::WriteGlobalResult writes the result file.
+// Errors (InputError, exit 2, nothing written): those of the job and its readers, --setup auto,
+// --camera, --images with --correspondences, --images without --intrinsics or --target, an
+// unknown --features, --seed or --units; DegenerateError when the matches do not determine X.
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io);
 
 }  // namespace hecal::cli

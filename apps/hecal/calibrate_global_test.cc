@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -23,7 +24,12 @@ class CalibrateGlobal : public CliTest {
     testing::EpipolarSceneSpec spec;
     spec.motions = 4;
     spec.pairs = 20;
-    scene_ = testing::MakeEpipolarScene(spec, 12);
+    WriteScene(testing::MakeEpipolarScene(spec, 12));
+  }
+
+  // The scene as robot.csv, bearings.csv, pixels.csv and camera.yaml.
+  void WriteScene(const testing::EpipolarScene& scene) {
+    scene_ = scene;
     std::ostringstream robot;
     robot.precision(17);
     robot << "id,x,y,z,qw,qx,qy,qz\n";
@@ -100,6 +106,57 @@ void ExpectRefusal(const cli_test::Outcome& result, const std::string& words) {
   EXPECT_EQ(result.code, 2) << result.out;
   EXPECT_NE(result.err.find(words), std::string::npos) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+}
+
+// --robot-sigma MM,DEG: the robot's noise is held at the given levels (only the ray noise is
+// estimated), written to the result as given.
+TEST_F(CalibrateGlobal, UsesAndWritesTheGivenRobotSigma) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 4;
+  spec.pairs = 20;
+  spec.pixel_sigma = 0.5;
+  spec.robot_rotation_sigma = 0.03 * M_PI / 180.0;
+  spec.robot_translation_sigma = 0.25e-3;
+  WriteScene(testing::MakeEpipolarScene(spec, 21));
+  const std::vector<std::string> common = {"calibrate",
+                                           "--method",
+                                           "global",
+                                           "--robot",
+                                           Path("robot.csv"),
+                                           "--setup",
+                                           "eye-in-hand",
+                                           "--reach",
+                                           "1",
+                                           "--max-cubes",
+                                           "5000",
+                                           "--correspondences",
+                                           Path("pixels.csv"),
+                                           "--intrinsics",
+                                           Path("camera.yaml")};
+  std::vector<std::string> given = common;
+  given.insert(given.end(), {"--robot-sigma", "0.25,0.03", "--output", Path("given.json")});
+  const auto run = Hecal(given);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("noise (robot given, ray estimated)"), std::string::npos) << run.out;
+  const nlohmann::json doc = nlohmann::json::parse(Read("given.json"));
+  EXPECT_EQ(doc["covariance"]["robot_sigma"], "given");
+  EXPECT_NEAR(doc["covariance"]["robot_rotation_sigma_rad"].get<double>(), 0.03 * M_PI / 180.0,
+              1e-15);
+  EXPECT_NEAR(doc["covariance"]["robot_translation_sigma_m"].get<double>(), 0.25e-3, 1e-15);
+  // Without the flag the levels are estimated.
+  std::vector<std::string> estimated = common;
+  estimated.insert(estimated.end(), {"--output", Path("estimated.json")});
+  const auto plain = Hecal(estimated);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("noise (estimated)"), std::string::npos) << plain.out;
+  EXPECT_EQ(nlohmann::json::parse(Read("estimated.json"))["covariance"]["robot_sigma"],
+            "estimated");
+  // Out of range: refused naming the flag.
+  std::vector<std::string> bad = common;
+  bad.insert(bad.end(), {"--robot-sigma", "0.25,-1", "--output", Path("bad.json")});
+  const auto refused = Hecal(bad);
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_EQ(refused.err.rfind("hecal: --robot-sigma: ", 0), 0u) << refused.err;
 }
 
 TEST_F(CalibrateGlobal, RefusesBadInputWithOneLineAndNoFile) {

@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 69> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 77> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ConventionCheckOptions.setup", "--setup"},
@@ -78,6 +78,14 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 69> kFieldFl
     {"PoseConversionOptions.input", "--input"},
     {"FeatureMatchOptions.pixel_sigma", "--pixel-sigma"},
     {"FeatureMatchOptions.max_matches", "--matches-per-motion"},
+    {"GlobalCalibrationOptions.epsilon", "--epsilon"},
+    {"GlobalCalibrationOptions.relative_gap", "--relative-gap"},
+    {"GlobalCalibrationOptions.reach", "--reach"},
+    {"GlobalCalibrationOptions.max_cubes", "--max-cubes"},
+    {"GlobalCalibrationOptions.matches_per_motion", "--matches-per-motion"},
+    {"GlobalCalibrationOptions.threads", "--threads"},
+    {"GlobalCalibrationOptions.pixel_sigma", "--pixel-sigma"},
+    {"GlobalCalibrationOptions.robot_sigma", "--robot-sigma"},
 }};
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".

@@ -76,6 +76,28 @@ TEST_F(JobOptions, BenchOptionsNameTheFlag) {
   ExpectRefused({"bench", "--sigma", "2000"}, "--sigma", "0 to 1000 mm", none);
 }
 
+// report::GlobalCalibrationOptions::IsValid (calibrate --method global), field by field; checked
+// before any file is read (the files named here do not exist).
+TEST_F(JobOptions, GlobalCalibrationOptionsNameTheFlag) {
+  const auto global = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"calibrate",       "--method",          "global",
+                                     "--setup",         "eye-in-hand",       "--robot",
+                                     Path("robot.csv"), "--correspondences", Path("matches.csv"),
+                                     "--output",        Path("global.json")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::string out = "global.json";
+  ExpectRefused(global({"--epsilon", "0"}), "--epsilon", "above 0 and at most 1 rad", out);
+  ExpectRefused(global({"--relative-gap", "1"}), "--relative-gap", "at least 0 and below 1", out);
+  ExpectRefused(global({"--reach", "0"}), "--reach", "above 0 and at most 1000 m", out);
+  ExpectRefused(global({"--max-cubes", "0"}), "--max-cubes", "at least 1", out);
+  ExpectRefused(global({"--matches-per-motion", "7"}), "--matches-per-motion",
+                "at least 8 and at most 100000", out);
+  ExpectRefused(global({"--threads", "300"}), "--threads", "from 0 to 256, got 300", out);
+  ExpectRefused(global({"--pixel-sigma", "0"}), "--pixel-sigma", "above 0 to 100 px, got 0", out);
+}
+
 // report::PointPoseOptions::IsValid (hecal pose), field by field; checked before any file is read.
 TEST_F(JobOptions, PointPoseOptionsNameTheFlag) {
   const auto pose = [&](std::vector<std::string> extra) {

@@ -137,11 +137,17 @@ double RestrictedLogLikelihood(const Linearisation& lin, const EpipolarNoise& no
 
 }  // namespace
 
-EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X) {
+EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X,
+                                    const std::optional<PoseSigma>& robot) {
   const Linearisation lin = Linearise(problem, X);
   // Log-variances, searched within wide bounds round the plain residual variance s0².
   const double s0 = std::max(1e-300, lin.rr / std::max(1, lin.n - 6));
   double log_var[3] = {std::log(s0), std::log(s0) - 12.0, std::log(s0) - 12.0};
+  if (robot) {  // held: a zero σ is a log-variance of −∞, which noise_of maps back to 0
+    log_var[1] = 2.0 * std::log(robot->rotation);
+    log_var[2] = 2.0 * std::log(robot->translation);
+  }
+  const int searched = robot ? 1 : 3;
   const double low[3] = {std::log(s0) - 16.0, std::log(s0) - 30.0, std::log(s0) - 30.0};
   const double high[3] = {std::log(s0) + 1.0, std::log(s0) + 8.0, std::log(s0) + 8.0};
   const auto noise_of = [](const double* v) {
@@ -156,7 +162,7 @@ EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, cons
   const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int sweep = 0; sweep < 8; ++sweep) {
     double largest_change = 0.0;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < searched; ++k) {
       double a = low[k], b = high[k];
       double c = b - golden * (b - a), d = a + golden * (b - a);
       double fc = value(k, c), fd = value(k, d);
@@ -176,7 +182,12 @@ EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, cons
     }
     if (largest_change < 0.01) break;  // 0.5% in σ
   }
-  return noise_of(log_var);
+  EpipolarNoise noise = noise_of(log_var);
+  if (robot) {  // exactly as given
+    noise.robot_rotation_sigma = robot->rotation;
+    noise.robot_translation_sigma = robot->translation;
+  }
+  return noise;
 }
 
 EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, const Pose& start,
@@ -203,13 +214,23 @@ EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, cons
   return polish;
 }
 
+PoseSigma HandPoseSigma(handeye::Setup setup, const PoseSigma& robot,
+                        double mean_squared_distance) {
+  if (setup == handeye::Setup::kEyeInHand) return robot;
+  return {robot.rotation,
+          std::sqrt(robot.translation * robot.translation +
+                    2.0 / 3.0 * robot.rotation * robot.rotation * mean_squared_distance)};
+}
+
 RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& problem,
-                                               const Pose& start, double reach) {
+                                               const Pose& start, double reach,
+                                               const std::optional<PoseSigma>& robot) {
   RobotNoisePolish result;
   result.stations = int(StationIndex(problem).size());
-  result.noise = EstimateEpipolarNoise(problem, start);
+  result.robot_given = robot.has_value();
+  result.noise = EstimateEpipolarNoise(problem, start, robot);
   result.polish = PolishWithRobotNoise(problem, start, result.noise);
-  result.noise = EstimateEpipolarNoise(problem, result.polish.X);
+  result.noise = EstimateEpipolarNoise(problem, result.polish.X, robot);
   result.polish = PolishWithRobotNoise(problem, result.polish.X, result.noise);
   const EpipolarPolish& p = result.polish;
   if (!p.X.matrix().allFinite() || !p.covariance.allFinite() ||

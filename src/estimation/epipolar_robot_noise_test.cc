@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "hecal/core/error.h"
@@ -49,39 +50,126 @@ double Nees(const EpipolarPolish& polish, const Pose& truth) {
   return error.dot(polish.covariance.inverse() * error);
 }
 
-TEST(PolishWithEstimatedRobotNoise, CovarianceHoldsOverManyScenesWhereTheIndependentOneFails) {
-  const testing::EpipolarSceneSpec spec = ArmLikeSpec();
-  const int trials = 50;
-  double nees_sum = 0.0, plain_nees_sum = 0.0;
-  double rotation_sigma_sum = 0.0, translation_sigma_sum = 0.0, ray_sigma_sum = 0.0;
+// The robot-error polish over `trials` scenes of `spec`: mean NEES against the truth (and of the
+// independent-pairs polish), mean estimated noise levels.
+struct NeesStudy {
+  double mean_nees = 0.0, plain_mean_nees = 0.0;
+  double rotation_sigma = 0.0, translation_sigma = 0.0, ray_sigma = 0.0;  // means
+  double gripper_distance_squared = 0.0;  // mean |t|² of T_base_gripper over the stations, m²
+};
+
+NeesStudy RunNeesStudy(const testing::EpipolarSceneSpec& spec, int trials) {
+  NeesStudy study;
   for (int trial = 0; trial < trials; ++trial) {
     const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 500 + trial);
     const EpipolarPolish plain = PolishEpipolar(scene.problem, scene.X);
     const RobotNoisePolish robot = PolishWithEstimatedRobotNoise(scene.problem, plain.X);
     EXPECT_EQ(robot.stations, 2 * spec.motions);
-    nees_sum += Nees(robot.polish, scene.X);
-    plain_nees_sum += Nees(plain, scene.X);
-    rotation_sigma_sum += robot.noise.robot_rotation_sigma;
-    translation_sigma_sum += robot.noise.robot_translation_sigma;
-    ray_sigma_sum += robot.noise.ray_sigma;
+    study.mean_nees += Nees(robot.polish, scene.X) / trials;
+    study.plain_mean_nees += Nees(plain, scene.X) / trials;
+    study.rotation_sigma += robot.noise.robot_rotation_sigma / trials;
+    study.translation_sigma += robot.noise.robot_translation_sigma / trials;
+    study.ray_sigma += robot.noise.ray_sigma / trials;
+    for (const Pose& G : scene.T_base_gripper) {
+      study.gripper_distance_squared +=
+          G.translation().squaredNorm() / (trials * double(scene.T_base_gripper.size()));
+    }
   }
-  const double mean_nees = nees_sum / trials;
   std::printf(
-      "%d scenes: mean NEES %.2f (independent pairs: %.2f); mean estimated robot noise %.4f deg, "
-      "%.3f mm, ray %.3f px\n",
-      trials, mean_nees, plain_nees_sum / trials, rotation_sigma_sum / trials / kDegree,
-      1e3 * translation_sigma_sum / trials, ray_sigma_sum / trials * spec.focal);
+      "%s, %d scenes: mean NEES %.2f (independent pairs: %.2f); mean estimated robot noise %.4f "
+      "deg, %.3f mm, ray %.3f px\n",
+      spec.setup == handeye::Setup::kEyeInHand ? "eye-in-hand" : "eye-to-hand", trials,
+      study.mean_nees, study.plain_mean_nees, study.rotation_sigma / kDegree,
+      1e3 * study.translation_sigma, study.ray_sigma * spec.focal);
+  return study;
+}
+
+TEST(PolishWithEstimatedRobotNoise, CovarianceHoldsOverManyScenesWhereTheIndependentOneFails) {
+  const testing::EpipolarSceneSpec spec = ArmLikeSpec();
+  const int trials = 50;
+  const NeesStudy study = RunNeesStudy(spec, trials);
   // The mean of 50 χ²₆ values: standard deviation sqrt(12/50) = 0.49; a band of 4 of them.
-  EXPECT_NEAR(mean_nees, 6.0, 4.0 * std::sqrt(12.0 / trials));
+  EXPECT_NEAR(study.mean_nees, 6.0, 4.0 * std::sqrt(12.0 / trials));
   // The premise: with independent pairs the covariance is far too small here.
-  EXPECT_GT(plain_nees_sum / trials, 3.0 * 6.0);
+  EXPECT_GT(study.plain_mean_nees, 3.0 * 6.0);
   // The noise levels, on average over the scenes, within 30% of the truth.
-  EXPECT_NEAR(rotation_sigma_sum / trials, spec.robot_rotation_sigma,
-              0.3 * spec.robot_rotation_sigma);
-  EXPECT_NEAR(translation_sigma_sum / trials, spec.robot_translation_sigma,
+  EXPECT_NEAR(study.rotation_sigma, spec.robot_rotation_sigma, 0.3 * spec.robot_rotation_sigma);
+  EXPECT_NEAR(study.translation_sigma, spec.robot_translation_sigma,
               0.3 * spec.robot_translation_sigma);
-  EXPECT_NEAR(ray_sigma_sum / trials, spec.pixel_sigma / spec.focal,
-              0.3 * spec.pixel_sigma / spec.focal);
+  EXPECT_NEAR(study.ray_sigma, spec.pixel_sigma / spec.focal, 0.3 * spec.pixel_sigma / spec.focal);
+}
+
+// Eye-to-hand, the same protocol. The robot's error is a right perturbation of T_base_gripper;
+// the model's nuisance is a right perturbation of H = T_base_gripper⁻¹, so H̃ = H·Exp(−Ad(G)·δ):
+// the same rotation noise (rotated), and a translation noise with the lever arm of the gripper's
+// position added (σ_r·|t_G|, correlated with the rotation), which the model's isotropic σ_t
+// absorbs. The covariance must still hold; σ_t is then not the robot's own.
+TEST(PolishWithEstimatedRobotNoise, CovarianceHoldsOverManyEyeToHandScenes) {
+  testing::EpipolarSceneSpec spec = ArmLikeSpec();
+  spec.setup = handeye::Setup::kEyeToHand;
+  const int trials = 50;
+  const NeesStudy study = RunNeesStudy(spec, trials);
+  EXPECT_NEAR(study.mean_nees, 6.0, 4.0 * std::sqrt(12.0 / trials));
+  EXPECT_GT(study.plain_mean_nees, 3.0 * 6.0);
+  EXPECT_NEAR(study.rotation_sigma, spec.robot_rotation_sigma, 0.3 * spec.robot_rotation_sigma);
+  EXPECT_NEAR(study.ray_sigma, spec.pixel_sigma / spec.focal, 0.3 * spec.pixel_sigma / spec.focal);
+  // σ_t of H per axis: σ_t² + σ_r² (|t_G|² I − t_G t_Gᵀ) averaged over the axes.
+  const double lever = std::sqrt(spec.robot_translation_sigma * spec.robot_translation_sigma +
+                                 2.0 / 3.0 * spec.robot_rotation_sigma * spec.robot_rotation_sigma *
+                                     study.gripper_distance_squared);
+  std::printf("eye-to-hand: sigma_t of H expected %.3f mm (robot %.3f mm, |t_G| %.2f m)\n",
+              1e3 * lever, 1e3 * spec.robot_translation_sigma,
+              std::sqrt(study.gripper_distance_squared));
+  EXPECT_NEAR(study.translation_sigma, lever, 0.3 * lever);
+}
+
+// The robot's noise given (as --robot-sigma gives it, mapped to the hand pose by HandPoseSigma)
+// and held: only the ray σ is estimated, and the covariance of X is consistent with the truth
+// over many scenes, in both setups.
+TEST(PolishWithEstimatedRobotNoise, CovarianceWithTheRobotNoiseGivenHoldsOverManyScenes) {
+  for (const handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    testing::EpipolarSceneSpec spec = ArmLikeSpec();
+    spec.setup = setup;
+    const PoseSigma robot{spec.robot_rotation_sigma, spec.robot_translation_sigma};
+    const int trials = 30;
+    double nees_sum = 0.0, ray_sigma_sum = 0.0;
+    for (int trial = 0; trial < trials; ++trial) {
+      const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 700 + trial);
+      double mean_squared_distance = 0.0;
+      for (const Pose& G : scene.T_base_gripper) {
+        mean_squared_distance +=
+            G.translation().squaredNorm() / double(scene.T_base_gripper.size());
+      }
+      const PoseSigma hand = HandPoseSigma(setup, robot, mean_squared_distance);
+      const EpipolarPolish plain = PolishEpipolar(scene.problem, scene.X);
+      const RobotNoisePolish given = PolishWithEstimatedRobotNoise(
+          scene.problem, plain.X, std::numeric_limits<double>::infinity(), hand);
+      EXPECT_TRUE(given.robot_given);
+      EXPECT_EQ(given.noise.robot_rotation_sigma, hand.rotation);
+      EXPECT_EQ(given.noise.robot_translation_sigma, hand.translation);
+      nees_sum += Nees(given.polish, scene.X);
+      ray_sigma_sum += given.noise.ray_sigma;
+    }
+    const double mean_nees = nees_sum / trials;
+    std::printf("%s, %d scenes, robot noise given: mean NEES %.2f, mean ray %.3f px\n",
+                setup == handeye::Setup::kEyeInHand ? "eye-in-hand" : "eye-to-hand", trials,
+                mean_nees, ray_sigma_sum / trials * spec.focal);
+    // The mean of 30 χ²₆ values: standard deviation sqrt(12/30) = 0.63; a band of 4 of them.
+    EXPECT_NEAR(mean_nees, 6.0, 4.0 * std::sqrt(12.0 / trials));
+    EXPECT_NEAR(ray_sigma_sum / trials, spec.pixel_sigma / spec.focal,
+                0.3 * spec.pixel_sigma / spec.focal);
+  }
+}
+
+TEST(HandPoseSigma, IsTheRobotsEyeInHandAndAddsTheLeverArmEyeToHand) {
+  const PoseSigma robot{1e-3, 2e-4};
+  const PoseSigma in_hand = HandPoseSigma(handeye::Setup::kEyeInHand, robot, 0.64);
+  EXPECT_EQ(in_hand.rotation, robot.rotation);
+  EXPECT_EQ(in_hand.translation, robot.translation);
+  // |t| = 0.8 m: (2e-4)² + ⅔ (1e-3 · 0.8)² m².
+  const PoseSigma to_hand = HandPoseSigma(handeye::Setup::kEyeToHand, robot, 0.64);
+  EXPECT_EQ(to_hand.rotation, robot.rotation);
+  EXPECT_NEAR(to_hand.translation, std::sqrt(4e-8 + 2.0 / 3.0 * 0.64e-6), 1e-15);
 }
 
 // rwhe-kuka2's motions (18 of 27 pure rotations about the gripper's x axis, which leave t's x

@@ -183,4 +183,16 @@ std::vector<Eigen::Vector2d> UndistortPoints(const CameraModel& camera,
   return normalised;
 }
 
+Eigen::Vector3d PixelRay(const CameraModel& camera, const Eigen::Vector2d& pixel,
+                         const std::string& source, int line) {
+  const std::optional<Eigen::Vector2d> normalised = Undistort(camera, pixel);
+  if (!normalised) {
+    throw InputError(source, line,
+                     "pixel (" + std::to_string(pixel.x()) + ", " + std::to_string(pixel.y()) +
+                         ") cannot be undistorted",
+                     "check the pixel against the image size and the intrinsics");
+  }
+  return Eigen::Vector3d(normalised->x(), normalised->y(), 1.0).normalized();
+}
+
 }  // namespace hecal::pose

@@ -176,5 +176,23 @@ TEST(CameraModel, UndistortPointsNamesTheFailingPoint) {
   EXPECT_LT((Project(camera, normalised[1].homogeneous()) - pixels[1]).norm(), 1e-9);
 }
 
+TEST(CameraModel, PixelRayIsTheUnitRayOfTheProjectedPointOrNamesThePixel) {
+  const CameraModel camera = TestCamera({-0.1, 0.05, 1e-3, -5e-4, 0.0});
+  const Eigen::Vector3d point(0.3, -0.2, 1.5);
+  const Eigen::Vector3d ray = PixelRay(camera, Project(camera, point), "f.csv", 7);
+  EXPECT_LT((ray - point.normalized()).norm(), 1e-10);
+  const CameraModel folded = TestCamera({-0.5, 0.0, 0.0, 0.0, 0.0});
+  try {
+    PixelRay(folded, Eigen::Vector2d(1200.0, 479.25), "f.csv", 7);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "f.csv");
+    EXPECT_EQ(e.line(), 7);
+    EXPECT_NE(e.problem().find("pixel (1200.000000, 479.250000) cannot be undistorted"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace hecal::pose

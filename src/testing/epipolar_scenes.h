@@ -24,9 +24,10 @@ struct EpipolarSceneSpec {
   double pixel_sigma = 0.0;     // pixels, per axis
   double wrong_fraction = 0.0;  // share of pairs whose second ray points at another point
   bool planar = false;          // scene points on one plane (z = depth in the first camera)
-  // Robot pose error: the hand poses the problem is given are the true ones times
-  // (Exp(ω), τ), ω and τ normal with these standard deviations per axis (radians, metres);
-  // the images are taken at the true poses.
+  // Robot pose error as the robot gives it (estimation/pose_sigma.h): the poses of the robot file
+  // are the true T_base_gripper times (Exp(ω), τ), ω and τ normal with these standard deviations
+  // per axis (radians, metres) — eye-in-hand a right perturbation of the hand pose H itself,
+  // eye-to-hand (H = T_base_gripper⁻¹) a left one of H; the images are taken at the true poses.
   double robot_rotation_sigma = 0.0;
   double robot_translation_sigma = 0.0;
   handeye::Setup setup = handeye::Setup::kEyeInHand;
@@ -88,8 +89,10 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
       std::normal_distribution<double> normal(0.0, 1.0);
       const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
       const Eigen::Vector3d tau(normal(rng), normal(rng), normal(rng));
-      return Pose(H * MakePose(so3::Exp(spec.robot_rotation_sigma * omega),
-                               spec.robot_translation_sigma * tau));
+      const Pose error =
+          MakePose(so3::Exp(spec.robot_rotation_sigma * omega), spec.robot_translation_sigma * tau);
+      return spec.setup == handeye::Setup::kEyeInHand ? Pose(H * error)
+                                                      : Pose((H.inverse() * error).inverse());
     };
     const Pose H_first_measured = measured(H_first);
     const Pose H_second_measured = measured(H_second);

@@ -24,6 +24,15 @@
 // maximised by golden-section searches over the log-variances, one at a time, repeated until
 // none moves by more than 0.5% in σ (at most 8 rounds). A zero
 // robot noise is allowed (σ_r, σ_t then come out negligibly small).
+// When the robot's noise is known (`robot`: σ_r, σ_t per axis of the nuisance η_j above), σ_r and
+// σ_t are held at it and only σ is estimated, by the same search.
+//
+// Eye-to-hand (H = T_base_gripper⁻¹): the robot's error is a right perturbation δ of its pose
+// G = T_base_gripper (pose_sigma.h), so H̃ = Exp(−δ)·G⁻¹ = H·Exp(−Ad(G) δ): as a nuisance of H the
+// same rotation noise (rotated by R_G) and a translation noise R_G v + [t_G]× R_G ω — the
+// robot's σ_t plus the lever arm of the gripper's position, correlated with the rotation. The
+// model takes it isotropic and uncorrelated: HandPoseSigma below maps a known robot noise to
+// it, and an estimated σ_t is that of H (larger than the robot's own by the lever arm).
 //
 // Polish (PolishWithRobotNoise): generalised least squares with the nuisances marginalised, by
 // Gauss–Newton: δ = −(Jᵀ V⁻¹ J)⁻¹ Jᵀ V⁻¹ r̂, X ← X (Exp(ω), τ), until δ is below 1e-12; the
@@ -34,8 +43,10 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 
 #include "hecal/estimation/epipolar_polish.h"
+#include "hecal/estimation/pose_sigma.h"
 #include "hecal/global/epipolar_problem.h"
 
 namespace hecal::estimation {
@@ -46,18 +57,26 @@ struct EpipolarNoise {
   double robot_translation_sigma = 0.0;  // σ_t: metres per axis, per hand pose
 };
 
-// REML estimate of the three noise levels from the residuals at X.
-EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X);
+// REML estimate of the three noise levels from the residuals at X (of σ alone when `robot` is
+// given: the result's robot levels are then robot's).
+EpipolarNoise EstimateEpipolarNoise(const global::EpipolarProblem& problem, const Pose& X,
+                                    const std::optional<PoseSigma>& robot = std::nullopt);
 
 // The GLS polish from `start` for the given noise. The result's ray_sigma is noise.ray_sigma and
 // its rms the RMS residual at the polished X.
 EpipolarPolish PolishWithRobotNoise(const global::EpipolarProblem& problem, const Pose& start,
                                     const EpipolarNoise& noise);
 
+// The robot's pose noise (pose_sigma.h, right perturbation of T_base_gripper) as the nuisance of
+// H above: eye-in-hand the same; eye-to-hand σ_r and sqrt(σ_t² + ⅔ σ_r² d²), d² the mean |t|² of
+// the stations' T_base_gripper in metres² (σ_r² (|t|² I − t tᵀ) averaged over the axes).
+PoseSigma HandPoseSigma(handeye::Setup setup, const PoseSigma& robot, double mean_squared_distance);
+
 struct RobotNoisePolish {
   EpipolarPolish polish;
   EpipolarNoise noise;
-  int stations = 0;  // distinct hand poses in the problem
+  bool robot_given = false;  // σ_r, σ_t were given, not estimated
+  int stations = 0;          // distinct hand poses in the problem
 };
 
 // Both, twice: the noise estimated at `start` (best: the plain polish's X), the GLS polish, the
@@ -67,8 +86,10 @@ struct RobotNoisePolish {
 // the length of X's translation — e.g. every motion a rotation of the hand about its own origin,
 // whose epipolar constraints are homogeneous in t: the information matrix is then singular and
 // the polish may drift without limit.
+// With `robot`, the robot's noise is held at it (EstimateEpipolarNoise).
 RobotNoisePolish PolishWithEstimatedRobotNoise(
     const global::EpipolarProblem& problem, const Pose& start,
-    double reach = std::numeric_limits<double>::infinity());
+    double reach = std::numeric_limits<double>::infinity(),
+    const std::optional<PoseSigma>& robot = std::nullopt);
 
 }  // namespace hecal::estimation

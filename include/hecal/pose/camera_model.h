@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace hecal::pose {
@@ -74,5 +75,10 @@ std::optional<Eigen::Vector2d> Undistort(const CameraModel& camera, const Eigen:
 // the first pixel (1-based position and value) that cannot be undistorted.
 std::vector<Eigen::Vector2d> UndistortPoints(const CameraModel& camera,
                                              const std::vector<Eigen::Vector2d>& pixels);
+
+// The unit ray (x, y, 1)/|(x, y, 1)| through a pixel, (x, y) = Undistort(pixel). Throws
+// hecal::InputError(source, line) naming the pixel when it cannot be undistorted.
+Eigen::Vector3d PixelRay(const CameraModel& camera, const Eigen::Vector2d& pixel,
+                         const std::string& source, int line);
 
 }  // namespace hecal::pose

@@ -1,0 +1,179 @@
+// The target-free calibration job on synthetic scenes whose X is known (testing/
+// epipolar_scenes.h): noise-free matches give the true X with a closed certificate; a planted
+// wrong match is removed and named by its stations and id; the result file holds X as solved;
+// the options name the bad field; the correspondence reader numbers stations by row.
+#include "hecal/report/global_calibration.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "hecal/core/error.h"
+#include "hecal/geometry/se3.h"
+#include "testing/epipolar_scenes.h"
+#include "testing/options_validity.h"
+
+namespace hecal::report {
+namespace {
+
+GlobalMatches MatchesOf(const testing::EpipolarScene& scene, double focal) {
+  GlobalMatches matches;
+  matches.T_base_gripper = scene.T_base_gripper;
+  matches.focal = focal;
+  for (const global::EpipolarMotion& motion : scene.problem.motions) {
+    matches.motions.push_back({motion.first_station, motion.second_station,
+                               std::to_string(motion.first_station),
+                               std::to_string(motion.second_station), motion.pairs});
+  }
+  return matches;
+}
+
+testing::EpipolarSceneSpec SmallSpec(handeye::Setup setup) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 4;
+  spec.pairs = 20;
+  spec.setup = setup;
+  return spec;
+}
+
+TEST(CalibrateGlobal, RecoversTheTrueXInBothSetupsWithACertificate) {
+  for (const handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    const testing::EpipolarSceneSpec spec = SmallSpec(setup);
+    const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
+    GlobalCalibrationOptions options;
+    options.setup = setup;
+    options.epsilon = 1e-5;
+    options.reach = 1.0;
+    const GlobalCalibrationResult result = CalibrateGlobal(MatchesOf(scene, spec.focal), options);
+    EXPECT_LT(se3::Log(result.robot_noise.polish.X.inverse() * scene.X).norm(), 1e-6);
+    EXPECT_LE(result.certificate.upper - result.certificate.lower, 1e-5);
+    EXPECT_EQ(result.inliers, spec.motions * spec.pairs);
+    EXPECT_TRUE(result.removed.empty());
+    EXPECT_DOUBLE_EQ(result.pixel_threshold, 4.0 * std::sqrt(2.0) * 0.5 / spec.focal);
+  }
+}
+
+TEST(CalibrateGlobal, RemovesAPlantedWrongMatchAndNamesIt) {
+  const testing::EpipolarSceneSpec spec = SmallSpec(handeye::Setup::kEyeInHand);
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
+  GlobalMatches matches = MatchesOf(scene, spec.focal);
+  global::BearingPair& wrong = matches.motions[2].pairs[5];
+  wrong.second = (wrong.second + Eigen::Vector3d(0.1, -0.05, 0.0)).normalized();
+  GlobalCalibrationOptions options;
+  options.reach = 1.0;
+  const GlobalCalibrationResult result = CalibrateGlobal(matches, options);
+  ASSERT_EQ(result.removed.size(), 1u);
+  EXPECT_EQ(result.removed[0].first, "4");
+  EXPECT_EQ(result.removed[0].second, "5");
+  EXPECT_EQ(result.removed[0].id, wrong.id);
+  EXPECT_EQ(result.inliers, spec.motions * spec.pairs - 1);
+  EXPECT_LT(se3::Log(result.robot_noise.polish.X.inverse() * scene.X).norm(), 1e-6);
+
+  const nlohmann::json doc = nlohmann::json::parse(GlobalResultJson(result));
+  EXPECT_EQ(doc["method"], "global");
+  EXPECT_EQ(doc["setup"], "eye-in-hand");
+  for (int r = 0; r < 3; ++r) {
+    EXPECT_EQ(doc["X"]["translation_m"][r].get<double>(),
+              result.robot_noise.polish.X.translation()[r]);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(doc["X"]["rotation"][r][c].get<double>(),
+                result.robot_noise.polish.X.linear()(r, c));
+    }
+  }
+  EXPECT_EQ(doc["matches"]["removed"].size(), 1u);
+  EXPECT_EQ(doc["matches"]["removed"][0]["id"].get<int>(), wrong.id);
+  EXPECT_EQ(doc["certificate"]["certified"].get<bool>(), result.certificate.certified);
+}
+
+TEST(CalibrateGlobal, RefusesAMotionNamingNoStation) {
+  const testing::EpipolarScene scene =
+      testing::MakeEpipolarScene(SmallSpec(handeye::Setup::kEyeInHand), 12);
+  GlobalMatches matches = MatchesOf(scene, 1000.0);
+  matches.motions[1].second = int(matches.T_base_gripper.size());
+  EXPECT_THROW(CalibrateGlobal(matches, {}), InputError);
+}
+
+TEST(GlobalCalibrationOptions, NameTheBadField) {
+  const GlobalCalibrationOptions options;
+  EXPECT_TRUE(testing::IsValidOptions(options));
+  using O = GlobalCalibrationOptions;
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.epsilon",
+                                     [](O& o) { o.epsilon = 0.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.epsilon",
+                                     [](O& o) { o.epsilon = 1.5; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.relative_gap",
+                                     [](O& o) { o.relative_gap = 1.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.reach",
+                                     [](O& o) { o.reach = 0.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.max_cubes",
+                                     [](O& o) { o.max_cubes = 0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.matches_per_motion",
+                                     [](O& o) { o.matches_per_motion = 7; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.threads",
+                                     [](O& o) { o.threads = -1; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.pixel_sigma",
+                                     [](O& o) { o.pixel_sigma = 0.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.pixel_sigma",
+                                     [](O& o) { o.pixel_sigma = 101.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.robot_sigma", [](O& o) {
+    o.robot_sigma = estimation::PoseSigma{-1.0, 0.0};
+  }));
+}
+
+class GlobalFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("hecal_global_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string Write(const std::string& name, const std::string& text) const {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path) << text;
+    return path;
+  }
+  std::filesystem::path dir_;
+};
+
+// Robot rows without ids are stations 1, 2, …; pixels become unit rays through the camera.
+TEST_F(GlobalFiles, NumbersStationsByRowAndTurnsPixelsIntoRays) {
+  const std::string robot = Write("robot.csv",
+                                  "x,y,z,qw,qx,qy,qz\n0,0,0,1,0,0,0\n0.1,0,0,1,0,0,0\n"
+                                  "0.2,0,0,1,0,0,0\n");
+  const std::string pixels = Write("pixels.csv", "first,second,u1,v1,u2,v2\n2,3,420,240,320,340\n");
+  const std::string camera =
+      Write("camera.yaml",
+            "fx: 1000\nfy: 1000\ncx: 320\ncy: 240\nwidth: 640\nheight: 480\n"
+            "distortion: {model: plumb_bob, coefficients: [0, 0, 0, 0, 0]}\n");
+  const GlobalMatches matches = ReadGlobalMatches(robot, {}, pixels, camera);
+  ASSERT_EQ(matches.T_base_gripper.size(), 3u);
+  EXPECT_DOUBLE_EQ(matches.T_base_gripper[2].translation().x(), 0.2);
+  EXPECT_EQ(matches.focal, 1000.0);
+  ASSERT_EQ(matches.motions.size(), 1u);
+  EXPECT_EQ(matches.motions[0].first, 1);
+  EXPECT_EQ(matches.motions[0].second, 2);
+  EXPECT_EQ(matches.motions[0].first_name, "2");
+  ASSERT_EQ(matches.motions[0].pairs.size(), 1u);
+  EXPECT_LT((matches.motions[0].pairs[0].first - Eigen::Vector3d(0.1, 0, 1).normalized()).norm(),
+            1e-12);
+  EXPECT_LT((matches.motions[0].pairs[0].second - Eigen::Vector3d(0, 0.1, 1).normalized()).norm(),
+            1e-12);
+  // Pixels need the camera; a station beyond the rows is named with its line.
+  EXPECT_THROW(ReadGlobalMatches(robot, {}, pixels, ""), InputError);
+  const std::string beyond = Write("beyond.csv", "first,second,u1,v1,u2,v2\n3,4,0,0,0,0\n");
+  try {
+    ReadGlobalMatches(robot, {}, beyond, camera);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_NE(e.problem().find("station '4'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace hecal::report
