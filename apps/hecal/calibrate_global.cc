@@ -12,6 +12,7 @@
 #include "hecal/geometry/so3.h"
 #include "hecal/io/units.h"
 #include "hecal/report/global_calibration.h"
+#include "hecal/report/translation_sigma.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <filesystem>
@@ -154,6 +155,12 @@ void PrintSummary(const report::GlobalCalibrationResult& result, const std::stri
       << (X.translation() / metres).transpose() << "\n"
       << "  1 sigma: rotation [rad] " << sd.head<3>().transpose() << ", translation [" << units
       << "] " << (sd.tail<3>() / metres).transpose() << "\n"
+      << "  1 sigma of the translation along the "
+      << report::ParentFrame(handeye::XFrameName(setup)) << "'s axes [" << units << "] "
+      << (report::TranslationCovarianceInParent(X, polish.covariance).diagonal().cwiseSqrt() /
+          metres)
+             .transpose()
+      << "\n"
       << (result.robot_noise.robot_given ? "  noise (robot given, ray estimated): ray [rad] "
                                          : "  noise (estimated): ray [rad] ")
       << noise.ray_sigma << ", robot per pose: rotation [rad] " << noise.robot_rotation_sigma

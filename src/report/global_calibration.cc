@@ -19,6 +19,7 @@
 #include "hecal/io/camera_file.h"
 #include "hecal/io/correspondence_file.h"
 #include "hecal/report/json_matrix.h"
+#include "hecal/report/translation_sigma.h"
 
 namespace hecal::report {
 namespace {
@@ -223,14 +224,17 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
                         {"reach_m", options.reach}};
   doc["l_infinity_X"] = {{"rotation", JsonRows(result.l_infinity_X.linear())},
                          {"translation_m", JsonVector(result.l_infinity_X.translation())}};
-  doc["covariance"] = {{"method", "linear, robot pose error marginalised"},
-                       {"X", JsonRows(polish.covariance)},
-                       {"convention", "right perturbation (rx, ry, rz, tx, ty, tz), rad and m"},
-                       {"ray_sigma_rad", noise.ray_sigma},
-                       {"robot_rotation_sigma_rad", noise.robot_rotation_sigma},
-                       {"robot_translation_sigma_m", noise.robot_translation_sigma},
-                       {"robot_sigma", result.robot_noise.robot_given ? "given" : "estimated"},
-                       {"independent_pairs_X", JsonRows(result.independent_covariance)}};
+  doc["covariance"] = {
+      {"method", "linear, robot pose error marginalised"},
+      {"X", JsonRows(polish.covariance)},
+      {"convention", "right perturbation (rx, ry, rz, tx, ty, tz), rad and m"},
+      {"ray_sigma_rad", noise.ray_sigma},
+      {"robot_rotation_sigma_rad", noise.robot_rotation_sigma},
+      {"robot_translation_sigma_m", noise.robot_translation_sigma},
+      {"robot_sigma", result.robot_noise.robot_given ? "given" : "estimated"},
+      {"independent_pairs_X", JsonRows(result.independent_covariance)},
+      {"translation_in_parent", TranslationSigmaInParentJson(handeye::XFrameName(options.setup),
+                                                             polish.X, polish.covariance, 1.0)}};
   doc["polish"] = {{"rms_rad", polish.rms}, {"pairs", polish.pairs}};
   doc["matches"] = {{"inliers", result.inliers},
                     {"threshold_rad", result.threshold},

@@ -88,6 +88,35 @@ TEST(CalibrateGlobal, RemovesAPlantedWrongMatchAndNamesIt) {
   EXPECT_EQ(doc["certificate"]["certified"].get<bool>(), result.certificate.certified);
 }
 
+// The file's 1σ of t along the hand's axes is √diag(R̂ C_tt R̂ᵀ) of its own X and covariance
+// (report/translation_sigma.h), not the covariance's own (camera) axes.
+TEST(CalibrateGlobal, WritesTheTranslationSigmaAlongTheHandAxes) {
+  testing::EpipolarSceneSpec spec = SmallSpec(handeye::Setup::kEyeInHand);
+  spec.pixel_sigma = 0.5;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
+  GlobalCalibrationOptions options;
+  options.reach = 1.0;
+  options.max_cubes = 2000;  // the search's bounds do not matter here: the polish is the answer
+  const nlohmann::json doc = nlohmann::json::parse(
+      GlobalResultJson(CalibrateGlobal(MatchesOf(scene, spec.focal), options)));
+  Eigen::Matrix3d R;
+  Matrix6d C;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) R(r, c) = doc["X"]["rotation"][r][c].get<double>();
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) C(r, c) = doc["covariance"]["X"][r][c].get<double>();
+  const Eigen::Vector3d expected =
+      (R * C.bottomRightCorner<3, 3>() * R.transpose()).diagonal().cwiseSqrt();
+  const Eigen::Vector3d own_axes = C.bottomRightCorner<3, 3>().diagonal().cwiseSqrt();
+  const nlohmann::json& parent = doc["covariance"]["translation_in_parent"];
+  EXPECT_EQ(parent["frame"], "gripper");
+  ASSERT_GT(expected.minCoeff(), 0.0);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(parent["translation"][k].get<double>(), expected[k], 1e-12 * expected[k]);
+  // The scene's X turns the axes, so the two readings differ: the test can tell them apart.
+  EXPECT_GT((expected - own_axes).cwiseAbs().maxCoeff(), 0.05 * expected.maxCoeff());
+}
+
 TEST(CalibrateGlobal, RefusesAMotionNamingNoStation) {
   const testing::EpipolarScene scene =
       testing::MakeEpipolarScene(SmallSpec(handeye::Setup::kEyeInHand), 12);
