@@ -1,5 +1,5 @@
 // `hecal calibrate --method global --images DIR --target target.yaml` on rendered images
-// (testing/rendered_views.h): the chessboard's corners are used as anonymous matches between
+// (testing/rendered_scene.h): the chessboard's corners are used as anonymous matches between
 // consecutive stations, its size and square never. A camera on the robot (eye-in-hand) sees the
 // board from known views B = T_camera_target; the robot poses G follow from a known X and Z
 // (Z = G X B). Checks X against that truth and the result file's matches. Slow: the search takes
@@ -19,8 +19,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "testing/camera_yaml.h"
+#include "testing/detection_errors.h"
 #include "testing/render_once.h"
-#include "testing/rendered_views.h"
+#include "testing/rendered_scene.h"
 #endif
 
 namespace hecal::cli {
@@ -30,8 +32,8 @@ namespace {
 
 using cli_test::CliTest;
 using cli_test::Hecal;
+using hecal::testing::kDeg;
 using nlohmann::json;
-using rendered_views::kDeg;
 
 constexpr int kViews = 6;
 
@@ -51,7 +53,9 @@ class CalibrateGlobalImages : public hecal::testing::RenderOnce<CalibrateGlobalI
  public:
   static constexpr const char* kRenderFolder = "calibrate_global_images_test";
   static void Render(const std::filesystem::path& dir) {
-    rendered_views::RenderViewFolder(dir, rendered_views::Views(kViews), 200);
+    hecal::testing::MakeRenderedScene({.views = hecal::testing::SpreadViews({.count = kViews}),
+                                       .first_seed = 200,
+                                       .folder = dir});
   }
 
  protected:
@@ -59,7 +63,7 @@ class CalibrateGlobalImages : public hecal::testing::RenderOnce<CalibrateGlobalI
   std::string RobotFile() {
     std::ostringstream csv;
     csv << std::setprecision(17) << "x,y,z,qw,qx,qy,qz\n";
-    for (const Pose& B : rendered_views::Views(kViews)) {
+    for (const Pose& B : hecal::testing::SpreadViews({.count = kViews})) {
       const Pose G = TrueZ() * B.inverse() * TrueX().inverse();  // Z = G X B
       const Eigen::Quaterniond q(G.linear());
       csv << G.translation().x() << "," << G.translation().y() << "," << G.translation().z() << ","
@@ -75,9 +79,9 @@ class CalibrateGlobalImages : public hecal::testing::RenderOnce<CalibrateGlobalI
             "--images",
             RenderDir().string(),
             "--target",
-            Write("target.yaml", rendered_views::kTargetYaml),
+            Write("target.yaml", hecal::testing::kBoardYaml),
             "--intrinsics",
-            Write("camera.yaml", rendered_views::CameraYaml(rendered_views::TrueCamera())),
+            Write("camera.yaml", hecal::testing::CameraYaml(hecal::testing::RenderCamera())),
             "--robot",
             RobotFile(),
             "--setup",
@@ -108,8 +112,8 @@ TEST_F(CalibrateGlobalImages, RecoversXFromTheTargetCornersAsAnonymousMatches) {
   ASSERT_EQ(run.code, 0) << run.err;
   const json result = json::parse(Read("result.json"));
   const Pose X = PoseOf(result["X"]);
-  EXPECT_LT(rendered_views::RotationErrorDeg(X, TrueX()), 0.1) << run.out;
-  EXPECT_LT(rendered_views::TranslationErrorMm(X, TrueX()), 1.0) << run.out;
+  EXPECT_LT(hecal::testing::RotationErrorDeg(X, TrueX()), 0.1) << run.out;
+  EXPECT_LT(hecal::testing::TranslationErrorMm(X, TrueX()), 1.0) << run.out;
   EXPECT_EQ(result["method"], "global");
   EXPECT_EQ(result["matches"]["inliers"].get<int>() + int(result["matches"]["removed"].size()),
             (kViews - 1) * 30);

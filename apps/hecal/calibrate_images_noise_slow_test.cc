@@ -2,7 +2,7 @@
 // on its default path (robot and pixel noise estimated, nothing given), on many rendered image
 // sets of a known scene (README "Uncertainty", "From images").
 //
-// Each set: an eye-in-hand camera sees the 9 × 6 chessboard of testing/rendered_views.h from
+// Each set: an eye-in-hand camera sees the 9 × 6 chessboard of testing/rendered_scene.h from
 // random directions (0.36–0.44 m away, tilted 10–35° towards a random azimuth, turned about its
 // optical axis by up to ±60°, panned so the board lands in different parts of the image, every
 // corner at least 15 px inside the image); the true robot poses follow from a known X and Z
@@ -42,13 +42,14 @@
 #include "hecal/geometry/se3.h"
 #include "hecal/sim/noise.h"
 #include "hecal/uncertainty/consistency.h"
-#include "testing/rendered_views.h"
+#include "testing/camera_yaml.h"
+#include "testing/rendered_scene.h"
 
 namespace hecal::cli {
 namespace {
 
+using hecal::testing::kDeg;
 using nlohmann::json;
-using rendered_views::kDeg;
 
 constexpr double kImageNoise = 20.0;             // grey levels
 constexpr double kBlack = 80.0, kWhite = 180.0;  // grey levels of the print
@@ -68,9 +69,9 @@ Pose TrueZ() {
 // A random view of the board (see the header) with every corner 15 px inside the image.
 Pose RandomView(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const pose::CameraModel camera = rendered_views::TrueCamera();
+  const pose::CameraModel camera = hecal::testing::RenderCamera();
   while (true) {
-    const Pose view = rendered_views::ViewPose(
+    const Pose view = hecal::testing::LookAtView(
         0.36 + 0.08 * unit(rng), (10.0 + 25.0 * unit(rng)) * kDeg, 360.0 * kDeg * unit(rng),
         0.2 * (unit(rng) - 0.5), 0.2 * (unit(rng) - 0.5));
     const Pose roll =
@@ -79,7 +80,7 @@ Pose RandomView(std::mt19937_64& rng) {
                  Eigen::Vector3d::Zero());
     const Pose B = roll * view;
     bool inside = true;
-    for (const pose::ObjectPoint& point : pose::ObjectPoints(rendered_views::Board())) {
+    for (const pose::ObjectPoint& point : pose::ObjectPoints(hecal::testing::Board())) {
       const Eigen::Vector2d p = pose::Project(camera, B * point.position);
       inside = inside && p.x() > 15.0 && p.y() > 15.0 && p.x() < camera.width - 15.0 &&
                p.y() < camera.height - 15.0;
@@ -120,7 +121,7 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
       std::snprintf(name, sizeof name, "view_%02d", i);
       cv::imwrite(
           (images / (std::string(name) + ".png")).string(),
-          vision::RenderTarget(rendered_views::Board(), rendered_views::TrueCamera(), B, render));
+          vision::RenderTarget(hecal::testing::Board(), hecal::testing::RenderCamera(), B, render));
       const Pose A = sim::AddNoise(TrueZ() * B.inverse() * TrueX().inverse(), robot_noise, rng);
       const Eigen::Quaterniond q(A.linear());
       csv << name << "," << A.translation().x() << "," << A.translation().y() << ","
@@ -129,10 +130,10 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
     }
     const cli_test::Outcome run = cli_test::Hecal(
         {"calibrate", "--images", images.string(), "--target",
-         Write("target.yaml", rendered_views::kTargetYaml), "--intrinsics",
-         Write("camera.yaml", rendered_views::CameraYaml(rendered_views::TrueCamera())), "--robot",
-         Write("robot.csv", csv.str()), "--setup", "eye-in-hand", "--method", "ml", "--output",
-         Path("result.json")});
+         Write("target.yaml", hecal::testing::kBoardYaml), "--intrinsics",
+         Write("camera.yaml", hecal::testing::CameraYaml(hecal::testing::RenderCamera())),
+         "--robot", Write("robot.csv", csv.str()), "--setup", "eye-in-hand", "--method", "ml",
+         "--output", Path("result.json")});
     SetOutcome outcome;
     if (run.code != 0) {
       ADD_FAILURE() << "set " << seed << ": " << run.err;

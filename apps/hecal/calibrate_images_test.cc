@@ -1,4 +1,4 @@
-// `hecal calibrate --images` end to end on rendered images (testing/rendered_views.h) of a
+// `hecal calibrate --images` end to end on rendered images (testing/rendered_scene.h) of a
 // known scene: a chessboard seen by a camera on a robot (eye-in-hand) or by a fixed camera with
 // the board on the robot (eye-to-hand), the robot poses computed from the chosen views and a
 // known X and Z (Z = A_i X B_i, handeye/problem.h). Checks X and Z against that truth (also from
@@ -22,8 +22,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "testing/camera_yaml.h"
+#include "testing/detection_errors.h"
 #include "testing/render_once.h"
-#include "testing/rendered_views.h"
+#include "testing/rendered_scene.h"
 #endif
 
 namespace hecal::cli {
@@ -34,8 +36,8 @@ using cli_test::Hecal;
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
+using hecal::testing::kDeg;
 using nlohmann::json;
-using rendered_views::kDeg;
 
 constexpr int kViews = 8;
 
@@ -67,7 +69,9 @@ class CalibrateImagesTest : public hecal::testing::RenderOnce<CalibrateImagesTes
  public:
   static constexpr const char* kRenderFolder = "calibrate_images_test_renders";
   static void Render(const std::filesystem::path& dir) {
-    rendered_views::RenderViewFolder(dir, rendered_views::Views(kViews), 100);
+    hecal::testing::MakeRenderedScene({.views = hecal::testing::SpreadViews({.count = kViews}),
+                                       .first_seed = 100,
+                                       .folder = dir});
   }
 
  protected:
@@ -89,7 +93,7 @@ class CalibrateImagesTest : public hecal::testing::RenderOnce<CalibrateImagesTes
   }
   // The same for the rendered views; an index of kViews gives a row without an image.
   std::string RobotFile(handeye::Setup setup, const std::vector<int>& order, bool ids) {
-    return RobotFile(setup, rendered_views::Views(kViews + 1), order, ids);
+    return RobotFile(setup, hecal::testing::SpreadViews({.count = kViews + 1}), order, ids);
   }
   static std::vector<int> AllViews() {
     std::vector<int> order(kViews);
@@ -102,9 +106,9 @@ class CalibrateImagesTest : public hecal::testing::RenderOnce<CalibrateImagesTes
             "--images",
             RenderDir().string(),
             "--target",
-            Write("target.yaml", rendered_views::kTargetYaml),
+            Write("target.yaml", hecal::testing::kBoardYaml),
             "--intrinsics",
-            Write("camera.yaml", rendered_views::CameraYaml(rendered_views::TrueCamera())),
+            Write("camera.yaml", hecal::testing::CameraYaml(hecal::testing::RenderCamera())),
             "--robot",
             robot,
             "--setup",
@@ -131,10 +135,10 @@ TEST_F(CalibrateImagesTest, RecoversXAndZFromRenderedImages) {
     ASSERT_EQ(run.code, 0) << run.err;
     const json result = json::parse(Read("result.json"));
     const std::string name(handeye::SetupName(setup));
-    EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05) << name;
-    EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 0.3) << name;
-    EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["Z"]), TrueZ()), 0.05) << name;
-    EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["Z"]), TrueZ()), 0.3) << name;
+    EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05) << name;
+    EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 0.3) << name;
+    EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["Z"]), TrueZ()), 0.05) << name;
+    EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["Z"]), TrueZ()), 0.3) << name;
     EXPECT_EQ(result["X"]["frame"], std::string(handeye::XFrameName(setup)));
     EXPECT_EQ(result["refinement"], "reprojection");
     EXPECT_EQ(result["method"], "ml");
@@ -157,13 +161,13 @@ TEST_F(CalibrateImagesTest, RecoversXAndZFromRenderedImages) {
 // 0.08 px; asserted within 1.5 px and 1 px), X to the truth, and the file says so.
 TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
   const handeye::Setup setup = handeye::Setup::kEyeInHand;
-  pose::CameraModel off = rendered_views::TrueCamera();
+  pose::CameraModel off = hecal::testing::RenderCamera();
   off.fx *= 1.01;
   off.fy *= 1.01;
   off.cx += 2.0;
   off.cy -= 2.0;
   std::vector<std::string> args = Args(setup, RobotFile(setup, AllViews(), false));
-  args[6] = Write("off.yaml", rendered_views::CameraYaml(off));
+  args[6] = Write("off.yaml", hecal::testing::CameraYaml(off));
   args.push_back("--refine-intrinsics");
   const cli_test::Outcome run = Hecal(args);
   ASSERT_EQ(run.code, 0) << run.err;
@@ -178,13 +182,13 @@ TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
   std::printf("refined fx %.3f fy %.3f cx %.3f cy %.3f (truth 620 622 321.5 238)\n",
               intrinsics["fx"].get<double>(), intrinsics["fy"].get<double>(),
               intrinsics["cx"].get<double>(), intrinsics["cy"].get<double>());
-  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.1);
-  EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 1.0);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.1);
+  EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 1.0);
   EXPECT_NE(run.out.find("intrinsics refined with X and Z"), std::string::npos) << run.out;
 }
 
 // On rendered image sets the joint reprojection refinement is at least as accurate as
-// the pose-level ml it starts from. Four sets of 8 views (those of rendered_views::Views turned by
+// the pose-level ml it starts from. Four sets of 8 views (SpreadViews turned by
 // 0, 15, 30 and 45° in azimuth), exact robot poses, both setups: summed squared X errors over the
 // sets. Measured: eye-in-hand pose-level 0.0040° / 0.018 mm RMS, reprojection 0.0020° / 0.016 mm;
 // eye-to-hand 0.0041° / 0.019 mm and 0.0020° / 0.016 mm. (With robot noise of 0.005° / 0.02 mm
@@ -195,16 +199,12 @@ TEST_F(CalibrateImagesTest, ReprojectionIsAtLeastAsAccurateAsPoseLevelOnRendered
   constexpr int kSets = 4;
   std::vector<std::vector<Pose>> sets;
   for (int set = 0; set < kSets; ++set) {
-    std::vector<Pose> views;
-    const std::filesystem::path dir = dir_ / ("set" + std::to_string(set));
-    std::filesystem::create_directories(dir);
-    for (int k = 0; k < kViews; ++k) {
-      views.push_back(rendered_views::ViewPose(
-          0.38 + 0.02 * (k % 3), (15.0 + 10.0 * (k % 3)) * kDeg, (k * 60.0 + set * 15.0) * kDeg,
-          (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12)));
-      rendered_views::RenderView(views.back(), 1000 + 10 * set + k, dir / (ViewName(k) + ".png"));
-    }
-    sets.push_back(views);
+    sets.push_back(
+        hecal::testing::MakeRenderedScene(
+            {.views = hecal::testing::SpreadViews({.count = kViews, .turn_deg = 15.0 * set}),
+             .first_seed = static_cast<std::uint64_t>(1000 + 10 * set),
+             .folder = dir_ / ("set" + std::to_string(set))})
+            .views);
   }
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     double pose_rotation = 0.0, pose_translation = 0.0, rotation = 0.0, translation = 0.0;
@@ -216,10 +216,10 @@ TEST_F(CalibrateImagesTest, ReprojectionIsAtLeastAsAccurateAsPoseLevelOnRendered
       ASSERT_EQ(run.code, 0) << run.err;
       const json result = json::parse(Read("result.json"));
       const Pose pose_level = PoseOf(result["images"]["pose_level"]["X"]);
-      pose_rotation += std::pow(rendered_views::RotationErrorDeg(pose_level, TrueX()), 2);
-      pose_translation += std::pow(rendered_views::TranslationErrorMm(pose_level, TrueX()), 2);
-      rotation += std::pow(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 2);
-      translation += std::pow(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 2);
+      pose_rotation += std::pow(hecal::testing::RotationErrorDeg(pose_level, TrueX()), 2);
+      pose_translation += std::pow(hecal::testing::TranslationErrorMm(pose_level, TrueX()), 2);
+      rotation += std::pow(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 2);
+      translation += std::pow(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 2);
     }
     const std::string name(handeye::SetupName(setup));
     EXPECT_LE(rotation, pose_rotation) << name;
@@ -243,7 +243,7 @@ TEST_F(CalibrateImagesTest, PairsRobotRowsByIdInAnyOrder) {
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.err.find("id 'view_08' has no image"), std::string::npos) << run.err;
   const json result = json::parse(Read("result.json"));
-  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
   EXPECT_EQ(result["stations"]["used"][0], "view_00");
 }
 
@@ -259,7 +259,7 @@ TEST_F(CalibrateImagesTest, IdsThatNameNoImagePairByOrder) {
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.err.find("no id equals an image's file stem"), std::string::npos) << run.err;
   const json result = json::parse(Read("result.json"));
-  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
 }
 
 // One sub-folder per station (pose_NN/image.png, the robot pose file beside it ignored): robot
@@ -276,13 +276,14 @@ TEST_F(CalibrateImagesTest, StationsInSubFolders) {
   std::vector<int> order = AllViews();
   std::reverse(order.begin(), order.end());
   std::vector<std::string> args =
-      Args(setup, RobotFile(setup, rendered_views::Views(kViews), order, true, "pose_0"));
+      Args(setup,
+           RobotFile(setup, hecal::testing::SpreadViews({.count = kViews}), order, true, "pose_0"));
   args[2] = Path("captures");
   cli_test::Outcome run = Hecal(args);
   ASSERT_EQ(run.code, 0) << run.err;
   json result = json::parse(Read("result.json"));
-  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
-  EXPECT_LT(rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 0.3);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 0.3);
   EXPECT_EQ(result["stations"]["used"][0], "pose_00");
   EXPECT_EQ(result["images"]["per_image"][7]["id"], "pose_07");
 
@@ -291,7 +292,7 @@ TEST_F(CalibrateImagesTest, StationsInSubFolders) {
   run = Hecal(args);
   ASSERT_EQ(run.code, 0) << run.err;
   result = json::parse(Read("result.json"));
-  EXPECT_LT(rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
 }
 
 // Views of a single 100 mm AprilTag (4 corners per image) from 0.3–0.4 m, exact robot poses:
@@ -301,21 +302,24 @@ TEST_F(CalibrateImagesTest, StationsInSubFolders) {
 // given): fitted on the edges as the lens (k1 = −0.12) bends them they sat 0.27 px outward on
 // these 150–200 px tags, a 0.15% scale of every camera pose, and X was 0.71 mm off.
 TEST_F(CalibrateImagesTest, SingleTagStations) {
-  const std::vector<Pose> views = rendered_views::TagViews(kViews);
-  rendered_views::RenderViewFolder(dir_ / "tags", views, 200, rendered_views::Tag());
+  const std::vector<Pose> views = hecal::testing::SpreadViews(hecal::testing::TagSpread(kViews));
+  hecal::testing::MakeRenderedScene({.target = hecal::testing::Tag(),
+                                     .views = views,
+                                     .first_seed = 200,
+                                     .folder = dir_ / "tags"});
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     std::vector<std::string> args = Args(setup, RobotFile(setup, views, AllViews(), false));
     args[2] = Path("tags");
-    args[4] = Write("tag.yaml", rendered_views::kTagYaml);
+    args[4] = Write("tag.yaml", hecal::testing::kTagYaml);
     const cli_test::Outcome run = Hecal(args);
     ASSERT_EQ(run.code, 0) << run.err;
     const json result = json::parse(Read("result.json"));
     const std::string name(handeye::SetupName(setup));
-    const double rotation = rendered_views::RotationErrorDeg(PoseOf(result["X"]), TrueX());
-    const double translation = rendered_views::TranslationErrorMm(PoseOf(result["X"]), TrueX());
+    const double rotation = hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX());
+    const double translation = hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX());
     std::printf("single tag, %s: X %.4f deg %.3f mm, Z %.4f deg %.3f mm\n", name.c_str(), rotation,
-                translation, rendered_views::RotationErrorDeg(PoseOf(result["Z"]), TrueZ()),
-                rendered_views::TranslationErrorMm(PoseOf(result["Z"]), TrueZ()));
+                translation, hecal::testing::RotationErrorDeg(PoseOf(result["Z"]), TrueZ()),
+                hecal::testing::TranslationErrorMm(PoseOf(result["Z"]), TrueZ()));
     EXPECT_LT(rotation, 0.2) << name;
     EXPECT_LT(translation, 0.06) << name;
     EXPECT_EQ(result["stations"]["used"].size(), static_cast<size_t>(kViews)) << name;
@@ -379,11 +383,11 @@ TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
   no_intrinsics[6] = Path("missing.yaml");
   refuses(no_intrinsics, "missing.yaml");
   // Intrinsics that do not fit the images (vision/intrinsics_fit.h): fx, fy 10× too large.
-  pose::CameraModel focal = rendered_views::TrueCamera();
+  pose::CameraModel focal = hecal::testing::RenderCamera();
   focal.fx *= 10.0;
   focal.fy *= 10.0;
   std::vector<std::string> wrong_focal = args;
-  wrong_focal[6] = Write("focal.yaml", rendered_views::CameraYaml(focal));
+  wrong_focal[6] = Write("focal.yaml", hecal::testing::CameraYaml(focal));
   refuses(wrong_focal, "focal.yaml: the intrinsics do not fit the images");
   std::vector<std::string> bad_sigma = args;
   bad_sigma.insert(bad_sigma.end(), {"--pixel-sigma", "-1"});

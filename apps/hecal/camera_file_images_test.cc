@@ -1,5 +1,5 @@
 // Camera files through the image commands: `hecal detect` and `hecal calibrate --images` on
-// images rendered (testing/rendered_views.h) by a camera with ViSP's one-coefficient radial
+// images rendered (testing/rendered_scene.h) by a camera with ViSP's one-coefficient radial
 // model (plumb_bob with only k1), given as ViSP camera XML. The poses and X match the rendered
 // truth and the command prints how the file was read; a camera.yaml without distortion is read
 // as none, with a note.
@@ -18,8 +18,9 @@
 #include <sstream>
 
 #include "testing/csv_reader.h"
+#include "testing/detection_errors.h"
 #include "testing/render_once.h"
-#include "testing/rendered_views.h"
+#include "testing/rendered_scene.h"
 #endif
 
 namespace hecal::cli {
@@ -28,13 +29,13 @@ namespace {
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
 using cli_test::Hecal;
-using rendered_views::kDeg;
+using hecal::testing::kDeg;
 
 constexpr int kViews = 6;
 
-// rendered_views' camera with k1 only, the model ViSP's kud describes.
+// rendered_scene.h's RenderCamera with k1 only, the model ViSP's kud describes.
 pose::CameraModel KudCamera() {
-  pose::CameraModel camera = rendered_views::TrueCamera();
+  pose::CameraModel camera = hecal::testing::RenderCamera();
   camera.distortion = {-0.12, 0.0, 0.0, 0.0, 0.0};
   return camera;
 }
@@ -70,12 +71,14 @@ class CameraFileImagesTest
  public:
   static constexpr const char* kRenderFolder = "camera_file_images_test_renders";
   static void Render(const std::filesystem::path& dir) {
-    rendered_views::RenderViewFolder(dir, rendered_views::Views(kViews), 200,
-                                     rendered_views::Board(), KudCamera());
+    hecal::testing::MakeRenderedScene({.camera = KudCamera(),
+                                       .views = hecal::testing::SpreadViews({.count = kViews}),
+                                       .first_seed = 200,
+                                       .folder = dir});
   }
 
  protected:
-  std::string Target() { return Write("target.yaml", rendered_views::kTargetYaml); }
+  std::string Target() { return Write("target.yaml", hecal::testing::kBoardYaml); }
 };
 
 TEST_F(CameraFileImagesTest, DetectReadsVispXml) {
@@ -89,7 +92,7 @@ TEST_F(CameraFileImagesTest, DetectReadsVispXml) {
             std::string::npos)
       << run.out;
   const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
-  const std::vector<Pose> truth = rendered_views::Views(kViews);
+  const std::vector<Pose> truth = hecal::testing::SpreadViews({.count = kViews});
   ASSERT_EQ(poses.rows.size(), truth.size());
   for (std::size_t i = 0; i < truth.size(); ++i) {
     const Eigen::Quaterniond q(poses.Number(i, "qw"), poses.Number(i, "qx"), poses.Number(i, "qy"),
@@ -97,8 +100,8 @@ TEST_F(CameraFileImagesTest, DetectReadsVispXml) {
     const Pose T =
         MakePose(q.normalized().toRotationMatrix(),
                  Eigen::Vector3d(poses.Number(i, "x"), poses.Number(i, "y"), poses.Number(i, "z")));
-    EXPECT_LT(rendered_views::RotationErrorDeg(T, truth[i]), 0.05) << i;
-    EXPECT_LT(rendered_views::TranslationErrorMm(T, truth[i]), 0.1) << i;
+    EXPECT_LT(hecal::testing::RotationErrorDeg(T, truth[i]), 0.05) << i;
+    EXPECT_LT(hecal::testing::TranslationErrorMm(T, truth[i]), 0.1) << i;
   }
 
   // The same images with a camera.yaml that has no distortion: read as none, and said so.
@@ -116,7 +119,7 @@ TEST_F(CameraFileImagesTest, DetectReadsVispXml) {
 TEST_F(CameraFileImagesTest, CalibrateImagesReadsVispXml) {
   std::ostringstream robot;
   robot << std::setprecision(17) << "id,x,y,z,qw,qx,qy,qz\n";
-  const std::vector<Pose> views = rendered_views::Views(kViews);
+  const std::vector<Pose> views = hecal::testing::SpreadViews({.count = kViews});
   for (int i = 0; i < kViews; ++i) {
     const Pose G = TrueZ() * views[static_cast<size_t>(i)].inverse() * TrueX().inverse();
     const Eigen::Quaterniond q(G.linear());
@@ -135,8 +138,8 @@ TEST_F(CameraFileImagesTest, CalibrateImagesReadsVispXml) {
   for (int r = 0; r < 4; ++r) {
     for (int c = 0; c < 4; ++c) M(r, c) = result["X"]["matrix"][r][c].get<double>();
   }
-  EXPECT_LT(rendered_views::RotationErrorDeg(Pose(M), TrueX()), 0.05);
-  EXPECT_LT(rendered_views::TranslationErrorMm(Pose(M), TrueX()), 0.3);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(Pose(M), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::TranslationErrorMm(Pose(M), TrueX()), 0.3);
   EXPECT_EQ(result["images"]["intrinsics"]["fx"].get<double>(), 620.0);
 }
 

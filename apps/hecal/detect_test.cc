@@ -29,9 +29,11 @@
 #include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
 #include "hecal/vision/render.h"
+#include "testing/camera_yaml.h"
 #include "testing/csv_reader.h"
+#include "testing/detection_errors.h"
 #include "testing/render_once.h"
-#include "testing/rendered_views.h"
+#include "testing/rendered_scene.h"
 #endif
 
 namespace hecal::cli {
@@ -42,15 +44,18 @@ using cli_test::Hecal;
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
-using rendered_views::Board;
-using rendered_views::CameraYaml;
-using rendered_views::kDeg;
-using rendered_views::kTagYaml;
-using rendered_views::kTargetYaml;
-using rendered_views::RotationErrorDeg;
-using rendered_views::TranslationErrorMm;
-using rendered_views::TrueCamera;
-using rendered_views::Views;
+using hecal::testing::Board;
+using hecal::testing::CameraYaml;
+using hecal::testing::kBoardYaml;
+using hecal::testing::kTagYaml;
+using hecal::testing::MakeRenderedScene;
+using hecal::testing::RenderCamera;
+using hecal::testing::RotationErrorDeg;
+using hecal::testing::SpreadViews;
+using hecal::testing::Tag;
+using hecal::testing::TagSpread;
+using hecal::testing::TranslationErrorMm;
+using hecal::testing::ViewFileName;
 
 // Three views of a board parallel to the image plane, moved sideways and back.
 std::vector<Pose> ParallelViews() {
@@ -68,25 +73,19 @@ class DetectTest : public hecal::testing::RenderOnce<DetectTest, CliTest> {
  public:
   static constexpr const char* kRenderFolder = "detect_test_renders";
   static void Render(const std::filesystem::path& dir) {
-    std::uint64_t seed = 1;
-    const std::vector<Pose> views = Views();
-    for (std::size_t i = 0; i < views.size(); ++i) {
-      rendered_views::RenderView(views[i], ++seed, dir / ViewName(i));
-    }
-    const std::vector<Pose> parallel = ParallelViews();
-    for (std::size_t i = 0; i < parallel.size(); ++i) {
-      rendered_views::RenderView(parallel[i], ++seed,
-                                 dir / ("parallel_" + std::to_string(i) + ".png"));
-    }
-    const std::vector<Pose> tags = rendered_views::TagViews(3);
-    for (std::size_t i = 0; i < tags.size(); ++i) {
-      rendered_views::RenderView(tags[i], ++seed, dir / TagName(i), rendered_views::Tag());
-    }
+    MakeRenderedScene({.first_seed = 2, .folder = dir});
+    MakeRenderedScene(
+        {.views = ParallelViews(), .first_seed = 8, .folder = dir, .name = "parallel"});
+    MakeRenderedScene({.target = Tag(),
+                       .views = SpreadViews(TagSpread(3)),
+                       .first_seed = 11,
+                       .folder = dir,
+                       .name = "tag"});
   }
 
  protected:
-  static std::string ViewName(std::size_t i) { return "view_0" + std::to_string(i) + ".png"; }
-  static std::string TagName(std::size_t i) { return "tag_0" + std::to_string(i) + ".png"; }
+  static std::string ViewName(std::size_t i) { return ViewFileName("view", i); }
+  static std::string TagName(std::size_t i) { return ViewFileName("tag", i); }
 
   // A folder `images` holding the named rendered images.
   std::string Images(const std::vector<std::string>& names) {
@@ -105,8 +104,8 @@ class DetectTest : public hecal::testing::RenderOnce<DetectTest, CliTest> {
     cv::imwrite(Path(name), cv::Mat(height, width, CV_8UC1, cv::Scalar(128)));
   }
 
-  std::string TargetFile() { return Write("target.yaml", kTargetYaml); }
-  std::string CameraFile(const pose::CameraModel& camera = TrueCamera()) {
+  std::string TargetFile() { return Write("target.yaml", kBoardYaml); }
+  std::string CameraFile(const pose::CameraModel& camera = RenderCamera()) {
     return Write("camera.yaml", CameraYaml(camera));
   }
   // `hecal detect` on `images` with the board and the given intrinsics (a camera file without
@@ -132,8 +131,8 @@ Pose RowPose(const csv_test::Csv& csv, std::size_t row) {
 }
 
 TEST_F(DetectTest, PosesWithGivenIntrinsicsMatchTheRenderedTruth) {
-  const pose::CameraModel camera = TrueCamera();
-  const std::vector<Pose> all = Views();
+  const pose::CameraModel camera = RenderCamera();
+  const std::vector<Pose> all = SpreadViews();
   const std::vector<Pose> truth(all.begin(), all.begin() + 3);
   const std::string images = FirstViews(3);
   const cli_test::Outcome run =
@@ -173,8 +172,8 @@ TEST_F(DetectTest, PosesWithGivenIntrinsicsMatchTheRenderedTruth) {
 }
 
 TEST_F(DetectTest, EstimatesTheIntrinsicsWhenNotGiven) {
-  const pose::CameraModel camera = TrueCamera();
-  const std::vector<Pose> truth = Views();
+  const pose::CameraModel camera = RenderCamera();
+  const std::vector<Pose> truth = SpreadViews();
   const std::string images = FirstViews(truth.size());
   const cli_test::Outcome run = Hecal({"detect", "--images", images, "--target", TargetFile(),
                                        "--output", Path("camera.csv"), "--threads", "2"});
@@ -207,7 +206,7 @@ TEST_F(DetectTest, EstimatesTheIntrinsicsWhenNotGiven) {
 }
 
 TEST_F(DetectTest, SkipsImagesWithoutTheTargetAndSaysWhy) {
-  const pose::CameraModel camera = TrueCamera();
+  const pose::CameraModel camera = RenderCamera();
   const std::string images = FirstViews(3);
   Blank("images/view_99.png", 640, 480);
   Write("images/notes.txt", "not an image: ignored");
@@ -282,7 +281,7 @@ TEST_F(DetectTest, BadImagesAndFoldersAreErrors) {
 
   // Intrinsics of another resolution.
   std::filesystem::remove(Path("sizes/b.png"));
-  pose::CameraModel other = TrueCamera();
+  pose::CameraModel other = RenderCamera();
   other.width = 1280;
   other.height = 960;
   const std::string camera_file = Write("camera.yaml", CameraYaml(other));
@@ -315,7 +314,7 @@ TEST_F(DetectTest, BadImagesAndFoldersAreErrors) {
 TEST_F(DetectTest, IntrinsicsFromParallelBoardsAreRefused) {
   // Three views of a board parallel to the image plane: Zhang's method cannot separate focal
   // length from distance (calibrateCamera still returns an f, with a small σ).
-  const std::string images = Images({"parallel_0.png", "parallel_1.png", "parallel_2.png"});
+  const std::string images = Images({"parallel_00.png", "parallel_01.png", "parallel_02.png"});
   cli_test::Outcome run = Hecal(
       {"detect", "--images", images, "--target", TargetFile(), "--output", Path("camera.csv")});
   EXPECT_EQ(run.code, 2);
@@ -326,7 +325,7 @@ TEST_F(DetectTest, IntrinsicsFromParallelBoardsAreRefused) {
 
   // With the intrinsics given, the same images give poses (a fronto-parallel pose is fine).
   run = Hecal({"detect", "--images", images, "--target", TargetFile(), "--intrinsics",
-               Write("camera.yaml", CameraYaml(TrueCamera())), "--output", Path("camera.csv")});
+               Write("camera.yaml", CameraYaml(RenderCamera())), "--output", Path("camera.csv")});
   ASSERT_EQ(run.code, 0) << run.err;
   const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
   const std::vector<Pose> truth = ParallelViews();
@@ -340,12 +339,12 @@ TEST_F(DetectTest, IntrinsicsFromParallelBoardsAreRefused) {
 // intrinsics, and the message says so and how to do with fewer.
 TEST_F(DetectTest, OneImageIsEnoughWithIntrinsics) {
   const std::string images = FirstViews(1);
-  cli_test::Outcome run = DetectWith(images, TrueCamera());
+  cli_test::Outcome run = DetectWith(images, RenderCamera());
   ASSERT_EQ(run.code, 0) << run.err;
   const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
   ASSERT_EQ(poses.rows.size(), 1u);
-  EXPECT_LT(RotationErrorDeg(RowPose(poses, 0), Views()[0]), 0.05);
-  EXPECT_LT(TranslationErrorMm(RowPose(poses, 0), Views()[0]), 0.1);
+  EXPECT_LT(RotationErrorDeg(RowPose(poses, 0), SpreadViews()[0]), 0.05);
+  EXPECT_LT(TranslationErrorMm(RowPose(poses, 0), SpreadViews()[0]), 0.1);
   std::filesystem::remove(Path("camera.csv"));
 
   run = Hecal(
@@ -369,7 +368,7 @@ TEST_F(DetectTest, StationsInSubFolders) {
     std::filesystem::copy_file(RenderDir() / ViewName(i), station / "image.png");
     Write("captures/pose_0" + std::to_string(i) + "/pose.yaml", "robot pose: not read\n");
   }
-  cli_test::Outcome run = DetectWith(Path("captures"), TrueCamera());
+  cli_test::Outcome run = DetectWith(Path("captures"), RenderCamera());
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.out.find("3 station sub-folder(s) in"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("pose_01/image.png"), std::string::npos) << run.out;
@@ -377,12 +376,12 @@ TEST_F(DetectTest, StationsInSubFolders) {
   ASSERT_EQ(poses.rows.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(poses.Text(i, "id"), "pose_0" + std::to_string(i));
-    EXPECT_LT(RotationErrorDeg(RowPose(poses, i), Views()[i]), 0.05) << i;
+    EXPECT_LT(RotationErrorDeg(RowPose(poses, i), SpreadViews()[i]), 0.05) << i;
   }
   EXPECT_EQ(csv_test::ReadCsv(Path("camera.points.csv")).Text(54, "id"), "pose_01");
 
   std::filesystem::copy_file(RenderDir() / ViewName(3), dir_ / "captures" / "loose.png");
-  run = DetectWith(Path("captures"), TrueCamera());
+  run = DetectWith(Path("captures"), RenderCamera());
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.err.find("hecal: note: " + Path("captures") +
                          " holds 1 image(s) and 3 "
@@ -395,7 +394,7 @@ TEST_F(DetectTest, StationsInSubFolders) {
   std::filesystem::remove(dir_ / "captures" / "loose.png");
   std::filesystem::copy_file(RenderDir() / ViewName(4), dir_ / "captures" / "pose_02" / "b.png");
   std::filesystem::remove(Path("camera.csv"));
-  run = DetectWith(Path("captures"), TrueCamera());
+  run = DetectWith(Path("captures"), RenderCamera());
   EXPECT_EQ(run.code, 2);
   EXPECT_NE(run.err.find(Path("captures/pose_02") + ": this station's sub-folder holds 2 images"),
             std::string::npos)
@@ -413,7 +412,7 @@ TEST_F(DetectTest, SingleTagPoses) {
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.out.find("target apriltag tag36h11 id 3 (4 points)"), std::string::npos) << run.out;
   const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
-  const std::vector<Pose> truth = rendered_views::TagViews(3);
+  const std::vector<Pose> truth = SpreadViews(TagSpread(3));
   ASSERT_EQ(poses.rows.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     // Measured 0.02–0.07° and 0.56–0.76 mm: the corners sit ~0.27 px outward, where the lens
@@ -440,7 +439,7 @@ TEST_F(DetectTest, SingleTagPoses) {
 // names it, and the poses are written.
 TEST_F(DetectTest, IntrinsicsThatDoNotFitTheImagesAreCaught) {
   const std::string images = FirstViews(4);
-  pose::CameraModel focal = TrueCamera();
+  pose::CameraModel focal = RenderCamera();
   focal.fx *= 10.0;
   focal.fy *= 10.0;
   focal.width = focal.height = 0;
@@ -455,7 +454,7 @@ TEST_F(DetectTest, IntrinsicsThatDoNotFitTheImagesAreCaught) {
   EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
   EXPECT_FALSE(std::filesystem::exists(Path("camera.points.csv")));
 
-  pose::CameraModel doubled = TrueCamera();  // the intrinsics of 1280 × 960 images, no size
+  pose::CameraModel doubled = RenderCamera();  // the intrinsics of 1280 × 960 images, no size
   doubled.fx *= 2.0;
   doubled.fy *= 2.0;
   doubled.cx = 2.0 * doubled.cx + 0.5;
@@ -467,7 +466,7 @@ TEST_F(DetectTest, IntrinsicsThatDoNotFitTheImagesAreCaught) {
   EXPECT_NE(run.err.find("(about 1280x960)"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(Path("camera.csv")));
 
-  pose::CameraModel swapped = TrueCamera();
+  pose::CameraModel swapped = RenderCamera();
   std::swap(swapped.cx, swapped.cy);
   run = DetectWith(images, swapped);
   ASSERT_EQ(run.code, 0) << run.err;
@@ -483,7 +482,7 @@ TEST_F(DetectTest, IntrinsicsThatDoNotFitTheImagesAreCaught) {
 // intrinsics given; a quarter turn is named.
 TEST_F(DetectTest, CameraSizeAgainstImageSize) {
   const std::string images = FirstViews(1);
-  pose::CameraModel large = TrueCamera();
+  pose::CameraModel large = RenderCamera();
   large.fx *= 2.0;
   large.fy *= 2.0;
   large.width = 1280;
@@ -496,7 +495,7 @@ TEST_F(DetectTest, CameraSizeAgainstImageSize) {
   EXPECT_NE(run.err.find("resized by 0.5000"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("fx 620.000, fy 622.000"), std::string::npos) << run.err;
 
-  pose::CameraModel turned = TrueCamera();
+  pose::CameraModel turned = RenderCamera();
   turned.width = 480;
   turned.height = 640;
   run = DetectWith(images, turned);

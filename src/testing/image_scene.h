@@ -66,13 +66,7 @@ inline std::vector<Eigen::Vector3d> GridPoints(const GridOptions& grid) {
 // 640 × 480 px, f ≈ 800 px, the principal point a little off-centre, mild radial and
 // tangential distortion.
 inline pose::CameraModel DefaultCamera() {
-  return {.fx = 800.0,
-          .fy = 805.0,
-          .cx = 321.0,
-          .cy = 238.0,
-          .width = 640,
-          .height = 480,
-          .distortion = {-0.12, 0.08, 0.0005, -0.0003, 0.0}};
+  return {800.0, 805.0, 321.0, 238.0, 640, 480, {-0.12, 0.08, 0.0005, -0.0003, 0.0}};
 }
 
 // The stations of the default scene (see the header): testing/scene.h's options with a 0.4 m

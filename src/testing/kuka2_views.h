@@ -13,28 +13,24 @@
 #include "hecal/geometry/so3.h"
 #include "hecal/geometry/types.h"
 #include "hecal/vision/detection.h"
+#include "testing/detection_errors.h"
 #include "testing/kuka2_scene.h"
-#include "testing/render_views.h"
+#include "testing/rendered_scene.h"
 
 namespace hecal::vision::kuka2 {
 
 inline pose::TargetSpec Target() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = 24;
-  target.rows = 17;
-  target.square = 0.015;
-  return target;
+  return hecal::testing::Chessboard(24, 17, 0.015);
 }
 
 inline pose::CameraModel Camera() {
-  return {.fx = 1056.2855,
-          .fy = 1056.4172,
-          .cx = 958.7994,
-          .cy = 586.9487,
-          .width = 1920,
-          .height = 1200,
-          .distortion = {-0.131337, 0.099230, 0.000133, 0.000312, -0.049132}};
+  return {1056.2855,
+          1056.4172,
+          958.7994,
+          586.9487,
+          1920,
+          1200,
+          {-0.131337, 0.099230, 0.000133, 0.000312, -0.049132}};
 }
 
 // SOURCE.md's reference X = T_gripper_camera (OpenCV PARK, confirmed by four other methods).
@@ -71,7 +67,7 @@ inline Views Load(const std::vector<int>& numbers) {
     views.T_base_gripper.push_back(robot[static_cast<size_t>(number - 1)]);
     views.T_camera_target.push_back(
         views.detections.back().usable()
-            ? test_views::OpenCvPose(views.detections.back(), Target(), Camera())
+            ? hecal::testing::OpenCvPose(views.detections.back(), Target(), Camera())
             : Pose::Identity());
   }
   return views;

@@ -14,13 +14,7 @@
 namespace hecal::testing {
 
 inline pose::CameraModel SceneCamera() {
-  return {.fx = 1000.0,
-          .fy = 995.0,
-          .cx = 641.5,
-          .cy = 478.0,
-          .width = 1280,
-          .height = 960,
-          .distortion = {-0.08, 0.05, 4e-4, -3e-4, 0.0}};
+  return {1000.0, 995.0, 641.5, 478.0, 1280, 960, {-0.08, 0.05, 4e-4, -3e-4, 0.0}};
 }
 
 // `points` object points of `shape` seen by `camera`, drawn from `rng` (image_scene.h's

@@ -1,5 +1,5 @@
 // Test support (not installed): a GoogleTest fixture for suites that read rendered images
-// (testing/rendered_views.h). The images are rendered once per test suite, into a folder of
+// (testing/rendered_scene.h). The images are rendered once per test suite, into a folder of
 // their own in the system's temporary directory, and removed after the suite's last test:
 //   <temp>/hecal_<Suite::kRenderFolder>_<process id>
 // The process id keeps test processes that run at the same time (ctest -j) apart.

@@ -1,7 +1,7 @@
 // Test support for the vision tests: camera poses that look at a planar board (its points:
-// testing/image_scene.h, GridPoints) from chosen directions, and pixels projected with OpenCV's own
-// plumb_bob model (cv::projectPoints, the reference for pose/camera_model.h), optionally with
-// Gaussian pixel noise.
+// testing/image_scene.h, GridPoints) from chosen directions (testing/rendered_scene.h's LookAt),
+// and pixels projected with OpenCV's own plumb_bob model (cv::projectPoints, the reference for
+// pose/camera_model.h), optionally with Gaussian pixel noise.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -11,25 +11,11 @@
 
 #include "hecal/geometry/types.h"
 #include "hecal/pose/camera_model.h"
+#include "testing/rendered_scene.h"
 
 namespace hecal::vision::testing {
 
-// T_camera_target of a camera at `eye` (target frame) looking at `centre`, its x axis kept
-// perpendicular to the target's y axis, then turned by `pan` (radians, about the camera's own x
-// and y axes) so the target moves across the image. The target frame's z points into the board,
-// so a camera on the board's front side sits at negative z.
-inline Pose LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& centre,
-                   const Eigen::Vector2d& pan = Eigen::Vector2d::Zero()) {
-  const Eigen::Vector3d z = (centre - eye).normalized();
-  const Eigen::Vector3d x = Eigen::Vector3d::UnitY().cross(z).normalized();
-  Eigen::Matrix3d R_target_camera;
-  R_target_camera << x, z.cross(x), z;
-  const Pose T_target_camera = MakePose(R_target_camera, eye);
-  const Eigen::Matrix3d turn = (Eigen::AngleAxisd(pan.x(), Eigen::Vector3d::UnitX()) *
-                                Eigen::AngleAxisd(pan.y(), Eigen::Vector3d::UnitY()))
-                                   .toRotationMatrix();
-  return MakePose(turn, Eigen::Vector3d::Zero()) * T_target_camera.inverse();
-}
+using hecal::testing::LookAt;  // testing/rendered_scene.h
 
 inline std::vector<Eigen::Vector2d> Project(const std::vector<Eigen::Vector3d>& points,
                                             const Pose& T_camera_target,

@@ -12,8 +12,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "hecal/vision/detection.h"
+#include "testing/detection_errors.h"
 #include "testing/moveit_photos.h"
-#include "testing/render_views.h"
 
 namespace hecal::vision {
 namespace {
@@ -33,9 +33,9 @@ struct Expected {
 
 void CheckPose(const Detection& detection, const pose::TargetSpec& target,
                const pose::CameraModel& camera, double board_height, const Expected& expected) {
-  const Pose T = test_views::OpenCvPose(detection, target, camera);
+  const Pose T = hecal::testing::OpenCvPose(detection, target, camera);
   const Pose T_opencv46 = MakePose(so3::Exp(expected.rvec_opencv46), expected.t_opencv46);
-  const double rotation = test_views::RotationErrorDeg(T, T_opencv46);
+  const double rotation = hecal::testing::RotationErrorDeg(T, T_opencv46);
   const double translation = (T.translation() - T_opencv46.translation()).norm();
   std::cout << pose::TargetTypeName(target.type) << ": " << detection.message << "; vs OpenCV 4.6 "
             << rotation << " deg, " << translation * 1e3 << " mm\n";

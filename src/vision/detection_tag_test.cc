@@ -15,16 +15,17 @@
 
 #include "hecal/vision/detection.h"
 #include "hecal/vision/render.h"
-#include "testing/render_views.h"
+#include "testing/detection_errors.h"
+#include "testing/rendered_scene.h"
 
 namespace hecal::vision {
 namespace {
 
-using test_views::CompareWithTruth;
-using test_views::ProjectedTruth;
-using test_views::RotationErrorDeg;
-using test_views::TestCamera;
-using test_views::ViewPose;
+using hecal::testing::CompareWithTruth;
+using hecal::testing::DetectionCamera;
+using hecal::testing::FrontalView;
+using hecal::testing::ProjectedTruth;
+using hecal::testing::RotationErrorDeg;
 
 pose::TargetSpec AprilTag(int id) {
   pose::TargetSpec target;
@@ -63,30 +64,31 @@ class RenderDetectTag : public ::testing::TestWithParam<TagCase> {};
 // camera removes.
 TEST_P(RenderDetectTag, CornersAndPoseMatchTheTruth) {
   const TagCase& c = GetParam();
-  const pose::CameraModel camera = TestCamera();
-  const Pose T = ViewPose(c.target, c.distance, c.tilt_x_deg, c.tilt_y_deg, c.roll_deg);
+  const pose::CameraModel camera = DetectionCamera();
+  const Pose T = FrontalView(c.target, c.distance, c.tilt_x_deg, c.tilt_y_deg, c.roll_deg);
   RenderOptions render;
   render.blur_sigma = 0.7;
   const cv::Mat image = RenderTarget(c.target, camera, T, render);
-  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(c.target, camera, T);
+  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(c.target, camera, T).pixels;
   const Detection detection = DetectTarget(image, c.target, {}, camera);
   ASSERT_EQ(detection.status, DetectionStatus::kFound) << detection.message;
   ASSERT_EQ(detection.num_points(), 4);
   EXPECT_EQ(detection.total_points, 4);
   for (int k = 0; k < 4; ++k) EXPECT_EQ(detection.points[static_cast<size_t>(k)].id, k);
-  const test_views::PixelErrors errors = CompareWithTruth(detection, truth);
-  const Pose pnp = test_views::OpenCvPose(detection, c.target, camera);
+  const hecal::testing::PixelErrors errors = CompareWithTruth(detection, truth);
+  const Pose pnp = hecal::testing::OpenCvPose(detection, c.target, camera);
   const double rotation = RotationErrorDeg(pnp, T);
   const double translation = (pnp.translation() - T.translation()).norm();
 
   const Detection without = DetectTarget(image, c.target);
   ASSERT_EQ(without.status, DetectionStatus::kFound) << without.message;
-  const double outward = test_views::MeanOutwardOffset(without, truth);
+  const double outward = hecal::testing::MeanOutwardOffset(without, truth);
   std::cout << c.name << ": max " << errors.max << " px, outward "
-            << test_views::MeanOutwardOffset(detection, truth) << " px; pose " << rotation
+            << hecal::testing::MeanOutwardOffset(detection, truth) << " px; pose " << rotation
             << " deg, " << translation * 1e3 << " mm; without the camera: max "
             << CompareWithTruth(without, truth).max << " px, outward " << outward << " px, pose "
-            << (test_views::OpenCvPose(without, c.target, camera).translation() - T.translation())
+            << (hecal::testing::OpenCvPose(without, c.target, camera).translation() -
+                T.translation())
                        .norm() *
                    1e3
             << " mm\n";
@@ -119,14 +121,14 @@ struct DetectionsDeleter {
 // point is cx + 0.5; it models no distortion, so the camera has none. Agreement within 0.5° and
 // 1 mm (libapriltag's corners are not refined; measured: printed).
 TEST(DetectTag, FrameIsLibapriltagsTagFrame) {
-  pose::CameraModel camera = TestCamera();
+  pose::CameraModel camera = DetectionCamera();
   camera.distortion = {0.0, 0.0, 0.0, 0.0, 0.0};
   const pose::TargetSpec target = AprilTag(5);
-  const Pose T = ViewPose(target, 0.4, 20.0, -25.0, 35.0);
+  const Pose T = FrontalView(target, 0.4, 20.0, -25.0, 35.0);
   RenderOptions render;
   render.blur_sigma = 0.7;
   const cv::Mat image = RenderTarget(target, camera, T, render);
-  const Pose ours = test_views::OpenCvPose(DetectTarget(image, target), target, camera);
+  const Pose ours = hecal::testing::OpenCvPose(DetectTarget(image, target), target, camera);
 
   apriltag_family_t* family = tag36h11_create();
   const std::unique_ptr<apriltag_detector_t, DetectorDeleter> detector(apriltag_detector_create());
@@ -163,9 +165,9 @@ TEST(DetectTag, FrameIsLibapriltagsTagFrame) {
 // OpenCV 4.6's estimatePoseSingleMarkers on hecal's detected corners returns the same position
 // and the orientation turned half a turn about x: T_opencv = T_hecal · diag(1, −1, −1).
 TEST(DetectTag, OpenCvSingleMarkerPoseIsTurnedAboutX) {
-  const pose::CameraModel camera = TestCamera();
+  const pose::CameraModel camera = DetectionCamera();
   const pose::TargetSpec target = ArucoTag(12);
-  const Pose T = ViewPose(target, 0.3, -10.0, 30.0, -20.0);
+  const Pose T = FrontalView(target, 0.3, -10.0, 30.0, -20.0);
   RenderOptions render;
   render.blur_sigma = 0.7;
   const Detection detection = DetectTarget(RenderTarget(target, camera, T, render), target);
@@ -193,7 +195,7 @@ TEST(DetectTag, OpenCvSingleMarkerPoseIsTurnedAboutX) {
 // the other ids are named as ignored. An id not in view is not found, and the message says which
 // ids were.
 TEST(DetectTag, OtherTagsInViewAreIgnored) {
-  const pose::CameraModel camera = TestCamera();
+  const pose::CameraModel camera = DetectionCamera();
   pose::TargetSpec grid;
   grid.type = pose::TargetType::kAprilTagGrid;
   grid.cols = 5;
@@ -202,7 +204,7 @@ TEST(DetectTag, OtherTagsInViewAreIgnored) {
   grid.spacing = 0.012;
   grid.family = "tag36h11";
   grid.first_id = 3;
-  const Pose T = ViewPose(grid, 0.5, -15.0, 10.0, 20.0);
+  const Pose T = FrontalView(grid, 0.5, -15.0, 10.0, 20.0);
   RenderOptions render;
   render.blur_sigma = 0.7;
   const cv::Mat image = RenderTarget(grid, camera, T, render);
@@ -212,7 +214,7 @@ TEST(DetectTag, OtherTagsInViewAreIgnored) {
   ASSERT_EQ(detection.status, DetectionStatus::kFound) << detection.message;
   EXPECT_NE(detection.message.find("ignored: 3 4 5 6 7 8 9 11"), std::string::npos)
       << detection.message;
-  const std::vector<Eigen::Vector2d> grid_truth = ProjectedTruth(grid, camera, T);
+  const std::vector<Eigen::Vector2d> grid_truth = ProjectedTruth(grid, camera, T).pixels;
   for (const ImagePoint& p : detection.points) {
     EXPECT_LT((p.pixel - grid_truth[static_cast<size_t>(4 * 7 + p.id)]).norm(), 0.1) << p.id;
   }

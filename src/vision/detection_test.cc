@@ -14,15 +14,16 @@
 
 #include "hecal/core/error.h"
 #include "hecal/vision/render.h"
-#include "testing/render_views.h"
+#include "testing/detection_errors.h"
+#include "testing/rendered_scene.h"
 
 namespace hecal::vision {
 namespace {
 
-using test_views::CompareWithTruth;
-using test_views::ProjectedTruth;
-using test_views::TestCamera;
-using test_views::ViewPose;
+using hecal::testing::CompareWithTruth;
+using hecal::testing::DetectionCamera;
+using hecal::testing::FrontalView;
+using hecal::testing::ProjectedTruth;
 
 pose::TargetSpec Chessboard() {
   pose::TargetSpec target;
@@ -96,7 +97,7 @@ bool IsCircleGrid(const pose::TargetSpec& target) {
 std::vector<Eigen::Vector2d> DetectorTruth(const pose::TargetSpec& target,
                                            const pose::CameraModel& camera, const Pose& T,
                                            const RenderOptions& render) {
-  if (!IsCircleGrid(target)) return ProjectedTruth(target, camera, T);
+  if (!IsCircleGrid(target)) return ProjectedTruth(target, camera, T).pixels;
   const std::vector<pose::ObjectPoint> points = pose::ObjectPoints(target);
   double spacing = std::numeric_limits<double>::infinity();
   for (const pose::ObjectPoint& a : points) {
@@ -106,8 +107,8 @@ std::vector<Eigen::Vector2d> DetectorTruth(const pose::TargetSpec& target,
   }
   std::vector<Eigen::Vector2d> centroids;
   for (const pose::ObjectPoint& point : points) {
-    centroids.push_back(
-        test_views::ImagedDiscCentroid(camera, T, point.position, render.circle_radius * spacing));
+    centroids.push_back(hecal::testing::ImagedDiscCentroid(camera, T, point.position,
+                                                           render.circle_radius * spacing));
   }
   return centroids;
 }
@@ -129,9 +130,9 @@ class RenderDetect : public ::testing::TestWithParam<ChainCase> {};
 // 0.004 / 0.009.
 TEST_P(RenderDetect, PointsAndPoseMatchTheTruth) {
   const ChainCase& c = GetParam();
-  const pose::CameraModel camera = TestCamera();
+  const pose::CameraModel camera = DetectionCamera();
   const Pose T_camera_target =
-      ViewPose(c.target, c.distance, c.tilt_x_deg, c.tilt_y_deg, c.roll_deg);
+      FrontalView(c.target, c.distance, c.tilt_x_deg, c.tilt_y_deg, c.roll_deg);
   RenderOptions render;
   render.blur_sigma = 0.7;
   const cv::Mat image = RenderTarget(c.target, camera, T_camera_target, render);
@@ -144,10 +145,10 @@ TEST_P(RenderDetect, PointsAndPoseMatchTheTruth) {
   ASSERT_EQ(detection.status, expected) << detection.message;
   EXPECT_EQ(detection.num_points(), pose::PointCount(c.target));
   EXPECT_EQ(detection.total_points, pose::PointCount(c.target));
-  const test_views::PixelErrors errors =
+  const hecal::testing::PixelErrors errors =
       CompareWithTruth(detection, DetectorTruth(c.target, camera, T_camera_target, render));
-  const Pose pnp = test_views::OpenCvPose(detection, c.target, camera);
-  const double rotation = test_views::RotationErrorDeg(pnp, T_camera_target);
+  const Pose pnp = hecal::testing::OpenCvPose(detection, c.target, camera);
+  const double rotation = hecal::testing::RotationErrorDeg(pnp, T_camera_target);
   const double translation = (pnp.translation() - T_camera_target.translation()).norm();
   std::cout << c.name << ": max " << errors.max << " px, rms " << errors.rms << " px; pose "
             << rotation << " deg, " << translation * 1e3 << " mm; sharpness " << detection.sharpness
@@ -175,31 +176,32 @@ INSTANTIATE_TEST_SUITE_P(
 // detector follows the imaged centroid instead.
 TEST(DetectTarget, CircleCentresAreImagedCentroidsNotProjectedCentres) {
   const pose::TargetSpec target = AsymmetricCircles();
-  const pose::CameraModel camera = TestCamera();
-  const Pose T = ViewPose(target, 0.45, 25.0, 0.0, 0.0);
+  const pose::CameraModel camera = DetectionCamera();
+  const Pose T = FrontalView(target, 0.45, 25.0, 0.0, 0.0);
   RenderOptions render;
   render.blur_sigma = 0.7;
   const Detection detection = DetectTarget(RenderTarget(target, camera, T, render), target);
   ASSERT_EQ(detection.status, DetectionStatus::kFound) << detection.message;
   const double to_centroids =
       CompareWithTruth(detection, DetectorTruth(target, camera, T, render)).rms;
-  const double to_projections = CompareWithTruth(detection, ProjectedTruth(target, camera, T)).rms;
+  const double to_projections =
+      CompareWithTruth(detection, ProjectedTruth(target, camera, T).pixels).rms;
   EXPECT_LT(to_centroids, 0.02);
   EXPECT_GT(to_projections, 0.04);
 }
 
 // Sensor noise (σ = 2 grey levels) and more blur (σ = 1.2 px): the points stay within 0.1 px RMS.
 TEST(DetectTarget, NoisyImagesStaySubPixel) {
-  const pose::CameraModel camera = TestCamera();
+  const pose::CameraModel camera = DetectionCamera();
   for (const pose::TargetSpec& target : {Chessboard(), Charuco(), ArucoGrid()}) {
-    const Pose T = ViewPose(target, 0.5, 15.0, 20.0, 5.0);
+    const Pose T = FrontalView(target, 0.5, 15.0, 20.0, 5.0);
     RenderOptions render;
     render.blur_sigma = 1.2;
     render.noise_sigma = 2.0;
     render.seed = 7;
     const Detection detection = DetectTarget(RenderTarget(target, camera, T, render), target);
     ASSERT_EQ(detection.status, DetectionStatus::kFound) << detection.message;
-    EXPECT_LT(CompareWithTruth(detection, ProjectedTruth(target, camera, T)).rms, 0.1)
+    EXPECT_LT(CompareWithTruth(detection, ProjectedTruth(target, camera, T).pixels).rms, 0.1)
         << pose::TargetTypeName(target.type);
   }
 }
@@ -207,32 +209,32 @@ TEST(DetectTarget, NoisyImagesStaySubPixel) {
 cv::Mat RenderAt(const pose::TargetSpec& target, const Pose& T) {
   RenderOptions render;
   render.blur_sigma = 0.7;
-  return RenderTarget(target, TestCamera(), T, render);
+  return RenderTarget(target, DetectionCamera(), T, render);
 }
 
 // Lens distortion bends straight edges (detection.h, "The camera"). Strong barrel distortion
 // (k1 = −0.3, k2 = 0.1), targets 0.35 m away: the mean outward offset of the points
-// (test_views::MeanOutwardOffset). Marker grids without the camera: corners on lines fitted in
+// (hecal::testing::MeanOutwardOffset). Marker grids without the camera: corners on lines fitted in
 // the distorted image, outward by 0.125–0.128 px (measured; asserted > 0.06); with it
 // −0.0013–−0.0004 px (asserted within ±0.01). Chessboard and ChArUco saddle corners, fitted with
 // quadratic edge curves, −0.002 and +0.0007 px (within ±0.01) without using the camera: their
 // points are the same with and without it.
 TEST(DetectTarget, TheCameraRemovesTheOutwardBiasOfMarkerCorners) {
-  pose::CameraModel camera = TestCamera();
+  pose::CameraModel camera = DetectionCamera();
   camera.distortion = {-0.3, 0.1, 0.0, 0.0, 0.0};
   RenderOptions render;
   render.blur_sigma = 0.7;
   for (const pose::TargetSpec& target : {ArucoGrid(), AprilTagGrid(), Chessboard(), Charuco()}) {
     const std::string name(pose::TargetTypeName(target.type));
-    const Pose T = ViewPose(target, 0.35, -15.0, 20.0, -25.0);
+    const Pose T = FrontalView(target, 0.35, -15.0, 20.0, -25.0);
     const cv::Mat image = RenderTarget(target, camera, T, render);
-    const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, camera, T);
+    const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, camera, T).pixels;
     const Detection with = DetectTarget(image, target, {}, camera);
     const Detection without = DetectTarget(image, target);
     ASSERT_TRUE(with.usable()) << with.message;
     ASSERT_TRUE(without.usable()) << without.message;
-    const double outward_with = test_views::MeanOutwardOffset(with, truth);
-    const double outward_without = test_views::MeanOutwardOffset(without, truth);
+    const double outward_with = hecal::testing::MeanOutwardOffset(with, truth);
+    const double outward_without = hecal::testing::MeanOutwardOffset(without, truth);
     std::cout << name << ": outward " << outward_with << " px with the camera, " << outward_without
               << " px without\n";
     EXPECT_LT(std::abs(outward_with), 0.01) << name;
@@ -255,9 +257,9 @@ TEST(DetectTarget, TheCameraRemovesTheOutwardBiasOfMarkerCorners) {
 // in pixels, exactly as without the camera, rather than left unrefined.
 TEST(DetectTarget, MarkersTheCameraCannotUndistortAreRefinedInPixels) {
   const pose::TargetSpec target = ArucoGrid();
-  const Pose T = ViewPose(target, 0.5, 10.0, -10.0, 5.0);
+  const Pose T = FrontalView(target, 0.5, 10.0, -10.0, 5.0);
   const cv::Mat image = RenderAt(target, T);
-  pose::CameraModel folded = TestCamera();
+  pose::CameraModel folded = DetectionCamera();
   folded.cx = -1000.0;
   folded.distortion = {-2.0, 0.0, 0.0, 0.0, 0.0};
   ASSERT_FALSE(pose::Undistort(folded, Eigen::Vector2d(0.0, 0.0)).has_value());
@@ -269,16 +271,16 @@ TEST(DetectTarget, MarkersTheCameraCannotUndistortAreRefinedInPixels) {
     EXPECT_EQ(with.points[static_cast<size_t>(k)].pixel,
               without.points[static_cast<size_t>(k)].pixel);
   }
-  EXPECT_LT(CompareWithTruth(with, ProjectedTruth(target, TestCamera(), T)).max, 0.1);
+  EXPECT_LT(CompareWithTruth(with, ProjectedTruth(target, DetectionCamera(), T).pixels).max, 0.1);
 }
 
 // Half of a ChArUco board hidden: a partial detection whose ids are exactly the visible
 // corners, each at its true position.
 TEST(DetectTarget, PartialCharucoReportsTheVisibleCornersWithTheirIds) {
   const pose::TargetSpec target = Charuco();
-  const Pose T = ViewPose(target, 0.45, 0.0, 0.0, 0.0);
+  const Pose T = FrontalView(target, 0.45, 0.0, 0.0, 0.0);
   cv::Mat image = RenderAt(target, T);
-  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, TestCamera(), T);
+  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, DetectionCamera(), T).pixels;
   const double cut = 0.5 * (truth[2].x() + truth[3].x());  // between corner columns 2 and 3
   image.colRange(static_cast<int>(cut), image.cols).setTo(cv::Scalar(235));
   const Detection detection = DetectTarget(image, target);
@@ -294,10 +296,10 @@ TEST(DetectTarget, PartialCharucoReportsTheVisibleCornersWithTheirIds) {
 
 TEST(DetectTarget, PartialDetectionsFollowTheOptions) {
   const pose::TargetSpec target = ArucoGrid();
-  const Pose T = ViewPose(target, 0.5, 0.0, 0.0, 0.0);
+  const Pose T = FrontalView(target, 0.5, 0.0, 0.0, 0.0);
   cv::Mat image = RenderAt(target, T);
   // Keep only the top-left marker (4 points).
-  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, TestCamera(), T);
+  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, DetectionCamera(), T).pixels;
   const int right = static_cast<int>(0.5 * (truth[1].x() + truth[4].x()));
   const int bottom = static_cast<int>(0.5 * (truth[3].y() + truth[4 * target.cols].y()));
   image.colRange(right, image.cols).setTo(cv::Scalar(235));
@@ -321,9 +323,9 @@ TEST(DetectTarget, PartialDetectionsFollowTheOptions) {
 TEST(DetectTarget, CollinearPartialDetectionIsRejected) {
   pose::TargetSpec target = Charuco();
   target.rows = 3;
-  const Pose T = ViewPose(target, 0.45, 0.0, 0.0, 0.0);
+  const Pose T = FrontalView(target, 0.45, 0.0, 0.0, 0.0);
   cv::Mat image = RenderAt(target, T);
-  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, TestCamera(), T);
+  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, DetectionCamera(), T).pixels;
   const int cut = static_cast<int>(truth[static_cast<size_t>(target.cols - 1)].y() + 8.0);
   image.rowRange(cut, image.rows).setTo(cv::Scalar(235));
   const Detection detection = DetectTarget(image, target);
@@ -335,9 +337,9 @@ TEST(DetectTarget, CollinearPartialDetectionIsRejected) {
 // dropped and named; the other markers are used.
 TEST(DetectTarget, RepeatedMarkerIdsAreDroppedAndNamed) {
   const pose::TargetSpec target = ArucoGrid();
-  const Pose T = ViewPose(target, 0.6, 0.0, 0.0, 0.0);
+  const Pose T = FrontalView(target, 0.6, 0.0, 0.0, 0.0);
   cv::Mat image = RenderAt(target, T);
-  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, TestCamera(), T);
+  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, DetectionCamera(), T).pixels;
   const int quiet = 12;  // px of white paper copied around the marker
   const cv::Rect marker(static_cast<int>(truth[0].x()) - quiet,
                         static_cast<int>(truth[0].y()) - quiet,
@@ -367,12 +369,13 @@ TEST(DetectTarget, EmptyBoardIsNotFoundWithAReason) {
 
 TEST(DetectTarget, ColourImagesAreConvertedToGrey) {
   const pose::TargetSpec target = Charuco();
-  const Pose T = ViewPose(target, 0.45, 10.0, 0.0, 0.0);
+  const Pose T = FrontalView(target, 0.45, 10.0, 0.0, 0.0);
   cv::Mat colour;
   cv::cvtColor(RenderAt(target, T), colour, cv::COLOR_GRAY2BGR);
   const Detection detection = DetectTarget(colour, target);
   ASSERT_EQ(detection.status, DetectionStatus::kFound) << detection.message;
-  EXPECT_LT(CompareWithTruth(detection, ProjectedTruth(target, TestCamera(), T)).max, 0.08);
+  EXPECT_LT(CompareWithTruth(detection, ProjectedTruth(target, DetectionCamera(), T).pixels).max,
+            0.08);
 }
 
 // Sharpness is an edge width: about 2.5σ for a Gaussian blur of σ px, for OpenCV's chessboard
@@ -380,13 +383,13 @@ TEST(DetectTarget, ColourImagesAreConvertedToGrey) {
 TEST(DetectTarget, SharpnessIsTheEdgeWidthInPixels) {
   for (const pose::TargetSpec& target :
        {Chessboard(), Charuco(), ArucoGrid(), AsymmetricCircles()}) {
-    const Pose T = ViewPose(target, 0.45, 10.0, -10.0, 5.0);
+    const Pose T = FrontalView(target, 0.45, 10.0, -10.0, 5.0);
     double previous = 0.0;
     for (const double sigma : {1.0, 2.0}) {
       RenderOptions render;
       render.blur_sigma = sigma;
       const Detection detection =
-          DetectTarget(RenderTarget(target, TestCamera(), T, render), target);
+          DetectTarget(RenderTarget(target, DetectionCamera(), T, render), target);
       ASSERT_TRUE(detection.usable()) << detection.message;
       std::cout << pose::TargetTypeName(target.type) << " σ " << sigma << ": sharpness "
                 << detection.sharpness << " px\n";
@@ -422,7 +425,7 @@ TEST(DetectTarget, RejectsUnusableInput) {
     ADD_FAILURE() << "no error";
     return std::string();
   };
-  pose::CameraModel camera = TestCamera();  // 800 x 600, the image is 640 x 480
+  pose::CameraModel camera = DetectionCamera();  // 800 x 600, the image is 640 x 480
   EXPECT_NE(camera_error(camera).find("for 800x600 images but the image is 640x480"),
             std::string::npos);
   camera.width = camera.height = 0;

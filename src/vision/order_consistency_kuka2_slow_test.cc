@@ -35,7 +35,7 @@ TEST(Kuka2, AllViewsFoundInOneConsistentOrder) {
   for (size_t k = 1; k < views.detections.size(); ++k) {
     const Pose T = kuka2::BaseTarget(views, k);
     const double translation = (T.translation() - reference.translation()).norm();
-    const double rotation = test_views::RotationErrorDeg(T, reference);
+    const double rotation = hecal::testing::RotationErrorDeg(T, reference);
     EXPECT_LT(translation, 0.003) << "im_" << views.numbers[k];
     EXPECT_LT(rotation, 0.3) << "im_" << views.numbers[k];
     worst_translation = std::max(worst_translation, translation);

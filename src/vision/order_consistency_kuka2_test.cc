@@ -20,7 +20,7 @@ TEST(Kuka2, FirstAndLastViewsGetTheSameCorners) {
   }
   const Pose a = kuka2::BaseTarget(views, 0), b = kuka2::BaseTarget(views, 1);
   EXPECT_LT((a.translation() - b.translation()).norm(), 0.003);
-  EXPECT_LT(test_views::RotationErrorDeg(a, b), 0.3);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(a, b), 0.3);
 }
 
 }  // namespace

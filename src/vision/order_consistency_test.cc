@@ -10,15 +10,16 @@
 
 #include "hecal/core/error.h"
 #include "hecal/vision/render.h"
-#include "testing/render_views.h"
+#include "testing/detection_errors.h"
+#include "testing/rendered_scene.h"
 
 namespace hecal::vision {
 namespace {
 
-using test_views::CompareWithTruth;
-using test_views::ProjectedTruth;
-using test_views::TestCamera;
-using test_views::ViewPose;
+using hecal::testing::CompareWithTruth;
+using hecal::testing::DetectionCamera;
+using hecal::testing::FrontalView;
+using hecal::testing::ProjectedTruth;
 
 pose::TargetSpec Chessboard(int cols, int rows) {
   pose::TargetSpec target;
@@ -41,7 +42,7 @@ pose::TargetSpec SymmetricCircles() {
 cv::Mat Render(const pose::TargetSpec& target, const Pose& T) {
   RenderOptions render;
   render.blur_sigma = 0.7;
-  return RenderTarget(target, TestCamera(), T, render);
+  return RenderTarget(target, DetectionCamera(), T, render);
 }
 
 std::vector<cv::Point2f> ToGrid(const std::vector<Eigen::Vector2d>& pixels) {
@@ -65,9 +66,9 @@ double GridError(const std::vector<cv::Point2f>& grid, const std::vector<Eigen::
 TEST(CanonicalGridOrder, ChessboardWithOddSumIsUniqueFromAnyStartingCorner) {
   const pose::TargetSpec target = Chessboard(9, 6);
   for (const double roll : {0.0, 75.0, 160.0, 250.0}) {
-    const Pose T = ViewPose(target, 0.45, 15.0, -10.0, roll);
+    const Pose T = FrontalView(target, 0.45, 15.0, -10.0, roll);
     const cv::Mat image = Render(target, T);
-    const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, TestCamera(), T);
+    const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, DetectionCamera(), T).pixels;
     const std::vector<cv::Point2f> canonical = ToGrid(truth);
     std::vector<std::vector<cv::Point2f>> labellings(4, canonical);
     std::reverse(labellings[1].begin(), labellings[1].end());
@@ -91,8 +92,8 @@ TEST(CanonicalGridOrder, ChessboardWithOddSumIsUniqueFromAnyStartingCorner) {
 // Without readable square colours (a flat image) the rule does not guess: symmetric.
 TEST(CanonicalGridOrder, UnreadableColoursAreNotGuessed) {
   const pose::TargetSpec target = Chessboard(9, 6);
-  const Pose T = ViewPose(target, 0.45, 0.0, 0.0, 0.0);
-  std::vector<cv::Point2f> grid = ToGrid(ProjectedTruth(target, TestCamera(), T));
+  const Pose T = FrontalView(target, 0.45, 0.0, 0.0, 0.0);
+  std::vector<cv::Point2f> grid = ToGrid(ProjectedTruth(target, DetectionCamera(), T).pixels);
   const cv::Mat flat(600, 800, CV_8U, cv::Scalar(128));
   EXPECT_EQ(CanonicalGridOrder(flat, target, &grid), GridOrder::kSymmetric);
 }
@@ -111,7 +112,7 @@ TEST(CanonicalGridOrder, DegenerateGridsAreInvalid) {
 // moves to (W − 1 − u, H − 1 − v)), whichever corner the detector starts from.
 TEST(DetectTarget, ChessboardTurnedInThePlaneKeepsItsIds) {
   const pose::TargetSpec target = Chessboard(9, 6);
-  const Pose T = ViewPose(target, 0.45, 15.0, -10.0, 8.0);
+  const Pose T = FrontalView(target, 0.45, 15.0, -10.0, 8.0);
   const cv::Mat image = Render(target, T);
   cv::Mat turned;
   cv::rotate(image, turned, cv::ROTATE_180);
@@ -120,7 +121,7 @@ TEST(DetectTarget, ChessboardTurnedInThePlaneKeepsItsIds) {
   ASSERT_EQ(upright.status, DetectionStatus::kFound) << upright.message;
   ASSERT_EQ(half_turn.status, DetectionStatus::kFound) << half_turn.message;
   EXPECT_EQ(half_turn.order, PointOrder::kPattern);
-  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, TestCamera(), T);
+  const std::vector<Eigen::Vector2d> truth = ProjectedTruth(target, DetectionCamera(), T).pixels;
   std::vector<Eigen::Vector2d> turned_truth;
   for (const Eigen::Vector2d& p : truth) {
     turned_truth.emplace_back(image.cols - 1 - p.x(), image.rows - 1 - p.y());
@@ -145,9 +146,9 @@ ViewSet SymmetricViews(const pose::TargetSpec& target, const std::vector<double>
   ViewSet set;
   for (size_t k = 0; k < rolls.size(); ++k) {
     const Pose T =
-        ViewPose(target, 0.5, k % 2 == 0 ? 12.0 : -8.0, k % 3 == 0 ? -10.0 : 6.0, rolls[k]);
+        FrontalView(target, 0.5, k % 2 == 0 ? 12.0 : -8.0, k % 3 == 0 ? -10.0 : 6.0, rolls[k]);
     set.detections.push_back(DetectTarget(Render(target, T), target));
-    set.truth.push_back(ProjectedTruth(target, TestCamera(), T));
+    set.truth.push_back(ProjectedTruth(target, DetectionCamera(), T).pixels);
     set.R_base_gripper.push_back((Z * T.inverse() * X.inverse()).linear());
   }
   return set;
@@ -201,7 +202,7 @@ TEST(ResolveOrder, RobotRuleOrdersAnyRoll) {
   const pose::TargetSpec target = Chessboard(8, 6);
   ViewSet set = SymmetricViews(target, {0.0, 90.0, 180.0, 270.0, 135.0});
   OrderOptions options;
-  options.camera = TestCamera();
+  options.camera = DetectionCamera();
   options.R_base_gripper = set.R_base_gripper;
   const OrderReport report = ResolveOrder(target, options, &set.detections);
   EXPECT_TRUE(report.ambiguous.empty());
@@ -214,7 +215,7 @@ TEST(ResolveOrder, RobotRuleRefusesRotationsThatDoNotFit) {
   const pose::TargetSpec target = Chessboard(8, 6);
   ViewSet set = SymmetricViews(target, {0.0, 90.0, 180.0});
   OrderOptions options;
-  options.camera = TestCamera();
+  options.camera = DetectionCamera();
   for (size_t k = 0; k < set.detections.size(); ++k) {
     options.R_base_gripper.push_back(
         so3::Exp(Eigen::Vector3d(0.0, 0.0, 0.7 * static_cast<double>(k))));
@@ -237,7 +238,7 @@ TEST(ResolveOrder, SymmetricCircleGridsToo) {
 TEST(ResolveOrder, LeavesUniquelyOrderedDetectionsAlone) {
   const pose::TargetSpec target = Chessboard(9, 6);
   std::vector<Detection> detections = {
-      DetectTarget(Render(target, ViewPose(target, 0.45, 0.0, 0.0, 170.0)), target)};
+      DetectTarget(Render(target, FrontalView(target, 0.45, 0.0, 0.0, 170.0)), target)};
   const std::vector<Detection> before = detections;
   const OrderReport report = ResolveOrder(target, {}, &detections);
   EXPECT_EQ(report.reference, -1);
@@ -253,7 +254,7 @@ TEST(ResolveOrder, RejectsInconsistentOptions) {
   OrderOptions options;
   options.R_base_gripper.assign(2, Eigen::Matrix3d::Identity());
   EXPECT_THROW(ResolveOrder(target, options, &detections), InputError);  // no camera
-  options.camera = TestCamera();
+  options.camera = DetectionCamera();
   options.R_base_gripper.assign(3, Eigen::Matrix3d::Identity());
   EXPECT_THROW(ResolveOrder(target, options, &detections), InputError);  // count
   options = {};

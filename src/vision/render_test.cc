@@ -8,7 +8,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "hecal/core/error.h"
-#include "testing/render_views.h"
+#include "testing/detection_errors.h"
+#include "testing/rendered_scene.h"
 
 namespace hecal::vision {
 namespace {
@@ -114,11 +115,11 @@ TEST(RenderTarget, ImagedBlackAreaEqualsProjectedArea) {
   target.cols = 3;
   target.rows = 2;
   target.square = 0.06;
-  pose::CameraModel camera = test_views::TestCamera();
+  pose::CameraModel camera = hecal::testing::DetectionCamera();
   camera.distortion = {0.0, 0.0, 0.0, 0.0, 0.0};  // straight edges: the squares are quadrilaterals
   const double s = target.square;
-  for (const Pose& T : {test_views::ViewPose(target, 0.5, 0.0, 0.0, 0.0),
-                        test_views::ViewPose(target, 0.5, -15.0, 20.0, -25.0)}) {
+  for (const Pose& T : {hecal::testing::FrontalView(target, 0.5, 0.0, 0.0, 0.0),
+                        hecal::testing::FrontalView(target, 0.5, -15.0, 20.0, -25.0)}) {
     RenderOptions options;
     options.black = 0.0;
     options.white = 255.0;
@@ -161,8 +162,8 @@ TEST(RenderTarget, CirclesHaveTheirProjectedArea) {
   target.cols = 3;
   target.rows = 2;
   target.square = 0.1;
-  pose::CameraModel camera = test_views::TestCamera();
-  const Pose T = test_views::ViewPose(target, 0.6, 20.0, 0.0, 0.0);
+  pose::CameraModel camera = hecal::testing::DetectionCamera();
+  const Pose T = hecal::testing::FrontalView(target, 0.6, 20.0, 0.0, 0.0);
   RenderOptions options;
   options.black = 0.0;
   options.white = 255.0;
@@ -195,16 +196,18 @@ TEST(RenderTarget, NoiseIsGaussianAndSeeded) {
   RenderOptions options;
   options.noise_sigma = 4.0;
   options.background = 100.0;
-  const cv::Mat a = RenderTarget(target, test_views::TestCamera(), away, options);
+  const cv::Mat a = RenderTarget(target, hecal::testing::DetectionCamera(), away, options);
   cv::Scalar mean, deviation;
   cv::meanStdDev(a, mean, deviation);
   EXPECT_NEAR(mean[0], 100.0, 0.1);
   EXPECT_NEAR(deviation[0], std::sqrt(16.0 + 1.0 / 12.0), 0.1);  // plus 8-bit rounding
-  EXPECT_EQ(cv::countNonZero(a != RenderTarget(target, test_views::TestCamera(), away, options)),
-            0);
+  EXPECT_EQ(
+      cv::countNonZero(a != RenderTarget(target, hecal::testing::DetectionCamera(), away, options)),
+      0);
   options.seed = 2;
-  EXPECT_GT(cv::countNonZero(a != RenderTarget(target, test_views::TestCamera(), away, options)),
-            0);
+  EXPECT_GT(
+      cv::countNonZero(a != RenderTarget(target, hecal::testing::DetectionCamera(), away, options)),
+      0);
 }
 
 TEST(RenderTarget, RejectsImpossibleRequests) {
@@ -213,10 +216,10 @@ TEST(RenderTarget, RejectsImpossibleRequests) {
   target.cols = 5;
   target.rows = 4;
   target.square = 0.02;
-  const pose::CameraModel camera = test_views::TestCamera();
+  const pose::CameraModel camera = hecal::testing::DetectionCamera();
   const Pose behind = MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, -0.5));
   EXPECT_THROW(RenderTarget(target, camera, behind), InputError);
-  const Pose in_front = test_views::ViewPose(target, 0.5, 0.0, 0.0, 0.0);
+  const Pose in_front = hecal::testing::FrontalView(target, 0.5, 0.0, 0.0, 0.0);
   RenderOptions options;
   options.circle_radius = 0.6;
   EXPECT_THROW(RenderTarget(target, camera, in_front, options), InputError);
@@ -231,7 +234,7 @@ TEST(RenderTarget, RejectsImpossibleRequests) {
   tags.marker = 0.05;
   tags.spacing = 0.001;
   tags.family = "tagStandard41h12";
-  EXPECT_THROW(RenderTarget(tags, camera, test_views::ViewPose(tags, 0.5, 0.0, 0.0, 0.0)),
+  EXPECT_THROW(RenderTarget(tags, camera, hecal::testing::FrontalView(tags, 0.5, 0.0, 0.0, 0.0)),
                InputError);
   pose::TargetSpec bad = target;
   bad.square = -1.0;
