@@ -227,6 +227,13 @@ struct NoiseEstimate {
   int iterations = 0;             // variance iterations (0 if none estimated)
   bool richer = false;            // a richer model (above) was chosen
   double likelihood_ratio = 0.0;  // 2 (ℓ_R(rich) − ℓ_R(isotropic)): the chosen or the largest
+  // Heavy tails (student_t.h; set by ml): ν of the Student-t model when it was chosen, else 0,
+  // and then `variances` are its scale; station_scale[i] multiplies station i's covariance
+  // (κ_ν / w_i; empty: 1 everywhere). student_t_ratio: its likelihood-ratio statistic against
+  // the Gaussian model (also when not chosen; 0 when not tried).
+  double student_t_dof = 0.0;
+  std::vector<double> station_scale;
+  double student_t_ratio = 0.0;
 
   PoseSigma robot() const;
   PoseSigma camera() const;
