@@ -118,6 +118,16 @@
 // three more REML fits per estimate (`hecal simulate --stations 2000 --trials 2 --method ml
 // --estimate-noise`: 4.3 s before, 7.2 s with them, one thread).
 //
+// Heavy tails (student_t.h; fitted by ml, ml.h, on top of the model chosen here). The models
+// above are Gaussian. Heavy-tailed noise (Student-t(3) per pose component: README "Uncertainty",
+// (c)) is taken by a multivariate Student-t model of the station residuals, a Gaussian scale
+// mixture on these same variance components: given the EM weights w_i, EstimateNoise runs
+// unchanged on the components Q_ik / w_i and returns the t model's scale; ν by profile
+// likelihood, kept only when the boundary likelihood-ratio test prefers it at 5%.
+// NoiseEstimate::student_t_dof and station_scale carry it. The collapse rules above apply as
+// they are: the posterior mean of each scale variance, the ν_g > 2 eligibility of the richer
+// models (both on the weighted components).
+//
 // Outlier test (Baarda's data snooping, multivariate form). Station i's statistic is
 //   included:  T_i = r̂_iᵀ C_i⁺ r̂_i,  C_i = Σ_i − J_i N⁻¹ J_iᵀ  (its residual covariance)
 //   excluded:  T_i = r̂_iᵀ (Σ_i + J_i N⁻¹ J_iᵀ)⁻¹ r̂_i   (prediction from the other stations)

@@ -28,8 +28,9 @@
 // statistic 2 (max_ν ℓ_t − ℓ_G) has the null distribution ½ χ²₀ + ½ χ²₁ (Self & Liang, "Asymptotic
 // properties of maximum likelihood estimators and likelihood ratio tests under nonstandard
 // conditions", JASA 82, 1987, case 5); at 5% the threshold is the χ²₁ 90% quantile, 2.706
-// (kStudentTThreshold). On Gaussian data the t model is then chosen in about 5% of data sets (the
-// ν = ∞ boundary of a grid ending at 30 makes it a little fewer).
+// (kStudentTThreshold). Measured on distances drawn exactly from the models (1000 sets each,
+// student_t_test.cc): Gaussian sets of 8, 15 and 40 stations choose the t model in 1.9%, 2.0%
+// and 1.7% — fewer than 5%, because the grid ends at ν = 30 — and t(3) sets in 66%, 90%, 100%.
 //
 // Covariance. The Fisher information of the location of a t_d(0, S, ν) observation is
 // (ν + d)/(ν + d + 2) S⁻¹ (Lange et al. 1989, appendix): the weights' own randomness costs
