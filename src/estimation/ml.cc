@@ -10,7 +10,6 @@
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/station_covariance.h"
 #include "hecal/estimation/student_t.h"
-#include "hecal/uncertainty/consistency.h"
 #include "loop_solver.h"
 #include "multi_start.h"
 
@@ -174,22 +173,6 @@ std::vector<double> MahalanobisDistances(const std::vector<StationLinearization>
   return q;
 }
 
-// The station test under the t model (student_t.h, "What is an outlier"): the statistic at the
-// scale S_i, judged against the 3σ level of d F(d, ν) when that is above the χ² one.
-std::vector<StationTest> TestUnderStudentT(const std::vector<StationLinearization>& stations,
-                                           const NoiseVariances& scale, double dof) {
-  std::vector<StationTest> tests =
-      TestStations(stations, std::vector<bool>(stations.size(), true), scale);
-  const double p = 1.0 - kThreeSigmaFalseAlarm;
-  for (StationTest& test : tests) {
-    if (test.dof <= 0) continue;
-    test.threshold =
-        std::max(test.threshold, test.dof * uncertainty::FisherQuantile(p, test.dof, dof));
-    test.outlier = test.statistic > test.threshold;
-  }
-  return tests;
-}
-
 }  // namespace
 
 bool MlOptions::IsValid(std::string* why) const {
@@ -275,7 +258,8 @@ void FitHeavyTails(const handeye::Problem& problem, const MlOptions& options, Ml
   CheckStations(problem, options);
   const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
   const size_t n = problem.A.size();
-  if (!spec.AnyEstimated() || n < kStudentTMinStations ||
+  // Both sides estimated only: a station's latent scale would rescale a given sigma too.
+  if (options.robot_sigma || options.camera_sigma || n < kStudentTMinStations ||
       options.robust_loss != RobustLoss::kNone) {
     return;
   }
@@ -314,8 +298,8 @@ void FitHeavyTails(const handeye::Problem& problem, const MlOptions& options, Ml
     best = solver.Solve(best, noise.variances);
     if (change < kNoiseTolerance) break;
   }
-  noise.stations =
-      TestUnderStudentT(LinearizeStations(problem, best.X, best.Z), noise.variances, choice.dof);
+  // The outlier flags stay the Gaussian fit's (student_t.h, "What is an outlier").
+  noise.stations = std::move(ml->noise.stations);
   noise.student_t_dof = choice.dof;
   noise.student_t_ratio = choice.likelihood_ratio;
   noise.station_scale = std::move(station_scale);
