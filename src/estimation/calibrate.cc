@@ -38,17 +38,25 @@ std::string SigmaText(const PoseSigma& sigma) {
   return Format("%.3g deg, %.3g mm", sigma.rotation * kRadToDeg, sigma.translation * 1e3);
 }
 
-// The richer noise model of the result (noise_estimation.h), for the noise warning; empty when
-// the isotropic model was kept.
+// The richer and the heavy-tailed noise model of the result (noise_estimation.h, student_t.h),
+// for the noise warning; empty when the isotropic Gaussian model was kept.
 std::string RicherModelText(const NoiseEstimate& noise) {
-  if (!noise.richer) return {};
-  std::string text =
-      "; the residuals chose a richer model than isotropic noise (likelihood ratio " +
-      Format("%.3g", noise.likelihood_ratio, 0.0) + ")";
-  const PoseSigma excess = noise.camera_excess();
-  if (excess.rotation > 0.0 || excess.translation > 0.0)
-    text += ": the camera has an excess of " + SigmaText(excess) +
-            " in tilt (about its x, y) and depth (along its z)";
+  std::string text;
+  if (noise.richer) {
+    text = "; the residuals chose a richer model than isotropic noise (likelihood ratio " +
+           Format("%.3g", noise.likelihood_ratio, 0.0) + ")";
+    const PoseSigma excess = noise.camera_excess();
+    if (excess.rotation > 0.0 || excess.translation > 0.0)
+      text += ": the camera has an excess of " + SigmaText(excess) +
+              " in tilt (about its x, y) and depth (along its z)";
+  }
+  if (noise.student_t_dof > 0.0) {
+    text += "; the residuals are heavy-tailed: a Student-t model with " +
+            Format("%.3g", noise.student_t_dof, 0.0) +
+            " degrees of freedom was chosen over the Gaussian (likelihood ratio " +
+            Format("%.3g", noise.student_t_ratio, 0.0) +
+            "), the sigmas are its scale and stations far out are down-weighted";
+  }
   return text;
 }
 
@@ -58,12 +66,17 @@ StationNoise ResultStationNoise(const handeye::Problem& problem, const Calibrati
   StationNoise noise =
       StationNoise::Uniform(problem.A.size(), result.robot_sigma, result.camera_sigma);
   const NoiseVariances excess = Variances({}, {}, result.camera_excess);
-  if (excess[kCameraTiltExcess] == 0.0 && excess[kCameraDepthExcess] == 0.0) return noise;
-  for (size_t i = 0; i < problem.A.size(); ++i) {
-    const NoiseComponents Q =
-        StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], result.X);
-    noise.camera[i] += excess[kCameraTiltExcess] * Q[kCameraTiltExcess] +
-                       excess[kCameraDepthExcess] * Q[kCameraDepthExcess];
+  if (excess[kCameraTiltExcess] != 0.0 || excess[kCameraDepthExcess] != 0.0) {
+    for (size_t i = 0; i < problem.A.size(); ++i) {
+      const NoiseComponents Q =
+          StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], result.X);
+      noise.camera[i] += excess[kCameraTiltExcess] * Q[kCameraTiltExcess] +
+                         excess[kCameraDepthExcess] * Q[kCameraDepthExcess];
+    }
+  }
+  for (size_t i = 0; i < result.station_scale.size(); ++i) {
+    noise.robot[i] *= result.station_scale[i];
+    noise.camera[i] *= result.station_scale[i];
   }
   return noise;
 }
@@ -200,8 +213,10 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     const bool reuse = selection.fit && loss == RobustLoss::kNone &&
                        SameSigma(selection.fit_robot_sigma, options.robot_sigma) &&
                        SameSigma(selection.fit_camera_sigma, options.camera_sigma);
-    const MlResult ml =
+    MlResult ml =
         reuse ? *selection.fit : RefineMl(problem, StartingSolutions(problem), ml_options);
+    // The selection's fit is Gaussian (station_selection.h): the heavy-tail stage on top.
+    if (reuse) FitHeavyTails(problem, ml_options, &ml);
     result.X = ml.X;
     result.Z = ml.Z;
     ml_covariance = ml.covariance;
@@ -233,6 +248,8 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
   result.camera_excess = noise.camera_excess();
+  result.student_t_dof = noise.student_t_dof;
+  result.station_scale = noise.station_scale;
   result.sigmas_estimated = spec.AnyEstimated();
   // The covariance of (X, Z) under that noise model: ml's analytic information when linear,
   // else propagated through the solver (calibration_covariance.h).

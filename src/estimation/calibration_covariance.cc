@@ -140,7 +140,7 @@ StationNoise StationNoise::Uniform(size_t stations, const PoseSigma& robot,
 }
 
 handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResult& result,
-                          const CalibrateOptions& options) {
+                          const CalibrateOptions& options, const std::vector<bool>& kept) {
   const std::vector<handeye::Solution> start = {{result.X, result.Z}};
   switch (result.method) {
     case handeye::Method::kMl: {
@@ -150,6 +150,8 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
       ml.camera_excess = result.camera_excess;
       ml.robust_loss = options.robust_loss;
       ml.robust_scale = options.robust_scale;
+      for (size_t i = 0; i < result.station_scale.size(); ++i)
+        if (kept.empty() || kept[i]) ml.station_scale.push_back(result.station_scale[i]);
       return RefineMlFromGoodStart(problem, start.front(), ml);
     }
     case handeye::Method::kStrobl: {

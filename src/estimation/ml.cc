@@ -9,6 +9,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/station_covariance.h"
+#include "hecal/estimation/student_t.h"
 #include "loop_solver.h"
 #include "multi_start.h"
 
@@ -32,17 +33,23 @@ class MlSolver {
   MlSolver(const handeye::Problem& problem, const MlOptions& options)
       : problem_(problem),
         length_scale_(handeye::LengthScale(problem)),
-        loss_(MakeLoss(options.robust_loss, options.robust_scale)) {}
+        loss_(MakeLoss(options.robust_loss, options.robust_scale)),
+        station_scale_(options.station_scale) {}
 
   double length_scale() const { return length_scale_; }
   int solves() const { return solves_; }
+  // Per-station multipliers of Σ_i (empty: 1).
+  void set_station_scale(std::vector<double> scale) { station_scale_ = std::move(scale); }
 
   // Square roots W_i of Σ_i⁻¹ at X.
   std::vector<Matrix6d> Whitening(const Pose& X, const NoiseVariances& theta) const {
     std::vector<Matrix6d> W(problem_.A.size());
     for (size_t i = 0; i < W.size(); ++i) {
-      W[i] = WhiteningMatrix(CombineComponents(
-          StationNoiseComponents(problem_.setup, problem_.A[i], problem_.B[i], X), theta));
+      const double scale = station_scale_.empty() ? 1.0 : station_scale_[i];
+      W[i] = WhiteningMatrix(
+          scale *
+          CombineComponents(StationNoiseComponents(problem_.setup, problem_.A[i], problem_.B[i], X),
+                            theta));
     }
     return W;
   }
@@ -101,6 +108,7 @@ class MlSolver {
   const handeye::Problem& problem_;
   double length_scale_;
   std::unique_ptr<ceres::LossFunction> loss_;
+  std::vector<double> station_scale_;
   int solves_ = 0;
 };
 
@@ -142,13 +150,27 @@ handeye::Solution RefineStarts(MlSolver& solver, const std::vector<handeye::Solu
   return solver.Solve(multi.best.solution, theta);
 }
 
-void CheckStations(const handeye::Problem& problem) {
+void CheckStations(const handeye::Problem& problem, const MlOptions& options) {
   if (problem.A.size() != problem.B.size()) {
     throw std::invalid_argument("RefineMl: one camera pose per robot pose");
+  }
+  if (!options.station_scale.empty() && options.station_scale.size() != problem.A.size()) {
+    throw std::invalid_argument("RefineMl: one station_scale entry per station");
   }
   if (problem.A.size() < 3) {
     throw DegenerateError("X and Z from fewer than 3 stations", "record at least 3 stations");
   }
+}
+
+// q_i = r_iᵀ S_i⁻¹ r_i, S_i = Σ_k θ_k Q_ik.
+std::vector<double> MahalanobisDistances(const std::vector<StationLinearization>& stations,
+                                         const NoiseVariances& theta) {
+  std::vector<double> q(stations.size());
+  for (size_t i = 0; i < stations.size(); ++i) {
+    const Matrix6d S = CombineComponents(stations[i].components, theta);
+    q[i] = stations[i].residual.dot(S.ldlt().solve(stations[i].residual));
+  }
+  return q;
 }
 
 }  // namespace
@@ -166,6 +188,13 @@ bool MlOptions::IsValid(std::string* why) const {
     return Invalid(why, "MlOptions.robust_scale", "the robust loss scale must be positive",
                    "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
   }
+  for (double scale : station_scale) {
+    if (!(scale > 0.0) || !std::isfinite(scale)) {
+      return Invalid(why, "MlOptions.station_scale",
+                     "a station's covariance multiplier must be positive and finite",
+                     "give values > 0, or none for 1 everywhere");
+    }
+  }
   if (max_noise_iterations < 1) {
     return Invalid(why, "MlOptions.max_noise_iterations",
                    "must be at least 1, got " + std::to_string(max_noise_iterations),
@@ -178,7 +207,7 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
                   const MlOptions& options) {
   RequireValid(options);
   if (starts.empty()) throw std::invalid_argument("RefineMl: no starting solution");
-  CheckStations(problem);
+  CheckStations(problem, options);
   MlSolver solver(problem, options);
   const double L = solver.length_scale();
   NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
@@ -220,13 +249,72 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
   result.sigmas_estimated = spec.AnyEstimated();
   result.cost = solver.Evaluate(best, theta).cost;
   result.solves = solver.solves();
+  if (options.heavy_tails) FitHeavyTails(problem, options, &result);
   return result;
+}
+
+void FitHeavyTails(const handeye::Problem& problem, const MlOptions& options, MlResult* ml) {
+  RequireValid(options);
+  CheckStations(problem, options);
+  const NoiseSpec spec = NoiseSpec::FromSigmas(options.robot_sigma, options.camera_sigma);
+  const size_t n = problem.A.size();
+  // Both sides estimated only: a station's latent scale would rescale a given sigma too.
+  if (options.robot_sigma || options.camera_sigma || n < kStudentTMinStations ||
+      options.robust_loss != RobustLoss::kNone) {
+    return;
+  }
+  constexpr int d = 6;
+  std::vector<StationLinearization> stations = LinearizeStations(problem, ml->X, ml->Z);
+  const StudentTChoice choice =
+      ChooseStudentT(MahalanobisDistances(stations, ml->noise.reml_variances), d);
+  ml->noise.student_t_ratio = choice.likelihood_ratio;
+  if (!choice.chosen) return;
+
+  // EM (student_t.h): weights at the current fit, variance components on Q_ik / w_i, pose with
+  // Σ_i = κ_ν S_i / w_i.
+  MlSolver solver(problem, options);
+  const double L = solver.length_scale();
+  const double kappa = StudentTInformationFactor(choice.dof, d);
+  NoiseVariances scale = ml->noise.reml_variances;
+  for (double& variance : scale) variance *= choice.scale;
+  handeye::Solution best{ml->X, ml->Z};
+  NoiseSpec current = spec;
+  NoiseEstimate noise;
+  std::vector<double> station_scale(n);
+  for (int iteration = 0; iteration < options.max_noise_iterations; ++iteration) {
+    if (iteration > 0) stations = LinearizeStations(problem, best.X, best.Z);
+    const std::vector<double> q = MahalanobisDistances(stations, scale);
+    std::vector<StationLinearization> weighted = stations;
+    for (size_t i = 0; i < n; ++i) {
+      const double w = StudentTWeight(q[i], choice.dof, d);
+      for (Matrix6d& Q : weighted[i].components) Q /= w;
+      station_scale[i] = kappa / w;
+    }
+    current.variances = scale;
+    noise = EstimateNoise(weighted, current, L);
+    const double change = MaxRelativeChange(scale, noise.reml_variances);
+    scale = noise.reml_variances;
+    solver.set_station_scale(station_scale);
+    best = solver.Solve(best, noise.variances);
+    if (change < kNoiseTolerance) break;
+  }
+  // The outlier flags stay the Gaussian fit's (student_t.h, "What is an outlier").
+  noise.stations = std::move(ml->noise.stations);
+  noise.student_t_dof = choice.dof;
+  noise.student_t_ratio = choice.likelihood_ratio;
+  noise.station_scale = std::move(station_scale);
+  ml->X = best.X;
+  ml->Z = best.Z;
+  ml->covariance = solver.Covariance(best, noise.variances);
+  ml->cost = solver.Evaluate(best, noise.variances).cost;
+  ml->solves += solver.solves();
+  ml->noise = std::move(noise);
 }
 
 handeye::Solution RefineMlFromGoodStart(const handeye::Problem& problem,
                                         const handeye::Solution& start, const MlOptions& options) {
   RequireValid(options);
-  CheckStations(problem);
+  CheckStations(problem, options);
   if (!options.robot_sigma || !options.camera_sigma) {
     throw InputError("MlOptions.robot_sigma", 0,
                      "refining from a good start needs both the robot and the camera sigma",

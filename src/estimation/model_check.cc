@@ -207,8 +207,10 @@ void ApplyModelCheck(const handeye::Problem& problem, const CalibrateOptions& op
     return;
   }
   const std::vector<std::vector<bool>> groups = JackknifeGroups(n);
-  const std::vector<StationLinearization> linearized =
-      LinearizeStations(problem, result->X, result->Z);
+  std::vector<StationLinearization> linearized = LinearizeStations(problem, result->X, result->Z);
+  // A heavy-tailed fit's station covariances (student_t.h).
+  for (size_t i = 0; i < result->station_scale.size(); ++i)
+    for (Matrix6d& Q : linearized[i].components) Q *= result->station_scale[i];
   const NoiseVariances variances =
       Variances(result->robot_sigma, result->camera_sigma, result->camera_excess);
   std::vector<handeye::Solution> without_group;
@@ -217,7 +219,8 @@ void ApplyModelCheck(const handeye::Problem& problem, const CalibrateOptions& op
   } else {
     try {
       for (const std::vector<bool>& kept : groups)
-        without_group.push_back(Resolve(handeye::SubProblem(problem, kept), *result, options));
+        without_group.push_back(
+            Resolve(handeye::SubProblem(problem, kept), *result, options, kept));
     } catch (const std::exception& e) {
       check.reason = std::string("a solve without one group of stations failed: ") + e.what();
       result->warnings.push_back("the noise model could not be checked: " + check.reason);

@@ -97,6 +97,7 @@ StationSelection SelectStations(const handeye::Problem& problem,
   MlOptions ml_options;
   ml_options.robot_sigma = options.robot_sigma;
   ml_options.camera_sigma = options.camera_sigma;
+  ml_options.heavy_tails = false;  // the test is Gaussian (header)
   std::vector<handeye::Solution> starts;
   for (int round = 0; round < kMaxRounds; ++round) {
     const handeye::Problem set = handeye::SubProblem(problem, candidate);

@@ -222,6 +222,7 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
     object["noise"]["camera_excess"] = {{"tilt_deg", result.camera_excess.rotation * kDegrees},
                                         {"depth", result.camera_excess.translation * scale}};
   }
+  if (result.student_t_dof > 0.0) object["noise"]["student_t_dof"] = result.student_t_dof;
   object["stations"] = {
       {"used", used}, {"rejected", rejected}, {"outlier_rejection", result.outlier_rejection}};
   if (result.seed) object["seed"] = *result.seed;

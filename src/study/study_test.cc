@@ -255,18 +255,16 @@ TEST(RunStudy, MlLinearCovarianceIsConsistent) {
   EXPECT_NE(SummaryCsv(result).find("mean_nees,nees_band_low"), std::string::npos);
 }
 
-// The noise estimated (no sigmas given) on data that break the isotropic, equally split noise
-// model, 100 trials each, n = 15. PnP-shaped camera noise (eye-to-hand) and a robot five times
-// noisier than the camera (eye-in-hand) are taken by the richer noise models
-// (noise_estimation.h): the model-only covariance is consistent (1σ coverage within 10 points
-// of 68% — 100 trials give a binomial sd of 4.7 points — 2σ ≥ 90%, every σ ratio ≥ 0.85) and the
-// check rarely needs to inflate (≤ 20 of 100). Student-t(3) noise no Gaussian model takes: the
-// model-only covariance undercovers (2σ ≤ 92% or its smallest predicted/empirical σ ratio ≤
-// 0.75), and the model check makes the reported one cover more (2σ at least 3 points higher and
-// ≥ 85%, 1σ at least 6 points higher, σ ratios ≥ 0.85). Measured (1σ / 2σ / smallest σ ratio):
-// PnP 75 / 92 / 0.99 and robot 5× 69 / 95 / 1.00 (model only; the check used 5 and 1 times);
-// Student-t 56 / 87 / 0.84 → 64 / 93 / 0.91 (25 inflated); the README has the 200-trial table.
-TEST(RunStudy, RicherNoiseModelsAndTheModelCheckCoverWhenTheIsotropicModelIsWrong) {
+// The noise estimated (no sigmas given) on data that break the isotropic, equally split Gaussian
+// noise model, 100 trials each, n = 15. PnP-shaped camera noise (eye-to-hand) and a robot five
+// times noisier than the camera (eye-in-hand) are taken by the richer noise models
+// (noise_estimation.h), Student-t(3) noise (eye-in-hand) by the heavy-tailed model
+// (student_t.h): the model-only covariance is consistent (1σ coverage within 10 points of 68% —
+// 100 trials give a binomial sd of 4.7 points — 2σ ≥ 90%, every σ ratio ≥ 0.85) and the check
+// rarely needs to inflate (≤ 20 of 100). Student-t with the Gaussian models only covered 56 / 87
+// (model only) and needed the check on 25 of 100; now the model alone covers 66 / 92 and the
+// check fired 3 times. The README has the 200-trial table.
+TEST(RunStudy, RicherNoiseModelsCoverWhenTheIsotropicGaussianModelIsWrong) {
   Setting pnp = MakeSetting(handeye::Setup::kEyeToHand, 15, 1.0, 1.0, NoiseOn::kBoth,
                             sim::NoiseModel::Kind::kPnp);
   Setting heavy = MakeSetting(handeye::Setup::kEyeInHand, 15, 1.0, 1.0, NoiseOn::kBoth,
@@ -283,20 +281,10 @@ TEST(RunStudy, RicherNoiseModelsAndTheModelCheckCoverWhenTheIsotropicModelIsWron
                  std::to_string(setting.robot_scale));
     ASSERT_TRUE(s.consistency && s.consistency_model);
     const uncertainty::Consistency& model = *s.consistency_model;
-    const uncertainty::Consistency& reported = *s.consistency;
-    if (setting.noise_kind != sim::NoiseModel::Kind::kStudentT3) {
-      EXPECT_NEAR(model.coverage_1sigma, 0.68, 0.10);
-      EXPECT_GE(model.coverage_2sigma, 0.90);
-      EXPECT_GE(model.sd_ratio.minCoeff(), 0.85);
-      EXPECT_LE(s.check_used, 20);
-      continue;
-    }
-    EXPECT_TRUE(model.coverage_2sigma <= 0.92 || model.sd_ratio.minCoeff() <= 0.75);
-    EXPECT_GE(reported.coverage_2sigma, model.coverage_2sigma + 0.03);
-    EXPECT_GE(reported.coverage_2sigma, 0.85);
-    EXPECT_GE(reported.coverage_1sigma, model.coverage_1sigma + 0.06);
-    EXPECT_GE(reported.sd_ratio.minCoeff(), 0.85);
-    EXPECT_GT(s.check_used, 20);
+    EXPECT_NEAR(model.coverage_1sigma, 0.68, 0.10);
+    EXPECT_GE(model.coverage_2sigma, 0.90);
+    EXPECT_GE(model.sd_ratio.minCoeff(), 0.85);
+    EXPECT_LE(s.check_used, 20);
   }
 }
 

@@ -100,6 +100,11 @@ struct CalibrationResult {
   // The camera's tilt (rotation) / depth (translation) excess σ of the anisotropic noise model
   // (noise_estimation.h), in the camera frame; zero when the isotropic model was used.
   PoseSigma camera_excess;
+  // The heavy-tailed noise model (student_t.h) when ml chose it: ν (0: Gaussian) and, per used
+  // station, the multiplier κ_ν / w_i of its covariance (empty: 1); robot_sigma and camera_sigma
+  // are then the t model's scale.
+  double student_t_dof = 0.0;
+  std::vector<double> station_scale;
   bool sigmas_estimated = false;
   // Stations left out by the outlier rejection (indices into the problem, ascending) and their
   // residuals at (X, Z), whitened by the noise model of the result.

@@ -61,9 +61,10 @@ struct StationNoise {
 
 // The method of `result` solved on `problem`: closed-form methods directly; ml and strobl
 // refined from (result.X, result.Z) with result's sigmas fixed and `options`' robust loss (ml by
-// RefineMlFromGoodStart, ml.h: no closed-form starts, pose only).
+// RefineMlFromGoodStart, ml.h: no closed-form starts, pose only; with result.station_scale of a
+// heavy-tailed fit, `kept` says which of the result's stations `problem` holds — empty: all).
 handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResult& result,
-                          const CalibrateOptions& options);
+                          const CalibrateOptions& options, const std::vector<bool>& kept = {});
 
 // The covariance of `result` (computed by Calibrate(problem, calibrate_options)) under `noise`,
 // by options.method (nullopt: DefaultCovarianceMethod). Here kLinear is always the numeric

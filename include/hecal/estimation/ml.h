@@ -36,6 +36,18 @@
 // own estimate (the model check's jackknife, covariance propagation, resampling) needs neither
 // the closed-form starts nor the noise estimate, station tests and covariance; it runs the same
 // refinement from that one start with the noise model given and returns the pose only.
+// Heavy tails (student_t.h): with neither sigma given and at least kStudentTMinStations
+// stations, after the Gaussian alternation above, the multivariate Student-t model of the station
+// residuals is tried: ν by profile likelihood at the Gaussian fit, kept only when the boundary
+// likelihood-ratio test prefers it over the Gaussian at 5%. Then EM: the weights
+// w_i = (ν + 6)/(ν + r_iᵀ S_i⁻¹ r_i) at the current fit, the variance components re-estimated on
+// the components Q_ik / w_i (REML, posterior means, richer models as above), the pose re-solved
+// with Σ_i = κ_ν S_i / w_i, until the variances change by less than 1e-3 (relative).
+// NoiseEstimate::student_t_dof and station_scale carry the result; its station tests stay the
+// Gaussian fit's. Not tried when a sigma is given: the latent scale of a station multiplies its
+// whole covariance, a given sigma included. Not tried in the outlier
+// rejection's fits (station_selection.h), which test under the Gaussian model.
+//
 // Covariance: the Gauss–Newton inverse information (Σ_i w_i J_iᵀ Σ_i⁻¹ J_i)⁻¹ at the optimum
 // (12 × 12 over (δX, δZ), right perturbations, (ω, v) order; w_i = ρ'(s_i) the robust weights,
 // 1 without a robust loss), with the estimated variances when the sigmas were estimated.
@@ -62,10 +74,17 @@ struct MlOptions {
   RobustLoss robust_loss = RobustLoss::kNone;
   double robust_scale = kOutlierLevelScale;  // whitened units per component (robust_loss.h)
   int max_noise_iterations = 10;             // pose / variance alternations, at least 1
+  // With neither sigma given, from kStudentTMinStations stations and no robust loss: also try
+  // the heavy-tailed Student-t model (student_t.h, "Heavy tails" above).
+  bool heavy_tails = true;
+  // Per-station multipliers of Σ_i (a Student-t fit's κ_ν / w_i, NoiseEstimate::station_scale),
+  // to refit at a result's noise model; empty: 1 everywhere.
+  std::vector<double> station_scale;
 
   // core/options_check.h: false naming MlOptions.robot_sigma / .camera_sigma (negative or not
   // finite; no upper bound: the estimate of one refinement seeds the next), .robust_scale (not
-  // positive and finite) or .max_noise_iterations (below 1).
+  // positive and finite), .max_noise_iterations (below 1) or .station_scale (an entry not
+  // positive and finite).
   bool IsValid(std::string* why) const;
 };
 
@@ -85,6 +104,12 @@ struct MlResult {
 // !options.IsValid, std::invalid_argument when `starts` is empty.
 MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::Solution>& starts,
                   const MlOptions& options);
+
+// The heavy-tail stage of RefineMl ("Heavy tails" above) on its Gaussian result `ml` (a RefineMl
+// with options.heavy_tails false on the same problem and sigmas): when the Student-t model is
+// chosen, X, Z, the covariance, the cost and the noise estimate become the t fit's. Does nothing
+// when a sigma is given, below kStudentTMinStations stations or with a robust loss.
+void FitHeavyTails(const handeye::Problem& problem, const MlOptions& options, MlResult* ml);
 
 // RefineMl(problem, {start}, options)'s X and Z (the same refinement), without the noise estimate,
 // station tests, covariance and cost. Throws hecal::InputError (source "MlOptions.robot_sigma")

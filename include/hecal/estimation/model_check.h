@@ -67,6 +67,10 @@
 // instead of 20 solves (ml at 10⁵ stations: 20 refinements, ~30 s). For the closed forms the step
 // is ml's, as E_jk is.
 //
+// Heavy tails: with a Student-t fit (student_t.h) the expected jackknife uses its station
+// covariances κ_ν S_i / w_i and the delete-group solves keep those weights (Resolve), so the
+// check compares the spread of the same weighted estimator with what its model predicts.
+//
 // Limits: with n ≤ 6 no check is made (removing a station leaves too few for the remaining
 // spread to mean anything); with G < 12 the jackknife covariance has rank < 12 and only its
 // diagonal is used. A solve that fails without a group (degenerate rest) ends the check with

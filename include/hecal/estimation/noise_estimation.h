@@ -118,6 +118,16 @@
 // three more REML fits per estimate (`hecal simulate --stations 2000 --trials 2 --method ml
 // --estimate-noise`: 4.3 s before, 7.2 s with them, one thread).
 //
+// Heavy tails (student_t.h; fitted by ml, ml.h, on top of the model chosen here). The models
+// above are Gaussian. Heavy-tailed noise (Student-t(3) per pose component: README "Uncertainty",
+// (c)) is taken by a multivariate Student-t model of the station residuals, a Gaussian scale
+// mixture on these same variance components: given the EM weights w_i, EstimateNoise runs
+// unchanged on the components Q_ik / w_i and returns the t model's scale; ν by profile
+// likelihood, kept only when the boundary likelihood-ratio test prefers it at 5%.
+// NoiseEstimate::student_t_dof and station_scale carry it. The collapse rules above apply as
+// they are: the posterior mean of each scale variance, the ν_g > 2 eligibility of the richer
+// models (both on the weighted components).
+//
 // Outlier test (Baarda's data snooping, multivariate form). Station i's statistic is
 //   included:  T_i = r̂_iᵀ C_i⁺ r̂_i,  C_i = Σ_i − J_i N⁻¹ J_iᵀ  (its residual covariance)
 //   excluded:  T_i = r̂_iᵀ (Σ_i + J_i N⁻¹ J_iᵀ)⁻¹ r̂_i   (prediction from the other stations)
@@ -227,6 +237,13 @@ struct NoiseEstimate {
   int iterations = 0;             // variance iterations (0 if none estimated)
   bool richer = false;            // a richer model (above) was chosen
   double likelihood_ratio = 0.0;  // 2 (ℓ_R(rich) − ℓ_R(isotropic)): the chosen or the largest
+  // Heavy tails (student_t.h; set by ml): ν of the Student-t model when it was chosen, else 0,
+  // and then `variances` are its scale; station_scale[i] multiplies station i's covariance
+  // (κ_ν / w_i; empty: 1 everywhere). student_t_ratio: its likelihood-ratio statistic against
+  // the Gaussian model (also when not chosen; 0 when not tried).
+  double student_t_dof = 0.0;
+  std::vector<double> station_scale;
+  double student_t_ratio = 0.0;
 
   PoseSigma robot() const;
   PoseSigma camera() const;

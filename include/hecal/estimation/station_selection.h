@@ -9,7 +9,9 @@
 //    the candidate set, with the given sigmas or the noise estimated from those stations only;
 //    then every station's statistic at that fit — for a station of the set its residual against
 //    its residual covariance, for a station outside it the prediction from the set — against
-//    its quantile at the level below. The set becomes the stations that pass, and
+//    its quantile at the level below (under the Gaussian model: these fits do not try the
+//    heavy-tailed Student-t model, student_t.h, which Calibrate fits on the stations kept).
+//    The set becomes the stations that pass, and
 //    1–2 repeat from the fit on it until it is stable (at most 5 rounds; ml restarts from the
 //    previous round's fit, not from every closed form). A station that the
 //    consensus left out but that fits the noise of the others comes back; one that the
