@@ -72,7 +72,7 @@ void PrintTable(const study::BenchResult& result, const Io& io) {
         peer = &other;
       }
     }
-    io.out << Pad(std::string(handeye::Info(row.method).name), 18, true)
+    io.out << Pad(std::string(estimation::Info(row.method).name), 18, true)
            << Pad(std::to_string(row.stations), 4) << Pad(Format("%.2f", row.us_per_solve), 12)
            << Pad(peer ? Format("%.2f", peer->us_per_solve) : "-", 12)
            << Pad(peer ? Format("%.1fx", peer->us_per_solve / row.us_per_solve) : "-", 10)
@@ -93,8 +93,8 @@ void PrintTable(const study::BenchResult& result, const Io& io) {
         multi = &other;
       }
     }
-    io.out << handeye::Info(row.method).name << " from a good start, n = " << row.stations << ": "
-           << Format("%.2f", row.us_per_solve) << " us per solve"
+    io.out << estimation::Info(row.method).name << " from a good start, n = " << row.stations
+           << ": " << Format("%.2f", row.us_per_solve) << " us per solve"
            << (multi ? Format(", %.1fx faster than from the closed-form starts",
                               multi->us_per_solve / row.us_per_solve)
                      : std::string())
@@ -111,15 +111,16 @@ std::optional<study::BenchPeer> OpenCvPeer() {
   study::BenchPeer peer;
   peer.name = "opencv";
   peer.prepare =
-      [](handeye::Method method,
+      [](estimation::Method method,
          const std::vector<study::BenchDataSet>& sets) -> std::optional<study::BenchSolver> {
-    if (!peers::HasOpenCvPeer(method)) return std::nullopt;
+    const std::optional<handeye::ClosedForm> form = estimation::Info(method).closed_form;
+    if (!form || !peers::HasOpenCvPeer(*form)) return std::nullopt;
     auto inputs = std::make_shared<std::vector<peers::OpenCvInput>>();
     for (const study::BenchDataSet& set : sets) {
       inputs->push_back(peers::PrepareOpenCvInput(set.problem));
     }
-    return [method, inputs](std::size_t i) {
-      return peers::SolveWithOpenCv(method, (*inputs)[i], /*estimate_z=*/false).X;
+    return [form = *form, inputs](std::size_t i) {
+      return peers::SolveWithOpenCv(form, (*inputs)[i], /*estimate_z=*/false).X;
     };
   };
   return peer;

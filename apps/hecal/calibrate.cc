@@ -77,7 +77,7 @@ void PrintSummary(std::ostream& out, const report::ResultDocument& document,
   const double scale = 1.0 / io::MetresPer(document.unit);
   const std::string_view unit = io::UnitName(document.unit);
   out << std::fixed << std::setprecision(6);
-  out << "method " << handeye::Info(result.method).name << " ("
+  out << "method " << estimation::Info(result.method).name << " ("
       << handeye::SetupName(document.setup) << ", " << result.residuals.size() << " stations)\n";
   PrintPose(out, "X", handeye::XFrameName(document.setup), result.X, scale, unit);
   PrintPose(out, "Z", handeye::ZFrameName(document.setup), result.Z, scale, unit);
@@ -137,7 +137,7 @@ void PrintComparison(std::ostream& out, const report::ResultDocument& document) 
   const double scale = 1.0 / io::MetresPer(document.unit);
   const std::string_view unit = io::UnitName(document.unit);
   const auto ml = std::find_if(document.results.begin(), document.results.end(),
-                               [](const auto& r) { return r.method == handeye::Method::kMl; });
+                               [](const auto& r) { return r.method == estimation::Method::kMl; });
   const std::string length = "res_" + std::string(unit);
   out << "\nside by side (X " << handeye::XFrameName(document.setup) << ")\n  " << std::left
       << std::setw(16) << "method" << std::right << std::setw(11) << "tx" << std::setw(12) << "ty"
@@ -149,7 +149,7 @@ void PrintComparison(std::ostream& out, const report::ResultDocument& document) 
   out << std::fixed;
   for (const estimation::CalibrationResult& r : document.results) {
     const Eigen::Vector3d t = r.X.translation() * scale;
-    out << "  " << std::left << std::setw(16) << handeye::Info(r.method).name << std::right
+    out << "  " << std::left << std::setw(16) << estimation::Info(r.method).name << std::right
         << std::setprecision(6) << std::setw(11) << t.x() << std::setw(12) << t.y() << std::setw(12)
         << t.z() << std::setprecision(4) << std::setw(12) << r.rotation_rms * kDegrees
         << std::setw(9) << r.translation_rms * scale;
@@ -167,7 +167,7 @@ void PrintComparison(std::ostream& out, const report::ResultDocument& document) 
     out << "\n";
   }
   for (const report::MethodFailure& failure : document.failures)
-    out << "  " << std::left << std::setw(16) << handeye::Info(failure.method).name << std::right
+    out << "  " << std::left << std::setw(16) << estimation::Info(failure.method).name << std::right
         << "refused: " << failure.message << "\n";
   out.unsetf(std::ios::floatfield);
 }
@@ -184,10 +184,10 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   }
   settings.setup = setup;
   settings.all = flags.method == "all";
-  const auto method = handeye::ParseMethod(flags.method);
+  const auto method = estimation::ParseMethod(flags.method);
   if (!settings.all && !method) {
     std::string names;
-    for (const auto& info : handeye::AllMethods()) names += std::string(info.name) + " ";
+    for (const auto& info : estimation::AllMethods()) names += std::string(info.name) + " ";
     throw InputError("--method", 0, "unknown method '" + flags.method + "'",
                      "use one of: " + names + "all");
   }

@@ -89,7 +89,7 @@ void PrintConsistency(const study::StudyResult& result, size_t setting, std::ost
       header = true;
     }
     const bool in_band = c.band.Contains(c.mean_nees);
-    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+    out << "  " << Pad(std::string(estimation::Info(m.method).name), 18, true)
         << Pad(Fixed(c.mean_nees, 2), 8)
         << Pad("[" + Fixed(c.band.low, 2) + ", " + Fixed(c.band.high, 2) + "]", 16)
         << Pad(in_band ? "ok" : "out", 4) << Pad(Fixed(100.0 * c.coverage_1sigma, 1) + "%", 9)
@@ -120,7 +120,7 @@ void PrintRejection(const study::StudyResult& result, size_t setting, std::ostre
     const auto percent = [](int part, int whole) {
       return whole > 0 ? Fixed(100.0 * part / whole, 1) + "%" : std::string("-");
     };
-    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+    out << "  " << Pad(std::string(estimation::Info(m.method).name), 18, true)
         << Pad(percent(m.outliers_rejected, m.outliers_injected), 9)
         << Pad(percent(m.trials_all_found, m.trials - m.failures), 11)
         << Pad(percent(m.good_rejected, m.good_stations), 10)
@@ -159,7 +159,7 @@ void PrintTable(const study::StudyResult& result, std::ostream& out) {
     for (; row < result.summaries.size() && result.summaries[row].setting == static_cast<int>(s);
          ++row) {
       const study::MethodSummary& m = result.summaries[row];
-      out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+      out << "  " << Pad(std::string(estimation::Info(m.method).name), 18, true)
           << Pad(std::to_string(m.failures), 5) << Pad(std::to_string(m.outliers), 5)
           << Pad(Readable(m.rotation.median * kDeg), 12)
           << Pad(Readable(m.rotation.rmse * kDeg), 10) << Pad(Readable(m.rotation.p10 * kDeg), 10)
