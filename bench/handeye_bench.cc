@@ -27,10 +27,11 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "hecal/handeye/methods.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/study/bench.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
 #include "hecal/peers/opencv_handeye.h"
@@ -38,6 +39,7 @@
 
 namespace {
 
+namespace estimation = hecal::estimation;
 namespace handeye = hecal::handeye;
 namespace study = hecal::study;
 
@@ -80,15 +82,15 @@ void RunSolver(benchmark::State& state, const study::BenchSolver& solve, int sta
 }
 
 void RegisterAll() {
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+  for (const estimation::MethodInfo& info : estimation::AllMethods()) {
     for (int n : {10, 20, 50}) {
       const std::string suffix = std::string(info.name) + "/" + std::to_string(n);
-      const handeye::Method method = info.method;
+      const estimation::Method method = info.method;
       benchmark::RegisterBenchmark(("hecal/" + suffix).c_str(), [method,
                                                                  n](benchmark::State& state) {
         RunSolver(state, study::HecalSolver(method, DataSets(n), kSigma), n, /*judge=*/true);
       })->Unit(benchmark::kMicrosecond);
-      if (method == handeye::Method::kMl) {
+      if (method == estimation::Method::kMl) {
         benchmark::RegisterBenchmark(("hecal/ml-good-start/" + std::to_string(n)).c_str(),
                                      [n](benchmark::State& state) {
                                        RunSolver(state,
@@ -98,16 +100,17 @@ void RegisterAll() {
             ->Unit(benchmark::kMicrosecond);
       }
 #ifdef HECAL_HAVE_OPENCV_PEERS
-      if (hecal::peers::HasOpenCvPeer(method)) {
-        benchmark::RegisterBenchmark(("opencv/" + suffix).c_str(), [method,
+      const std::optional<handeye::ClosedForm> form = info.closed_form;
+      if (form && hecal::peers::HasOpenCvPeer(*form)) {
+        benchmark::RegisterBenchmark(("opencv/" + suffix).c_str(), [form = *form,
                                                                     n](benchmark::State& state) {
           // Inputs converted once, outside the timing.
           auto inputs = std::make_shared<std::vector<hecal::peers::OpenCvInput>>();
           for (const study::BenchDataSet& set : DataSets(n)) {
             inputs->push_back(hecal::peers::PrepareOpenCvInput(set.problem));
           }
-          const study::BenchSolver solve = [method, inputs](size_t i) {
-            return hecal::peers::SolveWithOpenCv(method, (*inputs)[i], /*estimate_z=*/false).X;
+          const study::BenchSolver solve = [form, inputs](size_t i) {
+            return hecal::peers::SolveWithOpenCv(form, (*inputs)[i], /*estimate_z=*/false).X;
           };
           RunSolver(state, solve, n, /*judge=*/false);
         })->Unit(benchmark::kMicrosecond);

@@ -3,6 +3,7 @@
 // Usage: example_calibrate_moveit [pose_samples.json]        (docs/README.md: the data flow)
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "hecal/estimation/calibrate.h"
@@ -23,8 +24,9 @@ int main(int argc, char** argv) {
     const estimation::CalibrationResult result = estimation::Calibrate(problem, {});
     const Eigen::Vector3d t = result.X.translation();
     const Vector6d sd = result.covariance->X().diagonal().cwiseSqrt();
-    std::printf("X = T_base_camera, t = (%.4f, %.4f, %.4f) m ± (%.1f, %.1f, %.1f) mm\n", t.x(),
-                t.y(), t.z(), 1e3 * sd(3), 1e3 * sd(4), 1e3 * sd(5));
+    const std::string method(estimation::Info(result.method).name);  // the method registry
+    std::printf("%s: X = T_base_camera, t = (%.4f, %.4f, %.4f) m ± (%.1f, %.1f, %.1f) mm\n",
+                method.c_str(), t.x(), t.y(), t.z(), 1e3 * sd(3), 1e3 * sd(4), 1e3 * sd(5));
     const Eigen::Vector3d r = so3::Log(result.X.linear()) * 180.0 / M_PI;
     std::printf("R = Exp((%.2f, %.2f, %.2f) deg) ± (%.3f, %.3f, %.3f) deg; %zu stations used\n",
                 r.x(), r.y(), r.z(), sd(0) * 180.0 / M_PI, sd(1) * 180.0 / M_PI,

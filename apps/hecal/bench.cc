@@ -27,15 +27,16 @@ std::optional<study::BenchPeer> OpenCvPeer() {
   study::BenchPeer peer;
   peer.name = "opencv";
   peer.prepare =
-      [](handeye::Method method,
+      [](estimation::Method method,
          const std::vector<study::BenchDataSet>& sets) -> std::optional<study::BenchSolver> {
-    if (!peers::HasOpenCvPeer(method)) return std::nullopt;
+    const std::optional<handeye::ClosedForm> form = estimation::Info(method).closed_form;
+    if (!form || !peers::HasOpenCvPeer(*form)) return std::nullopt;
     auto inputs = std::make_shared<std::vector<peers::OpenCvInput>>();
     for (const study::BenchDataSet& set : sets) {
       inputs->push_back(peers::PrepareOpenCvInput(set.problem));
     }
-    return [method, inputs](std::size_t i) {
-      return peers::SolveWithOpenCv(method, (*inputs)[i], /*estimate_z=*/false).X;
+    return [form = *form, inputs](std::size_t i) {
+      return peers::SolveWithOpenCv(form, (*inputs)[i], /*estimate_z=*/false).X;
     };
   };
   return peer;

@@ -54,10 +54,10 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   }
   settings.setup = setup;
   settings.all = flags.method == "all";
-  const auto method = handeye::ParseMethod(flags.method);
+  const auto method = estimation::ParseMethod(flags.method);
   if (!settings.all && !method) {
     std::string names;
-    for (const auto& info : handeye::AllMethods()) names += std::string(info.name) + " ";
+    for (const auto& info : estimation::AllMethods()) names += std::string(info.name) + " ";
     throw InputError("--method", 0, "unknown method '" + flags.method + "'",
                      "use one of: " + names + "all");
   }

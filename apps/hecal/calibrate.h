@@ -43,7 +43,7 @@ struct CalibrateFlags {
   int threads = 0;          // --threads (detection, covariance solves; 0 = every core)
   bool refine_intrinsics = false;  // --refine-intrinsics (with --images)
   std::string setup;
-  std::string method = "ml";
+  std::string method{estimation::Info(estimation::CalibrateOptions().method).name};  // the default
   std::string robot_sigma;
   std::string camera_sigma;
   std::string output;

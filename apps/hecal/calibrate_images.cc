@@ -168,7 +168,7 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
 
   const Pose step = report.pose_level.X.inverse() * result.X;
   const double scale = 1.0 / io::MetresPer(document.unit);
-  io.out << "\npose level (" << handeye::Info(report.pose_level.method).name
+  io.out << "\npose level (" << estimation::Info(report.pose_level.method).name
          << " on the PnP poses), then the joint reprojection refinement moved X by "
          << std::setprecision(4)
          << AxisAngleFromMatrix(step.linear()).angle * 180.0 / std::numbers::pi << " deg, "

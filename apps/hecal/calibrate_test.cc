@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "cli_test_util.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/geometry/so3.h"
-#include "hecal/handeye/methods.h"
 #include "hecal/sim/thesis_protocol.h"
 
 namespace hecal::cli {
@@ -184,9 +184,9 @@ TEST_F(CalibrateCommand, AllMethodsSideBySide) {
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.out.find("side by side"), std::string::npos);
   const json all = json::parse(Read("all.json"));
-  ASSERT_EQ(all["results"].size(), handeye::AllMethods().size());
+  ASSERT_EQ(all["results"].size(), estimation::AllMethods().size());
   size_t k = 0;
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+  for (const estimation::MethodInfo& info : estimation::AllMethods()) {
     const json& result = all["results"][k++];
     EXPECT_EQ(result["method"], std::string(info.name));
     EXPECT_TRUE(
@@ -194,7 +194,7 @@ TEST_F(CalibrateCommand, AllMethodsSideBySide) {
         << info.name;
     // Every method carries a covariance: ml's linear one, the UT through the others.
     ASSERT_TRUE(result.contains("covariance")) << info.name;
-    ExpectCovarianceMethod(result, info.method == handeye::Method::kMl ? "linear" : "unscented");
+    ExpectCovarianceMethod(result, info.method == estimation::Method::kMl ? "linear" : "unscented");
   }
   const cli_test::Outcome yaml =
       Hecal({"calibrate", "--robot", Path("robot.csv"), "--camera", Path("camera.csv"), "--setup",

@@ -60,21 +60,22 @@ std::vector<int> ParseIntList(const std::string& flag, const std::string& text, 
 
 std::string MethodNames() {
   std::string names;
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+  for (const estimation::MethodInfo& info : estimation::AllMethods()) {
     if (!names.empty()) names += ", ";
     names += info.name;
   }
   return names;
 }
 
-std::vector<handeye::Method> ParseMethodList(const std::string& flag, const std::string& text) {
-  std::vector<handeye::Method> methods;
+std::vector<estimation::Method> ParseMethodList(const std::string& flag, const std::string& text) {
+  std::vector<estimation::Method> methods;
   for (const std::string& item : SplitList(flag, text)) {
     if (item == "all") {
-      for (const handeye::MethodInfo& info : handeye::AllMethods()) methods.push_back(info.method);
+      for (const estimation::MethodInfo& info : estimation::AllMethods())
+        methods.push_back(info.method);
       continue;
     }
-    const std::optional<handeye::Method> method = handeye::ParseMethod(item);
+    const std::optional<estimation::Method> method = estimation::ParseMethod(item);
     if (!method) {
       throw InputError(flag, 0, "unknown method '" + item + "'",
                        "use all or one or more of " + MethodNames());
@@ -82,8 +83,8 @@ std::vector<handeye::Method> ParseMethodList(const std::string& flag, const std:
     methods.push_back(*method);
   }
   // Keep the first occurrence of each method.
-  std::vector<handeye::Method> unique;
-  for (handeye::Method m : methods) {
+  std::vector<estimation::Method> unique;
+  for (estimation::Method m : methods) {
     if (std::find(unique.begin(), unique.end(), m) == unique.end()) unique.push_back(m);
   }
   return unique;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "hecal/handeye/methods.h"
+#include "hecal/estimation/methods.h"
 
 namespace hecal::cli {
 
@@ -17,8 +17,8 @@ std::vector<std::string> SplitList(const std::string& flag, const std::string& t
 std::vector<int> ParseIntList(const std::string& flag, const std::string& text, int minimum,
                               int maximum);
 
-// Method names (docs/cli.md) or "all" (every method in handeye::AllMethods() order).
-std::vector<handeye::Method> ParseMethodList(const std::string& flag, const std::string& text);
+// Method names (docs/cli.md) or "all" (every method in estimation::AllMethods() order).
+std::vector<estimation::Method> ParseMethodList(const std::string& flag, const std::string& text);
 
 // Every method name, comma separated, for error messages and --help.
 std::string MethodNames();

@@ -27,7 +27,7 @@
 
 #include "cli_test_util.h"
 #include "hecal/estimation/bound.h"
-#include "hecal/handeye/methods.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/io/pose_table.h"
 #include "testing/handeye_cases.h"
 
@@ -126,8 +126,8 @@ TEST_F(Scale, EveryMethodCalibratesTenToTheFiveStations) {
     const estimation::AccuracyBound bound = estimation::FirstOrderBound(
         handeye::MakeProblem(data.setup, data.T_base_gripper_true, data.T_camera_target_true),
         data.X, data.Z, sigma, sigma);
-    for (const handeye::MethodInfo& info : handeye::AllMethods()) {
-      if (!info.closed_form && info.method != handeye::Method::kMl) continue;
+    for (const estimation::MethodInfo& info : estimation::AllMethods()) {
+      if (!info.closed_form && info.method != estimation::Method::kMl) continue;
       if (!Picked(std::string(info.name))) continue;
       const std::string command = "/usr/bin/time -v -o " + Path("time.txt") + " " + hecal +
                                   " calibrate --robot " + Path("robot.csv") + " --camera " +
@@ -144,7 +144,7 @@ TEST_F(Scale, EveryMethodCalibratesTenToTheFiveStations) {
                   std::string(info.name).c_str(), n, run.seconds, run.cpu_seconds,
                   run.peak_bytes / 1e6, rotation, translation, bound.rotation_rmse_X / kDeg);
       std::fflush(stdout);
-      const double limit = info.method == handeye::Method::kMl ? 10.0 : 100.0;
+      const double limit = info.method == estimation::Method::kMl ? 10.0 : 100.0;
       EXPECT_LT(rotation, limit) << info.name << " n=" << n;
       EXPECT_LT(translation, limit) << info.name << " n=" << n;
       if (n >= 100000) {

@@ -202,7 +202,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   const double L = handeye::LengthScale(problem);
   NoiseEstimate noise;
   std::optional<Eigen::Matrix<double, 12, 12>> ml_covariance;
-  if (options.method == handeye::Method::kMl) {
+  if (options.method == Method::kMl) {
     MlOptions ml_options;
     ml_options.robot_sigma = options.robot_sigma;
     ml_options.camera_sigma = options.camera_sigma;
@@ -223,11 +223,11 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     noise = ml.noise;
   } else {
     handeye::Solution solution;
-    if (options.method == handeye::Method::kStrobl) {
+    if (options.method == Method::kStrobl) {
       const StroblResult strobl = RefineStrobl(problem, StartingSolutions(problem));
       solution = {strobl.X, strobl.Z};
     } else {
-      solution = handeye::SolveClosedForm(options.method, problem);
+      solution = handeye::SolveClosedForm(*Info(options.method).closed_form, problem);
     }
     result.X = solution.X;
     result.Z = solution.Z;
@@ -300,9 +300,9 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
         "residuals as " +
         SigmaText(result.robot_sigma) + " per component");
   }
-  if (loss != RobustLoss::kNone && options.method != handeye::Method::kMl) {
+  if (loss != RobustLoss::kNone && options.method != Method::kMl) {
     result.warnings.push_back("the robust loss applies to ml only; ignored for " +
-                              std::string(handeye::Info(options.method).name));
+                              std::string(Info(options.method).name));
   }
   if (!noise.converged) {
     result.warnings.push_back("the noise estimate did not converge; sigmas are approximate");
@@ -320,7 +320,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
       result.warnings.push_back(
           std::string(one ? "station " : "stations ") + StationList(flagged, options) + " " +
           (one ? "has" : "have") + " residuals beyond 3 sigma of the noise model at the " +
-          std::string(handeye::Info(options.method).name) + " estimate (flagged, still used: " +
+          std::string(Info(options.method).name) + " estimate (flagged, still used: " +
           (result.outlier_rejection
                ? "the outlier test at the ml fit passed " + std::string(one ? "it" : "them")
                : std::string("outlier rejection is off")) +

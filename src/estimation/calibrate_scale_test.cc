@@ -33,22 +33,22 @@ TEST(CalibrateAtScale, TwentyThousandStationsAtTheAccuracyTheDataAllow) {
       handeye::MakeProblem(data.setup, data.T_base_gripper_true, data.T_camera_target_true), data.X,
       data.Z, sigma, sigma);
   struct Expectation {
-    handeye::Method method;
+    Method method;
     double rotation;     // error / bound, at most
     double translation;  // error / bound, at most
     CovarianceMethod covariance;
   };
   for (const Expectation& e :
-       {Expectation{handeye::Method::kTsaiLenz, 4.0, 8.0, CovarianceMethod::kInformation},
-        Expectation{handeye::Method::kShah, 4.0, 60.0, CovarianceMethod::kInformation},
-        Expectation{handeye::Method::kMl, 4.0, 4.0, CovarianceMethod::kLinear}}) {
+       {Expectation{Method::kTsaiLenz, 4.0, 8.0, CovarianceMethod::kInformation},
+        Expectation{Method::kShah, 4.0, 60.0, CovarianceMethod::kInformation},
+        Expectation{Method::kMl, 4.0, 4.0, CovarianceMethod::kLinear}}) {
     CalibrateOptions options;
     options.method = e.method;
     options.robot_sigma = options.camera_sigma = sigma;
     options.reject_outliers = false;
     const CalibrationResult result = Calibrate(problem, options);
     const testing::PoseError error = testing::Error(result.X, data.X);
-    const std::string name(handeye::Info(e.method).name);
+    const std::string name(Info(e.method).name);
     std::printf("%-10s error / bound: rotation %.2f, translation %.2f\n", name.c_str(),
                 error.rotation / bound.rotation_rmse_X,
                 error.translation / bound.translation_rmse_X);

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/geometry/se3.h"
-#include "hecal/handeye/methods.h"
 #include "testing/handeye_cases.h"
 #include "testing/options_validity.h"
 
@@ -31,7 +31,7 @@ TEST(Calibrate, EveryMethodDispatches) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::Scene data = testing::ThesisCase(setup, 8, 81);
     const handeye::Problem problem = data.MeasuredProblem();
-    for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+    for (const MethodInfo& info : AllMethods()) {
       CalibrateOptions options;
       options.method = info.method;
       const CalibrationResult result = Calibrate(problem, options);
@@ -41,7 +41,7 @@ TEST(Calibrate, EveryMethodDispatches) {
       EXPECT_EQ(result.covariance->method, DefaultCovarianceMethod(info.method, problem.A.size()))
           << info.name;
       if (info.closed_form) {
-        const handeye::Solution direct = handeye::SolveClosedForm(info.method, problem);
+        const handeye::Solution direct = handeye::SolveClosedForm(*info.closed_form, problem);
         EXPECT_TRUE(result.X.isApprox(direct.X, 1e-12)) << info.name;
         EXPECT_TRUE(result.Z.isApprox(direct.Z, 1e-12)) << info.name;
       }
@@ -55,7 +55,7 @@ TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
       testing::ThesisCase(handeye::Setup::kEyeToHand, 15, 82, sigma.rotation, sigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
   const CalibrationResult estimated = Calibrate(problem, {});
-  EXPECT_EQ(estimated.method, handeye::Method::kMl);
+  EXPECT_EQ(estimated.method, Method::kMl);
   EXPECT_TRUE(estimated.sigmas_estimated);
   EXPECT_TRUE(AnyWarningContains(estimated, "estimated from the residuals"));
   ASSERT_TRUE(estimated.covariance.has_value());
@@ -132,7 +132,7 @@ TEST(Calibrate, RejectsBadOptionsAndDegenerateData) {
   zero.camera_sigma = PoseSigma{0.0, 0.001};
   EXPECT_THROW(Calibrate(problem, zero), InputError);
   CalibrateOptions robust_closed_form;
-  robust_closed_form.method = handeye::Method::kParkMartin;
+  robust_closed_form.method = Method::kParkMartin;
   robust_closed_form.robust_loss = RobustLoss::kHuber;
   EXPECT_TRUE(AnyWarningContains(Calibrate(problem, robust_closed_form), "ml only"));
   handeye::Problem two = problem;

@@ -80,8 +80,8 @@ std::string_view CovarianceMethodName(CovarianceMethod method) {
   return "none";
 }
 
-CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations) {
-  if (method == handeye::Method::kMl) return CovarianceMethod::kLinear;
+CovarianceMethod DefaultCovarianceMethod(Method method, size_t stations) {
+  if (Info(method).analytic_covariance) return CovarianceMethod::kLinear;
   return stations <= kMaxUnscentedStations ? CovarianceMethod::kUnscented
                                            : CovarianceMethod::kInformation;
 }
@@ -97,10 +97,10 @@ bool CovarianceOptions::IsValid(std::string* why) const {
   return true;
 }
 
-void CheckCovarianceFits(CovarianceMethod method, handeye::Method solver, size_t stations) {
+void CheckCovarianceFits(CovarianceMethod method, Method solver, size_t stations) {
   const bool analytic = method == CovarianceMethod::kNone ||
                         method == CovarianceMethod::kInformation ||
-                        (method == CovarianceMethod::kLinear && solver == handeye::Method::kMl);
+                        (method == CovarianceMethod::kLinear && Info(solver).analytic_covariance);
   if (analytic || stations <= kMaxPropagatedStations) return;
   std::string problem(CovarianceMethodName(method));
   problem += " propagation needs a dense 12n x 12n input covariance: at most ";
@@ -143,7 +143,7 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
                           const CalibrateOptions& options, const std::vector<bool>& kept) {
   const std::vector<handeye::Solution> start = {{result.X, result.Z}};
   switch (result.method) {
-    case handeye::Method::kMl: {
+    case Method::kMl: {
       MlOptions ml;
       ml.robot_sigma = result.robot_sigma;
       ml.camera_sigma = result.camera_sigma;
@@ -154,12 +154,12 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
         if (kept.empty() || kept[i]) ml.station_scale.push_back(result.station_scale[i]);
       return RefineMlFromGoodStart(problem, start.front(), ml);
     }
-    case handeye::Method::kStrobl: {
+    case Method::kStrobl: {
       const StroblResult refined = RefineStrobl(problem, start);
       return {refined.X, refined.Z};
     }
     default:
-      return handeye::SolveClosedForm(result.method, problem);
+      return handeye::SolveClosedForm(*Info(result.method).closed_form, problem);
   }
 }
 

@@ -23,7 +23,7 @@ TEST(UnscentedVsMonteCarlo, WithinTenPercentFromTenStations) {
   const PoseSigma sigma{1.0 * kDeg, 1e-3};
   std::printf("setup         method        n  seed  max|UT/MC-1|  (axis)\n");
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    for (handeye::Method method : {handeye::Method::kMl, handeye::Method::kParkMartin}) {
+    for (Method method : {Method::kMl, Method::kParkMartin}) {
       for (int n : {5, 10, 15, 20}) {
         for (uint64_t seed : {101u, 102u, 103u}) {
           const testing::Scene data =
@@ -53,13 +53,13 @@ TEST(UnscentedVsMonteCarlo, WithinTenPercentFromTenStations) {
             const double mc_sd = std::sqrt(mc.covariance(j, j));
             if (n >= 10) {
               EXPECT_NEAR(ut_sd, mc_sd, 0.10 * mc_sd + 3.0 * mc.sd_std_error(j))
-                  << handeye::SetupName(setup) << " " << handeye::Info(method).name << " n=" << n
-                  << " seed " << seed << " axis " << j;
+                  << handeye::SetupName(setup) << " " << Info(method).name << " n=" << n << " seed "
+                  << seed << " axis " << j;
             }
           }
           std::printf("%-13s %-12s %2d  %4d  %11.1f%%  (%s %s)\n",
                       std::string(handeye::SetupName(setup)).c_str(),
-                      std::string(handeye::Info(method).name).c_str(), n, static_cast<int>(seed),
+                      std::string(Info(method).name).c_str(), n, static_cast<int>(seed),
                       100.0 * worst, worst_axis < 6 ? "X" : "Z", kAxes[worst_axis % 6]);
         }
       }

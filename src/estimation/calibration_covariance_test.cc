@@ -25,7 +25,7 @@ struct Case {
   StationNoise noise;
 };
 
-Case MakeCase(handeye::Setup setup, handeye::Method method, uint64_t seed, int n = 15) {
+Case MakeCase(handeye::Setup setup, Method method, uint64_t seed, int n = 15) {
   const testing::Scene data =
       testing::ThesisCase(setup, n, seed, kSigma.rotation, kSigma.translation);
   Case c;
@@ -57,7 +57,7 @@ Eigen::Matrix<double, 12, 1> Sd(const CalibrationCovariance& c) {
 // (~2% at most), so 5%.
 TEST(PropagateCovariance, NumericLinearThroughMlEqualsTheInformationMatrix) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const Case c = MakeCase(setup, handeye::Method::kMl, 5);
+    const Case c = MakeCase(setup, Method::kMl, 5);
     const CalibrationCovariance numeric = Propagate(c, CovarianceMethod::kLinear);
     const AccuracyBound analytic =
         FirstOrderBound(c.problem, c.result.X, c.result.Z, kSigma, kSigma);
@@ -77,7 +77,7 @@ TEST(PropagateCovariance, NumericLinearThroughMlEqualsTheInformationMatrix) {
 // axis above the MC by more than the 3 standard errors.
 TEST(PropagateCovariance, UnscentedMatchesMonteCarloAndTheInformationBoundsIt) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    for (handeye::Method method : {handeye::Method::kMl, handeye::Method::kParkMartin}) {
+    for (Method method : {Method::kMl, Method::kParkMartin}) {
       const Case c = MakeCase(setup, method, 6);
       const CalibrationCovariance ut = Propagate(c, CovarianceMethod::kUnscented);
       const CalibrationCovariance mc = Propagate(c, CovarianceMethod::kMonteCarlo);
@@ -89,8 +89,8 @@ TEST(PropagateCovariance, UnscentedMatchesMonteCarloAndTheInformationBoundsIt) {
       for (int j = 0; j < 12; ++j) {
         const double tolerance = 0.10 * Sd(mc)(j) + 3.0 * mc.sd_std_error(j);
         EXPECT_NEAR(Sd(ut)(j), Sd(mc)(j), tolerance)
-            << handeye::SetupName(setup) << " " << handeye::Info(method).name << " axis " << j;
-        if (method == handeye::Method::kMl) {
+            << handeye::SetupName(setup) << " " << Info(method).name << " axis " << j;
+        if (method == Method::kMl) {
           EXPECT_NEAR(Sd(information)(j), Sd(mc)(j), tolerance) << handeye::SetupName(setup);
         } else {
           EXPECT_LT(Sd(information)(j), Sd(mc)(j) + 3.0 * mc.sd_std_error(j))
@@ -102,7 +102,7 @@ TEST(PropagateCovariance, UnscentedMatchesMonteCarloAndTheInformationBoundsIt) {
 }
 
 TEST(PropagateCovariance, NoiseFreeDevicesCostNoSolves) {
-  Case c = MakeCase(handeye::Setup::kEyeInHand, handeye::Method::kParkMartin, 7, 8);
+  Case c = MakeCase(handeye::Setup::kEyeInHand, Method::kParkMartin, 7, 8);
   c.noise = StationNoise::Uniform(8, kSigma, PoseSigma{0.0, 0.0});  // exact camera
   const CalibrationCovariance ut = Propagate(c, CovarianceMethod::kUnscented);
   EXPECT_EQ(ut.solves, 1 + 2 * 6 * 8);  // robot directions only
@@ -110,7 +110,7 @@ TEST(PropagateCovariance, NoiseFreeDevicesCostNoSolves) {
 }
 
 TEST(PropagateCovariance, NoneAndBadNoise) {
-  const Case c = MakeCase(handeye::Setup::kEyeInHand, handeye::Method::kShah, 8, 6);
+  const Case c = MakeCase(handeye::Setup::kEyeInHand, Method::kShah, 8, 6);
   CovarianceOptions none;
   none.method = CovarianceMethod::kNone;
   EXPECT_FALSE(PropagateCovariance(c.problem, c.result, c.options, c.noise, none).has_value());
@@ -131,7 +131,7 @@ TEST(Calibrate, AttachesTheDefaultOrRequestedCovariance) {
   ASSERT_TRUE(ml.covariance.has_value());
   EXPECT_EQ(ml.covariance->method, CovarianceMethod::kLinear);
   EXPECT_EQ(ml.covariance->solves, 0);
-  options.method = handeye::Method::kTsaiLenz;
+  options.method = Method::kTsaiLenz;
   const CalibrationResult tsai = Calibrate(problem, options);
   EXPECT_EQ(tsai.covariance->method, CovarianceMethod::kUnscented);
   EXPECT_EQ(tsai.covariance->solves, 1 + 24 * 10);
@@ -147,18 +147,17 @@ TEST(Calibrate, AttachesTheDefaultOrRequestedCovariance) {
 // Above kMaxUnscentedStations the closed forms default to the information covariance (no
 // solves); ml keeps its analytic one at every n.
 TEST(Calibrate, DefaultCovarianceByStationCount) {
-  for (handeye::Method method :
-       {handeye::Method::kTsaiLenz, handeye::Method::kShah, handeye::Method::kStrobl}) {
+  for (Method method : {Method::kTsaiLenz, Method::kShah, Method::kStrobl}) {
     EXPECT_EQ(DefaultCovarianceMethod(method, kMaxUnscentedStations), CovarianceMethod::kUnscented);
     EXPECT_EQ(DefaultCovarianceMethod(method, kMaxUnscentedStations + 1),
               CovarianceMethod::kInformation);
   }
-  EXPECT_EQ(DefaultCovarianceMethod(handeye::Method::kMl, 100000), CovarianceMethod::kLinear);
+  EXPECT_EQ(DefaultCovarianceMethod(Method::kMl, 100000), CovarianceMethod::kLinear);
   const int n = static_cast<int>(kMaxUnscentedStations) + 1;
   const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, n, 10, kSigma.rotation, kSigma.translation);
   CalibrateOptions options;
-  options.method = handeye::Method::kTsaiLenz;
+  options.method = Method::kTsaiLenz;
   options.robot_sigma = options.camera_sigma = kSigma;
   options.reject_outliers = false;
   options.model_check = false;  // the model's own covariance, compared with the bound below
@@ -178,7 +177,7 @@ TEST(Calibrate, PropagatedCovarianceRefusedAboveItsStationLimit) {
   const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, n, 11, kSigma.rotation, kSigma.translation);
   CalibrateOptions options;
-  options.method = handeye::Method::kTsaiLenz;
+  options.method = Method::kTsaiLenz;
   options.robot_sigma = options.camera_sigma = kSigma;
   options.reject_outliers = false;
   for (CovarianceMethod method :
@@ -196,7 +195,7 @@ TEST(Calibrate, PropagatedCovarianceRefusedAboveItsStationLimit) {
   options.covariance.method = CovarianceMethod::kInformation;
   EXPECT_EQ(Calibrate(data.MeasuredProblem(), options).covariance->method,
             CovarianceMethod::kInformation);
-  options.method = handeye::Method::kMl;
+  options.method = Method::kMl;
   options.covariance.method = CovarianceMethod::kLinear;
   EXPECT_EQ(Calibrate(data.MeasuredProblem(), options).covariance->method,
             CovarianceMethod::kLinear);
@@ -207,7 +206,7 @@ TEST(Calibrate, PropagatedCovarianceRefusedAboveItsStationLimit) {
 // was indefinite for 1 of these 25 data sets (the modified form of unscented.h).
 TEST(PropagateCovariance, UnscentedCovarianceIsPositiveDefiniteForDaniilidis) {
   for (uint64_t seed = 1; seed <= 25; ++seed) {
-    const Case c = MakeCase(handeye::Setup::kEyeInHand, handeye::Method::kDaniilidis, seed);
+    const Case c = MakeCase(handeye::Setup::kEyeInHand, Method::kDaniilidis, seed);
     const CalibrationCovariance ut = Propagate(c, CovarianceMethod::kUnscented);
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> eigen(ut.covariance);
     EXPECT_GT(eigen.eigenvalues().minCoeff(), 0.0) << seed;

@@ -27,12 +27,11 @@ handeye::Problem StartStations(const handeye::Problem& problem) {
 std::vector<InitialSolution> InitialSolutions(const handeye::Problem& problem) {
   const handeye::Problem stations = StartStations(problem);
   std::vector<InitialSolution> initial;
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
-    if (!info.closed_form) continue;
+  for (const handeye::ClosedFormInfo& info : handeye::ClosedForms()) {
     try {
-      handeye::Solution solution = handeye::SolveClosedForm(info.method, stations);
+      handeye::Solution solution = handeye::SolveClosedForm(info.form, stations);
       if (IsFinite(solution.X) && IsFinite(solution.Z)) {
-        initial.push_back({info.method, solution});
+        initial.push_back({info.form, solution});
       }
     } catch (const std::exception&) {
       // A solver that cannot handle these data is simply not a starting point.

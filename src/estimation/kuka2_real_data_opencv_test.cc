@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "hecal/estimation/calibrate.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
-#include "hecal/handeye/methods.h"
 
 namespace hecal::estimation {
 namespace {
@@ -81,7 +81,7 @@ TEST(Kuka2RealData, EveryMethodMatchesTheReferenceX) {
   const Pose reference = MakePose(so3::Exp(Eigen::Vector3d(-1.20742, 1.28362, -1.18276)),
                                   Eigen::Vector3d(0.01439, -0.10790, -0.08187));
 
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+  for (const MethodInfo& info : AllMethods()) {
     CalibrateOptions options;
     options.method = info.method;
     const CalibrationResult result = Calibrate(problem, options);
@@ -95,10 +95,10 @@ TEST(Kuka2RealData, EveryMethodMatchesTheReferenceX) {
     // 0.156° / 1.2 mm and 0.101° / 0.25 mm. Every other method is within 0.05° / 1.1 mm of the
     // reference (ml 0.014° / 0.41 mm).
     const bool algebraic_joint =
-        info.method == handeye::Method::kDaniilidis || info.method == handeye::Method::kAndreff;
+        info.method == Method::kDaniilidis || info.method == Method::kAndreff;
     EXPECT_LT(rotation, (algebraic_joint ? 0.25 : 0.1) * kDeg) << info.name;
     EXPECT_LT(translation, 0.002) << info.name;
-    if (info.method == handeye::Method::kMl) {
+    if (info.method == Method::kMl) {
       // The target stays put in the base frame to sub-millimetre (SOURCE.md: < 0.5 mm std).
       EXPECT_LT(result.translation_rms, 1.5e-3);
       EXPECT_LT(result.rotation_rms, 0.2 * kDeg);

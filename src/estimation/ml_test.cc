@@ -13,7 +13,7 @@
 #include "hecal/estimation/initialization.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
-#include "hecal/handeye/methods.h"
+#include "hecal/handeye/closed_form.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "testing/handeye_cases.h"
 #include "testing/options_validity.h"
@@ -181,7 +181,7 @@ TEST_P(MlTest, MultiStartNeverEndsInAWrongMinimum) {
     X_bad.linear() = data.X.linear() * so3::Exp(testing::RandomRotationVector(rng, 150.0 * kDeg));
     const handeye::Solution bad{X_bad, handeye::EstimateZ(problem, X_bad)};
     std::vector<InitialSolution> initial = InitialSolutions(problem);
-    initial.push_back({handeye::Method::kMl, bad});  // the label is irrelevant here
+    initial.push_back({handeye::ClosedForm::kTsaiLenz, bad});  // the label is irrelevant here
     const std::vector<handeye::Solution> starts = Solutions(initial);
     const MlResult multi = RefineMl(problem, starts, options);
     const MlResult single = RefineMl(problem, {bad}, options);

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "hecal/handeye/closed_form.h"
 #include "hecal/handeye/horaud.h"
-#include "hecal/handeye/methods.h"
 #include "hecal/handeye/park_martin.h"
 #include "hecal/handeye/tsai_lenz.h"
 #include "testing/handeye_solver_suite.h"
@@ -64,18 +64,18 @@ TEST(TsaiParkHoraudOpenCvPeer, BothExactOnNoiseFreeBenignData) {
 // pre-rotated frame; all three align quaternion signs through a sign-free estimate), so compare
 // their accuracy against the truth: hecal at least as accurate as OpenCV, within 10%.
 TEST(TsaiParkHoraudOpenCvPeer, AtLeastAsAccurateOnNoisyBenignData) {
-  const std::pair<const char*, cv::HandEyeCalibrationMethod> peers[] = {
-      {"tsai-lenz", cv::CALIB_HAND_EYE_TSAI},
-      {"park-martin", cv::CALIB_HAND_EYE_PARK},
-      {"horaud", cv::CALIB_HAND_EYE_HORAUD}};
-  for (const auto& [name, method] : peers) {
-    const Method hecal_method = *ParseMethod(name);
+  const std::pair<ClosedForm, cv::HandEyeCalibrationMethod> peers[] = {
+      {ClosedForm::kTsaiLenz, cv::CALIB_HAND_EYE_TSAI},
+      {ClosedForm::kParkMartin, cv::CALIB_HAND_EYE_PARK},
+      {ClosedForm::kHoraud, cv::CALIB_HAND_EYE_HORAUD}};
+  for (const auto& [form, method] : peers) {
+    const std::string name(Info(form).name);
     const testing::PeerAccuracy accuracy = testing::ComparePeerAccuracy(
-        [hecal_method, method](const Problem& problem, bool use_opencv) {
+        [form, method](const Problem& problem, bool use_opencv) {
           return use_opencv ? Solution{testing::OpenCvHandEye(problem, method), Pose::Identity()}
-                            : SolveClosedForm(hecal_method, problem);
+                            : SolveClosedForm(form, problem);
         },
-        40, /*check_z=*/false, name);
+        40, /*check_z=*/false, name.c_str());
     EXPECT_LE(accuracy.hecal_rotation_deg, 1.1 * accuracy.opencv_rotation_deg) << name;
     EXPECT_LE(accuracy.hecal_translation, 1.1 * accuracy.opencv_translation) << name;
   }

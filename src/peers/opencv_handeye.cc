@@ -43,25 +43,25 @@ Pose Inverse(const Pose& T) {
 
 }  // namespace
 
-bool HasOpenCvPeer(handeye::Method method) {
+bool HasOpenCvPeer(handeye::ClosedForm method) {
   switch (method) {
-    case handeye::Method::kTsaiLenz:
-    case handeye::Method::kParkMartin:
-    case handeye::Method::kHoraud:
-    case handeye::Method::kAndreff:
-    case handeye::Method::kDaniilidis:
-    case handeye::Method::kShah:
-    case handeye::Method::kLi:
+    case handeye::ClosedForm::kTsaiLenz:
+    case handeye::ClosedForm::kParkMartin:
+    case handeye::ClosedForm::kHoraud:
+    case handeye::ClosedForm::kAndreff:
+    case handeye::ClosedForm::kDaniilidis:
+    case handeye::ClosedForm::kShah:
+    case handeye::ClosedForm::kLi:
       return true;
     default:
       return false;
   }
 }
 
-std::vector<handeye::Method> OpenCvPeerMethods() {
-  std::vector<handeye::Method> methods;
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
-    if (HasOpenCvPeer(info.method)) methods.push_back(info.method);
+std::vector<handeye::ClosedForm> OpenCvPeerMethods() {
+  std::vector<handeye::ClosedForm> methods;
+  for (const handeye::ClosedFormInfo& info : handeye::ClosedForms()) {
+    if (HasOpenCvPeer(info.form)) methods.push_back(info.form);
   }
   return methods;
 }
@@ -83,11 +83,11 @@ OpenCvInput PrepareOpenCvInput(const handeye::Problem& problem) {
   return input;
 }
 
-handeye::Solution SolveWithOpenCv(handeye::Method method, const OpenCvInput& input,
+handeye::Solution SolveWithOpenCv(handeye::ClosedForm method, const OpenCvInput& input,
                                   bool estimate_z) {
   handeye::Solution solution;
-  if (method == handeye::Method::kShah || method == handeye::Method::kLi) {
-    const cv::RobotWorldHandEyeCalibrationMethod flag = method == handeye::Method::kShah
+  if (method == handeye::ClosedForm::kShah || method == handeye::ClosedForm::kLi) {
+    const cv::RobotWorldHandEyeCalibrationMethod flag = method == handeye::ClosedForm::kShah
                                                             ? cv::CALIB_ROBOT_WORLD_HAND_EYE_SHAH
                                                             : cv::CALIB_ROBOT_WORLD_HAND_EYE_LI;
     cv::Mat R_base2world, t_base2world, R_gripper2cam, t_gripper2cam;
@@ -99,19 +99,19 @@ handeye::Solution SolveWithOpenCv(handeye::Method method, const OpenCvInput& inp
   }
   cv::HandEyeCalibrationMethod flag = cv::CALIB_HAND_EYE_TSAI;
   switch (method) {
-    case handeye::Method::kTsaiLenz:
+    case handeye::ClosedForm::kTsaiLenz:
       flag = cv::CALIB_HAND_EYE_TSAI;
       break;
-    case handeye::Method::kParkMartin:
+    case handeye::ClosedForm::kParkMartin:
       flag = cv::CALIB_HAND_EYE_PARK;
       break;
-    case handeye::Method::kHoraud:
+    case handeye::ClosedForm::kHoraud:
       flag = cv::CALIB_HAND_EYE_HORAUD;
       break;
-    case handeye::Method::kAndreff:
+    case handeye::ClosedForm::kAndreff:
       flag = cv::CALIB_HAND_EYE_ANDREFF;
       break;
-    case handeye::Method::kDaniilidis:
+    case handeye::ClosedForm::kDaniilidis:
       flag = cv::CALIB_HAND_EYE_DANIILIDIS;
       break;
     default:
@@ -126,7 +126,7 @@ handeye::Solution SolveWithOpenCv(handeye::Method method, const OpenCvInput& inp
   return solution;
 }
 
-handeye::Solution SolveWithOpenCv(handeye::Method method, const handeye::Problem& problem) {
+handeye::Solution SolveWithOpenCv(handeye::ClosedForm method, const handeye::Problem& problem) {
   return SolveWithOpenCv(method, PrepareOpenCvInput(problem));
 }
 

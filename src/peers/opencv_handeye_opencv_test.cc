@@ -43,7 +43,8 @@ double TranslationError(const Pose& a, const Pose& b) {
   return (a.translation() - b.translation()).norm();
 }
 
-class OpenCvPeer : public ::testing::TestWithParam<std::tuple<handeye::Method, handeye::Setup>> {};
+class OpenCvPeer
+    : public ::testing::TestWithParam<std::tuple<handeye::ClosedForm, handeye::Setup>> {};
 
 TEST_P(OpenCvPeer, RecoversXAndZNoiseFreeInBothSetups) {
   const auto [method, setup] = GetParam();
@@ -76,11 +77,11 @@ INSTANTIATE_TEST_SUITE_P(AllPeers, OpenCvPeer,
                          });
 
 TEST(OpenCvPeer, TheSevenOpenCvMethodsAreMapped) {
-  const std::vector<handeye::Method> methods = OpenCvPeerMethods();
+  const std::vector<handeye::ClosedForm> methods = OpenCvPeerMethods();
   EXPECT_EQ(methods.size(), 7u);
-  EXPECT_TRUE(HasOpenCvPeer(handeye::Method::kDaniilidis));
-  EXPECT_FALSE(HasOpenCvPeer(handeye::Method::kMl));
-  EXPECT_FALSE(HasOpenCvPeer(handeye::Method::kChouKamel));
+  EXPECT_TRUE(HasOpenCvPeer(handeye::ClosedForm::kDaniilidis));
+  EXPECT_FALSE(HasOpenCvPeer(handeye::ClosedForm::kShiuAhmad));
+  EXPECT_FALSE(HasOpenCvPeer(handeye::ClosedForm::kChouKamel));
 }
 
 TEST(OpenCvPeer, TheEyeToHandInversionMatters) {
@@ -89,7 +90,7 @@ TEST(OpenCvPeer, TheEyeToHandInversionMatters) {
   const Data data = BenignData(handeye::Setup::kEyeToHand, 10, 4);
   const handeye::Problem wrong =
       handeye::MakeProblem(handeye::Setup::kEyeInHand, data.T_base_gripper, data.T_camera_target);
-  const handeye::Solution solution = SolveWithOpenCv(handeye::Method::kParkMartin, wrong);
+  const handeye::Solution solution = SolveWithOpenCv(handeye::ClosedForm::kParkMartin, wrong);
   EXPECT_GT(RotationError(solution.X, data.X) + TranslationError(solution.X, data.X), 1e-2);
 }
 

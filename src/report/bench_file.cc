@@ -32,7 +32,7 @@ std::string BenchJson(const study::BenchResult& result) {
   for (const study::BenchRow& row : result.rows) {
     nlohmann::json object;
     object["impl"] = row.impl;
-    object["method"] = std::string(handeye::Info(row.method).name);
+    object["method"] = std::string(estimation::Info(row.method).name);
     object["start"] = StartJson(row.start);
     object["stations"] = row.stations;
     object["us_per_solve"] = row.us_per_solve;

@@ -14,7 +14,7 @@ TEST(BenchJson, OneObjectPerRowWithTheDocumentedFields) {
   result.options.seed = 42;
   study::BenchRow closed;
   closed.impl = "hecal";
-  closed.method = handeye::Method::kParkMartin;
+  closed.method = estimation::Method::kParkMartin;
   closed.stations = 10;
   closed.us_per_solve = 12.5;
   closed.accuracy.rotation_error = std::numbers::pi / 180.0;  // 1 degree
@@ -22,7 +22,7 @@ TEST(BenchJson, OneObjectPerRowWithTheDocumentedFields) {
   closed.accuracy.failures = 1;
   closed.datasets = 8;
   study::BenchRow good = closed;
-  good.method = handeye::Method::kMl;
+  good.method = estimation::Method::kMl;
   good.start = study::BenchStart::kGood;
   good.accuracy.rotation_error.reset();
   good.accuracy.translation_error.reset();

@@ -5,8 +5,8 @@
 #include <exception>
 
 #include "hecal/core/error.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/estimation/station_selection.h"
-#include "hecal/handeye/methods.h"
 
 namespace hecal::report {
 
@@ -37,7 +37,7 @@ ResultDocument CalibrateFromPoses(const PoseCalibrationInput& input,
     // Degenerate data stop every method: then the first error is the answer. A method that
     // refuses data the others accept is reported and skipped.
     std::exception_ptr first_error;
-    for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+    for (const estimation::MethodInfo& info : estimation::AllMethods()) {
       options.method = info.method;
       try {
         document.results.push_back(estimation::Calibrate(input.problem, options, selection));

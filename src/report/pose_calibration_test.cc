@@ -11,7 +11,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
-#include "hecal/handeye/methods.h"
+#include "hecal/estimation/methods.h"
 #include "testing/random_poses.h"
 
 namespace hecal::report {
@@ -39,7 +39,7 @@ TEST(CalibrateFromPosesTest, OneMethodRecoversXAndZ) {
   const Pose X = testing::RandomPose(rng, 0.1);
   const Pose Z = testing::RandomPose(rng, 1.0);
   estimation::CalibrateOptions options;
-  options.method = handeye::Method::kTsaiLenz;
+  options.method = estimation::Method::kTsaiLenz;
   const ResultDocument document = CalibrateFromPoses(ExactInput(X, Z, 8), options, false);
   ASSERT_EQ(document.results.size(), 1u);
   EXPECT_FALSE(document.all_methods);
@@ -58,9 +58,9 @@ TEST(CalibrateFromPosesTest, EveryMethodIsAResultOrAFailure) {
   const Pose Z = testing::RandomPose(rng, 1.0);
   const ResultDocument document = CalibrateFromPoses(ExactInput(X, Z, 8), {}, true);
   EXPECT_TRUE(document.all_methods);
-  EXPECT_EQ(document.results.size() + document.failures.size(), handeye::AllMethods().size());
+  EXPECT_EQ(document.results.size() + document.failures.size(), estimation::AllMethods().size());
   for (const estimation::CalibrationResult& result : document.results) {
-    EXPECT_TRUE(result.X.isApprox(X, 1e-4)) << handeye::Info(result.method).name;
+    EXPECT_TRUE(result.X.isApprox(X, 1e-4)) << estimation::Info(result.method).name;
     EXPECT_EQ(result.warnings.at(0), "a note from the caller");
   }
 }

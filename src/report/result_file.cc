@@ -149,7 +149,7 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
                        {"reason", report.skipped_reasons[k]}});
   }
   json pose_level = {
-      {"method", handeye::Info(report.pose_level.method).name},
+      {"method", estimation::Info(report.pose_level.method).name},
       {"X", PoseJson(report.pose_level.X, handeye::XFrameName(document.setup), scale)},
       {"Z", PoseJson(report.pose_level.Z, handeye::ZFrameName(document.setup), scale)}};
   // The pose-level covariance's model check (the joint refinement's covariance is not checked).
@@ -169,7 +169,7 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
   json object = {
       {"hecal_version", hecal::kVersion},
       {"setup", handeye::SetupName(document.setup)},
-      {"method", handeye::Info(result.method).name},
+      {"method", estimation::Info(result.method).name},
       {"units", {{"length", io::UnitName(document.unit)}, {"angle", "rad"}}},
       {"X", PoseJson(result.X, handeye::XFrameName(document.setup), scale)},
       {"Z", PoseJson(result.Z, handeye::ZFrameName(document.setup), scale)},
@@ -293,7 +293,7 @@ std::string FormatResult(const ResultDocument& document, ResultFormat format) {
     for (const MethodFailure& failure : document.failures) {
       root["results"].push_back({{"hecal_version", hecal::kVersion},
                                  {"setup", handeye::SetupName(document.setup)},
-                                 {"method", handeye::Info(failure.method).name},
+                                 {"method", estimation::Info(failure.method).name},
                                  {"error", failure.message}});
     }
   } else {

@@ -24,7 +24,7 @@ ResultDocument MakeDocument() {
   document.station_ids = {"a", "b", "c"};
   document.rejected = {1};
   estimation::CalibrationResult result;
-  result.method = handeye::Method::kParkMartin;
+  result.method = estimation::Method::kParkMartin;
   result.X = se3::Exp((Vector6d() << 0.1, 0.2, -0.3, 1.0, -2.0, 0.5).finished());
   result.Z = se3::Exp((Vector6d() << -0.5, 0.0, 0.25, 0.01, 0.02, 0.03).finished());
   Matrix6d covariance = Matrix6d::Identity() * 1e-6;
@@ -114,7 +114,7 @@ TEST(ResultFile, AllMethodsWritesAResultsArray) {
   ResultDocument document = MakeDocument();
   document.all_methods = true;
   document.results.push_back(document.results[0]);
-  document.results[1].method = handeye::Method::kMl;
+  document.results[1].method = estimation::Method::kMl;
   const json j = json::parse(FormatResult(document, ResultFormat::kJson));
   ASSERT_TRUE(j.contains("results"));
   ASSERT_EQ(j["results"].size(), 2u);
@@ -124,7 +124,7 @@ TEST(ResultFile, AllMethodsWritesAResultsArray) {
 TEST(ResultFile, AllMethodsListsAMethodThatRefusedWithItsReason) {
   ResultDocument document = MakeDocument();
   document.all_methods = true;
-  document.failures.push_back({handeye::Method::kDaniilidis, "inconsistent motions"});
+  document.failures.push_back({estimation::Method::kDaniilidis, "inconsistent motions"});
   const json j = json::parse(FormatResult(document, ResultFormat::kJson));
   ASSERT_EQ(j["results"].size(), 2u);
   EXPECT_EQ(j["results"][1]["method"], "daniilidis");

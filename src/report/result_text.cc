@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hecal/estimation/methods.h"
 #include "hecal/geometry/rotation.h"
-#include "hecal/handeye/methods.h"
 #include "hecal/io/units.h"
 #include "hecal/report/translation_sigma.h"
 
@@ -51,7 +51,7 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
   const double scale = 1.0 / io::MetresPer(document.unit);
   const std::string_view unit = io::UnitName(document.unit);
   out << std::fixed << std::setprecision(6);
-  out << "method " << handeye::Info(result.method).name << " ("
+  out << "method " << estimation::Info(result.method).name << " ("
       << handeye::SetupName(document.setup) << ", " << result.residuals.size() << " stations)\n";
   PrintPose(out, "X", handeye::XFrameName(document.setup), result.X, scale, unit);
   PrintPose(out, "Z", handeye::ZFrameName(document.setup), result.Z, scale, unit);
@@ -111,7 +111,7 @@ void PrintMethodComparison(std::ostream& out, const ResultDocument& document) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   const std::string_view unit = io::UnitName(document.unit);
   const auto ml = std::find_if(document.results.begin(), document.results.end(),
-                               [](const auto& r) { return r.method == handeye::Method::kMl; });
+                               [](const auto& r) { return r.method == estimation::Method::kMl; });
   const std::string length = "res_" + std::string(unit);
   out << "\nside by side (X " << handeye::XFrameName(document.setup) << ")\n  " << std::left
       << std::setw(16) << "method" << std::right << std::setw(11) << "tx" << std::setw(12) << "ty"
@@ -123,7 +123,7 @@ void PrintMethodComparison(std::ostream& out, const ResultDocument& document) {
   out << std::fixed;
   for (const estimation::CalibrationResult& r : document.results) {
     const Eigen::Vector3d t = r.X.translation() * scale;
-    out << "  " << std::left << std::setw(16) << handeye::Info(r.method).name << std::right
+    out << "  " << std::left << std::setw(16) << estimation::Info(r.method).name << std::right
         << std::setprecision(6) << std::setw(11) << t.x() << std::setw(12) << t.y() << std::setw(12)
         << t.z() << std::setprecision(4) << std::setw(12) << r.rotation_rms * kDegrees
         << std::setw(9) << r.translation_rms * scale;
@@ -141,7 +141,7 @@ void PrintMethodComparison(std::ostream& out, const ResultDocument& document) {
     out << "\n";
   }
   for (const MethodFailure& failure : document.failures)
-    out << "  " << std::left << std::setw(16) << handeye::Info(failure.method).name << std::right
+    out << "  " << std::left << std::setw(16) << estimation::Info(failure.method).name << std::right
         << "refused: " << failure.message << "\n";
   out.unsetf(std::ios::floatfield);
 }

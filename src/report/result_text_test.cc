@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-estimation::CalibrationResult QuarterTurn(handeye::Method method, double tz_m) {
+estimation::CalibrationResult QuarterTurn(estimation::Method method, double tz_m) {
   estimation::CalibrationResult result;
   result.method = method;
   Eigen::Matrix3d R;
@@ -37,7 +37,7 @@ ResultDocument Document() {
   document.unit = io::LengthUnit::kMillimetre;
   document.station_ids = {"s1", "s2", "s3"};
   document.rejected = {1};
-  document.results = {QuarterTurn(handeye::Method::kMl, 0.3)};
+  document.results = {QuarterTurn(estimation::Method::kMl, 0.3)};
   return document;
 }
 
@@ -90,8 +90,8 @@ TEST(ResultText, SigmaAlongBothFrames) {
 TEST(ResultText, ComparisonAgainstMl) {
   ResultDocument document = Document();
   document.all_methods = true;
-  document.results.push_back(QuarterTurn(handeye::Method::kTsaiLenz, 0.301));
-  document.failures = {{handeye::Method::kShah, "too few stations"}};
+  document.results.push_back(QuarterTurn(estimation::Method::kTsaiLenz, 0.301));
+  document.failures = {{estimation::Method::kShah, "too few stations"}};
   std::ostringstream out;
   PrintMethodComparison(out, document);
   const std::string text = out.str();

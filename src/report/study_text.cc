@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "hecal/handeye/methods.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/report/text_table.h"
 #include "hecal/study/study_csv.h"
 
@@ -29,7 +29,7 @@ void PrintConsistency(const study::StudyResult& result, size_t setting, std::ost
       header = true;
     }
     const bool in_band = c.band.Contains(c.mean_nees);
-    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+    out << "  " << Pad(std::string(estimation::Info(m.method).name), 18, true)
         << Pad(Fixed(c.mean_nees, 2), 8)
         << Pad(std::string("[") + Fixed(c.band.low, 2) + ", " + Fixed(c.band.high, 2) + "]", 16)
         << Pad(in_band ? "ok" : "out", 4) << Pad(Fixed(100.0 * c.coverage_1sigma, 1) + "%", 9)
@@ -60,7 +60,7 @@ void PrintRejection(const study::StudyResult& result, size_t setting, std::ostre
     const auto percent = [](int part, int whole) {
       return whole > 0 ? Fixed(100.0 * part / whole, 1) + "%" : std::string("-");
     };
-    out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+    out << "  " << Pad(std::string(estimation::Info(m.method).name), 18, true)
         << Pad(percent(m.outliers_rejected, m.outliers_injected), 9)
         << Pad(percent(m.trials_all_found, m.trials - m.failures), 11)
         << Pad(percent(m.good_rejected, m.good_stations), 10)
@@ -114,7 +114,7 @@ void PrintStudyTable(std::ostream& out, const study::StudyResult& result) {
     for (; row < result.summaries.size() && result.summaries[row].setting == static_cast<int>(s);
          ++row) {
       const study::MethodSummary& m = result.summaries[row];
-      out << "  " << Pad(std::string(handeye::Info(m.method).name), 18, true)
+      out << "  " << Pad(std::string(estimation::Info(m.method).name), 18, true)
           << Pad(std::to_string(m.failures), 5) << Pad(std::to_string(m.outliers), 5)
           << Pad(Readable(m.rotation.median * kDeg), 12)
           << Pad(Readable(m.rotation.rmse * kDeg), 10) << Pad(Readable(m.rotation.p10 * kDeg), 10)
@@ -150,7 +150,7 @@ void PrintBenchTable(std::ostream& out, const study::BenchResult& result) {
         peer = &other;
       }
     }
-    out << Pad(std::string(handeye::Info(row.method).name), 18, true)
+    out << Pad(std::string(estimation::Info(row.method).name), 18, true)
         << Pad(std::to_string(row.stations), 4) << Pad(Printf("%.2f", row.us_per_solve), 12)
         << Pad(peer ? Printf("%.2f", peer->us_per_solve) : "-", 12)
         << Pad(peer ? Printf("%.1fx", peer->us_per_solve / row.us_per_solve) : "-", 10)
@@ -171,7 +171,7 @@ void PrintBenchTable(std::ostream& out, const study::BenchResult& result) {
         multi = &other;
       }
     }
-    out << handeye::Info(row.method).name << " from a good start, n = " << row.stations << ": "
+    out << estimation::Info(row.method).name << " from a good start, n = " << row.stations << ": "
         << Printf("%.2f", row.us_per_solve) << " us per solve"
         << (multi ? Printf(", %.1fx faster than from the closed-form starts",
                            multi->us_per_solve / row.us_per_solve)

@@ -27,7 +27,7 @@ TEST(StudyText, OneSettingOneMethod) {
   result.options.trials = 10;
   result.setting_bounds = {{0.5 * kRad, 0.25e-3}};
   study::MethodSummary m;
-  m.method = handeye::Method::kTsaiLenz;
+  m.method = estimation::Method::kTsaiLenz;
   m.trials = 10;
   m.failures = 1;
   m.outliers = 2;
@@ -61,7 +61,7 @@ TEST(StudyText, BenchAgainstThePeer) {
   result.options.seed = 7;
   study::BenchRow hecal;
   hecal.impl = "hecal";
-  hecal.method = handeye::Method::kTsaiLenz;
+  hecal.method = estimation::Method::kTsaiLenz;
   hecal.start = study::BenchStart::kNotApplicable;
   hecal.stations = 10;
   hecal.us_per_solve = 5.0;

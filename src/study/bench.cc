@@ -66,7 +66,7 @@ double MicrosecondsPerSolve(std::size_t sets, const BenchSolver& solve, double m
   return elapsed * 1e6 / static_cast<double>(solves);
 }
 
-BenchRow Measure(const std::string& impl, handeye::Method method, BenchStart start, int stations,
+BenchRow Measure(const std::string& impl, estimation::Method method, BenchStart start, int stations,
                  const std::vector<BenchDataSet>& sets, const BenchSolver& solve, double min_time) {
   BenchRow row;
   row.impl = impl;
@@ -148,11 +148,11 @@ std::vector<BenchDataSet> MakeBenchDataSets(handeye::Setup setup, int stations, 
   return sets;
 }
 
-BenchSolver HecalSolver(handeye::Method method, const std::vector<BenchDataSet>& sets,
+BenchSolver HecalSolver(estimation::Method method, const std::vector<BenchDataSet>& sets,
                         const NoiseLevel& sigma) {
-  if (handeye::Info(method).closed_form) {
-    return [method, &sets](std::size_t i) {
-      return handeye::SolveClosedForm(method, sets[i].problem).X;
+  if (const std::optional<handeye::ClosedForm> form = estimation::Info(method).closed_form) {
+    return [form = *form, &sets](std::size_t i) {
+      return handeye::SolveClosedForm(form, sets[i].problem).X;
     };
   }
   estimation::CalibrateOptions options = SolveOnly(sigma);
@@ -217,12 +217,12 @@ BenchResult RunBench(const BenchOptions& options, const std::optional<BenchPeer>
   for (int n : options.stations) {
     const std::vector<BenchDataSet> sets =
         MakeBenchDataSets(options.setup, n, options.datasets, options.sigma, options.seed);
-    for (handeye::Method method : options.methods) {
-      const BenchStart start =
-          handeye::Info(method).closed_form ? BenchStart::kNotApplicable : BenchStart::kClosedForm;
+    for (estimation::Method method : options.methods) {
+      const BenchStart start = estimation::Info(method).closed_form ? BenchStart::kNotApplicable
+                                                                    : BenchStart::kClosedForm;
       result.rows.push_back(Measure("hecal", method, start, n, sets,
                                     HecalSolver(method, sets, options.sigma), options.min_time));
-      if (method == handeye::Method::kMl) {
+      if (method == estimation::Method::kMl) {
         result.rows.push_back(Measure("hecal", method, BenchStart::kGood, n, sets,
                                       GoodStartMlSolver(sets, options.sigma), options.min_time));
       }

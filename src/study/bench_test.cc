@@ -77,14 +77,14 @@ TEST(RunBench, NoiseFreeDataAreSolvedExactlyInRowOrder) {
   options.datasets = 2;
   options.sigma = {0.0, 0.0};
   options.min_time = 0.0;
-  options.methods = {handeye::Method::kParkMartin, handeye::Method::kMl};
+  options.methods = {estimation::Method::kParkMartin, estimation::Method::kMl};
   BenchPeer peer;
   peer.name = "peer";
   int prepared = 0;
-  peer.prepare = [&prepared](handeye::Method method,
+  peer.prepare = [&prepared](estimation::Method method,
                              const std::vector<BenchDataSet>& sets) -> std::optional<BenchSolver> {
     ++prepared;
-    if (method != handeye::Method::kParkMartin) return std::nullopt;
+    if (method != estimation::Method::kParkMartin) return std::nullopt;
     return [&sets](std::size_t i) { return sets[i].data.X; };
   };
   const BenchResult result = RunBench(options, peer);

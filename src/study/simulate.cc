@@ -35,9 +35,10 @@ std::string FirstOutside(const std::vector<int>& values, int low, int high) {
 
 }  // namespace
 
-std::vector<handeye::Method> EveryMethod() {
-  std::vector<handeye::Method> methods;
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) methods.push_back(info.method);
+std::vector<estimation::Method> EveryMethod() {
+  std::vector<estimation::Method> methods;
+  for (const estimation::MethodInfo& info : estimation::AllMethods())
+    methods.push_back(info.method);
   return methods;
 }
 

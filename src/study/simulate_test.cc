@@ -36,7 +36,7 @@ void ExpectInvalid(const std::function<void(SimulateOptions&)>& spoil, const std
 TEST(SimulateOptions, DefaultsAreValid) {
   std::string why;
   EXPECT_TRUE(SimulateOptions().IsValid(&why)) << why;
-  EXPECT_EQ(SimulateOptions().methods.size(), handeye::AllMethods().size());
+  EXPECT_EQ(SimulateOptions().methods.size(), estimation::AllMethods().size());
 }
 
 TEST(SimulateOptions, EachCheckedFieldRejectsABadValue) {
@@ -80,7 +80,7 @@ TEST(SimulateOptions, EachCheckedFieldRejectsABadValue) {
   // 15 settings × 100000 trials × 1 method.
   ExpectInvalid(
       [](SimulateOptions& o) {
-        o.methods = {handeye::Method::kAndreff};
+        o.methods = {estimation::Method::kAndreff};
         o.trials = 100000;
       },
       "trials", "1500000 trial rows, more than 1000000");
@@ -117,7 +117,7 @@ TEST(Simulate, NoiseFreeDataGiveTheTruthToRounding) {
   SimulateOptions options;
   options.stations = {4};
   options.sigmas = {{0.0, 0.0}};
-  options.methods = {handeye::Method::kParkMartin};
+  options.methods = {estimation::Method::kParkMartin};
   options.trials = 3;
   options.threads = 1;
   const StudyResult result = Simulate(options);

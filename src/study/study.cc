@@ -95,12 +95,13 @@ struct Estimate {
 // One method on one data set. Without a covariance, closed-form methods go straight to their
 // solver (what `hecal bench` times) and the refinements through Calibrate with the noise model
 // of the setting; with one, every method goes through Calibrate with that noise model.
-Estimate SolveX(handeye::Method method, const handeye::Problem& problem, const Setting& setting,
+Estimate SolveX(estimation::Method method, const handeye::Problem& problem, const Setting& setting,
                 const StudyOptions& study) {
   const estimation::CovarianceOptions& covariance = study.covariance;
   const bool wants_covariance = covariance.method != estimation::CovarianceMethod::kNone;
-  if (handeye::Info(method).closed_form && !wants_covariance && !study.reject_outliers) {
-    return {handeye::SolveClosedForm(method, problem).X, std::nullopt, std::nullopt, false, {}, {}};
+  const std::optional<handeye::ClosedForm> form = estimation::Info(method).closed_form;
+  if (form && !wants_covariance && !study.reject_outliers) {
+    return {handeye::SolveClosedForm(*form, problem).X, std::nullopt, std::nullopt, false, {}, {}};
   }
   estimation::CalibrateOptions options;
   options.method = method;

@@ -55,11 +55,12 @@ std::string TrialsCsv(const StudyResult& result) {
   for (const TrialResult& trial : result.trials) {
     const Setting& setting = result.options.settings[trial.setting];
     const Bound& bound = result.bounds[trial.setting][trial.trial];
-    out << SettingColumns(setting) << ',' << trial.trial << ',' << handeye::Info(trial.method).name
-        << ',' << TrialStatusName(trial.status) << ',' << FormatNumber(trial.rotation_error * kDeg)
-        << ',' << FormatNumber(trial.translation_error * kMm) << ',' << (trial.outlier ? 1 : 0)
-        << ',' << FormatNumber(bound.rotation * kDeg) << ','
-        << FormatNumber(bound.translation * kMm) << ',' << FormatNumber(trial.nees) << ','
+    out << SettingColumns(setting) << ',' << trial.trial << ','
+        << estimation::Info(trial.method).name << ',' << TrialStatusName(trial.status) << ','
+        << FormatNumber(trial.rotation_error * kDeg) << ','
+        << FormatNumber(trial.translation_error * kMm) << ',' << (trial.outlier ? 1 : 0) << ','
+        << FormatNumber(bound.rotation * kDeg) << ',' << FormatNumber(bound.translation * kMm)
+        << ',' << FormatNumber(trial.nees) << ','
         << (trial.message.empty() ? std::string() : Quoted(trial.message)) << ','
         << setting.gross_outliers << ',' << trial.rejected_outliers << ',' << trial.rejected_good
         << ',' << FormatNumber(trial.rotation_error_clean * kDeg) << ','
@@ -87,8 +88,9 @@ std::string SummaryCsv(const StudyResult& result) {
          "check_used\n";
   for (const MethodSummary& s : result.summaries) {
     const Bound& bound = result.setting_bounds[s.setting];
-    out << SettingColumns(result.options.settings[s.setting]) << ',' << handeye::Info(s.method).name
-        << ',' << s.trials << ',' << s.failures << ',' << s.outliers << ',';
+    out << SettingColumns(result.options.settings[s.setting]) << ','
+        << estimation::Info(s.method).name << ',' << s.trials << ',' << s.failures << ','
+        << s.outliers << ',';
     AppendStatistics(out, s.rotation, s.rotation_rmse_inliers, kDeg);
     out << ',';
     AppendStatistics(out, s.translation, s.translation_rmse_inliers, kMm);

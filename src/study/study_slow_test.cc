@@ -27,9 +27,10 @@ std::vector<Setting> Sweep(const std::vector<int>& stations, double mm, double d
   return settings;
 }
 
-std::vector<handeye::Method> Every() {
-  std::vector<handeye::Method> methods;
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) methods.push_back(info.method);
+std::vector<estimation::Method> Every() {
+  std::vector<estimation::Method> methods;
+  for (const estimation::MethodInfo& info : estimation::AllMethods())
+    methods.push_back(info.method);
   return methods;
 }
 
@@ -40,7 +41,7 @@ TEST(ThesisStudy, NoiseFreeEverySolverRecoversXTo1e9) {
   options.trials = 100;
   const StudyResult result = RunStudy(options);
   for (const MethodSummary& s : result.summaries) {
-    const std::string name(handeye::Info(s.method).name);
+    const std::string name(estimation::Info(s.method).name);
     EXPECT_EQ(s.failures, 0) << name;
     EXPECT_LT(s.rotation.max, 1e-9) << name;
     EXPECT_LT(s.translation.max, 1e-9) << name;
@@ -50,7 +51,7 @@ TEST(ThesisStudy, NoiseFreeEverySolverRecoversXTo1e9) {
 TEST(ThesisStudy, MlReachesTheFirstOrderBoundAtFifteenStations) {
   StudyOptions options;
   options.settings = Sweep({15}, 1.0, 1.0);
-  options.methods = {handeye::Method::kMl};
+  options.methods = {estimation::Method::kMl};
   options.trials = 200;
   const StudyResult result = RunStudy(options);
   for (const MethodSummary& s : result.summaries) {
@@ -65,14 +66,14 @@ TEST(ThesisStudy, MlReachesTheFirstOrderBoundAtFifteenStations) {
 TEST(ThesisStudy, NoCatastrophicClosedFormTrialAtLowNoise) {
   StudyOptions options;
   options.settings = Sweep({5, 10, 20}, 0.3, 0.3);
-  for (const handeye::MethodInfo& info : handeye::AllMethods()) {
+  for (const estimation::MethodInfo& info : estimation::AllMethods()) {
     if (info.closed_form) options.methods.push_back(info.method);
   }
   options.trials = 200;
   const StudyResult result = RunStudy(options);
   for (const MethodSummary& s : result.summaries) {
-    EXPECT_EQ(s.failures, 0) << handeye::Info(s.method).name;
-    EXPECT_LT(s.rotation.max, 10.0 * kDeg) << handeye::Info(s.method).name;
+    EXPECT_EQ(s.failures, 0) << estimation::Info(s.method).name;
+    EXPECT_LT(s.rotation.max, 10.0 * kDeg) << estimation::Info(s.method).name;
   }
 }
 
@@ -83,7 +84,7 @@ TEST(ThesisStudy, NoCatastrophicClosedFormTrialAtLowNoise) {
 TEST(ThesisStudy, MlUnscentedCovarianceIsConsistent) {
   StudyOptions options;
   options.settings = Sweep({15}, 1.0, 1.0);
-  options.methods = {handeye::Method::kMl};
+  options.methods = {estimation::Method::kMl};
   options.trials = 200;
   options.covariance.method = estimation::CovarianceMethod::kUnscented;
   const StudyResult result = RunStudy(options);

@@ -75,7 +75,7 @@ TEST(TrialSeed, DependsOnEverythingButTheNoise) {
 
 TEST(ValidateStudyOptions, RejectsUnusableOptions) {
   StudyOptions options;
-  options.methods = {handeye::Method::kParkMartin};
+  options.methods = {estimation::Method::kParkMartin};
   EXPECT_THROW(ValidateStudyOptions(options), InputError);  // no setting
   options.settings = {MakeSetting(handeye::Setup::kEyeInHand, 2, 0.0, 0.0)};
   EXPECT_THROW(ValidateStudyOptions(options), InputError);  // 2 stations
@@ -96,7 +96,8 @@ StudyOptions SmallStudy(int threads) {
                       MakeSetting(handeye::Setup::kEyeInHand, 5, 0.5, 0.5),
                       MakeSetting(handeye::Setup::kEyeToHand, 4, 0.5, 0.5, NoiseOn::kRobot,
                                   sim::NoiseModel::Kind::kUniform)};
-  options.methods = {handeye::Method::kParkMartin, handeye::Method::kAndreff, handeye::Method::kMl};
+  options.methods = {estimation::Method::kParkMartin, estimation::Method::kAndreff,
+                     estimation::Method::kMl};
   options.trials = 6;
   options.seed = 42;
   options.threads = threads;
@@ -162,7 +163,7 @@ TEST(RunStudy, NoiseSweepsShareTheGroundTruthPerTrial) {
   StudyOptions options;
   options.settings = {MakeSetting(handeye::Setup::kEyeInHand, 6, 0.5, 0.5),
                       MakeSetting(handeye::Setup::kEyeInHand, 6, 1.0, 1.0)};
-  options.methods = {handeye::Method::kParkMartin};
+  options.methods = {estimation::Method::kParkMartin};
   options.trials = 4;
   const StudyResult result = RunStudy(options);
   for (int t = 0; t < 4; ++t) {
@@ -180,7 +181,7 @@ TEST(RunStudy, RoundingNoiseIsNeverAnOutlier) {
   StudyOptions options;
   options.settings = {MakeSetting(handeye::Setup::kEyeInHand, 3, 0.0, 0.0),
                       MakeSetting(handeye::Setup::kEyeInHand, 5, 0.0, 0.0)};
-  options.methods = {handeye::Method::kParkMartin, handeye::Method::kAndreff};
+  options.methods = {estimation::Method::kParkMartin, estimation::Method::kAndreff};
   options.trials = 60;
   const StudyResult result = RunStudy(options);
   for (const MethodSummary& s : result.summaries) EXPECT_EQ(s.outliers, 0);
@@ -189,7 +190,7 @@ TEST(RunStudy, RoundingNoiseIsNeverAnOutlier) {
 TEST(StudyCsv, HeaderAndOneRowPerTrialAndMethod) {
   StudyOptions options;
   options.settings = {MakeSetting(handeye::Setup::kEyeToHand, 5, 0.3, 0.3)};
-  options.methods = {handeye::Method::kParkMartin, handeye::Method::kTsaiLenz};
+  options.methods = {estimation::Method::kParkMartin, estimation::Method::kTsaiLenz};
   options.trials = 3;
   const StudyResult result = RunStudy(options);
   const std::string trials = TrialsCsv(result);
@@ -217,7 +218,7 @@ TEST(StudyCsv, HeaderAndOneRowPerTrialAndMethod) {
 StudyOptions MlLinearStudy(std::vector<Setting> settings, int trials) {
   StudyOptions options;
   options.settings = std::move(settings);
-  options.methods = {handeye::Method::kMl};
+  options.methods = {estimation::Method::kMl};
   options.trials = trials;
   options.covariance.method = estimation::CovarianceMethod::kLinear;
   return options;
@@ -345,7 +346,7 @@ TEST(RunStudy, AnOptimisticCovarianceLeavesTheBand) {
 TEST(RunStudy, NoCovarianceByDefault) {
   StudyOptions options;
   options.settings = {MakeSetting(handeye::Setup::kEyeInHand, 6, 1.0, 1.0)};
-  options.methods = {handeye::Method::kParkMartin};
+  options.methods = {estimation::Method::kParkMartin};
   options.trials = 3;
   const StudyResult result = RunStudy(options);
   EXPECT_FALSE(result.summaries[0].consistency.has_value());
@@ -366,7 +367,7 @@ namespace {
 // data give RMSEs of degrees to tens of degrees.
 TEST(RunStudy, GrossOutliersAreRejectedAndCostNothing) {
   StudyOptions options;
-  options.methods = {handeye::Method::kMl};
+  options.methods = {estimation::Method::kMl};
   options.trials = 200;
   options.reject_outliers = true;
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
@@ -399,7 +400,7 @@ TEST(RunStudy, GrossOutliersAreRejectedAndCostNothing) {
 // Too many gross outliers for the stations is refused as an option.
 TEST(ValidateStudyOptions, RejectsOutliersThatLeaveTooFewGoodStations) {
   StudyOptions options;
-  options.methods = {handeye::Method::kMl};
+  options.methods = {estimation::Method::kMl};
   Setting setting = MakeSetting(handeye::Setup::kEyeInHand, 5, 1.0, 1.0);
   setting.gross_outliers = 3;
   options.settings = {setting};

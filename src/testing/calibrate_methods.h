@@ -15,14 +15,14 @@
 #include <vector>
 
 #include "hecal/estimation/calibrate.h"
-#include "hecal/handeye/methods.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::testing {
 
 // Every method, in the order `--method all` reports them.
 inline auto Registry() {
-  return handeye::AllMethods();
+  return estimation::AllMethods();
 }
 
 inline std::vector<std::string> CalibrateMethodNames() {

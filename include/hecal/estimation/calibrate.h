@@ -1,9 +1,9 @@
 // hecal's top-level hand–eye calibration: any method by name, residuals, outlier flags,
 // warnings. This is what `hecal calibrate` calls (docs/result-file.md).
 //
-// Methods: the closed-form solvers through handeye::SolveClosedForm; `strobl` (strobl.h) and
-// `ml` (ml.h, the default) refined from every closed-form solution that succeeds
-// (initialization.h). Degenerate data are rejected first (handeye::CheckObservability).
+// Methods (by name: methods.h): the closed-form solvers through handeye::SolveClosedForm;
+// `strobl` (strobl.h) and `ml` (ml.h, the default) refined from every closed-form solution that
+// succeeds (initialization.h). Degenerate data are rejected first (handeye::CheckObservability).
 //
 // Residual of station i (problem.h, Z = A_i X B_i):  r_i = Log(Z⁻¹ · A_i · X · B_i) ∈ R⁶, (ω, v)
 // order, right perturbation of Z. Reported per station: the rotation angle |ω| and the
@@ -36,19 +36,19 @@
 #include <vector>
 
 #include "hecal/estimation/covariance_method.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/estimation/model_check.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/station_selection.h"
 #include "hecal/geometry/types.h"
-#include "hecal/handeye/methods.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::estimation {
 
 struct CalibrateOptions {
-  handeye::Method method = handeye::Method::kMl;
+  Method method = Method::kMl;
   std::optional<PoseSigma> robot_sigma;   // --robot-sigma; estimated when absent
   std::optional<PoseSigma> camera_sigma;  // --camera-sigma; estimated when absent
   // Robust loss for ml (robust_loss.h); scale in whitened units per component (the default
@@ -81,7 +81,7 @@ struct StationResidual {
 };
 
 struct CalibrationResult {
-  handeye::Method method = handeye::Method::kMl;
+  Method method = Method::kMl;
   Pose X = Pose::Identity();
   Pose Z = Pose::Identity();
   // Right-perturbation covariance of (X, Z), (rx, ry, rz, tx, ty, tz) each, radians and

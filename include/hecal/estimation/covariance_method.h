@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hecal/estimation/methods.h"
 #include "hecal/geometry/types.h"
-#include "hecal/handeye/methods.h"
 #include "hecal/uncertainty/monte_carlo.h"
 #include "hecal/uncertainty/unscented.h"
 
@@ -32,10 +32,11 @@ inline constexpr size_t kMaxUnscentedStations = 100;
 // Above it only kInformation (and ml's kLinear, its analytic information) are offered.
 inline constexpr size_t kMaxPropagatedStations = 500;
 
-// kLinear for ml (its analytic Gauss–Newton information: free and validated). For every other
-// method kUnscented up to kMaxUnscentedStations stations (the contour paper's approach; a numeric
-// linearisation costs the same solves), kInformation above.
-CovarianceMethod DefaultCovarianceMethod(handeye::Method method, size_t stations);
+// kLinear for ml (its analytic Gauss–Newton information: free and validated;
+// MethodInfo::analytic_covariance, methods.h). For every other method kUnscented up to
+// kMaxUnscentedStations stations (the contour paper's approach; a numeric linearisation costs the
+// same solves), kInformation above.
+CovarianceMethod DefaultCovarianceMethod(Method method, size_t stations);
 
 // The most Monte Carlo samples (10^5 solves of two poses each).
 inline constexpr int kMaxCovarianceSamples = 100000;
@@ -54,7 +55,7 @@ struct CovarianceOptions {
 // Throws InputError (source "CovarianceOptions.method") when `method` for `solver` needs the dense
 // input covariance and there are more than kMaxPropagatedStations stations. Calibrate calls it
 // before solving, PropagateCovariance again.
-void CheckCovarianceFits(CovarianceMethod method, handeye::Method solver, size_t stations);
+void CheckCovarianceFits(CovarianceMethod method, Method solver, size_t stations);
 
 struct CalibrationCovariance {
   CovarianceMethod method = CovarianceMethod::kLinear;

@@ -1,6 +1,6 @@
 // Starting points for the iterative refinements (ml, strobl): every closed-form solver of
-// handeye/methods.h run on the data. Initialisation must never be the weak point (at n = 5, σ = 1
-// mm / 1° a single Park–Martin start lands in a wrong local minimum in ~10% of trials), so the
+// handeye/closed_form.h run on the data. Initialisation must never be the weak point (at n = 5, σ =
+// 1 mm / 1° a single Park–Martin start lands in a wrong local minimum in ~10% of trials), so the
 // refinements start from all of them and keep the lowest final cost. A solver that throws (e.g.
 // Daniilidis rejecting every motion pair) is skipped; degenerate data are rejected before
 // (CheckObservability) by the caller. Above kMaxStartStations stations the closed forms run on
@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "hecal/handeye/methods.h"
+#include "hecal/handeye/closed_form.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::estimation {
@@ -22,12 +22,12 @@ namespace hecal::estimation {
 inline constexpr size_t kMaxStartStations = 500;
 
 struct InitialSolution {
-  handeye::Method method;
+  handeye::ClosedForm form;
   handeye::Solution solution;
 };
 
 // The closed-form solutions that succeeded (on at most kMaxStartStations stations, above), in
-// AllMethods() order; empty if none did.
+// handeye::ClosedForms() order; empty if none did.
 std::vector<InitialSolution> InitialSolutions(const handeye::Problem& problem);
 
 // Just the solutions.

@@ -8,7 +8,7 @@
 // accumulates its normal equations over the motions (small fixed-size operations, no large
 // matrix), so its cost and memory are linear in the number of motions.
 //
-// Which pairs (StationPairs, what the dispatcher methods.h uses):
+// Which pairs (StationPairs, what the dispatcher closed_form.h uses):
 //  - every pair i < j while there are at most kMaxAllPairs of them (n ≤ 632 stations; the
 //    README's accuracy tables, n ≤ 50, and `hecal bench` are all-pairs exactly);
 //  - above, a subsample linear in n: every station i draws k = max(kMinPartners,

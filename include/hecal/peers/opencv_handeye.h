@@ -45,15 +45,15 @@
 #include <vector>
 
 #include "hecal/geometry/types.h"
-#include "hecal/handeye/methods.h"
+#include "hecal/handeye/closed_form.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::peers {
 
 // True for the seven methods OpenCV 4.6 implements (mapping above).
-bool HasOpenCvPeer(handeye::Method method);
-// The methods with an OpenCV peer, in handeye::AllMethods() order.
-std::vector<handeye::Method> OpenCvPeerMethods();
+bool HasOpenCvPeer(handeye::ClosedForm method);
+// The methods with an OpenCV peer, in handeye::ClosedForms() order.
+std::vector<handeye::ClosedForm> OpenCvPeerMethods();
 
 // A Problem converted once to OpenCV's inputs (3×3 CV_64F rotations, 3×1 CV_64F translations),
 // so a benchmark times OpenCV's solver rather than the conversion.
@@ -69,8 +69,8 @@ OpenCvInput PrepareOpenCvInput(const handeye::Problem& problem);
 // Runs OpenCV's function for `method` (precondition: HasOpenCvPeer(method)) and maps the result
 // back to hecal's X and Z. With estimate_z == false, calibrateHandEye's Z is left as identity
 // (the bench times the solver only).
-handeye::Solution SolveWithOpenCv(handeye::Method method, const OpenCvInput& input,
+handeye::Solution SolveWithOpenCv(handeye::ClosedForm method, const OpenCvInput& input,
                                   bool estimate_z = true);
-handeye::Solution SolveWithOpenCv(handeye::Method method, const handeye::Problem& problem);
+handeye::Solution SolveWithOpenCv(handeye::ClosedForm method, const handeye::Problem& problem);
 
 }  // namespace hecal::peers

@@ -32,7 +32,7 @@ struct PoseCalibrationInput {
   std::vector<std::string> notes;  // put first in every result's warnings
 };
 
-// Runs the job above; `all_methods` runs every method of handeye::AllMethods().
+// Runs the job above; `all_methods` runs every method of estimation::AllMethods().
 ResultDocument CalibrateFromPoses(const PoseCalibrationInput& input,
                                   estimation::CalibrateOptions options, bool all_methods);
 

@@ -22,7 +22,7 @@ namespace hecal::report {
 
 // A method of `--method all` that refused the data, with its DegenerateError message.
 struct MethodFailure {
-  handeye::Method method = handeye::Method::kMl;
+  estimation::Method method = estimation::Method::kMl;
   std::string message;
 };
 

@@ -38,8 +38,8 @@
 #include <string>
 #include <vector>
 
+#include "hecal/estimation/methods.h"
 #include "hecal/geometry/types.h"
-#include "hecal/handeye/methods.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "hecal/study/simulate.h"
@@ -54,7 +54,7 @@ struct BenchOptions {
   static constexpr double kMaxMinTime = 3600.0;       // seconds
 
   std::vector<int> stations = {10, 20, 50};
-  std::vector<handeye::Method> methods = EveryMethod();
+  std::vector<estimation::Method> methods = EveryMethod();
   handeye::Setup setup = handeye::Setup::kEyeInHand;
   int datasets = 10;              // per station count
   NoiseLevel sigma = {0.1, 0.1};  // on robot and camera
@@ -80,7 +80,7 @@ using BenchSolver = std::function<Pose(std::size_t index)>;
 
 // hecal's solver of `method` on `sets` (closed form, or strobl / ml from every closed-form
 // start); `sets` must outlive it.
-BenchSolver HecalSolver(handeye::Method method, const std::vector<BenchDataSet>& sets,
+BenchSolver HecalSolver(estimation::Method method, const std::vector<BenchDataSet>& sets,
                         const NoiseLevel& sigma);
 
 // ml from a good start (above); calibrates each set once here, outside any timing.
@@ -102,7 +102,7 @@ BenchAccuracy MeasureAccuracy(const std::vector<BenchDataSet>& sets, const Bench
 // it has no such method); input conversion belongs in `prepare`, outside the timing.
 struct BenchPeer {
   std::string name;
-  std::function<std::optional<BenchSolver>(handeye::Method, const std::vector<BenchDataSet>&)>
+  std::function<std::optional<BenchSolver>(estimation::Method, const std::vector<BenchDataSet>&)>
       prepare;
 };
 
@@ -112,7 +112,7 @@ enum class BenchStart { kNotApplicable, kClosedForm, kGood };
 
 struct BenchRow {
   std::string impl;  // "hecal" or the peer's name
-  handeye::Method method = handeye::Method::kMl;
+  estimation::Method method = estimation::Method::kMl;
   BenchStart start = BenchStart::kNotApplicable;
   int stations = 0;
   double us_per_solve = 0.0;

@@ -22,15 +22,15 @@
 #include <vector>
 
 #include "hecal/estimation/covariance_method.h"
-#include "hecal/handeye/methods.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/sim/noise.h"
 #include "hecal/study/study.h"
 
 namespace hecal::study {
 
-// Every method, in handeye::AllMethods() order (`--method all`).
-std::vector<handeye::Method> EveryMethod();
+// Every method, in estimation::AllMethods() order (`--method all`).
+std::vector<estimation::Method> EveryMethod();
 
 struct SimulateOptions {
   static constexpr int kMinStations = 3;
@@ -51,7 +51,7 @@ struct SimulateOptions {
   std::vector<NoiseLevel> sigmas = {{0.0, 0.0}, {0.3, 0.3}, {1.0, 1.0}};
   std::vector<int> outliers = {0};         // gross outliers per data set (sim/gross_outliers.h)
   std::vector<double> robot_scales = {1};  // robot noise = scale × level, camera noise = level
-  std::vector<handeye::Method> methods = EveryMethod();
+  std::vector<estimation::Method> methods = EveryMethod();
   int trials = 200;
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core

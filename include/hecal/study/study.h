@@ -42,8 +42,8 @@
 #include <vector>
 
 #include "hecal/estimation/covariance_method.h"
+#include "hecal/estimation/methods.h"
 #include "hecal/estimation/pose_sigma.h"
-#include "hecal/handeye/methods.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/sim/noise.h"
 #include "hecal/sim/summary_statistics.h"
@@ -98,7 +98,7 @@ estimation::PoseSigma CameraSigma(const Setting& setting);
 
 struct StudyOptions {
   std::vector<Setting> settings;
-  std::vector<handeye::Method> methods;  // in report order
+  std::vector<estimation::Method> methods;  // in report order
   int trials = 200;
   uint64_t seed = 1;
   int threads = 0;  // 0: std::thread::hardware_concurrency()
@@ -129,7 +129,7 @@ std::string_view TrialStatusName(TrialStatus status);
 struct TrialResult {
   int setting = 0;  // index into StudyOptions::settings
   int trial = 0;
-  handeye::Method method = handeye::Method::kMl;
+  estimation::Method method = estimation::Method::kMl;
   TrialStatus status = TrialStatus::kOk;
   std::string message;             // exception text when kThrew
   double rotation_error = 0.0;     // radians, NaN unless kOk
@@ -172,7 +172,7 @@ using Bound = RotationTranslation;
 
 struct MethodSummary {
   int setting = 0;
-  handeye::Method method = handeye::Method::kMl;
+  estimation::Method method = estimation::Method::kMl;
   int trials = 0;
   int failures = 0;
   int outliers = 0;
