@@ -292,7 +292,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                      "give --features sift or --features orb");
   }
   const int threads = CheckThreads("--threads", flags.threads);
-  const std::uint64_t seed = ParseSeed("--seed", flags.seed);
+  const std::uint64_t seed = flags.seed;
   double pixel_sigma = 0.5;
   if (!flags.pixel_sigma.empty()) {
     std::istringstream in(flags.pixel_sigma);
