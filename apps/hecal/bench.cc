@@ -2,6 +2,8 @@
 #include "bench.h"
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -70,14 +72,8 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
   study::BenchOptions& o = command->options;
   CLI::App* bench =
       app.add_subcommand("bench", "Time hecal's solvers and OpenCV's on identical generated data");
-  bench
-      ->add_option_function<std::string>(
-          "--stations",
-          [&o](const std::string& text) {
-            o.stations = ParseIntList("--stations", text, std::numeric_limits<int>::min(),
-                                      std::numeric_limits<int>::max());
-          },
-          "Station counts, comma separated (3 to 100000)")
+  AddWholeNumberList(*bench, "--stations", o.stations,
+                     "Station counts, comma separated (3 to 100000)")
       ->default_str("10,20,50");
   bench->add_flag("--json", command->json, "Print one JSON array (docs/bench.md)");
   bench
@@ -99,24 +95,19 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
           },
           "eye-in-hand | eye-to-hand")
       ->default_str("eye-in-hand");
-  bench->add_option("--datasets", o.datasets, "Data sets per station count (1 to 10000)")
+  AddWholeNumber(*bench, "--datasets", o.datasets, "Data sets per station count (1 to 10000)")
       ->capture_default_str();
   bench
       ->add_option_function<std::string>(
           "--sigma",
           [&o](const std::string& text) {
-            const SigmaLevel level = ParseSigmaLevel("--sigma", text);
-            o.sigma = {level.mm, level.deg};
+            o.sigma = ParseNoiseLevel("--sigma", text, '/', /*single=*/true);
           },
           "Noise on both: n (mm and deg) or MM/DEG")
       ->default_str("0.1");
   bench->add_option("--min-time", o.min_time, "Timing budget per row, seconds (0 to 3600)")
       ->capture_default_str();
-  bench
-      ->add_option_function<std::string>(
-          "--seed", [&o](const std::string& text) { o.seed = ParseSeed("--seed", text); },
-          "Random seed (0 to 2^64-1)")
-      ->default_str("1");
+  AddWholeNumber(*bench, "--seed", o.seed, "Random seed (0 to 2^64-1)")->capture_default_str();
   bench->callback([command, io] { RunBench(*command, io); });
 }
 

@@ -1,77 +1,63 @@
-// The bounds of the command line: see bounds.h.
+// The command line's own rules: see bounds.h.
 #include "bounds.h"
 
 #include <charconv>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "hecal/core/error.h"
-#include "hecal/core/options_check.h"
+#include "hecal/estimation/reprojection_refinement.h"
 #include "hecal/io/delimited_text.h"
+#include "list_flags.h"
 
 namespace hecal::cli {
 namespace {
 
-std::string Number(double value) {
-  return io::FormatDouble(value);
+// The whole-number rule of bounds.h for one item: its value, or an InputError.
+template <class T>
+T WholeNumber(const std::string& flag, const std::string& text) {
+  const std::string_view item = io::Trim(text);
+  T value = 0;
+  const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
+  if (!item.empty() && error == std::errc() && end == item.data() + item.size()) return value;
+  const bool show_range = std::is_unsigned_v<T> || error == std::errc::result_out_of_range;
+  const std::string range = " from " + std::to_string(std::numeric_limits<T>::min()) + " to " +
+                            std::to_string(std::numeric_limits<T>::max());
+  throw InputError(flag, 0,
+                   "must be a whole number" + (show_range ? range : " in decimal digits") +
+                       ", got '" + text + "'",
+                   "give a whole number" + (show_range ? " in that range" : std::string()) +
+                       ", e.g. " + flag + " 1");
 }
 
 }  // namespace
 
-std::int64_t ParseInteger(const std::string& flag, const std::string& text, std::int64_t min,
-                          std::int64_t max, const std::string& what) {
-  const std::string_view item = io::Trim(text);
-  std::int64_t value = 0;
-  const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-  if (item.empty() || error != std::errc() || end != item.data() + item.size() || value < min ||
-      value > max) {
-    throw InputError(flag, 0,
-                     "must be a whole number from " + std::to_string(min) + " to " +
-                         std::to_string(max) + ", got '" + text + "'",
-                     "give " + what + " in that range");
-  }
-  return value;
+template <class T>
+CLI::Option* AddWholeNumber(CLI::App& command, const std::string& flag, T& value,
+                            const std::string& help) {
+  return command.add_option(flag, value, help)->transform([flag](const std::string& text) {
+    return std::to_string(WholeNumber<T>(flag, text));
+  });
 }
 
-int ParseInt(const std::string& flag, const std::string& text, int min, int max,
-             const std::string& what) {
-  return static_cast<int>(ParseInteger(flag, text, min, max, what));
-}
+template CLI::Option* AddWholeNumber(CLI::App&, const std::string&, int&, const std::string&);
+template CLI::Option* AddWholeNumber(CLI::App&, const std::string&, std::int64_t&,
+                                     const std::string&);
+template CLI::Option* AddWholeNumber(CLI::App&, const std::string&, std::uint64_t&,
+                                     const std::string&);
 
-int ParseThreads(const std::string& flag, const std::string& text) {
-  return ParseInt(flag, text, 0, kMaxThreads, "a thread count (0 = every core)");
-}
-
-int CheckThreads(const std::string& flag, int threads) {
-  std::string why;
-  if (!ThreadCountValid(threads, flag, &why)) throw OptionsError(why);
-  return threads;
-}
-
-std::uint64_t ParseSeed(const std::string& flag, const std::string& text) {
-  const std::string_view item = io::Trim(text);
-  std::uint64_t value = 0;
-  const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-  if (item.empty() || item.front() == '-' || error != std::errc() ||
-      end != item.data() + item.size()) {
-    throw InputError(flag, 0,
-                     "must be a whole number from 0 to " +
-                         std::to_string(std::numeric_limits<std::uint64_t>::max()) + ", got '" +
-                         text + "'",
-                     "give a seed in that range, e.g. " + flag + " 1");
-  }
-  return value;
-}
-
-void CheckNoiseLevel(const std::string& flag, double mm, double deg) {
-  if (!(mm >= 0.0 && mm <= kMaxSigmaMm) || !(deg >= 0.0 && deg <= kMaxSigmaDeg)) {
-    throw InputError(
-        flag, 0,
-        "noise levels must be 0 to " + Number(kMaxSigmaMm) + " mm and 0 to " +
-            Number(kMaxSigmaDeg) + " deg per axis, got " + Number(mm) + " mm / " + Number(deg) +
-            " deg",
-        "give the standard deviation of one axis in mm and degrees, e.g. " + flag +
-            (flag == "--robot-sigma" || flag == "--camera-sigma" ? " 0.5,0.1" : " 0.5/0.1"));
-  }
+CLI::Option* AddWholeNumberList(CLI::App& command, const std::string& flag,
+                                std::vector<int>& values, const std::string& help) {
+  return command.add_option_function<std::string>(
+      flag,
+      [flag, &values](const std::string& text) {
+        values.clear();
+        for (const std::string& item : SplitList(flag, text)) {
+          values.push_back(WholeNumber<int>(flag, item));
+        }
+      },
+      help);
 }
 
 }  // namespace hecal::cli

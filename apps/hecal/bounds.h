@@ -1,64 +1,49 @@
-// The bounds of the command line (README "Reliability"): every number that reaches an
-// allocation or a loop — threads, samples, stations, trials, data sets, steps, frames, image
-// sizes, noise levels, seeds — is checked against its range before any work, and a value outside
-// it is a hecal::InputError naming the flag, the value and the range (exit 2). Where a range is a
-// fact of the library it is the library's (the options' IsValid, core/options_check.h: thread
-// counts core/limits.h, noise levels estimation/pose_sigma.h, Monte Carlo samples
-// estimation/covariance_method.h, pixel noise estimation/reprojection_refinement.h) and the
-// calibrate, detect and global flags are checked there only; the rest are the CLI's. The ranges are
-// wide enough for every study in this repository and small enough that no flag alone can ask for
-// more memory than a workstation has (the largest: 10^5 Monte Carlo samples of two poses, 10^6
-// trial rows of `hecal simulate`, 10^8 pixels per image).
+// The command line's own rules (README "Reliability"): the syntax of a value, read in one place
+// per kind. What a value may be — its range, a fact of the library — is the options' IsValid
+// (core/options_check.h; thread counts core/limits.h, noise levels estimation/pose_sigma.h, Monte
+// Carlo samples estimation/covariance_method.h, pixel noise estimation/reprojection_refinement.h,
+// the jobs' own options: study/simulate.h, study/bench.h, report/point_pose.h,
+// contour/contour_study.h, contour/sequence.h); the CLI shows the flag of the field it names
+// (field_flags.h). Every rule below fails with a hecal::InputError naming the flag and the text
+// (exit 2), before any work.
 //
-//   --threads                     0 … 256 (0 = every core)
-//   --seed                        0 … 2^64 − 1, a whole decimal number (no sign, no exponent)
-//   --covariance-samples          2 … 100000 (calibrate)
-//   simulate, bench, pose         study::SimulateOptions::IsValid, study::BenchOptions::IsValid,
-//                                 report::PointPoseOptions::IsValid (study/simulate.h,
-//                                 study/bench.h, report/point_pose.h)
-//   noise levels                  0 … 1000 mm and 0 … 180 deg (--robot-sigma, --camera-sigma)
-//   pixel noise                   --pixel-sigma, --measurement-sigma > 0 … 100 px
-//   contour study                 contour::ContourStudyOptions::IsValid (contour/contour_study.h)
-//   contour track, render         contour::SequenceTrackingOptions::IsValid,
-//                                 contour::SequenceRenderOptions::IsValid (contour/sequence.h)
-//   images read                   at most 10^8 pixels (checked in the file header before
-//                                 decoding), at least 16 × 16 for detection
-//                                 (io/image_files.h, vision/image_read.h)
+//   kind of value          flags                             the CLI's rule
+//   whole number           --threads, --trials, --datasets,  decimal digits, an optional leading
+//                          --steps, --samples, --frames,     '-' (spaces around are ignored); the
+//                          --covariance-samples,             value must fit the field's type
+//                          --matches-per-motion, --max-cubes (AddWholeNumber)
+//   seed                   --seed                            decimal digits, 0 … 2^64 − 1, no sign
+//                                                            (AddWholeNumber)
+//   whole-number list      --stations, --outliers            comma separated whole numbers, no
+//                                                            empty item (AddWholeNumberList)
+//   noise level            --robot-sigma, --camera-sigma     MM,DEG: two finite numbers
+//                          simulate's and bench's --sigma    N or MM/DEG (simulate: a comma list)
+//                                                            (ParseNoiseLevel, list_flags.h)
+//   real number            --focal, --z0, --min-time, …      CLI11's reading of a double
+//   pixel noise            --pixel-sigma                     one finite number (none: the
+//                                                            default or, from images, estimated)
+//
+// CLI11 2.1.2 reads integers with strtoll base 0 ("010" is 8, "0x10" 16) and unsigned ones with
+// strtoull ("-1" becomes 2^64 − 1), so every whole-number flag is bound through AddWholeNumber:
+// the text is read as a decimal number of the field's type and handed to CLI11 as its plain
+// decimal.
 #pragma once
 
-#include <cstdint>
+#include <CLI/CLI.hpp>
 #include <string>
-
-#include "hecal/core/limits.h"
-#include "hecal/estimation/covariance_method.h"
-#include "hecal/estimation/pose_sigma.h"
-#include "hecal/estimation/reprojection_refinement.h"
+#include <vector>
 
 namespace hecal::cli {
 
-using estimation::kMaxCovarianceSamples;
-constexpr double kMaxSigmaMm = estimation::kMaxSigmaTranslation * 1000.0;
-constexpr double kMaxSigmaDeg = 180.0;  // estimation::kMaxSigmaRotation in degrees
+// Binds `flag` to `value` (int, std::int64_t or std::uint64_t) through the whole-number rule
+// above; returns the option for further settings (default text, group).
+template <class T>
+CLI::Option* AddWholeNumber(CLI::App& command, const std::string& flag, T& value,
+                            const std::string& help);
 
-// A whole number in [min, max] written in decimal ("12", "-3"); InputError with the range
-// otherwise. `what` says what the number is, for the fix ("the number of trials").
-std::int64_t ParseInteger(const std::string& flag, const std::string& text, std::int64_t min,
-                          std::int64_t max, const std::string& what);
-
-// ParseInteger for an int-sized range.
-int ParseInt(const std::string& flag, const std::string& text, int min, int max,
-             const std::string& what);
-
-// --threads: 0 … kMaxThreads.
-int ParseThreads(const std::string& flag, const std::string& text);
-// The same range for a thread count CLI11 has parsed (the library's rule, ThreadCountValid in
-// core/options_check.h); returns `threads`.
-int CheckThreads(const std::string& flag, int threads);
-
-// --seed: 0 … 2^64 − 1.
-std::uint64_t ParseSeed(const std::string& flag, const std::string& text);
-
-// A noise level per axis: millimetres in [0, kMaxSigmaMm], degrees in [0, kMaxSigmaDeg].
-void CheckNoiseLevel(const std::string& flag, double mm, double deg);
+// Binds `flag` to `values`: one argument, comma separated whole numbers (SplitList, list_flags.h;
+// the rule above per item).
+CLI::Option* AddWholeNumberList(CLI::App& command, const std::string& flag,
+                                std::vector<int>& values, const std::string& help);
 
 }  // namespace hecal::cli

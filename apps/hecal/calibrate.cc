@@ -2,6 +2,7 @@
 #include "calibrate.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <exception>
@@ -18,6 +19,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/pose_calibration.h"
 #include "hecal/report/result_text.h"
+#include "list_flags.h"
 
 namespace hecal::cli {
 namespace {
@@ -26,22 +28,11 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 }  // namespace
 
+// "MM,DEG" (ParseNoiseLevel) → PoseSigma in metres and radians (its range is
+// CalibrateOptions::IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
-  const size_t comma = text.find(',');
-  double values[2] = {0.0, 0.0};
-  bool ok = comma != std::string::npos;
-  const std::string parts[2] = {text.substr(0, comma), ok ? text.substr(comma + 1) : std::string()};
-  for (int k = 0; ok && k < 2; ++k) {
-    const auto [end, error] =
-        std::from_chars(parts[k].data(), parts[k].data() + parts[k].size(), values[k]);
-    ok = error == std::errc() && end == parts[k].data() + parts[k].size() &&
-         std::isfinite(values[k]);
-  }
-  if (!ok) {
-    throw InputError(flag, 0, "expected two numbers MM,DEG, got '" + text + "'",
-                     "write e.g. " + flag + " 0.5,0.1 for 0.5 mm and 0.1 degree per axis");
-  }
-  return {values[1] / kDegrees, values[0] * 1e-3};
+  const study::NoiseLevel level = ParseNoiseLevel(flag, text, ',', /*single=*/false);
+  return {level.deg / kDegrees, level.mm * 1e-3};
 }
 
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
@@ -92,7 +83,7 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     options.covariance.method = *covariance;
   }
   options.covariance.samples = flags.covariance_samples;
-  options.covariance.seed = ParseSeed("--seed", flags.seed);
+  options.covariance.seed = flags.seed;
   options.consensus.seed = options.covariance.seed;
   options.reject_outliers = !flags.keep_outliers;
   options.covariance.threads = flags.threads;
@@ -239,9 +230,9 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "With --images: camera.yaml or ViSP camera XML (estimated when absent)");
   command->add_option("--pixel-sigma", flags->pixel_sigma,
                       "With --images: pixel noise per axis, px (estimated when absent)");
-  command->add_option("--threads", flags->threads,
-                      "Threads for detection and covariance solves, 0 to 256 (default 0 = every "
-                      "core)");
+  AddWholeNumber(*command, "--threads", flags->threads,
+                 "Threads for detection and covariance solves, 0 to 256 (default 0 = every "
+                 "core)");
   command->add_flag("--refine-intrinsics", flags->refine_intrinsics,
                     "With --images: refine the intrinsics with X and Z in the joint refinement");
   command
@@ -257,19 +248,17 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
       ->add_option("--epsilon", flags->epsilon,
                    "With --method global: requested certificate gap, radians")
       ->capture_default_str();
-  command
-      ->add_option("--matches-per-motion", flags->matches_per_motion,
-                   "With --method global and --images: target corners used per motion, spread "
-                   "over the target")
+  AddWholeNumber(*command, "--matches-per-motion", flags->matches_per_motion,
+                 "With --method global and --images: target corners used per motion, spread "
+                 "over the target")
       ->capture_default_str();
   command
       ->add_option("--relative-gap", flags->relative_gap,
                    "With --method global: or this fraction of the optimum, when larger")
       ->capture_default_str();
-  command
-      ->add_option("--max-cubes", flags->max_cubes,
-                   "With --method global: stop after this many cube tests with the bounds "
-                   "proved so far")
+  AddWholeNumber(*command, "--max-cubes", flags->max_cubes,
+                 "With --method global: stop after this many cube tests with the bounds "
+                 "proved so far")
       ->capture_default_str();
   command
       ->add_option("--features", flags->features,
@@ -301,14 +290,12 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "Covariance of X and Z: linear | unscented | montecarlo | information "
                       "(default: linear for ml; unscented for the other methods up to 100 "
                       "stations, information above)");
-  command
-      ->add_option("--covariance-samples", flags->covariance_samples,
-                   "Monte Carlo samples for --covariance montecarlo (2 to 100000)")
+  AddWholeNumber(*command, "--covariance-samples", flags->covariance_samples,
+                 "Monte Carlo samples for --covariance montecarlo (2 to 100000)")
       ->capture_default_str();
-  command
-      ->add_option("--seed", flags->seed,
-                   "Random seed for --covariance montecarlo and the outlier consensus (0 to "
-                   "2^64-1)")
+  AddWholeNumber(*command, "--seed", flags->seed,
+                 "Random seed for --covariance montecarlo and the outlier consensus (0 to "
+                 "2^64-1)")
       ->capture_default_str();
   command->callback([flags, &io] { RunCalibrate(*flags, io); });
 }

@@ -16,6 +16,7 @@
 // Target-free, globally optimal (calibrate_global.cc): see RunCalibrateGlobal below.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -56,7 +57,7 @@ struct CalibrateFlags {
   std::string robust = "none";
   std::string covariance;         // --covariance (empty: the method's default)
   int covariance_samples = 5000;  // --covariance-samples (montecarlo)
-  std::string seed = "1";         // --seed (montecarlo, and the outlier consensus)
+  std::uint64_t seed = 1;         // --seed (montecarlo, and the outlier consensus)
   std::string correspondences;    // --correspondences FILE (--method global)
   double epsilon = 2e-4;          // --epsilon RAD: the certificate's requested gap (global)
   double relative_gap = 0.1;      // --relative-gap: or this fraction of the optimum (global)

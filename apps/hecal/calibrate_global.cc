@@ -203,7 +203,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
     throw InputError("--features", 0, "unknown feature kind '" + flags.features + "'",
                      "give --features sift or --features orb");
   }
-  options.seed = ParseSeed("--seed", flags.seed);
+  options.seed = flags.seed;
   const auto units = io::ParseLengthUnit(flags.units);
   if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
   io::PoseReadOptions read;

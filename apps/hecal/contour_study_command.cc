@@ -146,7 +146,7 @@ void AddContourStudyCommand(CLI::App& contour, const Io& io) {
       ->required();
   study->add_option("--from", o.from, "First value (mm or degrees)")->required();
   study->add_option("--to", o.to, "Last value (mm or degrees)")->required();
-  study->add_option("--steps", o.steps, "Number of values from --from to --to (1 to 10000)")
+  AddWholeNumber(*study, "--steps", o.steps, "Number of values from --from to --to (1 to 10000)")
       ->required();
   study->add_option("--pixel-noise", o.pixel_noise, "σ per image coordinate, px (0.5; 0 to 100)");
   study->add_option("--z0", o.z0_mm, "Initial distance, mm (5000)");
@@ -154,11 +154,10 @@ void AddContourStudyCommand(CLI::App& contour, const Io& io) {
   study->add_option("--pixel-size", o.pixel_size_mm, "Pixel size, mm (0.0083)");
   study->add_option("--contour", command->contour,
                     "Target control points, CSV x,y in mm on the target plane (default: built in)");
-  study->add_option("--samples", o.samples, "Monte Carlo samples per step (5000; 2 to 1000000)");
-  study->add_option_function<std::string>(
-      "--seed", [&o](const std::string& text) { o.seed = ParseSeed("--seed", text); },
-      "Random seed (1; 0 to 2^64-1)");
-  study->add_option("--threads", o.threads, "Threads, 0 to 256 (0: every core)");
+  AddWholeNumber(*study, "--samples", o.samples,
+                 "Monte Carlo samples per step (5000; 2 to 1000000)");
+  AddWholeNumber(*study, "--seed", o.seed, "Random seed (1; 0 to 2^64-1)");
+  AddWholeNumber(*study, "--threads", o.threads, "Threads, 0 to 256 (0: every core)");
   study->add_option_function<double>(
       "--ut-w0",
       [&o](double w0) { o.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(w0); },

@@ -359,7 +359,7 @@ void AddContourRenderCommand(CLI::App& contour, const Io& io) {
       ->required();
   render->add_option("--contour", command->contour,
                      "Target control points: CSV x,y in its plane (Z0's unit; default built-in)");
-  render->add_option("--frames", o.frames, "Number of frames (default 30)");
+  AddWholeNumber(*render, "--frames", o.frames, "Number of frames (default 30)");
   render->add_option_function<std::string>(
       "--from", [&o](const std::string& text) { o.from = ParseMotion("--from", text); },
       "TX,TY,TZ,RX,RY,RZ of the first frame (Z0's unit, degrees; default 0)");
@@ -393,9 +393,7 @@ void AddContourRenderCommand(CLI::App& contour, const Io& io) {
       ->required();
   render->add_option("--noise", o.render.noise_sigma, "Pixel noise σ (grey levels; default 3)");
   render->add_option("--blur", o.render.blur_sigma, "Optics blur σ (px; default 0.7)");
-  render->add_option_function<std::string>(
-      "--seed", [&o](const std::string& text) { o.seed = ParseSeed("--seed", text); },
-      "Noise seed (default 1)");
+  AddWholeNumber(*render, "--seed", o.seed, "Noise seed (default 1)");
   render->callback([command, io] { RunRender(*command, io); });
 }
 

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 
+#include "bounds.h"
 #include "hecal/core/error.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
@@ -101,8 +102,8 @@ void RegisterDetectCommand(CLI::App& app, const Io& io) {
       ->add_option("--output", flags->output,
                    "Pose table of T_camera_target (CSV); also writes <output stem>.points.csv")
       ->required();
-  command->add_option("--threads", flags->threads,
-                      "Detection threads, 0 to 256 (default 0 = every core)");
+  AddWholeNumber(*command, "--threads", flags->threads,
+                 "Detection threads, 0 to 256 (default 0 = every core)");
   command->callback([flags, &io] { RunDetect(*flags, io); });
 }
 

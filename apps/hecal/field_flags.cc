@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 77> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 79> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ConventionCheckOptions.setup", "--setup"},
@@ -67,6 +67,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 77> kFieldFl
     {"ContourStudyOptions.target", "--contour"},
     {"ContourStudyOptions.unscented", "--ut-w0"},
     {"UnscentedParameters", "--ut-w0"},
+    {"UnscentedPoseOptions.unscented", "--ut-w0"},
+    {"ShapePoseOptions.shape_covariance", "--covariance"},
     {"RenderOptions.blur_sigma", "--blur"},
     {"RenderOptions.noise_sigma", "--noise"},
     {"EdgeSearchOptions.range", "--search-range"},

@@ -1,7 +1,14 @@
 // The options structs of the library jobs, driven through `hecal`: for every field an
 // options struct's IsValid checks (study::SimulateOptions, ...), a bad value given on the command
 // line exits 2 with exactly one line `hecal: --flag: problem (fix: ...)` naming the flag that set
-// the field (field_flags.h), prints nothing on stdout and writes no output file.
+// the field (field_flags.h), without the field's "Options." name, prints nothing on stdout and
+// writes no output file. Options no flag can make invalid are tested beside their structs in src/:
+// io::PoseReadOptions and PoseWriteOptions (--units, --euler, --to are parsed into valid enums),
+// contour::ShapeTrackerOptions and RenderOptions beyond the fields SequenceTrackingOptions and
+// SequenceRenderOptions bound more tightly, UnscentedPoseOptions.bias_threshold,
+// uncertainty::MeanOptions, estimation::StationTestOptions, sim::TriangleThresholdOptions and
+// ProtocolOptions, report::svg::FigureOptions, and the vision options (DetectOptions,
+// IntrinsicsOptions, IntrinsicsFitOptions, OrderOptions, RenderOptions).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,6 +33,7 @@ class JobOptions : public cli_test::CliTest {
     EXPECT_EQ(run.code, 2) << run.err;
     EXPECT_EQ(run.err.rfind("hecal: " + flag + ": ", 0), 0u) << run.err;
     EXPECT_NE(run.err.find(problem), std::string::npos) << run.err;
+    EXPECT_EQ(run.err.find("Options."), std::string::npos) << run.err;  // a flag, not a field
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     EXPECT_TRUE(run.out.empty()) << run.out;
     EXPECT_FALSE(std::filesystem::exists(Path(output))) << output;
@@ -207,6 +215,32 @@ TEST_F(JobOptions, SequenceTrackingOptionsNameTheFlag) {
                 out);
   ExpectRefused(with({"--measurement-sigma", "101"}), "--measurement-sigma", "above 0 to 100 px",
                 out);
+}
+
+// contour::ShapePoseOptions::IsValid (hecal contour pose), field by field: the camera, Σ_S and the
+// UT centre weight (contour pose writes no file: stdout stays empty).
+TEST_F(JobOptions, ShapePoseOptionsNameTheFlag) {
+  const auto pose = [](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"contour", "pose", "--shape=0,0,0,0,0,0", "--z0", "5000",
+                                     "--focal", "50"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const std::string none = "no-such-output";
+  ExpectRefused({"contour", "pose", "--shape=0,0,0,0,0,0", "--z0", "5000", "--focal", "0"},
+                "--focal", "must be a positive number", none);
+  ExpectRefused({"contour", "pose", "--shape=0,0,0,0,0,0", "--z0", "-1", "--focal", "50"}, "--z0",
+                "must be a positive number", none);
+  ExpectRefused(pose({"--covariance", "-1,1,1,1,1,1"}), "--covariance",
+                "Σ_S has a negative eigenvalue", none);
+  std::string asymmetric;
+  for (int k = 0; k < 36; ++k) {
+    if (k > 0) asymmetric += ',';
+    asymmetric += k == 1 ? "0.5" : (k % 7 == 0 ? "1" : "0");
+  }
+  ExpectRefused(pose({"--covariance", asymmetric}), "--covariance", "Σ_S is not symmetric", none);
+  ExpectRefused(pose({"--covariance", "1,1,1,1,1,1", "--ut-w0", "1.5"}), "--ut-w0",
+                "w0 must be finite and below 1", none);
 }
 
 }  // namespace

@@ -36,28 +36,6 @@ std::vector<std::string> SplitList(const std::string& flag, const std::string& t
   return items;
 }
 
-std::vector<int> ParseIntList(const std::string& flag, const std::string& text, int minimum,
-                              int maximum) {
-  std::vector<int> values;
-  for (const std::string& item : SplitList(flag, text)) {
-    int value = 0;
-    const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-    const bool integer = error == std::errc() && end == item.data() + item.size();
-    if (!integer && error != std::errc::result_out_of_range) {
-      throw InputError(flag, 0, "'" + item + "' is not an integer", "e.g. " + flag + " 10,20,50");
-    }
-    if (!integer || value < minimum || value > maximum) {
-      throw InputError(
-          flag, 0,
-          "'" + item + "' is outside the range " + std::to_string(minimum) + " to " +
-              std::to_string(maximum),
-          "use values from " + std::to_string(minimum) + " to " + std::to_string(maximum));
-    }
-    values.push_back(value);
-  }
-  return values;
-}
-
 std::string MethodNames() {
   std::string names;
   for (const estimation::MethodInfo& info : estimation::AllMethods()) {
@@ -90,26 +68,28 @@ std::vector<estimation::Method> ParseMethodList(const std::string& flag, const s
   return unique;
 }
 
-double ParseNonNegative(const std::string& flag, const std::string& text) {
-  const std::string item = Trim(text);
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
-  if (item.empty() || error != std::errc() || end != item.data() + item.size() ||
-      !std::isfinite(value) || value < 0.0) {
-    throw InputError(flag, 0, "'" + text + "' is not a non-negative number",
-                     "e.g. " + flag + " 0.3");
+study::NoiseLevel ParseNoiseLevel(const std::string& flag, const std::string& text, char separator,
+                                  bool single) {
+  const size_t split = text.find(separator);
+  const bool two = split != std::string::npos;
+  double values[2] = {0.0, 0.0};
+  bool ok = two || single;
+  const std::string parts[2] = {text.substr(0, split), two ? text.substr(split + 1) : ""};
+  for (int k = 0; ok && k < (two ? 2 : 1); ++k) {
+    const std::string item = Trim(parts[k]);
+    const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), values[k]);
+    ok = !item.empty() && error == std::errc() && end == item.data() + item.size() &&
+         std::isfinite(values[k]);
   }
-  return value;
-}
-
-SigmaLevel ParseSigmaLevel(const std::string& flag, const std::string& text) {
-  const size_t slash = text.find('/');
-  if (slash == std::string::npos) {
-    const double n = ParseNonNegative(flag, text);
-    return {n, n};
+  if (!ok) {
+    const std::string pair = std::string("MM") + separator + "DEG";
+    throw InputError(
+        flag, 0,
+        "expected two numbers " + pair + (single ? " or one number N" : "") + ", got '" + text +
+            "'",
+        "write e.g. " + flag + " 0.5" + separator + "0.1 for 0.5 mm and 0.1 degree per axis");
   }
-  return {ParseNonNegative(flag, text.substr(0, slash)),
-          ParseNonNegative(flag, text.substr(slash + 1))};
+  return {values[0], two ? values[1] : values[0]};
 }
 
 }  // namespace hecal::cli

@@ -3,7 +3,6 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>
-#include <limits>
 #include <memory>
 #include <optional>
 
@@ -42,8 +41,7 @@ Same --seed, same CSV files whatever --threads.)";
 std::vector<study::NoiseLevel> ParseSigmaLevels(const std::string& text) {
   std::vector<study::NoiseLevel> levels;
   for (const std::string& item : SplitList("--sigma", text)) {
-    const SigmaLevel level = ParseSigmaLevel("--sigma", item);
-    levels.push_back({level.mm, level.deg});
+    levels.push_back(ParseNoiseLevel("--sigma", item, '/', /*single=*/true));
   }
   return levels;
 }
@@ -119,16 +117,10 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
           },
           "eye-in-hand | eye-to-hand (list sweeps)")
       ->default_str("eye-in-hand");
-  simulate
-      ->add_option_function<std::string>(
-          "--stations",
-          [&o](const std::string& text) {
-            o.stations = ParseIntList("--stations", text, std::numeric_limits<int>::min(),
-                                      std::numeric_limits<int>::max());
-          },
-          "Stations per data set (list sweeps, 3 to 100000)")
+  AddWholeNumberList(*simulate, "--stations", o.stations,
+                     "Stations per data set (list sweeps, 3 to 100000)")
       ->default_str("3,5,10,15,20");
-  simulate->add_option("--trials", o.trials, "Random data sets per setting (1 to 100000)")
+  AddWholeNumber(*simulate, "--trials", o.trials, "Random data sets per setting (1 to 100000)")
       ->capture_default_str();
   simulate
       ->add_option_function<std::string>(
@@ -160,12 +152,8 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
           [&o](const std::string& text) { o.methods = ParseMethodList("--method", text); },
           "Method name(s), comma separated, or all")
       ->default_str("all");
-  simulate
-      ->add_option_function<std::string>(
-          "--seed", [&o](const std::string& text) { o.seed = ParseSeed("--seed", text); },
-          "Random seed (0 to 2^64-1)")
-      ->default_str("1");
-  simulate->add_option("--threads", o.threads, "Worker threads, 0 to 256 (0 = every core)")
+  AddWholeNumber(*simulate, "--seed", o.seed, "Random seed (0 to 2^64-1)")->capture_default_str();
+  AddWholeNumber(*simulate, "--threads", o.threads, "Worker threads, 0 to 256 (0 = every core)")
       ->capture_default_str();
   simulate
       ->add_option_function<std::string>(
@@ -184,18 +172,12 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
           "Predict X's covariance per trial and report its consistency: none | default "
           "(each method's own) | linear | unscented | montecarlo")
       ->default_str("none");
-  simulate
-      ->add_option("--covariance-samples", o.covariance_samples,
-                   "Monte Carlo samples per trial with --covariance montecarlo (2 to 100000)")
+  AddWholeNumber(*simulate, "--covariance-samples", o.covariance_samples,
+                 "Monte Carlo samples per trial with --covariance montecarlo (2 to 100000)")
       ->capture_default_str();
-  simulate
-      ->add_option_function<std::string>(
-          "--outliers",
-          [&o](const std::string& text) {
-            o.outliers = ParseIntList("--outliers", text, std::numeric_limits<int>::min(),
-                                      std::numeric_limits<int>::max());
-          },
-          "Stations per data set given a random robot pose (gross outliers; list sweeps)")
+  AddWholeNumberList(
+      *simulate, "--outliers", o.outliers,
+      "Stations per data set given a random robot pose (gross outliers; list sweeps)")
       ->default_str("0");
   simulate->add_flag("--reject-outliers", o.reject_outliers,
                      "Every method through calibrate's outlier rejection (counts what it rejects)");

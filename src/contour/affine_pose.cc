@@ -8,6 +8,7 @@
 
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/euler.h"
 
 namespace hecal::contour {
@@ -77,15 +78,20 @@ Eigen::Vector3d EulerAngles(const Eigen::Matrix3d& rotation, RotationForm form) 
   return e;
 }
 
+bool ContourCamera::IsValid(std::string* why) const {
+  if (!std::isfinite(focal) || !(focal > 0.0)) {
+    return Invalid(why, "ContourCamera.focal", "the focal length must be a positive number",
+                   "give f in the unit of the image coordinates (e.g. 50 for mm)");
+  }
+  if (!std::isfinite(z0) || !(z0 > 0.0)) {
+    return Invalid(why, "ContourCamera.z0", "the initial distance Z0 must be a positive number",
+                   "give the distance from the camera to the target in the first view");
+  }
+  return true;
+}
+
 void ValidateContourCamera(const ContourCamera& camera) {
-  if (!std::isfinite(camera.focal) || !(camera.focal > 0.0)) {
-    throw InputError("ContourCamera.focal", 0, "the focal length must be a positive number",
-                     "give f in the unit of the image coordinates (e.g. 50 for mm)");
-  }
-  if (!std::isfinite(camera.z0) || !(camera.z0 > 0.0)) {
-    throw InputError("ContourCamera.z0", 0, "the initial distance Z0 must be a positive number",
-                     "give the distance from the camera to the target in the first view");
-  }
+  RequireValid(camera);
 }
 
 ContourPose PoseFromShape(const Vector6d& shape, const ContourCamera& camera, RotationForm form) {

@@ -12,6 +12,7 @@
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/euler.h"
+#include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
@@ -193,6 +194,14 @@ TEST(AffinePose, OverflowingShapeVectorsAreRejectedNotNaN) {
   // Large but representable: a finite pose.
   S << 1e3, 0, 1e3, 1e3, 0, 0;
   EXPECT_TRUE(PoseFromShape(S, kCamera, RotationForm::kZyx).translation.allFinite());
+}
+
+TEST(ContourCamera, IsValidNamesTheField) {
+  const ContourCamera defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(
+      testing::RefusesNaming(defaults, "ContourCamera.focal", [](auto& c) { c.focal = -1; }));
+  EXPECT_TRUE(testing::RefusesNaming(defaults, "ContourCamera.z0", [](auto& c) { c.z0 = 0; }));
 }
 
 }  // namespace

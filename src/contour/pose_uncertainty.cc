@@ -45,6 +45,18 @@ Vector6d PoseDifference(const Vector6d& a, const Vector6d& b, RotationForm form)
   return d;
 }
 
+bool UnscentedPoseOptions::IsValid(std::string* why) const {
+  std::string problem;
+  if (!unscented.IsValid(6, &problem)) {
+    return Invalid(why, "UnscentedPoseOptions.unscented", problem, "give w0 < 1 (default 0)");
+  }
+  if (!(bias_threshold > 0.0) || !std::isfinite(bias_threshold)) {
+    return Invalid(why, "UnscentedPoseOptions.bias_threshold", "must be a finite number above 0",
+                   "give the bias in standard deviations that marks a parameter (default 0.25)");
+  }
+  return true;
+}
+
 ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
                                      const ContourCamera& camera, RotationForm form,
                                      const UnscentedPoseOptions& options) {
@@ -56,6 +68,7 @@ ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shap
 ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
                                      const PoseOfShape& pose_of_shape, RotationForm form,
                                      const UnscentedPoseOptions& options) {
+  RequireValid(options);
   ContourPoseUncertainty result;
   result.pose = pose_of_shape(shape);
   result.parameters = PoseParameters(result.pose);

@@ -11,6 +11,7 @@
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
@@ -108,6 +109,17 @@ TEST(PoseUncertainty, ACovarianceTooWideForTheShapeIsNamed) {
               std::string::npos)
         << error.what();
   }
+}
+
+TEST(UnscentedPoseOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const UnscentedPoseOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "UnscentedPoseOptions.unscented", [](auto& o) {
+    o.unscented = uncertainty::UnscentedParameters::Symmetric(1.5);
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "UnscentedPoseOptions.bias_threshold",
+                            [](auto& o) { o.bias_threshold = 0.0; }));
 }
 
 }  // namespace

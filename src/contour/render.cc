@@ -9,6 +9,7 @@
 
 #include "hecal/contour/perspective_view.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
 
 namespace hecal::contour {
@@ -125,23 +126,33 @@ void QuantizeGrey(GrayImage* image) {
   for (float& value : image->pixels()) value = std::clamp(std::round(value), 0.0f, 255.0f);
 }
 
+bool RenderOptions::IsValid(std::string* why) const {
+  if (!std::isfinite(foreground)) {
+    return Invalid(why, "RenderOptions.foreground", "the grey level must be finite",
+                   "give the grey level inside the contour (default 180)");
+  }
+  if (!std::isfinite(background)) {
+    return Invalid(why, "RenderOptions.background", "the grey level must be finite",
+                   "give the grey level outside the contour (default 60)");
+  }
+  if (supersampling < 1) {
+    return Invalid(why, "RenderOptions.supersampling",
+                   "must be at least 1, got " + std::to_string(supersampling), "use e.g. 16");
+  }
+  if (!(blur_sigma >= 0.0) || !std::isfinite(blur_sigma)) {
+    return Invalid(why, "RenderOptions.blur_sigma", "the blur σ must be finite and ≥ 0",
+                   "give σ in pixels, 0 for none");
+  }
+  if (!(noise_sigma >= 0.0) || !std::isfinite(noise_sigma)) {
+    return Invalid(why, "RenderOptions.noise_sigma", "the noise σ must be finite and ≥ 0",
+                   "give σ in grey levels, 0 for none");
+  }
+  return true;
+}
+
 GrayImage RenderPolygon(const Eigen::Matrix2Xd& polygon, int width, int height,
                         const RenderOptions& options) {
-  if (!std::isfinite(options.foreground) || !std::isfinite(options.background)) {
-    throw InputError("RenderOptions.foreground", 0, "the grey levels must be finite",
-                     "give finite foreground and background levels");
-  }
-  if (options.supersampling < 1) {
-    throw InputError("RenderOptions.supersampling", 0, "must be at least 1", "use e.g. 16");
-  }
-  if (!(options.blur_sigma >= 0.0) || !std::isfinite(options.blur_sigma)) {
-    throw InputError("RenderOptions.blur_sigma", 0, "the blur σ must be finite and ≥ 0",
-                     "give σ in pixels, 0 for none");
-  }
-  if (!(options.noise_sigma >= 0.0) || !std::isfinite(options.noise_sigma)) {
-    throw InputError("RenderOptions.noise_sigma", 0, "the noise σ must be finite and ≥ 0",
-                     "give σ in grey levels, 0 for none");
-  }
+  RequireValid(options);
   GrayImage image = PolygonCoverage(polygon, width, height, options.supersampling);
   GaussianBlur(&image, options.blur_sigma);
   const double contrast = options.foreground - options.background;

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
 
 #include "hecal/contour/perspective_view.h"
+#include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
@@ -250,6 +252,23 @@ TEST(RenderPlanarTarget, ATranslationShiftsTheImageByFTOverZ) {
     EXPECT_NEAR(shifted(0, i), 5 + camera.focal * (p.x() + t.x()) / z, 1e-9);
     EXPECT_NEAR(shifted(1, i), 6 + camera.focal * (p.y() + t.y()) / z, 1e-9);
   }
+}
+
+TEST(RenderOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const RenderOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "RenderOptions.foreground", [&](auto& o) { o.foreground = nan; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "RenderOptions.background", [&](auto& o) { o.background = nan; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "RenderOptions.supersampling", [](auto& o) { o.supersampling = 0; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "RenderOptions.blur_sigma", [](auto& o) { o.blur_sigma = -0.1; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "RenderOptions.noise_sigma", [&](auto& o) { o.noise_sigma = nan; }));
 }
 
 }  // namespace

@@ -27,16 +27,6 @@ std::string_view FrameStatusName(FrameStatus status) {
 
 namespace {
 
-// ValidateContourCamera (affine_pose.h) as an IsValid step.
-bool CameraValid(const ContourCamera& camera, std::string* why) {
-  try {
-    ValidateContourCamera(camera);
-  } catch (const InputError& error) {
-    return Invalid(why, error.source(), error.problem(), error.fix());
-  }
-  return true;
-}
-
 std::string Text(double value) {
   std::ostringstream text;
   text << value;
@@ -52,7 +42,7 @@ const SequenceTrackingOptions& Validated(const SequenceTrackingOptions& options)
 }  // namespace
 
 bool SequenceTrackingOptions::IsValid(std::string* why) const {
-  if (!CameraValid(camera, why)) return false;
+  if (!camera.IsValid(why)) return false;
   const double range = tracker.search.range;
   if (!(range >= kMinSearchRange && range <= kMaxSearchRange)) {
     return Invalid(why, "EdgeSearchOptions.range", "must be 2 … 200 px, got " + Text(range),
@@ -66,11 +56,11 @@ bool SequenceTrackingOptions::IsValid(std::string* why) const {
                      "give the edge-location σ in pixels, or leave it to be estimated");
     }
   }
-  return true;
+  return tracker.IsValid(why);
 }
 
 bool SequenceRenderOptions::IsValid(std::string* why) const {
-  if (!CameraValid(camera, why)) return false;
+  if (!camera.IsValid(why)) return false;
   if (frames < 1 || frames > kMaxFrames) {
     return Invalid(why, "SequenceRenderOptions.frames",
                    "must be a whole number from 1 to " + std::to_string(kMaxFrames) + ", got " +
@@ -108,7 +98,7 @@ bool SequenceRenderOptions::IsValid(std::string* why) const {
         "a closed contour needs at least 4 control points, got " + std::to_string(target.cols()),
         "give 4 or more points around the contour");
   }
-  return true;
+  return render.IsValid(why);
 }
 
 SequenceTracker::SequenceTracker(const SequenceTrackingOptions& options)

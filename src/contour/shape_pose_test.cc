@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
@@ -57,6 +60,30 @@ TEST(ShapePose, InvalidCentreWeightIsAnInputError) {
 TEST(ShapePose, SingularShapeIsDegenerate) {
   EXPECT_THROW(EstimateShapePose((Vector6d() << 0, 0, -1.0, 0, 0, 0).finished(), Options()),
                DegenerateError);
+}
+
+TEST(ShapePoseOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const ShapePoseOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "ContourCamera.focal", [](auto& o) { o.camera.focal = 0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapePoseOptions.form",
+                            [](auto& o) { o.form = static_cast<RotationForm>(5); }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapePoseOptions.shape_covariance", [](auto& o) {
+    o.shape_covariance = Matrix6d::Identity();
+    (*o.shape_covariance)(0, 1) = 0.5;  // not symmetric
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapePoseOptions.shape_covariance", [](auto& o) {
+    o.shape_covariance = Matrix6d::Identity();
+    (*o.shape_covariance)(2, 2) = -1.0;  // a negative variance
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapePoseOptions.shape_covariance", [](auto& o) {
+    o.shape_covariance = Matrix6d::Identity() * std::numeric_limits<double>::quiet_NaN();
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "UnscentedPoseOptions.unscented", [](auto& o) {
+    o.shape_covariance = Matrix6d::Identity();
+    o.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(1.0);
+  }));
 }
 
 }  // namespace

@@ -9,40 +9,62 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 
 namespace hecal::contour {
 namespace {
 
-void Require(bool ok, const std::string& what, const std::string& fix) {
-  if (!ok) throw InputError("contour tracker", 0, what, fix);
+// A positive finite value of `field`, or Invalid.
+bool PositiveValid(double value, const char* field, const char* fix, std::string* why) {
+  if (value > 0.0 && std::isfinite(value)) return true;
+  return Invalid(why, field, "must be a finite number above 0", fix);
 }
 
-void ValidateOptions(const ShapeTrackerOptions& o) {
-  Require(o.points_per_span >= 1 && o.points_per_span <= 1000, "points_per_span must be 1…1000",
-          "sample the curve at a few points per span (default 8)");
-  Require(o.iterations >= 1 && o.iterations <= 100, "iterations must be 1…100",
-          "use a few passes per frame (default 4)");
-  Require(o.gate > 0.0 && std::isfinite(o.gate), "the outlier gate must be positive",
-          "give the gate in standard deviations (default 3)");
-  Require(
-      !o.measurement_sigma || (*o.measurement_sigma > 0.0 && std::isfinite(*o.measurement_sigma)),
-      "the measurement sigma must be positive", "give σ in pixels, or let it be estimated");
-  Require(o.sigma_floor > 0.0 && std::isfinite(o.sigma_floor), "the sigma floor must be positive",
-          "give the floor in pixels (default 0.02)");
-  Require(o.initial_measurement_sigma > 0.0 && std::isfinite(o.initial_measurement_sigma),
-          "the initial measurement sigma must be positive", "give it in pixels (default 1)");
-  Require(o.process_noise > 0.0 && std::isfinite(o.process_noise),
-          "the process noise must be positive", "give it in px per frame² (default 1)");
-  Require(o.initial_sigma > 0.0 && std::isfinite(o.initial_sigma),
-          "the initial contour sigma must be positive", "give it in pixels (default 2)");
-  Require(o.initial_velocity_sigma > 0.0 && std::isfinite(o.initial_velocity_sigma),
-          "the initial velocity sigma must be positive", "give it in px per frame (default 5)");
-  Require(o.min_edges >= 0, "min_edges must be ≥ 0", "give 0 for the default max(3k, 12)");
-  Require(o.search.range > 0.0 && o.search.step > 0.0 && o.search.step <= o.search.range &&
-              o.search.derivative_sigma > 0.0 && o.search.polarity >= -1 &&
-              o.search.polarity <= 1 && std::isfinite(o.search.range),
-          "edge search options out of range", "give a positive range ≥ step and σ_d > 0");
+// The options, once IsValid (for the constructor's initialiser list).
+const ShapeTrackerOptions& Validated(const ShapeTrackerOptions& options) {
+  RequireValid(options);
+  return options;
 }
+
+}  // namespace
+
+bool ShapeTrackerOptions::IsValid(std::string* why) const {
+  if (ShapeSubspaceName(subspace) == "?") {
+    return Invalid(why, "ShapeTrackerOptions.subspace", "is not a shape subspace",
+                   "give one of the ShapeSubspace values (shape_space.h)");
+  }
+  if (points_per_span < 1 || points_per_span > 1000) {
+    return Invalid(why, "ShapeTrackerOptions.points_per_span",
+                   "must be 1 … 1000, got " + std::to_string(points_per_span),
+                   "sample the curve at a few points per span (default 8)");
+  }
+  if (!search.IsValid(why)) return false;
+  if (iterations < 1 || iterations > 100) {
+    return Invalid(why, "ShapeTrackerOptions.iterations",
+                   "must be 1 … 100, got " + std::to_string(iterations),
+                   "use a few passes per frame (default 4)");
+  }
+  return PositiveValid(gate, "ShapeTrackerOptions.gate",
+                       "give the gate in standard deviations (default 3)", why) &&
+         (!measurement_sigma ||
+          PositiveValid(*measurement_sigma, "ShapeTrackerOptions.measurement_sigma",
+                        "give σ in pixels, or leave it to be estimated", why)) &&
+         PositiveValid(sigma_floor, "ShapeTrackerOptions.sigma_floor",
+                       "give the floor in pixels (default 0.02)", why) &&
+         PositiveValid(initial_measurement_sigma, "ShapeTrackerOptions.initial_measurement_sigma",
+                       "give it in pixels (default 1)", why) &&
+         PositiveValid(process_noise, "ShapeTrackerOptions.process_noise",
+                       "give it in px per frame² (default 1)", why) &&
+         PositiveValid(initial_sigma, "ShapeTrackerOptions.initial_sigma",
+                       "give it in pixels (default 2)", why) &&
+         PositiveValid(initial_velocity_sigma, "ShapeTrackerOptions.initial_velocity_sigma",
+                       "give it in px per frame (default 5)", why) &&
+         (min_edges >= 0 || Invalid(why, "ShapeTrackerOptions.min_edges",
+                                    "must be 0 or more, got " + std::to_string(min_edges),
+                                    "give 0 for the default max(3k, 12)"));
+}
+
+namespace {
 
 Eigen::MatrixXd Symmetrise(const Eigen::MatrixXd& m) {
   return 0.5 * (m + m.transpose());
@@ -65,9 +87,11 @@ ShapeTracker::ShapeTracker(const Eigen::Matrix2Xd& control_points, const Eigen::
     : options_(options),
       search_(options.search),
       origin_(origin),
-      space_((ValidateOptions(options), control_points.colwise() - origin), options.subspace) {
-  Require(origin.allFinite(), "the origin (principal point) is not finite",
-          "give finite pixel coordinates");
+      space_((Validated(options), control_points.colwise() - origin), options.subspace) {
+  if (!origin.allFinite()) {
+    throw InputError("contour tracker", 0, "the origin (principal point) is not finite",
+                     "give finite pixel coordinates");
+  }
   const int k = space_.dim();
   const double n = static_cast<double>(control_points.cols());
   unit_shape_covariance_ = (2.0 * n / k) * space_.FitCovariance(1.0);

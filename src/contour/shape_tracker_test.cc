@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "hecal/contour/render.h"
 #include "hecal/core/error.h"
+#include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
@@ -128,6 +130,36 @@ TEST(ShapeTracker, RejectsDegenerateContoursAndBadOptions) {
   options.measurement_sigma = -1.0;
   EXPECT_THROW(ShapeTracker(Contour(), kOrigin, options), InputError);
   EXPECT_THROW(ShapeTracker(Contour(), Eigen::Vector2d(NAN, 0.0)), InputError);
+}
+
+TEST(ShapeTrackerOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const ShapeTrackerOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.subspace",
+                            [](auto& o) { o.subspace = static_cast<ShapeSubspace>(99); }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.points_per_span",
+                            [](auto& o) { o.points_per_span = 0; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "EdgeSearchOptions.step", [](auto& o) { o.search.step = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.iterations",
+                            [](auto& o) { o.iterations = 101; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.gate", [](auto& o) { o.gate = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.measurement_sigma",
+                            [](auto& o) { o.measurement_sigma = -1.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.sigma_floor",
+                            [](auto& o) { o.sigma_floor = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.initial_measurement_sigma",
+                            [](auto& o) { o.initial_measurement_sigma = -2.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.process_noise", [](auto& o) {
+    o.process_noise = std::numeric_limits<double>::infinity();
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.initial_sigma",
+                            [](auto& o) { o.initial_sigma = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ShapeTrackerOptions.initial_velocity_sigma",
+                            [](auto& o) { o.initial_velocity_sigma = 0.0; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "ShapeTrackerOptions.min_edges", [](auto& o) { o.min_edges = -1; }));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/uncertainty/consistency.h"
 
 namespace hecal::estimation {
@@ -370,10 +371,17 @@ double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
 
 }  // namespace
 
+bool StationTestOptions::IsValid(std::string* why) const {
+  if (false_alarm > 0.0 && false_alarm < 1.0) return true;
+  return Invalid(why, "StationTestOptions.false_alarm", "must be a probability between 0 and 1",
+                 "give the chance of flagging a good station, e.g. 0.0027 (3σ)");
+}
+
 std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
                                       const std::vector<bool>& included,
                                       const NoiseVariances& theta,
                                       const StationTestOptions& options) {
+  RequireValid(options);
   const Refit refit = LinearRefit(stations, included, theta);
   std::vector<StationTest> tests(stations.size());
   std::vector<Vector6d> r_hat(stations.size());

@@ -9,6 +9,7 @@
 #include "hecal/geometry/se3.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "testing/handeye_cases.h"
+#include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
@@ -266,6 +267,15 @@ TEST(EstimateNoise, TellsUnequalRobotAndCameraRotationNoiseApart) {
   EXPECT_GT(estimate.likelihood_ratio, 3.841);
   EXPECT_NEAR(estimate.robot().rotation / robot.rotation, 1.0, 0.15);
   EXPECT_NEAR(estimate.camera().rotation / camera.rotation, 1.0, 0.3);
+}
+
+TEST(StationTestOptions, IsValidNamesTheField) {
+  const StationTestOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(testing::RefusesNaming(defaults, "StationTestOptions.false_alarm",
+                                     [](auto& o) { o.false_alarm = 0.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(defaults, "StationTestOptions.false_alarm",
+                                     [](auto& o) { o.false_alarm = 1.0; }));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/io/atomic_file.h"
@@ -264,8 +265,16 @@ void ParseMatrixRows(LineCursor& cursor, std::string_view first_line,
 
 }  // namespace
 
+bool PoseReadOptions::IsValid(std::string* why) const {
+  if (units != LengthUnit::kMetre && units != LengthUnit::kMillimetre) {
+    return Invalid(why, "PoseReadOptions.units", "is not a length unit", "use m or mm");
+  }
+  return true;
+}
+
 PoseTable ParsePoseTable(std::string_view text, const std::string& source,
                          const PoseReadOptions& options) {
+  RequireValid(options);
   PoseTable table;
   table.source = source;
   table.unit = options.units;

@@ -18,6 +18,7 @@
 #include "hecal/io/import_tabb.h"
 #include "testing/elementary_rotations.h"
 #include "testing/nearly_orthonormal.h"
+#include "testing/options_validity.h"
 #include "testing/random_poses.h"
 
 namespace hecal::io {
@@ -953,6 +954,31 @@ TEST(PoseTableSpeedTest, HundredThousandRowsParseWellUnderASecond) {
     EXPECT_LT(seconds, 1.0) << format;
     std::printf("%s: 100k rows (%zu bytes) parsed in %.3f s\n", format, text.size(), seconds);
   }
+}
+
+TEST(PoseReadOptions, IsValidNamesTheField) {
+  const PoseReadOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(testing::RefusesNaming(defaults, "PoseReadOptions.units",
+                                     [](auto& o) { o.units = static_cast<LengthUnit>(7); }));
+  PoseReadOptions bad;
+  bad.units = static_cast<LengthUnit>(7);
+  EXPECT_THROW(ParsePoseTable("x,y,z,qw,qx,qy,qz\n0,0,0,1,0,0,0\n", "t.csv", bad), InputError);
+}
+
+TEST(PoseWriteOptions, IsValidNamesTheField) {
+  using testing::RefusesNaming;
+  const PoseWriteOptions defaults;
+  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "PoseWriteOptions.rotation", [](auto& o) {
+    o.rotation.kind = static_cast<RotationFormat::Kind>(9);
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "PoseWriteOptions.rotation",
+                            [](auto& o) { o.rotation.kind = RotationFormat::Kind::kEuler; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "PoseWriteOptions.rotation",
+                            [](auto& o) { o.rotation.sequence = EulerSequence::Parse("xyz"); }));
+  EXPECT_TRUE(RefusesNaming(defaults, "PoseWriteOptions.units",
+                            [](auto& o) { o.units = static_cast<LengthUnit>(-1); }));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/io/atomic_file.h"
@@ -52,12 +53,31 @@ void CheckFinite(double value, const PoseTable& table, const PoseRow& row, std::
 
 }  // namespace
 
-std::string FormatPoseTable(const PoseTable& table, const PoseWriteOptions& options) {
-  const RotationFormat& format = options.rotation;
-  if (format.kind == RotationFormat::Kind::kEuler && !format.sequence) {
-    throw InputError("PoseWriteOptions.rotation", 0, "an Euler format needs a sequence",
-                     "name the sequence, e.g. xyz");
+bool PoseWriteOptions::IsValid(std::string* why) const {
+  using Kind = RotationFormat::Kind;
+  const Kind kind = rotation.kind;
+  if (kind != Kind::kQuaternion && kind != Kind::kRotationVector && kind != Kind::kMatrix &&
+      kind != Kind::kEuler) {
+    return Invalid(why, "PoseWriteOptions.rotation", "is not a rotation format",
+                   "use quaternion, rotvec, matrix or euler:SEQ");
   }
+  if (kind == Kind::kEuler && !rotation.sequence) {
+    return Invalid(why, "PoseWriteOptions.rotation", "an Euler format needs a sequence",
+                   "name the sequence, e.g. xyz");
+  }
+  if (kind != Kind::kEuler && rotation.sequence) {
+    return Invalid(why, "PoseWriteOptions.rotation", "only an Euler format has a sequence",
+                   "leave the sequence empty, or use euler:SEQ");
+  }
+  if (units != LengthUnit::kMetre && units != LengthUnit::kMillimetre) {
+    return Invalid(why, "PoseWriteOptions.units", "is not a length unit", "use m or mm");
+  }
+  return true;
+}
+
+std::string FormatPoseTable(const PoseTable& table, const PoseWriteOptions& options) {
+  RequireValid(options);
+  const RotationFormat& format = options.rotation;
   const bool any_id = std::any_of(table.rows.begin(), table.rows.end(),
                                   [](const PoseRow& row) { return row.id.has_value(); });
   const bool any_stamp = std::any_of(table.rows.begin(), table.rows.end(),

@@ -7,7 +7,10 @@
 #include <limits>
 #include <numbers>
 #include <set>
+#include <string>
 #include <system_error>
+
+#include "hecal/core/options_check.h"
 
 namespace hecal::report::svg {
 namespace {
@@ -142,16 +145,15 @@ std::string DashAttr(bool dashed, double width) {
 }
 
 int ColumnCount(std::size_t panels, const FigureOptions& options) {
-  const int columns = std::max(1, options.columns);
   if (panels == 0) return 1;
-  return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(columns), panels));
+  return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(options.columns), panels));
 }
 
 double PanelWidth(const FigureOptions& options) {
-  return static_cast<double>(std::max(120, options.panel_width));
+  return static_cast<double>(options.panel_width);
 }
 double PanelHeight(const FigureOptions& options) {
-  return static_cast<double>(std::max(100, options.panel_height));
+  return static_cast<double>(options.panel_height);
 }
 double TitleHeight(const FigureOptions& options) {
   return options.title.empty() ? 0.0 : kFigureTitleHeight;
@@ -159,7 +161,7 @@ double TitleHeight(const FigureOptions& options) {
 
 // Top-left corner of panel `index` in figure pixels.
 Eigen::Vector2d PanelOrigin(std::size_t index, const FigureOptions& options) {
-  const std::size_t columns = static_cast<std::size_t>(std::max(1, options.columns));
+  const std::size_t columns = static_cast<std::size_t>(options.columns);
   return {PanelWidth(options) * static_cast<double>(index % columns),
           TitleHeight(options) + PanelHeight(options) * static_cast<double>(index / columns)};
 }
@@ -581,7 +583,29 @@ EllipseAxes AxesOf(const Eigen::Matrix2d& covariance, double scale) {
   return FrameOf(covariance, scale).axes;
 }
 
+bool FigureOptions::IsValid(std::string* why) const {
+  if (columns < 1) {
+    return Invalid(why, "FigureOptions.columns",
+                   "must be at least 1, got " + std::to_string(columns),
+                   "give the number of panels per row");
+  }
+  if (panel_width < kMinPanelWidth) {
+    return Invalid(why, "FigureOptions.panel_width",
+                   "must be at least " + std::to_string(kMinPanelWidth) + " px, got " +
+                       std::to_string(panel_width),
+                   "give a wider panel (default 360)");
+  }
+  if (panel_height < kMinPanelHeight) {
+    return Invalid(why, "FigureOptions.panel_height",
+                   "must be at least " + std::to_string(kMinPanelHeight) + " px, got " +
+                       std::to_string(panel_height),
+                   "give a taller panel (default 260)");
+  }
+  return true;
+}
+
 PanelLayout LayoutPanel(const Panel& panel, std::size_t index, const FigureOptions& options) {
+  RequireValid(options);
   std::vector<double> xs, ys;
   CollectExtent(panel, xs, ys);
   PanelLayout layout;
@@ -612,6 +636,7 @@ PanelLayout LayoutPanel(const Panel& panel, std::size_t index, const FigureOptio
 }
 
 std::string Figure(const std::vector<Panel>& panels, const FigureOptions& options) {
+  RequireValid(options);
   const int columns = ColumnCount(panels.size(), options);
   const std::size_t rows = panels.empty()
                                ? 1

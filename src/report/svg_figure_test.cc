@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "testing/options_validity.h"
+
 namespace hecal::report::svg {
 namespace {
 
@@ -577,6 +579,17 @@ TEST(SvgFigure, LegendListsEachNonEmptyLabelOnce) {
   Panel unlabelled = LinePanel({0, 1}, {0, 1});
   unlabelled.lines[0].label.clear();
   EXPECT_EQ(Figure({unlabelled}, FigureOptions{}).find("class=\"legend\""), std::string::npos);
+}
+
+TEST(FigureOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const FigureOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "FigureOptions.columns", [](auto& o) { o.columns = 0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "FigureOptions.panel_width",
+                            [](auto& o) { o.panel_width = FigureOptions::kMinPanelWidth - 1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "FigureOptions.panel_height",
+                            [](auto& o) { o.panel_height = FigureOptions::kMinPanelHeight - 1; }));
 }
 
 }  // namespace

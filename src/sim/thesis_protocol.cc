@@ -1,7 +1,11 @@
 #include "hecal/sim/thesis_protocol.h"
 
+#include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/euler.h"
 #include "hecal/geometry/so3.h"
 
@@ -47,8 +51,40 @@ handeye::Problem SimulatedData::MeasuredProblem() const {
   return handeye::MakeProblem(setup, T_base_gripper, T_camera_target);
 }
 
+bool ProtocolOptions::IsValid(std::string* why) const {
+  if (setup != handeye::Setup::kEyeInHand && setup != handeye::Setup::kEyeToHand) {
+    return Invalid(why, "ProtocolOptions.setup", "is not a setup",
+                   "use eye-in-hand or eye-to-hand");
+  }
+  if (stations < 1) {
+    return Invalid(why, "ProtocolOptions.stations",
+                   "must be at least 1, got " + std::to_string(stations),
+                   "give the number of robot stations to simulate (default 15)");
+  }
+  if (!(start_distance > 0.0) || !std::isfinite(start_distance)) {
+    return Invalid(why, "ProtocolOptions.start_distance", "must be a finite distance above 0",
+                   "give the camera's distance to the target in metres (default 1)");
+  }
+  const std::pair<const char*, double> lengths[] = {
+      {"ProtocolOptions.cube_side", cube_side},
+      {"ProtocolOptions.hand_eye_offset", hand_eye_offset},
+      {"ProtocolOptions.other_offset", other_offset}};
+  for (const auto& [field, length] : lengths) {
+    if (!(length >= 0.0) || !std::isfinite(length)) {
+      return Invalid(why, field, "must be a finite length, 0 or more",
+                     "give it in metres (the defaults are in thesis_protocol.h)");
+    }
+  }
+  if (!(max_tilt >= 0.0 && max_tilt <= 0.5 * std::numbers::pi)) {
+    return Invalid(why, "ProtocolOptions.max_tilt", "must be 0 … π/2 rad",
+                   "give the largest tilt about the image-plane axes (default π/4)");
+  }
+  return true;
+}
+
 SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const NoiseModel& robot_noise,
                                      const NoiseModel& camera_noise, std::mt19937_64& rng) {
+  RequireValid(options);
   SimulatedData data;
   data.setup = options.setup;
   // The flange offset is the small one: X for eye-in-hand (camera on the flange), Z for

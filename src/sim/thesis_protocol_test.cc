@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "hecal/geometry/so3.h"
+#include "testing/options_validity.h"
 
 namespace hecal::sim {
 namespace {
@@ -89,6 +91,26 @@ TEST(ThesisProtocol, SameSeedSameData) {
   const SimulatedData b = SimulateThesisProtocol({}, {}, {}, rng_b);
   EXPECT_EQ(a.X.matrix(), b.X.matrix());
   EXPECT_EQ(a.T_base_gripper.back().matrix(), b.T_base_gripper.back().matrix());
+}
+
+TEST(ProtocolOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const ProtocolOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "ProtocolOptions.setup",
+                            [](auto& o) { o.setup = static_cast<handeye::Setup>(2); }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ProtocolOptions.stations", [](auto& o) { o.stations = 0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ProtocolOptions.start_distance",
+                            [](auto& o) { o.start_distance = 0.0; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "ProtocolOptions.cube_side", [](auto& o) { o.cube_side = -1.0; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "ProtocolOptions.max_tilt", [](auto& o) { o.max_tilt = 2.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ProtocolOptions.hand_eye_offset",
+                            [](auto& o) { o.hand_eye_offset = -0.1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "ProtocolOptions.other_offset", [](auto& o) {
+    o.other_offset = std::numeric_limits<double>::quiet_NaN();
+  }));
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "hecal/core/options_check.h"
 
 namespace hecal::sim {
 
@@ -43,8 +46,40 @@ std::optional<int> TriangleThresholdBin(std::span<const double> histogram) {
   return best;
 }
 
+bool TriangleThresholdOptions::IsValid(std::string* why) const {
+  if (min_bins < 1) {
+    return Invalid(why, "TriangleThresholdOptions.min_bins",
+                   "must be at least 1, got " + std::to_string(min_bins), "use e.g. 5");
+  }
+  if (max_bins < min_bins) {
+    return Invalid(why, "TriangleThresholdOptions.max_bins",
+                   "must be at least min_bins (" + std::to_string(min_bins) + "), got " +
+                       std::to_string(max_bins),
+                   "use e.g. 15");
+  }
+  if (padding_bins < 0) {
+    return Invalid(why, "TriangleThresholdOptions.padding_bins",
+                   "must be 0 or more, got " + std::to_string(padding_bins), "use e.g. 2");
+  }
+  if (smoothing_window < 1 || smoothing_window % 2 == 0) {
+    return Invalid(why, "TriangleThresholdOptions.smoothing_window",
+                   "must be odd and at least 1, got " + std::to_string(smoothing_window),
+                   "use e.g. 3 (1 for no smoothing)");
+  }
+  if (!std::isfinite(floor)) {
+    return Invalid(why, "TriangleThresholdOptions.floor", "must be finite",
+                   "give the smallest value worth binning, 0 for none");
+  }
+  if (!(knee_fraction > 0.0 && knee_fraction <= 1.0)) {
+    return Invalid(why, "TriangleThresholdOptions.knee_fraction", "must be above 0 and at most 1",
+                   "use e.g. 0.1");
+  }
+  return true;
+}
+
 TriangleThresholdResult TriangleThreshold(std::span<const double> values,
                                           const TriangleThresholdOptions& options) {
+  RequireValid(options);
   TriangleThresholdResult result;
   result.threshold = std::numeric_limits<double>::infinity();
   result.outlier = std::vector<bool>(values.size(), false);
@@ -81,7 +116,7 @@ TriangleThresholdResult TriangleThreshold(std::span<const double> values,
   auto bin_of = [&](double v) {
     return std::clamp(static_cast<int>((scaled(v) - lo) / width), 0, bins - 1);
   };
-  std::vector<double> histogram(bins + std::max(options.padding_bins, 0), 0.0);
+  std::vector<double> histogram(bins + options.padding_bins, 0.0);
   for (double v : values) {
     if (std::isfinite(v)) histogram[bin_of(v)] += 1.0;
   }

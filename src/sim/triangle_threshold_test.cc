@@ -7,6 +7,8 @@
 #include <random>
 #include <vector>
 
+#include "testing/options_validity.h"
+
 namespace hecal::sim {
 namespace {
 
@@ -173,6 +175,24 @@ TEST(TriangleThreshold, ValuesBelowTheFloorAreNeverOutliers) {
   const TriangleThresholdResult result = TriangleThreshold(values, options);
   EXPECT_EQ(result.outlier_count, 1);
   EXPECT_TRUE(result.outlier.back());
+}
+
+TEST(TriangleThresholdOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const TriangleThresholdOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "TriangleThresholdOptions.min_bins",
+                            [](auto& o) { o.min_bins = 0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "TriangleThresholdOptions.max_bins",
+                            [](auto& o) { o.max_bins = 4; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "TriangleThresholdOptions.padding_bins",
+                            [](auto& o) { o.padding_bins = -1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "TriangleThresholdOptions.smoothing_window",
+                            [](auto& o) { o.smoothing_window = 4; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "TriangleThresholdOptions.floor",
+                            [](auto& o) { o.floor = std::numeric_limits<double>::infinity(); }));
+  EXPECT_TRUE(RefusesNaming(defaults, "TriangleThresholdOptions.knee_fraction",
+                            [](auto& o) { o.knee_fraction = 0.0; }));
 }
 
 }  // namespace

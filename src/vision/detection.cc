@@ -11,6 +11,7 @@
 
 #include "detection_internal.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/vision/order_consistency.h"
 
 namespace hecal::vision {
@@ -227,17 +228,20 @@ std::string_view PointOrderName(PointOrder order) {
   return "unknown";
 }
 
-bool DetectOptions::IsValid(std::string* error) const {
-  const auto fail = [error](const std::string& why) {
-    if (error != nullptr) *error = why;
-    return false;
-  };
-  if (min_points < 4) return fail("min_points must be at least 4 (a planar pose needs 4 points)");
+bool DetectOptions::IsValid(std::string* why) const {
+  if (min_points < 4) {
+    return Invalid(why, "DetectOptions.min_points",
+                   "must be at least 4, got " + std::to_string(min_points),
+                   "ask for 4 or more points (a planar pose needs 4)");
+  }
   if (apriltag_max_hamming < 0 || apriltag_max_hamming > 2) {
-    return fail("apriltag_max_hamming must be 0, 1 or 2");
+    return Invalid(why, "DetectOptions.apriltag_max_hamming",
+                   "must be 0, 1 or 2, got " + std::to_string(apriltag_max_hamming),
+                   "give the corrected bits libapriltag may accept (default 1)");
   }
   if (!(apriltag_decimate >= 1.0) || !std::isfinite(apriltag_decimate)) {
-    return fail("apriltag_decimate must be at least 1");
+    return Invalid(why, "DetectOptions.apriltag_decimate", "must be a finite number of at least 1",
+                   "give 1 for full resolution, 2 for half");
   }
   return true;
 }
@@ -391,8 +395,7 @@ Detection MarkerDetection(const cv::Mat& gray, const pose::TargetSpec& target,
 Detection DetectTarget(const cv::Mat& image, const pose::TargetSpec& target,
                        const DetectOptions& options,
                        const std::optional<pose::CameraModel>& camera) {
-  std::string why;
-  if (!options.IsValid(&why)) throw InputError("options", 0, why, "fix the detection options");
+  RequireValid(options);
   internal::RequireUsableTarget(target);
   const bool grid =
       target.type == pose::TargetType::kChessboard || target.type == pose::TargetType::kCircles;

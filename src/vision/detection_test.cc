@@ -15,6 +15,7 @@
 #include "hecal/core/error.h"
 #include "hecal/vision/render.h"
 #include "testing/detection_errors.h"
+#include "testing/options_validity.h"
 #include "testing/rendered_scene.h"
 
 namespace hecal::vision {
@@ -448,6 +449,18 @@ TEST(DetectTarget, NamesOfStatusesAndOrders) {
   EXPECT_EQ(DetectionStatusName(DetectionStatus::kAmbiguous), "ambiguous");
   EXPECT_EQ(PointOrderName(PointOrder::kMarkers), "markers");
   EXPECT_EQ(PointOrderName(PointOrder::kConsistency), "consistency");
+}
+
+TEST(DetectOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const DetectOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "DetectOptions.min_points", [](auto& o) { o.min_points = 3; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "DetectOptions.apriltag_max_hamming",
+                            [](auto& o) { o.apriltag_max_hamming = 3; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "DetectOptions.apriltag_decimate",
+                            [](auto& o) { o.apriltag_decimate = 0.5; }));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::vision {
@@ -139,27 +140,35 @@ std::vector<std::string> Warnings(const IntrinsicsResult& result, std::size_t vi
 
 }  // namespace
 
-bool IntrinsicsOptions::IsValid(std::string* error) const {
-  const auto fail = [error](const char* message) {
-    if (error != nullptr) *error = message;
-    return false;
-  };
-  if (recommended_views < 0) return fail("recommended_views must be >= 0");
-  if (!(min_normal_spread_deg >= 0.0 && min_normal_spread_deg <= 180.0)) {
-    return fail("min_normal_spread_deg must be in [0, 180]");
+bool IntrinsicsOptions::IsValid(std::string* why) const {
+  if (recommended_views < 0) {
+    return Invalid(why, "IntrinsicsOptions.recommended_views",
+                   "must be 0 or more, got " + std::to_string(recommended_views),
+                   "give the number of views below which to warn (default 5)");
   }
-  if (!(min_coverage >= 0.0 && min_coverage <= 1.0)) return fail("min_coverage must be in [0, 1]");
-  if (!(max_focal_sigma_relative > 0.0)) return fail("max_focal_sigma_relative must be > 0");
-  if (!(max_principal_sigma_px > 0.0)) return fail("max_principal_sigma_px must be > 0");
+  if (!(min_normal_spread_deg >= 0.0 && min_normal_spread_deg <= 180.0)) {
+    return Invalid(why, "IntrinsicsOptions.min_normal_spread_deg", "must be 0 … 180 degrees",
+                   "give the smallest spread of board normals to accept (default 10)");
+  }
+  if (!(min_coverage >= 0.0 && min_coverage <= 1.0)) {
+    return Invalid(why, "IntrinsicsOptions.min_coverage", "must be a fraction 0 … 1",
+                   "give the share of image cells the points must reach (default 0.5)");
+  }
+  if (!(max_focal_sigma_relative > 0.0) || !std::isfinite(max_focal_sigma_relative)) {
+    return Invalid(why, "IntrinsicsOptions.max_focal_sigma_relative",
+                   "must be a finite number above 0", "give σ(f)/f to accept (default 0.005)");
+  }
+  if (!(max_principal_sigma_px > 0.0) || !std::isfinite(max_principal_sigma_px)) {
+    return Invalid(why, "IntrinsicsOptions.max_principal_sigma_px",
+                   "must be a finite number of pixels above 0",
+                   "give the principal point σ to accept (default 5)");
+  }
   return true;
 }
 
 IntrinsicsResult CalibrateIntrinsics(const std::vector<CalibrationView>& views, int width,
                                      int height, const IntrinsicsOptions& options) {
-  std::string problem;
-  if (!options.IsValid(&problem)) {
-    throw InputError("intrinsics options", 0, problem, "correct the option");
-  }
+  RequireValid(options);
   CheckViews(views, width, height);
 
   // calibrateCamera takes single-precision points (its input check asks for CV_32F).

@@ -12,6 +12,7 @@
 
 #include "hecal/core/error.h"
 #include "testing/image_scene.h"
+#include "testing/options_validity.h"
 #include "testing/synthetic_views.h"
 
 namespace hecal::vision {
@@ -235,6 +236,22 @@ TEST(IntrinsicsCalibration, BadInputIsReported) {
   EXPECT_FALSE(options.IsValid(&why));
   EXPECT_NE(why.find("min_coverage"), std::string::npos);
   EXPECT_THROW(CalibrateIntrinsics(views, truth.width, truth.height, options), InputError);
+}
+
+TEST(IntrinsicsOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const IntrinsicsOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsOptions.recommended_views",
+                            [](auto& o) { o.recommended_views = -1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsOptions.min_normal_spread_deg",
+                            [](auto& o) { o.min_normal_spread_deg = 181.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsOptions.min_coverage",
+                            [](auto& o) { o.min_coverage = 2.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsOptions.max_focal_sigma_relative",
+                            [](auto& o) { o.max_focal_sigma_relative = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsOptions.max_principal_sigma_px",
+                            [](auto& o) { o.max_principal_sigma_px = -1.0; }));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/pose/pose_refinement.h"
 #include "hecal/vision/opencv_pnp.h"
 
@@ -168,26 +169,31 @@ void CheckViews(const std::vector<CalibrationView>& views) {
 
 }  // namespace
 
-bool IntrinsicsFitOptions::IsValid(std::string* error) const {
-  const auto fail = [error](const std::string& why) {
-    if (error != nullptr) *error = why;
-    return false;
-  };
-  for (const double value :
-       {refuse_rms_px, warn_ratio, min_warn_rms_px, warn_rms_px_without_free, free_floor_px}) {
+bool IntrinsicsFitOptions::IsValid(std::string* why) const {
+  const std::pair<const char*, double> thresholds[] = {
+      {"IntrinsicsFitOptions.refuse_rms_px", refuse_rms_px},
+      {"IntrinsicsFitOptions.warn_ratio", warn_ratio},
+      {"IntrinsicsFitOptions.min_warn_rms_px", min_warn_rms_px},
+      {"IntrinsicsFitOptions.warn_rms_px_without_free", warn_rms_px_without_free},
+      {"IntrinsicsFitOptions.free_floor_px", free_floor_px}};
+  for (const auto& [field, value] : thresholds) {
     if (!(value > 0.0) || !std::isfinite(value)) {
-      return fail("the thresholds must be positive and finite");
+      return Invalid(why, field, "must be a finite number above 0",
+                     "give a positive threshold (the defaults are in intrinsics_fit.h)");
     }
   }
-  if (max_diagnosis_views < 1) return fail("max_diagnosis_views must be at least 1");
+  if (max_diagnosis_views < 1) {
+    return Invalid(why, "IntrinsicsFitOptions.max_diagnosis_views",
+                   "must be at least 1, got " + std::to_string(max_diagnosis_views),
+                   "give the number of views the diagnosis refits (default 10)");
+  }
   return true;
 }
 
 IntrinsicsFit CheckIntrinsicsFit(const std::vector<CalibrationView>& views,
                                  const pose::CameraModel& camera,
                                  const IntrinsicsFitOptions& options) {
-  std::string why;
-  if (!options.IsValid(&why)) throw InputError("options", 0, why, "fix the check's options");
+  RequireValid(options);
   CheckViews(views);
   IntrinsicsFit fit;
   fit.median_rms_px = MedianPoseRms(views, camera);

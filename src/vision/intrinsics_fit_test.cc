@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
 #include "hecal/core/error.h"
 #include "testing/image_scene.h"
+#include "testing/options_validity.h"
 #include "testing/synthetic_views.h"
 
 namespace hecal::vision {
@@ -194,6 +197,25 @@ TEST(IntrinsicsFit, RejectsUnusableInput) {
   std::string why;
   EXPECT_FALSE(options.IsValid(&why));
   EXPECT_THROW(CheckIntrinsicsFit(BoardViews(camera), camera, options), InputError);
+}
+
+TEST(IntrinsicsFitOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const IntrinsicsFitOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsFitOptions.refuse_rms_px",
+                            [](auto& o) { o.refuse_rms_px = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsFitOptions.warn_ratio",
+                            [](auto& o) { o.warn_ratio = -1.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsFitOptions.min_warn_rms_px",
+                            [](auto& o) { o.min_warn_rms_px = std::nan(""); }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsFitOptions.warn_rms_px_without_free",
+                            [](auto& o) { o.warn_rms_px_without_free = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsFitOptions.free_floor_px", [](auto& o) {
+    o.free_floor_px = std::numeric_limits<double>::infinity();
+  }));
+  EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsFitOptions.max_diagnosis_views",
+                            [](auto& o) { o.max_diagnosis_views = 0; }));
 }
 
 }  // namespace

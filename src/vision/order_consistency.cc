@@ -7,6 +7,7 @@
 
 #include "detection_internal.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/vision/opencv_pnp.h"
 
@@ -162,27 +163,26 @@ GridOrder CanonicalGridOrder(const cv::Mat& gray, const pose::TargetSpec& target
   return GridOrder::kSymmetric;
 }
 
-bool OrderOptions::IsValid(std::string* error) const {
-  const auto fail = [error](const std::string& why) {
-    if (error != nullptr) *error = why;
-    return false;
-  };
+bool OrderOptions::IsValid(std::string* why) const {
   if (!(angle_tolerance_deg > 0.0 && angle_tolerance_deg < 90.0)) {
-    return fail("angle_tolerance_deg must be in (0, 90)");
+    return Invalid(why, "OrderOptions.angle_tolerance_deg", "must be between 0 and 90 degrees",
+                   "give the robot rule's tolerance (default 3)");
   }
   if (!(direction_margin_deg > 0.0 && direction_margin_deg < 90.0)) {
-    return fail("direction_margin_deg must be in (0, 90)");
+    return Invalid(why, "OrderOptions.direction_margin_deg", "must be between 0 and 90 degrees",
+                   "give the image rule's margin (default 20)");
   }
   if (!R_base_gripper.empty() && !camera) {
-    return fail("the robot rule needs the camera intrinsics (camera) as well as R_base_gripper");
+    return Invalid(why, "OrderOptions.camera",
+                   "the robot rule (R_base_gripper given) needs the camera intrinsics",
+                   "give the camera as well, or leave R_base_gripper empty for the image rule");
   }
   return true;
 }
 
 OrderReport ResolveOrder(const pose::TargetSpec& target, const OrderOptions& options,
                          std::vector<Detection>* detections) {
-  std::string why;
-  if (!options.IsValid(&why)) throw InputError("options", 0, why, "fix the order options");
+  RequireValid(options);
   const bool robot_rule = !options.R_base_gripper.empty();
   if (robot_rule && options.R_base_gripper.size() != detections->size()) {
     throw InputError("options", 0,

@@ -11,6 +11,7 @@
 #include "hecal/core/error.h"
 #include "hecal/vision/render.h"
 #include "testing/detection_errors.h"
+#include "testing/options_validity.h"
 #include "testing/rendered_scene.h"
 
 namespace hecal::vision {
@@ -260,6 +261,19 @@ TEST(ResolveOrder, RejectsInconsistentOptions) {
   options = {};
   options.direction_margin_deg = 95.0;
   EXPECT_THROW(ResolveOrder(target, options, &detections), InputError);
+}
+
+TEST(OrderOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const OrderOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "OrderOptions.angle_tolerance_deg",
+                            [](auto& o) { o.angle_tolerance_deg = 0.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "OrderOptions.direction_margin_deg",
+                            [](auto& o) { o.direction_margin_deg = 95.0; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "OrderOptions.camera", [](auto& o) {
+    o.R_base_gripper.assign(2, Eigen::Matrix3d::Identity());
+  }));
 }
 
 }  // namespace

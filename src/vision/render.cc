@@ -15,6 +15,7 @@
 
 #include "detection_internal.h"
 #include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
 
 namespace hecal::vision {
@@ -312,31 +313,48 @@ double UnitInterval(std::uint64_t bits) {
 
 }  // namespace
 
-bool RenderOptions::IsValid(std::string* error) const {
-  const auto fail = [error](const std::string& why) {
-    if (error != nullptr) *error = why;
-    return false;
-  };
-  if (width < 0 || height < 0) return fail("width and height must be 0 (camera size) or positive");
-  if (!(blur_sigma >= 0.0) || !std::isfinite(blur_sigma)) return fail("blur_sigma must be ≥ 0");
-  if (!(noise_sigma >= 0.0) || !std::isfinite(noise_sigma)) return fail("noise_sigma must be ≥ 0");
-  for (const double level : {background, black, white}) {
+bool RenderOptions::IsValid(std::string* why) const {
+  if (width < 0 || height < 0) {
+    return Invalid(why, "RenderOptions.size", "width and height must be 0 or more",
+                   "give the image size in pixels, or 0 for the camera's");
+  }
+  if (!(blur_sigma >= 0.0) || !std::isfinite(blur_sigma)) {
+    return Invalid(why, "RenderOptions.blur_sigma", "must be a finite number of pixels, 0 or more",
+                   "give the blur σ, 0 for none");
+  }
+  if (!(noise_sigma >= 0.0) || !std::isfinite(noise_sigma)) {
+    return Invalid(why, "RenderOptions.noise_sigma",
+                   "must be a finite number of grey levels, 0 or more",
+                   "give the noise σ, 0 for none");
+  }
+  const std::pair<const char*, double> levels[] = {{"RenderOptions.background", background},
+                                                   {"RenderOptions.black", black},
+                                                   {"RenderOptions.white", white}};
+  for (const auto& [field, level] : levels) {
     if (!(level >= 0.0 && level <= 255.0)) {
-      return fail("background, black and white must be grey levels in [0, 255]");
+      return Invalid(why, field, "must be a grey level 0 … 255", "give an 8-bit grey level");
     }
   }
-  if (!(margin >= 0.0) || !std::isfinite(margin)) return fail("margin must be ≥ 0");
-  if (!(circle_radius > 0.0 && circle_radius < 0.5)) {
-    return fail("circle_radius must be in (0, 0.5) of the smallest centre distance");
+  if (!(margin >= 0.0) || !std::isfinite(margin)) {
+    return Invalid(why, "RenderOptions.margin", "must be a finite number of pitches, 0 or more",
+                   "give the white border in pattern pitches (default 1)");
   }
-  if (supersampling < 1 || supersampling > 64) return fail("supersampling must be in 1..64");
+  if (!(circle_radius > 0.0 && circle_radius < 0.5)) {
+    return Invalid(why, "RenderOptions.circle_radius",
+                   "must be between 0 and 0.5 of the smallest centre distance",
+                   "give e.g. 0.3 (the default)");
+  }
+  if (supersampling < 1 || supersampling > 64) {
+    return Invalid(why, "RenderOptions.supersampling",
+                   "must be 1 … 64, got " + std::to_string(supersampling),
+                   "give the samples per pixel along each axis (default 8)");
+  }
   return true;
 }
 
 cv::Mat RenderTarget(const pose::TargetSpec& target, const pose::CameraModel& camera,
                      const Pose& T_camera_target, const RenderOptions& options) {
-  std::string why;
-  if (!options.IsValid(&why)) throw InputError("options", 0, why, "fix the render options");
+  RequireValid(options);
   internal::RequireUsableTarget(target);
   const int width = options.width > 0 ? options.width : camera.width;
   const int height = options.height > 0 ? options.height : camera.height;

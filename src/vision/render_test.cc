@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <opencv2/aruco/charuco.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "hecal/core/error.h"
 #include "testing/detection_errors.h"
+#include "testing/options_validity.h"
 #include "testing/rendered_scene.h"
 
 namespace hecal::vision {
@@ -239,6 +241,27 @@ TEST(RenderTarget, RejectsImpossibleRequests) {
   pose::TargetSpec bad = target;
   bad.square = -1.0;
   EXPECT_THROW(RenderTarget(bad, camera, in_front), InputError);
+}
+
+TEST(RenderOptions, IsValidNamesTheField) {
+  using hecal::testing::RefusesNaming;
+  const RenderOptions defaults;
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
+  EXPECT_TRUE(RefusesNaming(defaults, "RenderOptions.size", [](auto& o) { o.height = -1; }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "RenderOptions.blur_sigma", [](auto& o) { o.blur_sigma = -1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RenderOptions.noise_sigma", [](auto& o) {
+    o.noise_sigma = std::numeric_limits<double>::infinity();
+  }));
+  EXPECT_TRUE(
+      RefusesNaming(defaults, "RenderOptions.background", [](auto& o) { o.background = 256; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RenderOptions.black", [](auto& o) { o.black = -1; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RenderOptions.white", [](auto& o) { o.white = 300; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RenderOptions.margin", [](auto& o) { o.margin = -0.5; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RenderOptions.circle_radius",
+                            [](auto& o) { o.circle_radius = 0.5; }));
+  EXPECT_TRUE(RefusesNaming(defaults, "RenderOptions.supersampling",
+                            [](auto& o) { o.supersampling = 65; }));
 }
 
 }  // namespace

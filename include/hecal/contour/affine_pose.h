@@ -37,6 +37,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "hecal/geometry/types.h"
@@ -53,9 +54,12 @@ std::string_view RotationSequence(RotationForm form);                  // "ZYX",
 struct ContourCamera {
   double focal = 1.0;
   double z0 = 1.0;
+
+  // core/options_check.h: false naming ContourCamera.focal or .z0 (not finite and positive).
+  bool IsValid(std::string* why) const;
 };
-// Throws hecal::InputError (source "ContourCamera.focal" / "ContourCamera.z0") unless both are
-// finite and positive.
+// RequireValid(camera): throws hecal::InputError (source "ContourCamera.focal" /
+// "ContourCamera.z0") unless both are finite and positive.
 void ValidateContourCamera(const ContourCamera& camera);
 
 struct ContourPose {

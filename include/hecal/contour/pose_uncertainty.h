@@ -49,15 +49,20 @@ struct ContourPoseUncertainty {
 
 struct UnscentedPoseOptions {
   uncertainty::UnscentedParameters unscented = uncertainty::UnscentedParameters::Symmetric(0.0);
-  double bias_threshold = 0.25;
+  double bias_threshold = 0.25;  // |mean − f(S̄)| / σ above which a parameter is biased (> 0)
+
+  // core/options_check.h: false naming UnscentedPoseOptions.unscented (not valid for the 6
+  // shape parameters, uncertainty/unscented.h) or .bias_threshold (not above 0 and finite).
+  bool IsValid(std::string* why) const;
 };
 
 // The map from a shape vector to a pose: PoseFromShape (weak perspective, the contour paper's), or
 // PerspectivePose (perspective_pose.h).
 using PoseOfShape = std::function<ContourPose(const Vector6d&)>;
 
-// Throws hecal::DegenerateError when f(S̄) or a sigma point is singular (affine_pose.h), and
-// std::invalid_argument for an invalid covariance. The first form uses PoseFromShape.
+// Throws hecal::InputError when !options.IsValid, hecal::DegenerateError when f(S̄) or a sigma
+// point is singular (affine_pose.h), and std::invalid_argument for an invalid covariance. The first
+// form uses PoseFromShape.
 ContourPoseUncertainty UnscentedPose(const Vector6d& shape, const Matrix6d& shape_covariance,
                                      const ContourCamera& camera, RotationForm form,
                                      const UnscentedPoseOptions& options = {});

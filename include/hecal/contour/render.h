@@ -33,6 +33,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <string>
 
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/bspline.h"
@@ -48,12 +49,16 @@ struct RenderOptions {
   double noise_sigma = 0.0;   // grey levels (≥ 0)
   std::uint64_t seed = 0;
   bool quantize = false;  // round to integers in [0, 255] after the noise
+
+  // core/options_check.h: false naming RenderOptions.foreground or .background (not finite),
+  // .supersampling (below 1), .blur_sigma or .noise_sigma (negative or not finite).
+  bool IsValid(std::string* why) const;
 };
 
 // The polygon (2 × M vertices, pixel coordinates, closed implicitly) filled with coverage
-// anti-aliasing, blurred, then noise and quantisation. Throws hecal::InputError (source
-// "RenderOptions.<field>") for options out of range, std::invalid_argument for a negative size,
-// fewer than 3 vertices or non-finite vertices.
+// anti-aliasing, blurred, then noise and quantisation. Throws hecal::InputError when
+// !options.IsValid, std::invalid_argument for a negative size, fewer than 3 vertices or
+// non-finite vertices.
 GrayImage RenderPolygon(const Eigen::Matrix2Xd& polygon, int width, int height,
                         const RenderOptions& options);
 

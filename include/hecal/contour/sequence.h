@@ -22,11 +22,12 @@
 // Options validate themselves (core/options_check.h): IsValid names the field and the range;
 // SequenceTrackingOptions: the camera (ContourCamera.focal, .z0 finite and positive), the search
 // range EdgeSearchOptions.range 2 … 200 px, a given ShapeTrackerOptions.measurement_sigma above
-// 0 … 100 px; SequenceRenderOptions: the camera, frames 1 … 10000, width and height 8 … 20000 px
-// (8: io/image_files.h's smallest readable side), at most 10^8 pixels a frame (io/image_files.h's
-// largest readable image) and 2·10^9 over the sequence, RenderOptions.noise_sigma 0 … 255 grey
-// levels, RenderOptions.blur_sigma 0 … 20 px, at least 4 target control points. The ranges keep
-// any one sequence within a workstation's memory and time.
+// 0 … 100 px, then the rest of ShapeTrackerOptions::IsValid; SequenceRenderOptions: the camera,
+// frames 1 … 10000, width and height 8 … 20000 px (8: io/image_files.h's smallest readable side),
+// at most 10^8 pixels a frame (io/image_files.h's largest readable image) and 2·10^9 over the
+// sequence, RenderOptions.noise_sigma 0 … 255 grey levels, RenderOptions.blur_sigma 0 … 20 px, at
+// least 4 target control points, then the rest of RenderOptions::IsValid (render.h). The ranges
+// keep any one sequence within a workstation's memory and time.
 //
 // Errors: hecal::InputError for options that are not IsValid or an empty image;
 // hecal::DegenerateError for a collinear contour (shape_space.h), from the constructor and from

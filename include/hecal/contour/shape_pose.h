@@ -4,12 +4,12 @@
 // bias check (pose_uncertainty.h, UnscentedPose). Translation in the unit of Z0, angles in
 // radians in the rotation form's order (PoseParameterNames).
 //
-// Errors: hecal::InputError for an invalid UT centre weight (the field `unscented`);
-// hecal::DegenerateError from PoseFromShape for a singular shape (det M ≤ 0); those of
-// ValidateContourCamera pass through.
+// Errors: hecal::InputError when !options.IsValid; hecal::DegenerateError from PoseFromShape for
+// a singular shape (det M ≤ 0).
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/pose_uncertainty.h"
@@ -20,8 +20,15 @@ namespace hecal::contour {
 struct ShapePoseOptions {
   ContourCamera camera;
   RotationForm form = RotationForm::kZyx;
-  std::optional<Matrix6d> shape_covariance;  // Σ_S; none: no covariance
+  // Σ_S; none: no covariance. Symmetric to 1e-9 of its largest entry (the mean of it and its
+  // transpose is used) and positive semidefinite.
+  std::optional<Matrix6d> shape_covariance;
   UnscentedPoseOptions unscented;
+
+  // core/options_check.h: false naming the camera's field (ContourCamera::IsValid),
+  // ShapePoseOptions.form (not a RotationForm), .shape_covariance (not finite, not symmetric, a
+  // negative eigenvalue) or the field of unscented.IsValid (used only with a covariance).
+  bool IsValid(std::string* why) const;
 };
 
 struct ShapePose {

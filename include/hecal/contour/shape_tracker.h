@@ -68,6 +68,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 
 #include "hecal/contour/bspline.h"
 #include "hecal/contour/edge_search.h"
@@ -92,6 +93,13 @@ struct ShapeTrackerOptions {
   bool refine_template = true;
   bool learn_polarity = true;
   int min_edges = 0;  // 0: max(3k, 12)
+
+  // core/options_check.h: false naming ShapeTrackerOptions.subspace (not a ShapeSubspace),
+  // .points_per_span (not 1 … 1000), .iterations (not 1 … 100), .gate, .measurement_sigma,
+  // .sigma_floor, .initial_measurement_sigma, .process_noise, .initial_sigma or
+  // .initial_velocity_sigma (not above 0 and finite), .min_edges (negative), or the field of
+  // search.IsValid (edge_search.h).
+  bool IsValid(std::string* why) const;
 };
 
 struct TrackedFrame {
@@ -113,8 +121,9 @@ struct TrackedFrame {
 class ShapeTracker {
  public:
   // `control_points`: the initial contour's control points in pixel coordinates; `origin`: the
-  // principal point (image coordinates are measured from it). Throws hecal::InputError for bad
-  // options or points and hecal::DegenerateError for a collinear contour (shape_space.h).
+  // principal point (image coordinates are measured from it). Throws hecal::InputError when
+  // !options.IsValid or for bad points and hecal::DegenerateError for a collinear contour
+  // (shape_space.h).
   ShapeTracker(const Eigen::Matrix2Xd& control_points, const Eigen::Vector2d& origin,
                const ShapeTrackerOptions& options = {});
 

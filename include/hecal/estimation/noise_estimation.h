@@ -169,6 +169,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "hecal/estimation/loop_residual.h"
@@ -227,6 +228,9 @@ struct StationTest {
 struct StationTestOptions {
   double false_alarm = kThreeSigmaFalseAlarm;  // α per station
   bool estimated = false;  // variances estimated from the included stations: F, not χ²
+
+  // core/options_check.h: false naming StationTestOptions.false_alarm (not in (0, 1)).
+  bool IsValid(std::string* why) const;
 };
 
 struct NoiseEstimate {
@@ -259,7 +263,8 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
 
 // The outlier test above for every station at fixed variances and a fixed set of included
 // stations (the linear re-fit uses those only): the included statistic for included stations,
-// the prediction from the others for excluded ones.
+// the prediction from the others for excluded ones. Throws hecal::InputError when
+// !options.IsValid.
 std::vector<StationTest> TestStations(const std::vector<StationLinearization>& stations,
                                       const std::vector<bool>& included,
                                       const NoiseVariances& variances,

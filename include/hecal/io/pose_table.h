@@ -78,6 +78,10 @@ struct PoseReadOptions {
   bool degrees = false;                   // --degrees; header suffixes win
   std::optional<EulerSequence> euler;     // --euler SEQ, for a1,a2,a3 columns
   bool invert = false;                    // replace every pose by its inverse after reading
+
+  // core/options_check.h: false naming PoseReadOptions.units (not a LengthUnit). The other fields
+  // hold any value their type allows (an EulerSequence is valid when it exists).
+  bool IsValid(std::string* why) const;
 };
 
 struct PoseWriteOptions {
@@ -87,10 +91,14 @@ struct PoseWriteOptions {
   bool write_id = true;                   // write the id column when rows have ids
   bool write_stamp = true;                // write the stamp column when rows have stamps
   std::vector<std::string> comments;      // '#' lines written before the header
+
+  // core/options_check.h: false naming PoseWriteOptions.rotation (not a rotation kind, or an
+  // Euler format without a sequence or another with one) or .units (not a LengthUnit).
+  bool IsValid(std::string* why) const;
 };
 
 // Reads `path` (InputError when unreadable) and parses it; `source` of the table and of every
-// error is `path`.
+// error is `path`. Both forms throw hecal::InputError when !options.IsValid.
 PoseTable ReadPoseTable(const std::string& path, const PoseReadOptions& options);
 // Same, from text already in memory; `source` names it in messages.
 PoseTable ParsePoseTable(std::string_view text, const std::string& source,
@@ -98,7 +106,7 @@ PoseTable ParsePoseTable(std::string_view text, const std::string& source,
 
 // The file text. Throws InputError when a value does not fit in a double in the output unit
 // (|x| > ~1.8e305 m written in mm), when only some rows have ids or stamps, or when an id holds
-// a line break, or for an Euler format without a sequence (source "PoseWriteOptions.rotation").
+// a line break, or when !options.IsValid.
 std::string FormatPoseTable(const PoseTable& table, const PoseWriteOptions& options);
 // Writes atomically (temporary file, then rename): never a partial file.
 void WritePoseTable(const std::string& path, const PoseTable& table,

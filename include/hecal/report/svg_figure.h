@@ -73,13 +73,21 @@ struct Panel {
 };
 
 struct FigureOptions {
-  std::string title{};  // above all panels; none when empty
-  int columns = 3;      // panels per row (at least 1)
-  int panel_width = 360;
-  int panel_height = 260;
+  std::string title{};     // above all panels; none when empty
+  int columns = 3;         // panels per row (at least 1)
+  int panel_width = 360;   // px, at least kMinPanelWidth
+  int panel_height = 260;  // px, at least kMinPanelHeight
+
+  // The smallest panel that holds the axes, tick labels and a legend.
+  static constexpr int kMinPanelWidth = 120;
+  static constexpr int kMinPanelHeight = 100;
+  // core/options_check.h: false naming FigureOptions.columns (below 1), .panel_width or
+  // .panel_height (below the smallest panel).
+  bool IsValid(std::string* why) const;
 };
 
-// The complete SVG document for `panels`, laid out row by row in options.columns columns.
+// The complete SVG document for `panels`, laid out row by row in options.columns columns. Throws
+// hecal::InputError when !options.IsValid (so does LayoutPanel).
 std::string Figure(const std::vector<Panel>& panels, const FigureOptions& options);
 
 // ---- The pieces Figure is built from, public for tests and callers that need the mapping ----

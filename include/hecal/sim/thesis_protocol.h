@@ -16,6 +16,7 @@
 #pragma once
 
 #include <random>
+#include <string>
 #include <vector>
 
 #include "hecal/geometry/types.h"
@@ -32,6 +33,12 @@ struct ProtocolOptions {
   double max_tilt = 0.7853981633974483;  // radians (45°), about the image-plane axes
   double hand_eye_offset = 0.05;         // metres, |translation component| of the flange offset
   double other_offset = 1.0;             // metres, |translation component| of the other unknown
+
+  // core/options_check.h: false naming ProtocolOptions.setup (not a Setup), .stations (below 1),
+  // .start_distance (not above 0 and finite), .cube_side, .hand_eye_offset or .other_offset
+  // (negative or not finite) or .max_tilt (not 0 … π/2: the camera would turn away from the
+  // target).
+  bool IsValid(std::string* why) const;
 };
 
 struct SimulatedData {
@@ -46,6 +53,7 @@ struct SimulatedData {
   handeye::Problem MeasuredProblem() const;
 };
 
+// Throws hecal::InputError when !options.IsValid.
 SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const NoiseModel& robot_noise,
                                      const NoiseModel& camera_noise, std::mt19937_64& rng);
 

@@ -35,6 +35,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace hecal::sim {
@@ -50,13 +51,16 @@ std::vector<double> MovingAverage(std::span<const double> histogram, int window)
 std::optional<int> TriangleThresholdBin(std::span<const double> histogram);
 
 struct TriangleThresholdOptions {
-  int min_bins = 5;
-  int max_bins = 15;
-  int padding_bins = 2;  // empty bins appended past the largest value
-  int smoothing_window = 3;
+  int min_bins = 5;          // at least 1
+  int max_bins = 15;         // at least min_bins
+  int padding_bins = 2;      // empty bins appended past the largest value (0 or more)
+  int smoothing_window = 3;  // odd, at least 1
   bool log_scale = true;
-  double floor = 0.0;          // values below are binned at the floor (see above)
-  double knee_fraction = 0.1;  // the threshold bin's height must be ≤ this × the peak's
+  double floor = 0.0;          // values below are binned at the floor (see above); finite
+  double knee_fraction = 0.1;  // the threshold bin's height must be ≤ this × the peak's; (0, 1]
+
+  // core/options_check.h: false naming the field outside the range noted beside it.
+  bool IsValid(std::string* why) const;
 };
 
 struct TriangleThresholdResult {
@@ -66,6 +70,7 @@ struct TriangleThresholdResult {
   int outlier_count = 0;
 };
 
+// Throws hecal::InputError when !options.IsValid.
 TriangleThresholdResult TriangleThreshold(std::span<const double> values,
                                           const TriangleThresholdOptions& options = {});
 

@@ -18,10 +18,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "hecal/core/options_check.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/geometry/types.h"
@@ -84,15 +87,32 @@ struct Manifold<std::vector<Pose>> {
 };
 
 struct MeanOptions {
-  int max_iterations = 50;
-  double tolerance = 1e-13;  // on |Σ w_i (y_i ⊟ x)|, tangent units
+  int max_iterations = 50;   // at least 1
+  double tolerance = 1e-13;  // on |Σ w_i (y_i ⊟ x)|, tangent units; finite, 0 or more
+
+  // core/options_check.h: false naming MeanOptions.max_iterations (below 1) or .tolerance
+  // (negative or not finite).
+  bool IsValid(std::string* why) const {
+    if (max_iterations < 1) {
+      return Invalid(why, "MeanOptions.max_iterations",
+                     "must be at least 1, got " + std::to_string(max_iterations),
+                     "give the most iterations of the mean (default 50)");
+    }
+    if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
+      return Invalid(why, "MeanOptions.tolerance", "must be a finite number, 0 or more",
+                     "give the step size at which the mean stops (default 1e-13)");
+    }
+    return true;
+  }
 };
 
 // Weighted mean of `points` on the manifold, started from `initial` (e.g. the unscented centre
-// point or the first sample). Returns the last iterate when max_iterations is reached.
+// point or the first sample). Returns the last iterate when max_iterations is reached. Throws
+// hecal::InputError when !options.IsValid.
 template <class T>
 T WeightedMean(std::span<const T> points, std::span<const double> weights, const T& initial,
                const MeanOptions& options = {}) {
+  RequireValid(options);
   using M = Manifold<T>;
   T mean = initial;
   const int n = M::Dim(mean);

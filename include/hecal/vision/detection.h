@@ -85,7 +85,7 @@
 //
 // Errors: hecal::InputError (source "target") when pose::CheckTarget rejects the spec, when the
 // spec is a square chessboard or symmetric circle grid (cols == rows: a quarter turn maps it onto
-// itself, so even handedness cannot fix the order) and for invalid options (source "options");
+// itself, so even handedness cannot fix the order); the InputError of DetectOptions::IsValid;
 // InputError (source "image") for an empty image or one that is not 8-bit with 1, 3 or 4 channels;
 // InputError (source "camera") for a camera whose fx, fy are not positive, whose values are not
 // finite, or whose width × height (when set) is not the image's.
@@ -150,8 +150,9 @@ struct DetectOptions {
   int apriltag_max_hamming = 1;       // corrected bits accepted by libapriltag (0..2)
   double apriltag_decimate = 1.0;     // libapriltag quad_decimate (1 = full resolution)
 
-  // True when the options are usable; otherwise says why in *error.
-  bool IsValid(std::string* error) const;
+  // core/options_check.h: false naming DetectOptions.min_points (below 4),
+  // .apriltag_max_hamming (not 0 … 2) or .apriltag_decimate (below 1 or not finite).
+  bool IsValid(std::string* why) const;
 };
 
 Detection DetectTarget(const cv::Mat& image, const pose::TargetSpec& target,

@@ -29,9 +29,10 @@
 //
 // Errors: hecal::InputError (source "views") for an empty or mismatched view, fewer than 4 points
 // in a view, non-finite values, object points off the plane z = 0 (calibrateCamera's planar
-// initialisation needs z = 0), a non-positive image size or invalid options;
-// hecal::DegenerateError for fewer than 3 views (a planar target gives 2 constraints on K per
-// view; K has 4–5 unknowns) and when OpenCV fails or returns non-finite values.
+// initialisation needs z = 0), a non-positive image size; the InputError of
+// IntrinsicsOptions::IsValid; hecal::DegenerateError for fewer than 3 views (a planar target gives
+// 2 constraints on K per view; K has 4–5 unknowns) and when OpenCV fails or returns non-finite
+// values.
 #pragma once
 
 #include <Eigen/Core>
@@ -58,8 +59,10 @@ struct IntrinsicsOptions {
   double max_focal_sigma_relative = 0.005;  // σ(f)/f
   double max_principal_sigma_px = 5.0;
 
-  // True when the options are usable; otherwise says why in *error.
-  bool IsValid(std::string* error) const;
+  // core/options_check.h: false naming IntrinsicsOptions.recommended_views (negative),
+  // .min_normal_spread_deg (not 0 … 180), .min_coverage (not 0 … 1), .max_focal_sigma_relative or
+  // .max_principal_sigma_px (not above 0 and finite).
+  bool IsValid(std::string* why) const;
 };
 
 // 1σ of the intrinsics (fx, fy, cx, cy in px; distortion dimensionless); 0 for fixed parameters

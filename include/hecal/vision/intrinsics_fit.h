@@ -53,7 +53,7 @@
 //                      undistorted).
 //
 // Errors: hecal::InputError (source "views") for no views, a view with fewer than 4 points or
-// mismatched sizes; (source "options") for invalid options.
+// mismatched sizes; the InputError of IntrinsicsFitOptions::IsValid.
 #pragma once
 
 #include <optional>
@@ -73,8 +73,9 @@ struct IntrinsicsFitOptions {
   double free_floor_px = 0.05;
   int max_diagnosis_views = 10;
 
-  // True when the options are usable; otherwise says why in *error.
-  bool IsValid(std::string* error) const;
+  // core/options_check.h: false naming the threshold that is not above 0 and finite, or
+  // IntrinsicsFitOptions.max_diagnosis_views (below 1).
+  bool IsValid(std::string* why) const;
 };
 
 enum class IntrinsicsVerdict { kFits, kSuspect, kDoesNotFit };

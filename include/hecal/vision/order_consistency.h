@@ -62,8 +62,9 @@
 //   OrderReport::ambiguous: skip them (never guess). Ordered detections become found, with order
 //   kReference (the reference) or kConsistency.
 //
-// Errors: hecal::InputError (source "options") when R_base_gripper is given without a camera or
-// with a count different from the number of detections, or for non-positive tolerances.
+// Errors: the InputError of OrderOptions::IsValid (a tolerance out of range, R_base_gripper
+// without a camera); hecal::InputError (source "options") when R_base_gripper's count differs from
+// the number of detections.
 #pragma once
 
 #include <Eigen/Core>
@@ -99,7 +100,9 @@ struct OrderOptions {
   double angle_tolerance_deg = 3.0;    // robot rule
   double direction_margin_deg = 20.0;  // image rule, in (0, 90)
 
-  bool IsValid(std::string* error) const;
+  // core/options_check.h: false naming OrderOptions.angle_tolerance_deg or
+  // .direction_margin_deg (not in (0, 90)), or .camera (R_base_gripper given without it).
+  bool IsValid(std::string* why) const;
 };
 
 struct OrderReport {

@@ -43,9 +43,9 @@
 //
 // Errors: hecal::InputError (source "target") when pose::CheckTarget rejects the spec or an
 // AprilTag family's data bits would overlap between neighbouring markers (spacing too small);
-// (source "options") for invalid options or no image size (options and camera both 0); (source
-// "T_camera_target") when the camera sees the back of the board (camera centre at z ≥ 0 in the
-// target frame).
+// the InputError of RenderOptions::IsValid; (source "options") for no image size (options and
+// camera both 0); (source "T_camera_target") when the camera sees the back of the board (camera
+// centre at z ≥ 0 in the target frame).
 #pragma once
 
 #include <cstdint>
@@ -71,7 +71,10 @@ struct RenderOptions {
   int supersampling = 8;       // samples per pixel along each axis
   std::uint64_t seed = 1;      // noise
 
-  bool IsValid(std::string* error) const;
+  // core/options_check.h: false naming RenderOptions.size (a negative side), .blur_sigma,
+  // .noise_sigma or .margin (negative or not finite), .background, .black or .white (not a grey
+  // level 0 … 255), .circle_radius (not in (0, 0.5)) or .supersampling (not 1 … 64).
+  bool IsValid(std::string* why) const;
 };
 
 // An 8-bit single-channel image of the target (see above).
