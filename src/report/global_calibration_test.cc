@@ -1,20 +1,19 @@
 // The target-free calibration job on synthetic scenes whose X is known (testing/
 // epipolar_scenes.h): noise-free matches give the true X with a closed certificate; a planted
-// wrong match is removed and named by its stations and id; the result file holds X as solved;
+// wrong match is removed and named by its stations and id; the result file holds X as solved and
+// the 1σ of its translation along the hand's axes;
 // the options name the bad field; the correspondence reader numbers stations by row.
 #include "hecal/report/global_calibration.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
 #include "testing/epipolar_scenes.h"
 #include "testing/options_validity.h"
+#include "testing/scratch_folder.h"
 
 namespace hecal::report {
 namespace {
@@ -152,21 +151,9 @@ TEST(GlobalCalibrationOptions, NameTheBadField) {
   }));
 }
 
-class GlobalFiles : public ::testing::Test {
+class GlobalFiles : public testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("hecal_global_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string Write(const std::string& name, const std::string& text) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path) << text;
-    return path;
-  }
-  std::filesystem::path dir_;
+  GlobalFiles() : ScratchFolderTest("hecal_global") {}
 };
 
 // Robot rows without ids are stations 1, 2, …; pixels become unit rays through the camera.

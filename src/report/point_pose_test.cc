@@ -1,10 +1,7 @@
 #include "hecal/report/point_pose.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <limits>
@@ -15,6 +12,7 @@
 
 #include "hecal/core/error.h"
 #include "testing/pose_scenes.h"
+#include "testing/scratch_folder.h"
 
 namespace hecal::report {
 namespace {
@@ -65,21 +63,9 @@ TEST(PointPoseOptions, EachCheckedFieldRejectsABadValue) {
   ExpectInvalid([](PointPoseOptions& o) { o.pixel_sigma = 101.0; }, "pixel_sigma", "got 101");
 }
 
-class PointPoseFiles : public ::testing::Test {
+class PointPoseFiles : public testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("hecal_point_pose_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string Write(const std::string& name, const std::string& text) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path) << text;
-    return path;
-  }
-  std::filesystem::path dir_;
+  PointPoseFiles() : ScratchFolderTest("hecal_point_pose") {}
 };
 
 // Exact pixels of a distortion-free pinhole, object points in mm with ids, the image points a
