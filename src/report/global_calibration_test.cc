@@ -1,8 +1,8 @@
 // The target-free calibration job on synthetic scenes whose X is known (testing/
 // epipolar_scenes.h): noise-free matches give the true X with a closed certificate; a planted
-// wrong match is removed and named by its stations and id; the result file holds X as solved and
-// the 1σ of its translation along the hand's axes;
-// the options name the bad field; the correspondence reader numbers stations by row.
+// wrong match is removed and named by its stations and id; the result file holds X as solved
+// and the 1σ of its translation along the hand's axes; the options name the bad field; the
+// correspondence reader numbers stations by row.
 #include "hecal/report/global_calibration.h"
 
 #include <gtest/gtest.h>
