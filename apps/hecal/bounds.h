@@ -21,7 +21,8 @@
 //                                                            (ParseNoiseLevel, list_flags.h)
 //   real number            --focal, --z0, --min-time, …      CLI11's reading of a double
 //   pixel noise            --pixel-sigma                     one finite number (none: the
-//                                                            default or, from images, estimated)
+//                                                            default or, from images, estimated;
+//                                                            ParsePixelSigma, calibrate.h)
 //
 // CLI11 2.1.2 reads integers with strtoll base 0 ("010" is 8, "0x10" 16) and unsigned ones with
 // strtoull ("-1" becomes 2^64 − 1), so every whole-number flag is bound through AddWholeNumber:

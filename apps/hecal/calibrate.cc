@@ -35,6 +35,17 @@ estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& tex
   return {level.deg / kDegrees, level.mm * 1e-3};
 }
 
+std::optional<double> ParsePixelSigma(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+    throw InputError("--pixel-sigma", 0, "expected a number of pixels, got '" + text + "'",
+                     "write e.g. --pixel-sigma 0.5, or leave the flag out");
+  }
+  return value;
+}
+
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   CalibrateSettings settings;
   const auto setup = handeye::ParseSetup(flags.setup);

@@ -81,6 +81,11 @@ struct CalibrateSettings {
 // --intrinsics, --pixel-sigma, --refine-intrinsics) given with --camera.
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 
+// --pixel-sigma: one finite number of pixels, nullopt when the flag is not given (from images the
+// noise is then estimated, for --method global the default applies); the range is the options'
+// IsValid's.
+std::optional<double> ParsePixelSigma(const std::string& text);
+
 // "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
 // `flag` when it is not two numbers (the range is the options' IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text);

@@ -3,7 +3,6 @@
 // correspondence file; vision's target-corner or feature matchers from images), runs
 // report::CalibrateGlobal and prints.
 #include <iomanip>
-#include <sstream>
 
 #include "bounds.h"
 #include "calibrate.h"
@@ -189,13 +188,8 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   options.max_cubes = flags.max_cubes;
   options.matches_per_motion = flags.matches_per_motion;
   options.threads = flags.threads;
-  if (!flags.pixel_sigma.empty()) {
-    std::istringstream in(flags.pixel_sigma);
-    if (!(in >> options.pixel_sigma) || !std::isfinite(options.pixel_sigma)) {
-      throw InputError("--pixel-sigma", 0, "'" + flags.pixel_sigma + "' is not a number",
-                       "give the pixel noise per axis in pixels, e.g. 0.5");
-    }
-  }
+  if (const std::optional<double> sigma = ParsePixelSigma(flags.pixel_sigma))
+    options.pixel_sigma = *sigma;
   if (!flags.robot_sigma.empty())
     options.robot_sigma = ParseSigma("--robot-sigma", flags.robot_sigma);
   RequireValid(options);

@@ -6,7 +6,6 @@
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <iomanip>
 #include <numbers>
@@ -29,17 +28,6 @@ namespace hecal::cli {
 namespace {
 
 // Its range is ImageCalibrationOptions::IsValid's.
-std::optional<double> ParsePixelSigma(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-    throw InputError("--pixel-sigma", 0, "expected a number of pixels, got '" + text + "'",
-                     "write e.g. --pixel-sigma 0.1, or leave it out to estimate it");
-  }
-  return value;
-}
-
 void PrintRefinedIntrinsics(std::ostream& out, const pose::CameraModel& before,
                             const report::ImageReport& report) {
   constexpr std::array<const char*, pose::kNumIntrinsics> kNames = {"fx", "fy", "cx", "cy", "k1",
