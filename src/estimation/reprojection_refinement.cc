@@ -282,14 +282,29 @@ class Refinement {
 
 }  // namespace
 
+namespace {
+
+bool PixelSigmaInRange(double pixel_sigma, std::string_view field, const std::string& fix,
+                       std::string* why) {
+  if (pixel_sigma > 0.0 && pixel_sigma <= kMaxPixelSigma) return true;
+  char got[32];
+  std::snprintf(got, sizeof(got), "%g", pixel_sigma);
+  return Invalid(why, field, std::string("must be above 0 to 100 px, got ") + got, fix);
+}
+
+constexpr const char* kPixelSigmaFix = "give the noise of one image coordinate in pixels, e.g. 0.5";
+
+}  // namespace
+
+bool PixelSigmaIsValid(double pixel_sigma, std::string_view field, std::string* why) {
+  return PixelSigmaInRange(pixel_sigma, field, kPixelSigmaFix, why);
+}
+
 bool PixelSigmaIsValid(const std::optional<double>& pixel_sigma, std::string_view field,
                        std::string* why) {
-  if (!pixel_sigma || (*pixel_sigma > 0.0 && *pixel_sigma <= kMaxPixelSigma)) return true;
-  char got[32];
-  std::snprintf(got, sizeof(got), "%g", *pixel_sigma);
-  return Invalid(why, field, std::string("must be above 0 to 100 px, got ") + got,
-                 "give the noise of one image coordinate in pixels, e.g. 0.5, or leave it unset "
-                 "to estimate it");
+  return !pixel_sigma ||
+         PixelSigmaInRange(*pixel_sigma, field,
+                           std::string(kPixelSigmaFix) + ", or leave it unset to estimate it", why);
 }
 
 bool ReprojectionOptions::IsValid(std::string* why) const {

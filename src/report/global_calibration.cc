@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -55,12 +54,7 @@ bool GlobalCalibrationOptions::IsValid(std::string* why) const {
                    "give the search's budget of cube tests, e.g. 1000000");
   }
   if (!ThreadCountValid(threads, Field("threads"), why)) return false;
-  if (!(pixel_sigma > 0.0 && pixel_sigma <= estimation::kMaxPixelSigma)) {
-    char got[32];
-    std::snprintf(got, sizeof(got), "%g", pixel_sigma);
-    return Invalid(why, Field("pixel_sigma"), std::string("must be above 0 to 100 px, got ") + got,
-                   "give the noise of one image coordinate in pixels, e.g. 0.5");
-  }
+  if (!estimation::PixelSigmaIsValid(pixel_sigma, Field("pixel_sigma"), why)) return false;
   return estimation::SigmaIsValid(robot_sigma, Field("robot_sigma"), why);
 }
 

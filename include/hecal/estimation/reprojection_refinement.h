@@ -73,8 +73,11 @@ struct ImagePoints {
 // measurements of the target.
 inline constexpr double kMaxPixelSigma = 100.0;
 
-// core/options_check.h's check of an optional pixel sigma: given, it must be in (0,
-// kMaxPixelSigma]; false naming `field` otherwise.
+// core/options_check.h's check of a pixel sigma: it must be in (0, kMaxPixelSigma]; false naming
+// `field` otherwise.
+bool PixelSigmaIsValid(double pixel_sigma, std::string_view field, std::string* why);
+
+// The same for an optional one (unset: estimated): given, it must be in (0, kMaxPixelSigma].
 bool PixelSigmaIsValid(const std::optional<double>& pixel_sigma, std::string_view field,
                        std::string* why);
 
