@@ -1,5 +1,8 @@
-// `hecal bench`: see bench.h.
-#include "bench.h"
+// `hecal bench` (docs/cli.md#hecal-bench, docs/bench.md): binds the flags into
+// study::BenchOptions, runs study::RunBench (study/bench.h) with OpenCV's hand-eye functions
+// (peers/opencv_handeye.h) as its peer when vision is built, and prints the table
+// (report/study_text.h) or the JSON (report/bench_file.h).
+#include "hecal/study/bench.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -9,11 +12,11 @@
 #include <optional>
 
 #include "bounds.h"
+#include "cli.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/report/bench_file.h"
 #include "hecal/report/study_text.h"
-#include "hecal/study/bench.h"
 #include "list_flags.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
 #include "hecal/peers/opencv_handeye.h"

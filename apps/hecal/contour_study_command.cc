@@ -1,24 +1,7 @@
-// `hecal contour study`: the contour paper's experiments (contour/contour_study.h) from the command
-// line.
-//
-//   hecal contour study --motion tx|ty|tz|rx|ry|rz --from A --to B --steps N
-//         [--pixel-noise 0.5] [--z0 5000] [--focal 50] [--pixel-size 0.0083] [--contour FILE]
-//         [--samples 5000] [--seed 1] [--threads 0] [--ut-w0 0]
-//         [--output study.csv] [--plot study.svg] [--covariance-plot cov.svg [--covariance-at V]]
-// Lengths in mm, angles in degrees (the contour paper's units). --output writes a comment line with
-// the random seed and the sample count, then one row per step and per
-// pose component: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias
-// (component Tx,Ty,Tz,Rx,Ry,Rz; errors against the true motion; bias 1 when the bias check
-// flags the component). --plot (default: the CSV's name with .svg) draws the contour paper's Fig.
-// 3: mean error ± 2σ against the motion, UT solid, Monte Carlo dashed, one panel per component.
-// --covariance-plot draws Fig. 4 at the step nearest --covariance-at (default: --from): every
-// 2×2 block of the pose covariance as 2σ ellipses (UT solid, Monte Carlo dashed) with 1000
-// Monte Carlo poses and the 13 sigma points. Stdout: a table per step and the largest
-// correlations. Every file is written atomically, all or none (io/atomic_file.h: the paths are
-// checked before the study runs), and only after the whole study ran (report/contour_study_file.h
-// writes them). The flags bind into contour::ContourStudyOptions, whose IsValid checks every
-// range (--steps 1 … 10000, --samples 2 … 10^6 with steps × samples ≤ 10^8, --threads 0 … 256,
-// --pixel-noise 0 … 100 px); a bad value names the flag (field_flags.h).
+// `hecal contour study` (docs/cli.md#hecal-contour-study): the contour paper's experiments
+// (contour/contour_study.h). The flags bind into contour::ContourStudyOptions, whose IsValid
+// checks every range (field_flags.h names the flag); report/contour_study_file.h writes the CSV
+// and the figures, all or none, after the whole study ran.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdint>

@@ -1,5 +1,8 @@
-// `hecal simulate`: see simulate.h.
-#include "simulate.h"
+// `hecal simulate` (docs/cli.md#hecal-simulate, docs/thesis-study.md): binds the flags into
+// study::SimulateOptions (study/simulate.h; list flags parsed once here, ranges checked by its
+// IsValid), runs study::Simulate, prints a table per setting (report/study_text.h) and writes the
+// CSV files of study/study_csv.h.
+#include "hecal/study/simulate.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>
@@ -7,11 +10,11 @@
 #include <optional>
 
 #include "bounds.h"
+#include "cli.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/study_text.h"
-#include "hecal/study/simulate.h"
 #include "hecal/study/study_csv.h"
 #include "list_flags.h"
 
