@@ -79,12 +79,7 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
                      "Station counts, comma separated (3 to 100000)")
       ->default_str("10,20,50");
   bench->add_flag("--json", command->json, "Print one JSON array (docs/bench.md)");
-  bench
-      ->add_option_function<std::string>(
-          "--method",
-          [&o](const std::string& text) { o.methods = ParseMethodList("--method", text); },
-          "Method name(s), comma separated, or all")
-      ->default_str("all");
+  AddMethodListFlag(*bench, o.methods);
   bench
       ->add_option_function<std::string>(
           "--setup",
@@ -110,7 +105,7 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
       ->default_str("0.1");
   bench->add_option("--min-time", o.min_time, "Timing budget per row, seconds (0 to 3600)")
       ->capture_default_str();
-  AddWholeNumber(*bench, "--seed", o.seed, "Random seed (0 to 2^64-1)")->capture_default_str();
+  AddSeedFlag(*bench, o.seed);
   bench->callback([command, io] { RunBench(*command, io); });
 }
 

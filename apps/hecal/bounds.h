@@ -11,6 +11,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ namespace hecal::cli {
 template <class T>
 CLI::Option* AddWholeNumber(CLI::App& command, const std::string& flag, T& value,
                             const std::string& help);
+
+// --seed of `hecal simulate` and `hecal bench`: the whole-number rule, default shown.
+CLI::Option* AddSeedFlag(CLI::App& command, std::uint64_t& seed);
 
 // Binds `flag` to `values`: one argument, comma separated whole numbers (SplitList, list_flags.h;
 // the rule above per item).

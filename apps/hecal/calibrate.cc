@@ -46,6 +46,12 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
   return value;
 }
 
+io::LengthUnit ParseUnitsFlag(const std::string& text) {
+  const std::optional<io::LengthUnit> unit = io::ParseLengthUnit(text);
+  if (!unit) throw InputError("--units", 0, "unknown unit '" + text + "'", "use m or mm");
+  return *unit;
+}
+
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   CalibrateSettings settings;
   const auto setup = handeye::ParseSetup(flags.setup);
@@ -63,11 +69,10 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     throw InputError("--method", 0, "unknown method '" + flags.method + "'",
                      "use one of: " + names + "all");
   }
-  const auto units = io::ParseLengthUnit(flags.units);
-  if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
+  const io::LengthUnit units = ParseUnitsFlag(flags.units);
   if (method) settings.options.method = *method;
   io::PoseReadOptions& read = settings.read;
-  read.units = *units;
+  read.units = units;
   read.degrees = flags.degrees;
   if (!flags.euler.empty()) {
     read.euler = EulerSequence::Parse(flags.euler);

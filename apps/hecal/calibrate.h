@@ -75,6 +75,9 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 // IsValid's.
 std::optional<double> ParsePixelSigma(const std::string& text);
 
+// --units: m or mm (InputError naming the flag otherwise).
+io::LengthUnit ParseUnitsFlag(const std::string& text);
+
 // "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
 // `flag` when it is not two numbers (the range is the options' IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text);

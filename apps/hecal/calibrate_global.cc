@@ -198,16 +198,15 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                      "give --features sift or --features orb");
   }
   options.seed = flags.seed;
-  const auto units = io::ParseLengthUnit(flags.units);
-  if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
+  const io::LengthUnit units = ParseUnitsFlag(flags.units);
   io::PoseReadOptions read;
-  read.units = *units;
+  read.units = units;
   read.degrees = flags.degrees;
   read.invert = flags.robot_inverse;
 
   const report::GlobalMatches matches = ReadMatches(flags, read, options, io);
   const report::GlobalCalibrationResult result = report::CalibrateGlobal(matches, options);
-  PrintSummary(result, flags.units, io::MetresPer(*units), io.out);
+  PrintSummary(result, flags.units, io::MetresPer(units), io.out);
   if (flags.output.empty()) return;
   report::WriteGlobalResult(flags.output, result);
   io.out << "wrote " << flags.output << "\n";

@@ -82,6 +82,15 @@ contour::ContourCamera ParseContourCamera(const std::string& focal, const std::s
   return camera;
 }
 
+contour::RotationForm ParseRotationFlag(const std::string& text) {
+  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(text);
+  if (!form) {
+    throw InputError("--rotation", 0, "unknown rotation form '" + text + "'",
+                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
+  }
+  return *form;
+}
+
 Eigen::Matrix2Xd ReadContourFile(const std::string& path) {
   constexpr std::array<std::string_view, 2> kColumns = {"x", "y"};
   const io::PointFile file = io::ReadPointFile(path, kColumns, /*lengths=*/false,
@@ -104,14 +113,9 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
       ParseNumberList("--shape", options.shape, 6, "tx,ty,m11m1,m22m1,m21,m12");
   const Vector6d shape = Eigen::Map<const Vector6d>(s.data());
   const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
-  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
-  if (!form) {
-    throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
-                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
-  }
   contour::ShapePoseOptions pose_options;
   pose_options.camera = camera;
-  pose_options.form = *form;
+  pose_options.form = ParseRotationFlag(options.rotation);
   if (!options.covariance.empty()) {
     const double w0 = ParseNumber("--ut-w0", options.ut_w0, "w0 < 1");
     pose_options.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(w0);
@@ -124,8 +128,8 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
   }
   const contour::ContourPose& pose = result.pose;
   const std::optional<contour::ContourPoseUncertainty>& ut = result.uncertainty;
-  const std::string_view sequence = contour::RotationSequence(*form);
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
+  const std::string_view sequence = contour::RotationSequence(pose_options.form);
+  const std::array<std::string_view, 6> names = contour::PoseParameterNames(pose_options.form);
   io.out << std::setprecision(9);
   io.out << "translation (Tx, Ty, Tz) = (" << pose.translation.transpose() << ")  [unit of --z0]\n";
   io.out << "rotation matrix\n";

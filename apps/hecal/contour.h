@@ -23,6 +23,9 @@ double ParseNumber(const std::string& flag, const std::string& text, const std::
 // The camera of the contour commands from --focal and --z0 (contour::ValidateContourCamera).
 contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0);
 
+// --rotation of `contour pose` and `contour track`: zyx or zxz (InputError naming the flag).
+contour::RotationForm ParseRotationFlag(const std::string& text);
+
 // A contour file: CSV (or whitespace-separated) with the header `x,y` (case-insensitive; '#'
 // comment lines), one point per line, at least 4 points. InputError with file:line otherwise.
 Eigen::Matrix2Xd ReadContourFile(const std::string& path);

@@ -278,15 +278,7 @@ void AddContourTrackCommand(CLI::App& contour, const Io& io) {
       },
       "full (default), similarity, translation-scale, planar-robot, translation");
   track->add_option_function<std::string>(
-      "--rotation",
-      [&o](const std::string& text) {
-        const std::optional<contour::RotationForm> form = contour::ParseRotationForm(text);
-        if (!form) {
-          throw InputError("--rotation", 0, "unknown rotation form '" + text + "'",
-                           "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
-        }
-        o.form = *form;
-      },
+      "--rotation", [&o](const std::string& text) { o.form = ParseRotationFlag(text); },
       "zyx (default; roll–pitch–yaw) or zxz");
   track->add_option_function<double>(
       "--measurement-sigma", [&o](double sigma) { o.tracker.measurement_sigma = sigma; },

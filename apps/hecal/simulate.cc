@@ -149,13 +149,8 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
           "--sigma", [&o](const std::string& text) { o.sigmas = ParseSigmaLevels(text); },
           "Noise levels: n (= n mm and n deg per component) or MM/DEG (list sweeps)")
       ->default_str("0,0.3,1");
-  simulate
-      ->add_option_function<std::string>(
-          "--method",
-          [&o](const std::string& text) { o.methods = ParseMethodList("--method", text); },
-          "Method name(s), comma separated, or all")
-      ->default_str("all");
-  AddWholeNumber(*simulate, "--seed", o.seed, "Random seed (0 to 2^64-1)")->capture_default_str();
+  AddMethodListFlag(*simulate, o.methods);
+  AddSeedFlag(*simulate, o.seed);
   AddWholeNumber(*simulate, "--threads", o.threads, "Worker threads, 0 to 256 (0 = every core)")
       ->capture_default_str();
   simulate
