@@ -2,16 +2,13 @@
 // report::GlobalCalibrationOptions, assembles the matches (report::ReadGlobalMatches from a
 // correspondence file; vision's target-corner or feature matchers from images), runs
 // report::CalibrateGlobal and prints.
-#include <iomanip>
-
 #include "bounds.h"
 #include "calibrate.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
-#include "hecal/geometry/so3.h"
 #include "hecal/io/units.h"
 #include "hecal/report/global_calibration.h"
-#include "hecal/report/translation_sigma.h"
+#include "hecal/report/global_text.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <filesystem>
@@ -140,38 +137,6 @@ report::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseRea
   return report::ReadGlobalMatches(flags.robot, read, flags.correspondences, flags.intrinsics);
 }
 
-void PrintSummary(const report::GlobalCalibrationResult& result, const std::string& units,
-                  double metres, std::ostream& out) {
-  const handeye::Setup setup = result.options.setup;
-  const estimation::EpipolarPolish& polish = result.robot_noise.polish;
-  const estimation::EpipolarNoise& noise = result.noise;
-  const global::Certificate& c = result.certificate;
-  const Pose& X = polish.X;
-  const Vector6d sd = polish.covariance.diagonal().cwiseSqrt();
-  out << "method global (" << handeye::SetupName(setup) << ", target-free)\n"
-      << handeye::XFrameName(setup) << ": rotation vector [rad] "
-      << so3::Log(X.linear()).transpose() << ", translation [" << units << "] "
-      << (X.translation() / metres).transpose() << "\n"
-      << "  1 sigma: rotation [rad] " << sd.head<3>().transpose() << ", translation [" << units
-      << "] " << (sd.tail<3>() / metres).transpose() << "\n"
-      << "  1 sigma of the translation along the "
-      << report::ParentFrame(handeye::XFrameName(setup)) << "'s axes [" << units << "] "
-      << (report::TranslationCovarianceInParent(X, polish.covariance).diagonal().cwiseSqrt() /
-          metres)
-             .transpose()
-      << "\n"
-      << (result.robot_noise.robot_given ? "  noise (robot given, ray estimated): ray [rad] "
-                                         : "  noise (estimated): ray [rad] ")
-      << noise.ray_sigma << ", robot per pose: rotation [rad] " << noise.robot_rotation_sigma
-      << ", translation [" << units << "] " << noise.robot_translation_sigma / metres << "\n"
-      << std::setprecision(4) << "certificate: max ray error in [" << c.lower << ", " << c.upper
-      << "] rad" << (c.certified ? " (certified)" : " (gap not closed)") << ", " << c.cubes
-      << " cubes, " << c.lps << " LPs, " << c.seconds << " s\n"
-      << "matches: " << result.inliers << " inliers, " << result.removed.size()
-      << " removed (L∞ threshold " << result.threshold
-      << " rad, then the re-check at the polished X)\n";
-}
-
 }  // namespace
 
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
@@ -206,7 +171,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
 
   const report::GlobalMatches matches = ReadMatches(flags, read, options, io);
   const report::GlobalCalibrationResult result = report::CalibrateGlobal(matches, options);
-  PrintSummary(result, flags.units, io::MetresPer(units), io.out);
+  report::PrintGlobalSummary(io.out, result, units);
   if (flags.output.empty()) return;
   report::WriteGlobalResult(flags.output, result);
   io.out << "wrote " << flags.output << "\n";

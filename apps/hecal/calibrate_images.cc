@@ -4,18 +4,12 @@
 #include "hecal/core/options_check.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <iomanip>
-#include <numbers>
 #include <optional>
 #include <vector>
 
 #include "bounds.h"
 #include "conventions.h"
 #include "hecal/estimation/image_calibration.h"
-#include "hecal/geometry/rotation.h"
 #include "hecal/io/image_pairing.h"
 #include "hecal/report/image_calibration.h"
 #include "hecal/report/result_text.h"
@@ -25,40 +19,6 @@
 namespace hecal::cli {
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-namespace {
-
-// Its range is ImageCalibrationOptions::IsValid's.
-void PrintRefinedIntrinsics(std::ostream& out, const pose::CameraModel& before,
-                            const report::ImageReport& report) {
-  constexpr std::array<const char*, pose::kNumIntrinsics> kNames = {"fx", "fy", "cx", "cy", "k1",
-                                                                    "k2", "p1", "p2", "k3"};
-  const pose::IntrinsicParameters start = pose::IntrinsicsOf(before);
-  const pose::IntrinsicParameters refined = pose::IntrinsicsOf(report.camera);
-  out << "intrinsics refined with X and Z (before → after ± 1σ):\n";
-  for (int k = 0; k < pose::kNumIntrinsics; ++k) {
-    out << "  " << kNames[static_cast<size_t>(k)] << " " << std::setprecision(k < 4 ? 7 : 5)
-        << start(k) << " → " << refined(k) << " ± " << std::setprecision(2)
-        << (*report.intrinsics_sigma)[static_cast<size_t>(k)] << "\n";
-  }
-  out << std::setprecision(6);
-}
-
-void PrintImageTable(std::ostream& out, const report::ResultDocument& document,
-                     const report::ImageReport& report) {
-  out << std::fixed << std::setprecision(3) << "reprojection: RMS " << report.rms_px
-      << " px over every point; pixel sigma " << report.pixel_sigma << " px ("
-      << (report.pixel_sigma_estimated ? "estimated" : "given") << ")\n  image          rms_px\n";
-  const std::vector<std::string> used = report::UsedStationIds(document);
-  for (size_t k = 0; k < used.size(); ++k) {
-    out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(7)
-        << report.image_rms_px[k] << (report.image_outlier[k] ? "   > 3σ, check this image" : "")
-        << "\n";
-  }
-  out.unsetf(std::ios::floatfield);
-}
-
-}  // namespace
-
 std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const ImageSet& set,
                                     const std::string& images_dir, const Io& io) {
   std::vector<io::StationImage> stations;
@@ -151,21 +111,7 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   options.setup = check.setup;
   options.camera = set.camera;
   const report::ResultDocument document = report::CalibrateFromImages(input, options);
-  const estimation::CalibrationResult& result = document.results.front();
-  const report::ImageReport& report = *document.images;
-
-  const Pose step = report.pose_level.X.inverse() * result.X;
-  const double scale = 1.0 / io::MetresPer(document.unit);
-  io.out << "\npose level (" << estimation::Info(report.pose_level.method).name
-         << " on the PnP poses), then the joint reprojection refinement moved X by "
-         << std::setprecision(4)
-         << AxisAngleFromMatrix(step.linear()).angle * 180.0 / std::numbers::pi << " deg, "
-         << (result.X.translation() - report.pose_level.X.translation()).norm() * scale << " "
-         << io::UnitName(document.unit) << "\n";
-  io.out.unsetf(std::ios::floatfield);
-  report::PrintResultSummary(io.out, document, result);
-  if (report.intrinsics_sigma) PrintRefinedIntrinsics(io.out, set.camera, report);
-  PrintImageTable(io.out, document, report);
+  report::PrintImageResultSummary(io.out, document, set.camera);
   if (!flags.output.empty()) {
     report::WriteResult(flags.output, document);
     io.out << "wrote " << flags.output << "\n";
