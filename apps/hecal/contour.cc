@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iomanip>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string_view>
 
@@ -18,11 +16,10 @@
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/point_file.h"
 #include "hecal/report/contour_pose_file.h"
+#include "hecal/report/contour_pose_text.h"
 
 namespace hecal::cli {
 namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 Matrix6d ParseShapeCovariance(const std::string& text) {
   const std::size_t count = static_cast<std::size_t>(std::count(text.begin(), text.end(), ',')) + 1;
@@ -126,30 +123,7 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
     io.out << report::ContourPoseJson(result);
     return;
   }
-  const contour::ContourPose& pose = result.pose;
-  const std::optional<contour::ContourPoseUncertainty>& ut = result.uncertainty;
-  const std::string_view sequence = contour::RotationSequence(pose_options.form);
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(pose_options.form);
-  io.out << std::setprecision(9);
-  io.out << "translation (Tx, Ty, Tz) = (" << pose.translation.transpose() << ")  [unit of --z0]\n";
-  io.out << "rotation matrix\n";
-  for (int r = 0; r < 3; ++r) io.out << "  " << pose.rotation.row(r) << "\n";
-  io.out << "euler " << sequence << " = (" << pose.euler.transpose() << ") rad = ("
-         << (pose.euler * kDegrees).transpose() << ") deg\n";
-  if (ut) {
-    io.out << "UT (13 sigma points), 1σ:";
-    for (std::size_t j = 0; j < 6; ++j) {
-      const double sd = std::sqrt(ut->covariance(static_cast<int>(j), static_cast<int>(j)));
-      io.out << " " << names[j] << " " << (j < 3 ? sd : sd * kDegrees) << (j < 3 ? "" : "°")
-             << (ut->biased[j] ? " (biased)" : "");
-    }
-    io.out << "\n";
-    if (ut->any_biased) {
-      io.out << "bias: the UT mean departs from the pose of the mean shape "
-                "(docs/contour.md#the-bias-check: tilt near "
-                "zero; the Necker sign fold)\n";
-    }
-  }
+  report::PrintContourPose(io.out, result);
 }
 
 void RegisterContourCommand(CLI::App& app, const Io& io) {
