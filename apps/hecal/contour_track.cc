@@ -6,16 +6,12 @@
 // print and write the files.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "bounds.h"
@@ -28,6 +24,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/contour_render_file.h"
 #include "hecal/report/contour_track_file.h"
+#include "hecal/report/contour_track_text.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "hecal/vision/contour_images.h"
 #endif
@@ -36,7 +33,6 @@ namespace hecal::cli {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 #if !defined(HECAL_HAVE_OPENCV_PEERS)
 [[noreturn]] void NeedsVision(const std::string& flag) {
@@ -89,24 +85,9 @@ void RunTrack(TrackCommand command, const Io& io) {
                  : "weak perspective (the contour paper's; give --principal-point for perspective)")
          << "\n";
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(tracking.form);
   // One line per frame on stdout, as it is tracked.
   const auto print = [&](const vision::TrackedImage& image) {
-    const contour::SequenceFrame& frame = image.frame;
-    char line[256];
-    std::snprintf(line, sizeof line, "%4d %-24s %-8s edges %3d/%3d  σ %.3f px", frame.tracked.frame,
-                  image.image.c_str(), std::string(contour::FrameStatusName(frame.status)).c_str(),
-                  frame.tracked.edges_used, frame.tracked.edges_searched, frame.tracked.sigma);
-    io.out << line;
-    if (frame.pose) {
-      const Vector6d& p = frame.pose->parameters;
-      std::snprintf(line, sizeof line, "  T = (%.3f, %.3f, %.3f)  %s,%s,%s = (%.3f, %.3f, %.3f)°",
-                    p(0), p(1), p(2), std::string(names[3]).c_str(), std::string(names[4]).c_str(),
-                    std::string(names[5]).c_str(), p(3) * kDegrees, p(4) * kDegrees,
-                    p(5) * kDegrees);
-      io.out << line << (frame.pose->any_biased ? "  (bias)" : "");
-    }
-    io.out << "\n";
+    io.out << report::ContourTrackLine(image, tracking.form);
   };
   const std::vector<vision::TrackedImage> frames =
       vision::TrackImageSequence(command.images, &tracker, print);
