@@ -17,6 +17,7 @@
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/plausibility.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/io/quaternion_columns.h"
 #include "hecal/report/pose_calibration.h"
 #include "hecal/report/result_text.h"
 #include "list_flags.h"
@@ -174,8 +175,8 @@ void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& set
   data.T_camera_target = stations.camera;
   data.robot_unit_named = robot.unit_named;
   data.camera_unit_named = camera.unit_named;
-  data.robot_quaternions = HasQuaternionColumns(robot);
-  data.camera_quaternions = HasQuaternionColumns(camera);
+  data.robot_quaternions = io::HasQuaternionColumns(robot);
+  data.camera_quaternions = io::HasQuaternionColumns(camera);
   const handeye::ConventionCheck check =
       handeye::CheckConventions(data, {.setup = settings.setup,
                                        .consensus = options.consensus,

@@ -1,7 +1,7 @@
 // `hecal calibrate` (docs/cli.md#hecal-calibrate; the steps:
 // docs/README.md#the-data-flow-of-hecal-calibrate): the flags of every form, checked once
 // (ParseCalibrateFlags), then the form from pose tables (calibrate.cc: report::CalibrateFromPoses),
-// from images (calibrate_images.cc: report::CalibrateFromImages) or target-free
+// from images (calibrate_images.cc: jobs::CalibrateFromImageFolder) or target-free
 // (calibrate_global.cc: report::CalibrateGlobal).
 #pragma once
 
@@ -16,10 +16,6 @@
 #include "hecal/handeye/problem.h"
 #include "hecal/io/pose_table.h"
 #include "hecal/report/result_file.h"
-
-namespace hecal::vision {
-struct ImageSet;  // hecal/vision/image_set.h (built with the vision layer only)
-}  // namespace hecal::vision
 
 namespace hecal::cli {
 
@@ -82,16 +78,13 @@ io::LengthUnit ParseUnitsFlag(const std::string& text);
 // `flag` when it is not two numbers (the range is the options' IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text);
 
-// `hecal calibrate --images`: the image front end (image_report.h), the robot rows paired with
-// the images (RobotPosePerImage), the convention check, report::CalibrateFromImages
-// (report/image_calibration.h); prints the summary and the per-image table, writes the result.
+// `hecal calibrate --images`: refuses the flags the image form does not take, binds the others
+// into jobs::ImageFolderCalibrationOptions and runs jobs::CalibrateFromImageFolder
+// (jobs/image_folder_calibration.h: the image front end, the pairing, the convention check,
+// report::CalibrateFromImages), printing its texts as they come (job_output.h); then prints the
+// summary (report::PrintImageResultSummary) and writes the result.
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
-
-// Step 2 above (io::PairRobotWithStations, io/image_pairing.h), its notes printed on io.err:
-// one robot pose per image of `set`, in its order. Defined with the vision layer.
-std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const vision::ImageSet& set,
-                                    const std::string& images_dir, const Io& io);
 
 // `hecal calibrate --method global` (docs/global.md): the flags become
 // report::GlobalCalibrationOptions (report/global_calibration.h; its IsValid holds the ranges);

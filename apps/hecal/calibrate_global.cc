@@ -16,9 +16,10 @@
 #include "hecal/io/camera_file.h"
 #include "hecal/io/image_files.h"
 #include "hecal/io/image_pairing.h"
+#include "hecal/jobs/image_front_end.h"
 #include "hecal/vision/corner_matches.h"
 #include "hecal/vision/feature_matches.h"
-#include "image_report.h"
+#include "job_output.h"
 #endif
 
 namespace hecal::cli {
@@ -31,11 +32,12 @@ report::GlobalMatches MatchesFromTargetImages(const CalibrateFlags& flags,
                                               const report::GlobalCalibrationOptions& options,
                                               const Io& io) {
   const io::PoseTable robot = io::ReadPoseTable(flags.robot, read);
-  const ImageSet set = DetectImageSet(
-      {flags.images, flags.target, flags.intrinsics, options.threads, ImageUse::kHandEye},
-      "hecal calibrate --method global", io);
+  const jobs::JobCallbacks printing = PrintingCallbacks(io);
+  const vision::ImageSet set = jobs::DetectImages(
+      {flags.images, flags.target, flags.intrinsics, options.threads, vision::ImageUse::kHandEye},
+      "hecal calibrate --method global", printing);
   report::GlobalMatches matches;
-  matches.T_base_gripper = RobotPosePerImage(robot, set, flags.images, io);
+  matches.T_base_gripper = jobs::RobotPosePerImage(robot, set, flags.images, printing);
   matches.focal = 0.5 * (set.camera.fx + set.camera.fy);
   for (const vision::CornerMotion& corners :
        vision::MatchTargetCorners(set, options.matches_per_motion)) {
