@@ -1,5 +1,8 @@
-// `hecal bench`: see bench.h.
-#include "bench.h"
+// `hecal bench` (docs/cli.md#hecal-bench, docs/bench.md): binds the flags into
+// study::BenchOptions, runs study::RunBench (study/bench.h) with OpenCV's hand-eye functions
+// (peers/opencv_handeye.h) as its peer when vision is built, and prints the table
+// (report/study_text.h) or the JSON (report/bench_file.h).
+#include "hecal/study/bench.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -9,11 +12,11 @@
 #include <optional>
 
 #include "bounds.h"
+#include "cli.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/report/bench_file.h"
 #include "hecal/report/study_text.h"
-#include "hecal/study/bench.h"
 #include "list_flags.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
 #include "hecal/peers/opencv_handeye.h"
@@ -76,12 +79,7 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
                      "Station counts, comma separated (3 to 100000)")
       ->default_str("10,20,50");
   bench->add_flag("--json", command->json, "Print one JSON array (docs/bench.md)");
-  bench
-      ->add_option_function<std::string>(
-          "--method",
-          [&o](const std::string& text) { o.methods = ParseMethodList("--method", text); },
-          "Method name(s), comma separated, or all")
-      ->default_str("all");
+  AddMethodListFlag(*bench, o.methods);
   bench
       ->add_option_function<std::string>(
           "--setup",
@@ -107,7 +105,7 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
       ->default_str("0.1");
   bench->add_option("--min-time", o.min_time, "Timing budget per row, seconds (0 to 3600)")
       ->capture_default_str();
-  AddWholeNumber(*bench, "--seed", o.seed, "Random seed (0 to 2^64-1)")->capture_default_str();
+  AddSeedFlag(*bench, o.seed);
   bench->callback([command, io] { RunBench(*command, io); });
 }
 

@@ -47,6 +47,11 @@ template CLI::Option* AddWholeNumber(CLI::App&, const std::string&, std::int64_t
 template CLI::Option* AddWholeNumber(CLI::App&, const std::string&, std::uint64_t&,
                                      const std::string&);
 
+CLI::Option* AddSeedFlag(CLI::App& command, std::uint64_t& seed) {
+  return AddWholeNumber(command, "--seed", seed, "Random seed (0 to 2^64-1)")
+      ->capture_default_str();
+}
+
 CLI::Option* AddWholeNumberList(CLI::App& command, const std::string& flag,
                                 std::vector<int>& values, const std::string& help) {
   return command.add_option_function<std::string>(

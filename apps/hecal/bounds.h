@@ -1,28 +1,8 @@
-// The command line's own rules (README "Reliability"): the syntax of a value, read in one place
-// per kind. What a value may be — its range, a fact of the library — is the options' IsValid
-// (core/options_check.h; thread counts core/limits.h, noise levels estimation/pose_sigma.h, Monte
-// Carlo samples estimation/covariance_method.h, pixel noise estimation/reprojection_refinement.h,
-// the jobs' own options: study/simulate.h, study/bench.h, report/point_pose.h,
-// contour/contour_study.h, contour/sequence.h); the CLI shows the flag of the field it names
-// (field_flags.h). Every rule below fails with a hecal::InputError naming the flag and the text
-// (exit 2), before any work.
-//
-//   kind of value          flags                             the CLI's rule
-//   whole number           --threads, --trials, --datasets,  decimal digits, an optional leading
-//                          --steps, --samples, --frames,     '-' (spaces around are ignored); the
-//                          --covariance-samples,             value must fit the field's type
-//                          --matches-per-motion, --max-cubes (AddWholeNumber)
-//   seed                   --seed                            decimal digits, 0 … 2^64 − 1, no sign
-//                                                            (AddWholeNumber)
-//   whole-number list      --stations, --outliers            comma separated whole numbers, no
-//                                                            empty item (AddWholeNumberList)
-//   noise level            --robot-sigma, --camera-sigma     MM,DEG: two finite numbers
-//                          simulate's and bench's --sigma    N or MM/DEG (simulate: a comma list)
-//                                                            (ParseNoiseLevel, list_flags.h)
-//   real number            --focal, --z0, --min-time, …      CLI11's reading of a double
-//   pixel noise            --pixel-sigma                     one finite number (none: the
-//                                                            default or, from images, estimated;
-//                                                            ParsePixelSigma, calibrate.h)
+// The command line's own syntax of whole numbers and their lists (docs/cli.md#exit-codes-and-errors
+// states the rule for every kind of value; noise levels are read by list_flags.h, --pixel-sigma by
+// calibrate.h). Ranges are facts of the library, checked by the options' IsValid
+// (core/options_check.h) and shown as flags (field_flags.h). A bad value is a hecal::InputError
+// naming the flag and the text (exit 2), before any work.
 //
 // CLI11 2.1.2 reads integers with strtoll base 0 ("010" is 8, "0x10" 16) and unsigned ones with
 // strtoull ("-1" becomes 2^64 − 1), so every whole-number flag is bound through AddWholeNumber:
@@ -31,6 +11,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -41,6 +22,9 @@ namespace hecal::cli {
 template <class T>
 CLI::Option* AddWholeNumber(CLI::App& command, const std::string& flag, T& value,
                             const std::string& help);
+
+// --seed of `hecal simulate` and `hecal bench`: the whole-number rule, default shown.
+CLI::Option* AddSeedFlag(CLI::App& command, std::uint64_t& seed);
 
 // Binds `flag` to `values`: one argument, comma separated whole numbers (SplitList, list_flags.h;
 // the rule above per item).

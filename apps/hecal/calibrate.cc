@@ -17,6 +17,7 @@
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/plausibility.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/io/quaternion_columns.h"
 #include "hecal/report/pose_calibration.h"
 #include "hecal/report/result_text.h"
 #include "list_flags.h"
@@ -46,6 +47,12 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
   return value;
 }
 
+io::LengthUnit ParseUnitsFlag(const std::string& text) {
+  const std::optional<io::LengthUnit> unit = io::ParseLengthUnit(text);
+  if (!unit) throw InputError("--units", 0, "unknown unit '" + text + "'", "use m or mm");
+  return *unit;
+}
+
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   CalibrateSettings settings;
   const auto setup = handeye::ParseSetup(flags.setup);
@@ -63,11 +70,10 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     throw InputError("--method", 0, "unknown method '" + flags.method + "'",
                      "use one of: " + names + "all");
   }
-  const auto units = io::ParseLengthUnit(flags.units);
-  if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
+  const io::LengthUnit units = ParseUnitsFlag(flags.units);
   if (method) settings.options.method = *method;
   io::PoseReadOptions& read = settings.read;
-  read.units = *units;
+  read.units = units;
   read.degrees = flags.degrees;
   if (!flags.euler.empty()) {
     read.euler = EulerSequence::Parse(flags.euler);
@@ -169,8 +175,8 @@ void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& set
   data.T_camera_target = stations.camera;
   data.robot_unit_named = robot.unit_named;
   data.camera_unit_named = camera.unit_named;
-  data.robot_quaternions = HasQuaternionColumns(robot);
-  data.camera_quaternions = HasQuaternionColumns(camera);
+  data.robot_quaternions = io::HasQuaternionColumns(robot);
+  data.camera_quaternions = io::HasQuaternionColumns(camera);
   const handeye::ConventionCheck check =
       handeye::CheckConventions(data, {.setup = settings.setup,
                                        .consensus = options.consensus,

@@ -1,19 +1,8 @@
-// `hecal calibrate` (docs/cli.md):
-//   hecal calibrate --robot robot.csv --camera camera.csv --setup eye-in-hand|eye-to-hand|auto
-//                   [--method NAME|all] [--robot-sigma MM,DEG] [--camera-sigma MM,DEG]
-//                   [--output result.json] [--units m|mm] [--keep-outliers]
-//                   [--covariance linear|unscented|montecarlo|information] [--covariance-samples N]
-//                   [--seed S] [--threads N]
-//   hecal calibrate --images DIR --target target.yaml [--intrinsics camera.yaml]
-//                   --robot robot.csv --setup ... [--pixel-sigma PX] [--threads N] ...
-// From pose tables (calibrate.cc): pairs stations (by id, else by order); refuses the same poses
-// given as robot and camera; checks the conventions (handeye/convention_check.h: a wrong setup, an
-// inverted file or a wrong unit is named, never solved; --setup auto picks the setup); rejects
-// gross outliers (estimation/station_selection.h, unless --keep-outliers); solves with the chosen
-// method(s) on the stations kept; adds the plausibility warnings (estimation/plausibility.h) and
-// the readers' notes; prints a readable summary and writes the result file (docs/result-file.md).
-// From images (calibrate_images.cc): see RunCalibrateImages below.
-// Target-free, globally optimal (calibrate_global.cc): see RunCalibrateGlobal below.
+// `hecal calibrate` (docs/cli.md#hecal-calibrate; the steps:
+// docs/README.md#the-data-flow-of-hecal-calibrate): the flags of every form, checked once
+// (ParseCalibrateFlags), then the form from pose tables (calibrate.cc: report::CalibrateFromPoses),
+// from images (calibrate_images.cc: jobs::CalibrateFromImageFolder) or target-free
+// (calibrate_global.cc: report::CalibrateGlobal).
 #pragma once
 
 #include <cstdint>
@@ -27,10 +16,6 @@
 #include "hecal/handeye/problem.h"
 #include "hecal/io/pose_table.h"
 #include "hecal/report/result_file.h"
-
-namespace hecal::vision {
-struct ImageSet;  // hecal/vision/image_set.h (built with the vision layer only)
-}  // namespace hecal::vision
 
 namespace hecal::cli {
 
@@ -86,51 +71,26 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 // IsValid's.
 std::optional<double> ParsePixelSigma(const std::string& text);
 
+// --units: m or mm (InputError naming the flag otherwise).
+io::LengthUnit ParseUnitsFlag(const std::string& text);
+
 // "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
 // `flag` when it is not two numbers (the range is the options' IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text);
 
-// `hecal calibrate --images`:
-//   1. the image front end of vision/image_set.h: detection, intrinsics (given or estimated),
-//      PnP poses with covariances, and the per-image report;
-//   2. pairing with the robot rows (docs/targets.md): when every robot row has an id and some id
-//      is an image's file stem, by id (each image needs a row; rows without an image are left
-//      out with a note); otherwise by sorted file name — one robot row per image file, in order,
-//      counting the images where the target was not usable (their rows are left out); ids that
-//      name no image (such as the row numbers of `hecal import`) get a note;
-//   3. the convention check, then report::CalibrateFromImages (report/image_calibration.h):
-//      the pose-level method (--method, ml by default; not `all`), then the joint reprojection
-//      refinement over X, Z and the robot poses (and the intrinsics with --refine-intrinsics),
-//      returned as the result document;
-//   4. the summary, a per-image reprojection table (RMS px, flag), and the result file with
-//      "refinement": "reprojection" and an "images" section (intrinsics, pixel sigma, per-image
-//      RMS and flags, skipped images and why, the pose-level X and Z). Skipped images are the
-//      result's rejected stations.
-// Errors (InputError, exit 2, nothing written): those of vision/image_set.h, of the robot file,
-// the pairing rules above, --method all, a bad --pixel-sigma, --camera-inverse without --camera,
-// --covariance unscented (its input would be every pixel's noise). The covariance is the linear
-// one of the reprojection problem (pixel and robot noise), or --covariance montecarlo's
-// (estimation/image_monte_carlo.h).
+// `hecal calibrate --images`: refuses the flags the image form does not take, binds the others
+// into jobs::ImageFolderCalibrationOptions and runs jobs::CalibrateFromImageFolder
+// (jobs/image_folder_calibration.h: the image front end, the pairing, the convention check,
+// report::CalibrateFromImages), printing its texts as they come (job_output.h); then prints the
+// summary (report::PrintImageResultSummary) and writes the result.
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
 
-// Step 2 above (io::PairRobotWithStations, io/image_pairing.h), its notes printed on io.err:
-// one robot pose per image of `set`, in its order. Defined with the vision layer.
-std::vector<Pose> RobotPosePerImage(const io::PoseTable& robot, const vision::ImageSet& set,
-                                    const std::string& images_dir, const Io& io);
-
-// `hecal calibrate --method global --correspondences FILE --intrinsics camera.yaml --robot
-// robot.csv --setup eye-in-hand|eye-to-hand [--pixel-sigma PX] [--epsilon RAD] [--reach M]`
-// (docs/global.md): the flags become report::GlobalCalibrationOptions (report/
-// global_calibration.h; its IsValid holds the ranges, named here by flag); the matches come
-// from report::ReadGlobalMatches (the correspondence file), or with `--images DIR --target
-// target.yaml --intrinsics camera.yaml` from the target corners detected in the images
-// (vision/image_set.h, vision/corner_matches.h), or with `--target none` from SIFT/ORB matches
-// between consecutive station images (vision/feature_matches.h); report::CalibrateGlobal runs
-// the job; the summary is printed and report::WriteGlobalResult writes the result file.
-// Errors (InputError, exit 2, nothing written): those of the job and its readers, --setup auto,
-// --camera, --images with --correspondences, --images without --intrinsics or --target, an
-// unknown --features, --seed or --units; DegenerateError when the matches do not determine X.
+// `hecal calibrate --method global` (docs/global.md): the flags become
+// report::GlobalCalibrationOptions (report/global_calibration.h; its IsValid holds the ranges);
+// the matches come from report::ReadGlobalMatches, or from the images (vision/corner_matches.h,
+// vision/feature_matches.h); report::CalibrateGlobal runs the job, report::WriteGlobalResult
+// writes the result file.
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io);
 
 }  // namespace hecal::cli

@@ -2,16 +2,13 @@
 // report::GlobalCalibrationOptions, assembles the matches (report::ReadGlobalMatches from a
 // correspondence file; vision's target-corner or feature matchers from images), runs
 // report::CalibrateGlobal and prints.
-#include <iomanip>
-
 #include "bounds.h"
 #include "calibrate.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
-#include "hecal/geometry/so3.h"
 #include "hecal/io/units.h"
 #include "hecal/report/global_calibration.h"
-#include "hecal/report/translation_sigma.h"
+#include "hecal/report/global_text.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <filesystem>
@@ -19,9 +16,10 @@
 #include "hecal/io/camera_file.h"
 #include "hecal/io/image_files.h"
 #include "hecal/io/image_pairing.h"
+#include "hecal/jobs/image_front_end.h"
 #include "hecal/vision/corner_matches.h"
 #include "hecal/vision/feature_matches.h"
-#include "image_report.h"
+#include "job_output.h"
 #endif
 
 namespace hecal::cli {
@@ -34,11 +32,12 @@ report::GlobalMatches MatchesFromTargetImages(const CalibrateFlags& flags,
                                               const report::GlobalCalibrationOptions& options,
                                               const Io& io) {
   const io::PoseTable robot = io::ReadPoseTable(flags.robot, read);
-  const ImageSet set = DetectImageSet(
-      {flags.images, flags.target, flags.intrinsics, options.threads, ImageUse::kHandEye},
-      "hecal calibrate --method global", io);
+  const jobs::JobCallbacks printing = PrintingCallbacks(io);
+  const vision::ImageSet set = jobs::DetectImages(
+      {flags.images, flags.target, flags.intrinsics, options.threads, vision::ImageUse::kHandEye},
+      "hecal calibrate --method global", printing);
   report::GlobalMatches matches;
-  matches.T_base_gripper = RobotPosePerImage(robot, set, flags.images, io);
+  matches.T_base_gripper = jobs::RobotPosePerImage(robot, set, flags.images, printing);
   matches.focal = 0.5 * (set.camera.fx + set.camera.fy);
   for (const vision::CornerMotion& corners :
        vision::MatchTargetCorners(set, options.matches_per_motion)) {
@@ -140,38 +139,6 @@ report::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseRea
   return report::ReadGlobalMatches(flags.robot, read, flags.correspondences, flags.intrinsics);
 }
 
-void PrintSummary(const report::GlobalCalibrationResult& result, const std::string& units,
-                  double metres, std::ostream& out) {
-  const handeye::Setup setup = result.options.setup;
-  const estimation::EpipolarPolish& polish = result.robot_noise.polish;
-  const estimation::EpipolarNoise& noise = result.noise;
-  const global::Certificate& c = result.certificate;
-  const Pose& X = polish.X;
-  const Vector6d sd = polish.covariance.diagonal().cwiseSqrt();
-  out << "method global (" << handeye::SetupName(setup) << ", target-free)\n"
-      << handeye::XFrameName(setup) << ": rotation vector [rad] "
-      << so3::Log(X.linear()).transpose() << ", translation [" << units << "] "
-      << (X.translation() / metres).transpose() << "\n"
-      << "  1 sigma: rotation [rad] " << sd.head<3>().transpose() << ", translation [" << units
-      << "] " << (sd.tail<3>() / metres).transpose() << "\n"
-      << "  1 sigma of the translation along the "
-      << report::ParentFrame(handeye::XFrameName(setup)) << "'s axes [" << units << "] "
-      << (report::TranslationCovarianceInParent(X, polish.covariance).diagonal().cwiseSqrt() /
-          metres)
-             .transpose()
-      << "\n"
-      << (result.robot_noise.robot_given ? "  noise (robot given, ray estimated): ray [rad] "
-                                         : "  noise (estimated): ray [rad] ")
-      << noise.ray_sigma << ", robot per pose: rotation [rad] " << noise.robot_rotation_sigma
-      << ", translation [" << units << "] " << noise.robot_translation_sigma / metres << "\n"
-      << std::setprecision(4) << "certificate: max ray error in [" << c.lower << ", " << c.upper
-      << "] rad" << (c.certified ? " (certified)" : " (gap not closed)") << ", " << c.cubes
-      << " cubes, " << c.lps << " LPs, " << c.seconds << " s\n"
-      << "matches: " << result.inliers << " inliers, " << result.removed.size()
-      << " removed (L∞ threshold " << result.threshold
-      << " rad, then the re-check at the polished X)\n";
-}
-
 }  // namespace
 
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
@@ -198,16 +165,15 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                      "give --features sift or --features orb");
   }
   options.seed = flags.seed;
-  const auto units = io::ParseLengthUnit(flags.units);
-  if (!units) throw InputError("--units", 0, "unknown unit '" + flags.units + "'", "use m or mm");
+  const io::LengthUnit units = ParseUnitsFlag(flags.units);
   io::PoseReadOptions read;
-  read.units = *units;
+  read.units = units;
   read.degrees = flags.degrees;
   read.invert = flags.robot_inverse;
 
   const report::GlobalMatches matches = ReadMatches(flags, read, options, io);
   const report::GlobalCalibrationResult result = report::CalibrateGlobal(matches, options);
-  PrintSummary(result, flags.units, io::MetresPer(*units), io.out);
+  report::PrintGlobalSummary(io.out, result, units);
   if (flags.output.empty()) return;
   report::WriteGlobalResult(flags.output, result);
   io.out << "wrote " << flags.output << "\n";

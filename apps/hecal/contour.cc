@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iomanip>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string_view>
 
@@ -18,11 +16,10 @@
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/point_file.h"
 #include "hecal/report/contour_pose_file.h"
+#include "hecal/report/contour_pose_text.h"
 
 namespace hecal::cli {
 namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 Matrix6d ParseShapeCovariance(const std::string& text) {
   const std::size_t count = static_cast<std::size_t>(std::count(text.begin(), text.end(), ',')) + 1;
@@ -82,6 +79,15 @@ contour::ContourCamera ParseContourCamera(const std::string& focal, const std::s
   return camera;
 }
 
+contour::RotationForm ParseRotationFlag(const std::string& text) {
+  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(text);
+  if (!form) {
+    throw InputError("--rotation", 0, "unknown rotation form '" + text + "'",
+                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
+  }
+  return *form;
+}
+
 Eigen::Matrix2Xd ReadContourFile(const std::string& path) {
   constexpr std::array<std::string_view, 2> kColumns = {"x", "y"};
   const io::PointFile file = io::ReadPointFile(path, kColumns, /*lengths=*/false,
@@ -104,14 +110,9 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
       ParseNumberList("--shape", options.shape, 6, "tx,ty,m11m1,m22m1,m21,m12");
   const Vector6d shape = Eigen::Map<const Vector6d>(s.data());
   const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
-  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(options.rotation);
-  if (!form) {
-    throw InputError("--rotation", 0, "unknown rotation form '" + options.rotation + "'",
-                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
-  }
   contour::ShapePoseOptions pose_options;
   pose_options.camera = camera;
-  pose_options.form = *form;
+  pose_options.form = ParseRotationFlag(options.rotation);
   if (!options.covariance.empty()) {
     const double w0 = ParseNumber("--ut-w0", options.ut_w0, "w0 < 1");
     pose_options.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(w0);
@@ -122,30 +123,7 @@ void RunContourPose(const ContourPoseOptions& options, const Io& io) {
     io.out << report::ContourPoseJson(result);
     return;
   }
-  const contour::ContourPose& pose = result.pose;
-  const std::optional<contour::ContourPoseUncertainty>& ut = result.uncertainty;
-  const std::string_view sequence = contour::RotationSequence(*form);
-  const std::array<std::string_view, 6> names = contour::PoseParameterNames(*form);
-  io.out << std::setprecision(9);
-  io.out << "translation (Tx, Ty, Tz) = (" << pose.translation.transpose() << ")  [unit of --z0]\n";
-  io.out << "rotation matrix\n";
-  for (int r = 0; r < 3; ++r) io.out << "  " << pose.rotation.row(r) << "\n";
-  io.out << "euler " << sequence << " = (" << pose.euler.transpose() << ") rad = ("
-         << (pose.euler * kDegrees).transpose() << ") deg\n";
-  if (ut) {
-    io.out << "UT (13 sigma points), 1σ:";
-    for (std::size_t j = 0; j < 6; ++j) {
-      const double sd = std::sqrt(ut->covariance(static_cast<int>(j), static_cast<int>(j)));
-      io.out << " " << names[j] << " " << (j < 3 ? sd : sd * kDegrees) << (j < 3 ? "" : "°")
-             << (ut->biased[j] ? " (biased)" : "");
-    }
-    io.out << "\n";
-    if (ut->any_biased) {
-      io.out << "bias: the UT mean departs from the pose of the mean shape "
-                "(docs/contour.md#the-bias-check: tilt near "
-                "zero; the Necker sign fold)\n";
-    }
-  }
+  report::PrintContourPose(io.out, result);
 }
 
 void RegisterContourCommand(CLI::App& app, const Io& io) {

@@ -1,20 +1,7 @@
-// `hecal contour pose|study|track|render` (docs/contour.md): camera motion from the affine
-// deformation of a planar contour.
-//
-//   hecal contour pose --shape tx,ty,m11m1,m22m1,m21,m12 --z0 Z0 --focal F
-//                      [--rotation zyx|zxz] [--json] [--covariance c11,...,c66 [--ut-w0 W]]
-//     The motion of one shape vector S = (tx, ty, M11 − 1, M22 − 1, M21, M12) (the contour paper's
-//     order; f and tx, ty share a unit, Z0 and the translation share a unit). --json prints
-//     {"translation": [Tx,Ty,Tz], "rotation_matrix": [[…],[…],[…]], "euler": [a1,a2,a3],
-//      "sequence": "ZYX"|"ZXZ", "units": {…}} with the Euler angles in radians
-//     (docs/conventions.md) and also "euler_deg". With --covariance (36 numbers, row-major Σ_S, or
-//     6 variances) the UT adds "covariance" (6×6 over Tx,Ty,Tz + the Euler angles),
-//     "parameters", "ut_mean", "bias" (docs/contour.md#the-bias-check). The job is
-//     contour/shape_pose.h, the JSON report/contour_pose_file.h.
-//   hecal contour study --motion tx|ty|tz|rx|ry|rz --from A --to B --steps N … (contour_study.h)
-//   hecal contour track / render: contour_track.cc.
-// Errors: bad flags → InputError, a singular shape vector (det M ≤ 0: the plane edge-on or a
-// reflection) → DegenerateError; both exit 2.
+// `hecal contour pose|study|track|render` (docs/cli.md#hecal-contour-pose and the sections after
+// it, docs/contour.md): camera motion from the affine deformation of a planar contour. `contour
+// pose` (contour.cc) runs contour/shape_pose.h and prints report/contour_pose_file.h's JSON;
+// study: contour_study_command.cc; track and render: contour_track.cc.
 #pragma once
 
 #include <Eigen/Core>
@@ -35,6 +22,9 @@ std::vector<double> ParseNumberList(const std::string& flag, const std::string& 
 double ParseNumber(const std::string& flag, const std::string& text, const std::string& what);
 // The camera of the contour commands from --focal and --z0 (contour::ValidateContourCamera).
 contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0);
+
+// --rotation of `contour pose` and `contour track`: zyx or zxz (InputError naming the flag).
+contour::RotationForm ParseRotationFlag(const std::string& text);
 
 // A contour file: CSV (or whitespace-separated) with the header `x,y` (case-insensitive; '#'
 // comment lines), one point per line, at least 4 points. InputError with file:line otherwise.

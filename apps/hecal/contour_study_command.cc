@@ -1,32 +1,10 @@
-// `hecal contour study`: the contour paper's experiments (contour/contour_study.h) from the command
-// line.
-//
-//   hecal contour study --motion tx|ty|tz|rx|ry|rz --from A --to B --steps N
-//         [--pixel-noise 0.5] [--z0 5000] [--focal 50] [--pixel-size 0.0083] [--contour FILE]
-//         [--samples 5000] [--seed 1] [--threads 0] [--ut-w0 0]
-//         [--output study.csv] [--plot study.svg] [--covariance-plot cov.svg [--covariance-at V]]
-// Lengths in mm, angles in degrees (the contour paper's units). --output writes a comment line with
-// the random seed and the sample count, then one row per step and per
-// pose component: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias
-// (component Tx,Ty,Tz,Rx,Ry,Rz; errors against the true motion; bias 1 when the bias check
-// flags the component). --plot (default: the CSV's name with .svg) draws the contour paper's Fig.
-// 3: mean error ± 2σ against the motion, UT solid, Monte Carlo dashed, one panel per component.
-// --covariance-plot draws Fig. 4 at the step nearest --covariance-at (default: --from): every
-// 2×2 block of the pose covariance as 2σ ellipses (UT solid, Monte Carlo dashed) with 1000
-// Monte Carlo poses and the 13 sigma points. Stdout: a table per step and the largest
-// correlations. Every file is written atomically, all or none (io/atomic_file.h: the paths are
-// checked before the study runs), and only after the whole study ran (report/contour_study_file.h
-// writes them). The flags bind into contour::ContourStudyOptions, whose IsValid checks every
-// range (--steps 1 … 10000, --samples 2 … 10^6 with steps × samples ≤ 10^8, --threads 0 … 256,
-// --pixel-noise 0 … 100 px); a bad value names the flag (field_flags.h).
+// `hecal contour study` (docs/cli.md#hecal-contour-study): the contour paper's experiments
+// (contour/contour_study.h). The flags bind into contour::ContourStudyOptions, whose IsValid
+// checks every range (field_flags.h names the flag); report/contour_study_file.h writes the CSV
+// and the figures, all or none, after the whole study ran.
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <cstdint>
 #include <filesystem>
-#include <iomanip>
 #include <memory>
-#include <numbers>
-#include <sstream>
 
 #include "bounds.h"
 #include "contour.h"
@@ -35,52 +13,10 @@
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/contour_study_file.h"
+#include "hecal/report/contour_study_text.h"
 
 namespace hecal::cli {
 namespace {
-
-void PrintTable(std::ostream& out, const contour::ContourStudyOptions& o,
-                const std::vector<contour::StudyStep>& steps) {
-  out << "contour study: motion " << contour::StudyMotionName(o.motion) << ", Z0 " << o.z0_mm
-      << " mm, f " << o.focal_mm << " mm (" << o.focal_mm / o.pixel_size_mm << " px), σ "
-      << o.pixel_noise << " px, " << o.target.cols() << " control points, Monte Carlo " << o.samples
-      << " samples (seed " << o.seed << "), UT 13 points\n";
-  out << "errors against the true motion: mean ± sd (mm, deg); ratio = UT sd / MC sd; * = bias "
-         "flag (docs/contour.md#the-bias-check)\n";
-  out << std::fixed;
-  for (const contour::StudyStep& step : steps) {
-    out << std::setprecision(2) << report::StudyMotionLabel(o.motion) << " = " << step.value
-        << "\n";
-    for (int j = 0; j < 6; ++j) {
-      out << std::setprecision(4) << "  " << report::kStudyComponents[j] << "  MC " << std::setw(9)
-          << report::StudyDisplay(j, step.mc_mean_error(j)) << " ± " << std::setw(8)
-          << report::StudyDisplay(j, step.mc_sd(j)) << "   UT " << std::setw(9)
-          << report::StudyDisplay(j, step.ut_mean_error(j)) << " ± " << std::setw(8)
-          << report::StudyDisplay(j, step.ut_sd(j)) << "   ratio " << std::setprecision(3)
-          << step.ut_sd(j) / step.mc_sd(j) << (step.bias[static_cast<std::size_t>(j)] ? " *" : "")
-          << "\n";
-    }
-    if (step.mc_failures > 0) out << "  (" << step.mc_failures << " Monte Carlo samples failed)\n";
-  }
-  // The largest Monte Carlo correlation of each pair over the sweep.
-  out << "largest |correlation| over the steps (Monte Carlo):";
-  for (int a = 0; a < 6; ++a) {
-    for (int b = a + 1; b < 6; ++b) {
-      double worst = 0.0;
-      for (const contour::StudyStep& step : steps) {
-        const double r = step.mc_covariance(a, b) /
-                         std::sqrt(step.mc_covariance(a, a) * step.mc_covariance(b, b));
-        if (std::abs(r) > std::abs(worst)) worst = r;
-      }
-      if (std::abs(worst) >= 0.3) {
-        out << std::setprecision(2) << " " << report::kStudyComponents[a] << "–"
-            << report::kStudyComponents[b] << " " << worst;
-      }
-    }
-  }
-  out << " (pairs below 0.3 not shown)\n";
-  out.unsetf(std::ios::floatfield);
-}
 
 struct StudyCommand {
   contour::ContourStudyOptions options;
@@ -105,7 +41,7 @@ void RunStudy(StudyCommand command, const Io& io) {
                    {{"--contour", command.contour}});
 
   const std::vector<contour::StudyStep> steps = contour::RunContourStudy(o);
-  PrintTable(io.out, o, steps);
+  report::PrintContourStudy(io.out, o, steps);
 
   std::vector<io::OutputFile> outputs;
   if (!command.output.empty()) {

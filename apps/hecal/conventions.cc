@@ -15,8 +15,4 @@ handeye::ConventionWords ConventionFlagWords() {
   return words;
 }
 
-bool HasQuaternionColumns(const io::PoseTable& table) {
-  return table.rotation && table.rotation->kind == io::RotationFormat::Kind::kQuaternion;
-}
-
 }  // namespace hecal::cli

@@ -17,7 +17,8 @@
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/detection_output.h"
 #include "hecal/io/pose_table.h"
-#include "image_report.h"
+#include "hecal/jobs/image_front_end.h"
+#include "job_output.h"
 #endif
 
 namespace hecal::cli {
@@ -25,7 +26,7 @@ namespace hecal::cli {
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 void RunDetect(const DetectFlags& flags, const Io& io) {
   const vision::ImageSetOptions options{flags.images, flags.target, flags.intrinsics, flags.threads,
-                                        ImageUse::kPoses};
+                                        vision::ImageUse::kPoses};
   RequireValid(options);
   // Every output is checked before the detection and written all or none after it.
   const io::DetectionOutputPaths paths = io::DetectionCompanionPaths(flags.output);
@@ -34,12 +35,12 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
                     {"--output (points)", paths.points},
                     {"--output (intrinsics)", camera_path}},
                    {{"--target", flags.target}, {"--intrinsics", flags.intrinsics}});
-  const ImageSet set = DetectImageSet(options, "hecal detect", io);
+  const vision::ImageSet set = jobs::DetectImages(options, "hecal detect", PrintingCallbacks(io));
 
   io::PoseTable table;
   table.source = flags.output;
   std::vector<io::DetectedPoint> points;
-  for (const ImageRecord& image : set.images) {
+  for (const vision::ImageRecord& image : set.images) {
     if (!image.used()) continue;
     io::PoseRow row;
     row.pose = image.pose->T_camera_target;

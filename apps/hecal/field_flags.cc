@@ -8,11 +8,12 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 79> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 80> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ConventionCheckOptions.setup", "--setup"},
     {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
+    {"ImageFolderCalibrationOptions.robot", "--robot"},
     {"ImageSetOptions.images", "--images"},
     {"ImageSetOptions.target", "--target"},
     {"ImageSetOptions.threads", "--threads"},

@@ -1,15 +1,6 @@
-// `hecal import` (docs/cli.md): another tool's calibration samples → the canonical pose tables
-//   robot.csv   T_base_gripper_i  (id, [stamp,] x, y, z, qw, qx, qy, qz)
-//   camera.csv  T_camera_target_i
-// with '#' header lines naming the source file, the format, the convention applied (which poses
-// were inverted) and the units, and '# note:' lines for rotations the reader projected onto SO(3)
-// or normalised (io/rotation_input.h; also printed on stderr as "hecal: warning: ..."). Lengths are
-// written in the source's unit (Tabb: x_mm, y_mm, z_mm). The readers and their conventions are in
-// include/hecal/io/import*.h and docs/import-formats.md.
-//
-// All or nothing: every input is read and checked and every output formatted before the first
-// file is written; each file is written atomically, and if a later one fails the earlier ones are
-// restored (or removed), so a failed import leaves the output paths as they were.
+// `hecal import` (docs/cli.md#hecal-import, docs/import-formats.md): another tool's calibration
+// samples → the canonical pose tables, all or nothing. The readers and their conventions are
+// include/hecal/io/import*.h; this command binds the flags and writes the files.
 #pragma once
 
 #include <string>

@@ -36,6 +36,15 @@ std::vector<std::string> SplitList(const std::string& flag, const std::string& t
   return items;
 }
 
+CLI::Option* AddMethodListFlag(CLI::App& command, std::vector<estimation::Method>& methods) {
+  return command
+      .add_option_function<std::string>(
+          "--method",
+          [&methods](const std::string& text) { methods = ParseMethodList("--method", text); },
+          "Method name(s), comma separated, or all")
+      ->default_str("all");
+}
+
 std::string MethodNames() {
   std::string names;
   for (const estimation::MethodInfo& info : estimation::AllMethods()) {

@@ -4,6 +4,7 @@
 // typed (bounds.h, AddWholeNumberList).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ std::vector<std::string> SplitList(const std::string& flag, const std::string& t
 
 // Method names (docs/cli.md) or "all" (every method in estimation::AllMethods() order).
 std::vector<estimation::Method> ParseMethodList(const std::string& flag, const std::string& text);
+
+// --method of `hecal simulate` and `hecal bench`: a ParseMethodList flag, default all.
+CLI::Option* AddMethodListFlag(CLI::App& command, std::vector<estimation::Method>& methods);
 
 // Every method name, comma separated, for error messages and --help.
 std::string MethodNames();

@@ -1,6 +1,6 @@
-// `hecal pose`: see pose.h.
-#include "pose.h"
-
+// `hecal pose` (docs/cli.md#hecal-pose, docs/pose-from-points.md): binds the flags into
+// report::PointPoseOptions (report/point_pose.h; its IsValid names fields, shown as flags by
+// field_flags.h), runs the job, prints the pose and writes its JSON (report/pose_file.h).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cli.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"

@@ -2,8 +2,6 @@
 // in-process, the printed summary and the JSON checked against the truth; pairing by id and by
 // order, units, the camera flags, the methods (and the OpenCV ones when built with vision), and
 // bad input (exit 2, file:line, nothing written).
-#include "pose.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -16,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "cli.h"
 #include "cli_test_util.h"
 #include "testing/camera_yaml.h"
 #include "testing/pose_scenes.h"

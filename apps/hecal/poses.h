@@ -1,16 +1,6 @@
-// `hecal poses convert` (docs/cli.md): reads a pose table (any rotation group, units from header
-// suffixes or flags, or 12/16-number matrix lines), optionally inverts every pose, and writes it
-// with the rotation form given by --to. id and stamp columns are kept.
-//
-// Units:
-//   input   header suffixes (x_mm, roll_deg) win; otherwise --input-units (default m) and
-//           --input-degrees (default radians; kuka and fanuc columns default to degrees).
-//   output  --units m|mm (default: the input's length unit) and --degrees (default radians;
-//           kuka and fanuc are always written in degrees). The output header names any unit
-//           that is not metres/radians (x_mm, a_deg), so it reads back the same without flags.
-// The flags fill io::PoseConversionOptions; the job is io::ConvertPoseTable (io/pose_conversion.h);
-// this file writes its result and prints the summary. Errors are hecal::InputError (exit 2, one
-// line); the output is written atomically, so a failed conversion leaves no output file.
+// `hecal poses convert` (docs/cli.md#hecal-poses-convert): the flags fill
+// io::PoseConversionOptions; the job is io::ConvertPoseTable (io/pose_conversion.h); this file
+// writes its result atomically and prints the summary.
 #pragma once
 
 #include <string>

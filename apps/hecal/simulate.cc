@@ -1,5 +1,8 @@
-// `hecal simulate`: see simulate.h.
-#include "simulate.h"
+// `hecal simulate` (docs/cli.md#hecal-simulate, docs/thesis-study.md): binds the flags into
+// study::SimulateOptions (study/simulate.h; list flags parsed once here, ranges checked by its
+// IsValid), runs study::Simulate, prints a table per setting (report/study_text.h) and writes the
+// CSV files of study/study_csv.h.
+#include "hecal/study/simulate.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>
@@ -7,11 +10,11 @@
 #include <optional>
 
 #include "bounds.h"
+#include "cli.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/study_text.h"
-#include "hecal/study/simulate.h"
 #include "hecal/study/study_csv.h"
 #include "list_flags.h"
 
@@ -146,13 +149,8 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
           "--sigma", [&o](const std::string& text) { o.sigmas = ParseSigmaLevels(text); },
           "Noise levels: n (= n mm and n deg per component) or MM/DEG (list sweeps)")
       ->default_str("0,0.3,1");
-  simulate
-      ->add_option_function<std::string>(
-          "--method",
-          [&o](const std::string& text) { o.methods = ParseMethodList("--method", text); },
-          "Method name(s), comma separated, or all")
-      ->default_str("all");
-  AddWholeNumber(*simulate, "--seed", o.seed, "Random seed (0 to 2^64-1)")->capture_default_str();
+  AddMethodListFlag(*simulate, o.methods);
+  AddSeedFlag(*simulate, o.seed);
   AddWholeNumber(*simulate, "--threads", o.threads, "Worker threads, 0 to 256 (0 = every core)")
       ->capture_default_str();
   simulate

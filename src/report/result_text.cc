@@ -2,6 +2,7 @@
 #include "hecal/report/result_text.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <numbers>
@@ -144,6 +145,55 @@ void PrintMethodComparison(std::ostream& out, const ResultDocument& document) {
     out << "  " << std::left << std::setw(16) << estimation::Info(failure.method).name << std::right
         << "refused: " << failure.message << "\n";
   out.unsetf(std::ios::floatfield);
+}
+
+namespace {
+
+void PrintRefinedIntrinsics(std::ostream& out, const pose::CameraModel& before,
+                            const ImageReport& report) {
+  constexpr std::array<const char*, pose::kNumIntrinsics> kNames = {"fx", "fy", "cx", "cy", "k1",
+                                                                    "k2", "p1", "p2", "k3"};
+  const pose::IntrinsicParameters start = pose::IntrinsicsOf(before);
+  const pose::IntrinsicParameters refined = pose::IntrinsicsOf(report.camera);
+  out << "intrinsics refined with X and Z (before → after ± 1σ):\n";
+  for (int k = 0; k < pose::kNumIntrinsics; ++k) {
+    out << "  " << kNames[static_cast<size_t>(k)] << " " << std::setprecision(k < 4 ? 7 : 5)
+        << start(k) << " → " << refined(k) << " ± " << std::setprecision(2)
+        << (*report.intrinsics_sigma)[static_cast<size_t>(k)] << "\n";
+  }
+  out << std::setprecision(6);
+}
+
+void PrintImageTable(std::ostream& out, const ResultDocument& document, const ImageReport& report) {
+  out << std::fixed << std::setprecision(3) << "reprojection: RMS " << report.rms_px
+      << " px over every point; pixel sigma " << report.pixel_sigma << " px ("
+      << (report.pixel_sigma_estimated ? "estimated" : "given") << ")\n  image          rms_px\n";
+  const std::vector<std::string> used = UsedStationIds(document);
+  for (size_t k = 0; k < used.size(); ++k) {
+    out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(7)
+        << report.image_rms_px[k] << (report.image_outlier[k] ? "   > 3σ, check this image" : "")
+        << "\n";
+  }
+  out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace
+
+void PrintImageResultSummary(std::ostream& out, const ResultDocument& document,
+                             const pose::CameraModel& camera_before) {
+  const estimation::CalibrationResult& result = document.results.front();
+  const ImageReport& report = *document.images;
+  const Pose step = report.pose_level.X.inverse() * result.X;
+  const double scale = 1.0 / io::MetresPer(document.unit);
+  out << "\npose level (" << estimation::Info(report.pose_level.method).name
+      << " on the PnP poses), then the joint reprojection refinement moved X by "
+      << std::setprecision(4) << AxisAngleFromMatrix(step.linear()).angle * 180.0 / std::numbers::pi
+      << " deg, " << (result.X.translation() - report.pose_level.X.translation()).norm() * scale
+      << " " << io::UnitName(document.unit) << "\n";
+  out.unsetf(std::ios::floatfield);
+  PrintResultSummary(out, document, result);
+  if (report.intrinsics_sigma) PrintRefinedIntrinsics(out, camera_before, report);
+  PrintImageTable(out, document, report);
 }
 
 }  // namespace hecal::report

@@ -1,10 +1,13 @@
 // The result text against lines written by hand for a result whose numbers are known: X a
 // quarter turn about z at (100, 200, 300) mm, two stations used, one rejected, in millimetres;
-// and the side-by-side comparison of two methods 1 mm apart.
+// and the side-by-side comparison of two methods 1 mm apart; from images, a refinement that moved
+// X by 2° and 5 mm from the pose level and refined the intrinsics.
 #include "hecal/report/result_text.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <array>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -102,6 +105,54 @@ TEST(ResultText, ComparisonAgainstMl) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("  shah            refused: too few stations\n"), std::string::npos) << text;
+}
+
+// The pose level is X turned back by 2° about x and shifted by (3, 4, 0) mm: the refinement moved
+// X by 2 deg and 5 mm. s3's image is flagged; the intrinsics before → after ± 1σ round to 7 and 5
+// significant digits, the 1σ to 2.
+TEST(ResultText, ImageSummaryLines) {
+  ResultDocument document = Document();
+  ImageReport images;
+  images.pose_level.method = estimation::Method::kTsaiLenz;
+  images.pose_level.X = document.results[0].X;
+  images.pose_level.X.linear() *= Eigen::AngleAxisd(-2.0 * kDeg, Eigen::Vector3d::UnitX()).matrix();
+  images.pose_level.X.translation() += Eigen::Vector3d(3e-3, 4e-3, 0.0);
+  images.rms_px = 0.25;
+  images.pixel_sigma = 0.1876;
+  images.pixel_sigma_estimated = true;
+  images.image_rms_px = {0.2, 1.5};
+  images.image_outlier = {false, true};
+  pose::CameraModel before;
+  before.fx = 800.0;
+  before.fy = 810.0;
+  before.cx = 320.0;
+  before.cy = 240.0;
+  images.camera = before;
+  images.camera.fx = 801.2345678;
+  images.camera.distortion[0] = -0.123456;
+  images.intrinsics_sigma =
+      std::array<double, pose::kNumIntrinsics>{0.1234, 0.5, 0.25, 0.25, 0.00123, 0, 0, 0, 0};
+  document.images = images;
+  std::ostringstream out;
+  PrintImageResultSummary(out, document, before);
+  const std::string text = out.str();
+  const auto has = [&](const std::string& line) {
+    EXPECT_NE(text.find(line + "\n"), std::string::npos) << "missing: " << line << "\n" << text;
+  };
+  EXPECT_EQ(text.rfind("\npose level (tsai-lenz on the PnP poses), then the joint reprojection "
+                       "refinement moved X by 2 deg, 5 mm\nmethod ml (eye-in-hand, 2 stations)\n",
+                       0),
+            0u)
+      << text;
+  has("intrinsics refined with X and Z (before → after ± 1σ):");
+  has("  fx 800 → 801.2346 ± 0.12");
+  has("  fy 810 → 810 ± 0.5");
+  has("  k1 0 → -0.12346 ± 0.0012");
+  has("reprojection: RMS 0.250 px over every point; pixel sigma 0.188 px (estimated)");
+  has("  image          rms_px");
+  has("  s1              0.200");
+  has("  s3              1.500   > 3σ, check this image");
+  EXPECT_LT(text.find("warning: a warning"), text.find("intrinsics refined"));
 }
 
 }  // namespace

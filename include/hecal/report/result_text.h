@@ -14,11 +14,18 @@
 // difference from ml (rotation angle in degrees, translation distance) when ml is among the
 // results, and the predicted RMS error of X (the square root of the trace of its rotation and
 // translation covariance blocks, degrees and millimetres), then the methods that refused.
+//
+// From images (`--images`, document.images set): how far the joint reprojection refinement moved
+// X from the pose-level result (rotation angle in degrees, translation distance in the unit), the
+// summary, the intrinsics before → after ± 1σ when they were refined (fx, fy, cx, cy to 7
+// significant digits, the distortion to 5), then the reprojection RMS over every point with the
+// pixel sigma (given or estimated) and one row per used image: its RMS in px and a "> 3σ" flag.
 #pragma once
 
 #include <ostream>
 
 #include "hecal/estimation/calibrate.h"
+#include "hecal/pose/camera_model.h"
 #include "hecal/report/result_file.h"
 
 namespace hecal::report {
@@ -29,5 +36,9 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
 
 // Starts with a blank line.
 void PrintMethodComparison(std::ostream& out, const ResultDocument& document);
+
+// Starts with a blank line. `camera_before`: the intrinsics the refinement started from.
+void PrintImageResultSummary(std::ostream& out, const ResultDocument& document,
+                             const pose::CameraModel& camera_before);
 
 }  // namespace hecal::report

@@ -2,7 +2,7 @@
 // folder of target images to camera poses T_camera_target (metres, target frame → camera frame)
 // with covariances (right perturbation, rotation first; pose/pose_refinement.h). The job writes
 // and prints nothing: it returns an ImageSet and reports its stages to an optional
-// ImageSetProgress (the CLI prints them, apps/hecal/image_report.h).
+// ImageSetProgress (jobs/image_front_end.h hands them out as text, for the CLI to print).
 //
 // Steps (DetectImageSet)
 //   1. Images: the target file (io/target_file.h), the camera file when given, then the stations
