@@ -13,14 +13,23 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 build=${HECAL_BUILD_DIR:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DHECAL_WERROR=ON >/dev/null
+# Ninja where a build folder is new (an existing one keeps the generator it was made with), and
+# lld for the ~200 test executables. Both from install-deps.sh.
+configure() {
+  local dir=$1
+  shift
+  local generator=()
+  [ -f "$dir/CMakeCache.txt" ] || generator=(-G Ninja)
+  cmake -S . -B "$dir" "${generator[@]}" -DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=lld "$@" >/dev/null
+}
+configure "$build" -DCMAKE_BUILD_TYPE=Release -DHECAL_WERROR=ON
 cmake --build "$build" -j2
 ctest --test-dir "$build" -L unit --output-on-failure -j2
 
 if [ "${HECAL_SANITIZED_CHECKS:-1}" != 0 ]; then
   sanitized=${HECAL_SANITIZED_BUILD_DIR:-build-sanitized}
-  cmake -S . -B "$sanitized" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" \
-    -DHECAL_SANITIZE=ON -DHECAL_WERROR=ON >/dev/null
+  configure "$sanitized" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" \
+    -DHECAL_SANITIZE=ON -DHECAL_WERROR=ON
   cmake --build "$sanitized" -j2 --target robustness_checks
   ctest --test-dir "$sanitized" -L robustness --output-on-failure -j2
 fi
