@@ -16,7 +16,7 @@
 # 0.05–0.4 s per link with GNU ld; the sanitized -O0 build of the libraries and the CLI about
 # 8 minutes; then the unit tests about 2 minutes on both cores and the sanitized corpus about
 # 2 minutes on one core (cli_robustness_test alone). So:
-#  - the test files are compiled at -O1 (cmake/HecalHelpers.cmake: 7.0 s → 5.6 s CPU per file);
+#  - the test files are compiled at -Og (cmake/HecalHelpers.cmake: about a fifth less CPU each);
 #  - Ninja (no per-target make and dependency-scanning processes) and lld (a CLI test's link
 #    0.40 s → 0.08 s CPU) where the build folder is new;
 #  - the sanitized corpus runs beside the unit suite instead of after it, on the core it leaves.
