@@ -11,16 +11,21 @@
 # Installs the Debian packages it needs first (scripts/install-deps.sh, apt-get only).
 #
 # Where the time goes (2 cores, no compiler cache; CPU = user + sys, which the machine's other
-# load barely changes): about 190 test files of 5–9 s CPU each at -O3 (gtest's assertion code
-# and the headers), about 180 library and CLI files of 1.5–12.5 s (Ceres and Eigen templates),
-# 0.05–0.4 s per link with GNU ld; the sanitized -O0 build of the libraries and the CLI about
-# 8 minutes; then the unit tests about 2 minutes on both cores and the sanitized corpus about
-# 2 minutes on one core (cli_robustness_test alone). So:
-#  - the test files are compiled at -Og (cmake/HecalHelpers.cmake: about a fifth less CPU each);
-#  - Ninja (no per-target make and dependency-scanning processes) and lld (a CLI test's link
-#    0.40 s → 0.08 s CPU) where the build folder is new;
+# load changes far less than wall time): about 190 test files of 5–10 s CPU each at -O3 (gtest's
+# assertion code and the headers; gtest + gmock + Eigen + the standard headers alone 1.8 s), about
+# 180 library and CLI files of 1.5–12.5 s (Ceres and Eigen templates), 0.05–0.4 s per link with
+# GNU ld; the sanitized -O0 build of the libraries and the CLI about 8 minutes (6–12 s per file,
+# mostly code generation, so a precompiled header saves only 0.3–0.8 s there); then the unit
+# tests about 2 minutes on both cores and the sanitized corpus about 2 minutes on one core
+# (cli_robustness_test alone). So:
+#  - the test files are compiled at -Og (cmake/HecalHelpers.cmake: 13–32% less CPU each, about
+#    5 CPU-minutes; the unit tests take about 15% more CPU);
+#  - lld (a CLI test's link 0.40 s → 0.08 s CPU) and Ninja (no make and dependency-scanning
+#    processes per target) where the build folder is new;
 #  - the sanitized corpus runs beside the unit suite instead of after it, on the core it leaves.
-# Measured before: 27.7 min wall on a quiet machine (load ≈ 2) at the commit before these.
+# Before: 27.7 min wall on a clean clone, load ≈ 2. After: estimated 23–24 min from the CPU
+# figures (the test files 13.4 CPU-minutes with the libraries cached, load 3–15); the wall
+# figure of a clean clone on a quiet machine is pending.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
