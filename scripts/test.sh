@@ -21,7 +21,8 @@
 #  - the test files are compiled at -Og (cmake/HecalHelpers.cmake: 13–32% less CPU each, about
 #    5 CPU-minutes; the unit tests take about 15% more CPU);
 #  - lld (a CLI test's link 0.40 s → 0.08 s CPU) and Ninja (no make and dependency-scanning
-#    processes per target) where the build folder is new;
+#    processes per target; not measured on its own, a no-op make of the tree costs 4.7 s CPU)
+#    where the build folder is new;
 #  - the sanitized corpus runs beside the unit suite instead of after it, on the core it leaves.
 # Before: 27.7 min wall on a clean clone, load ≈ 2. After: estimated 23–24 min from the CPU
 # figures (the test files 13.4 CPU-minutes with the libraries cached, load 3–15); the wall
