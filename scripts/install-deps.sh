@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake git pkg-config
+  build-essential cmake ninja-build lld git pkg-config
   libeigen3-dev libceres-dev
   libopencv-dev libopencv-contrib-dev libapriltag-dev
   libyaml-cpp-dev libtinyxml2-dev nlohmann-json3-dev libcli11-dev
