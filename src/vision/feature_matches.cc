@@ -49,6 +49,11 @@ ImageFeatures DetectFeatures(const cv::Mat& gray, int max_features, FeatureKind 
           ? cv::Ptr<cv::Feature2D>(cv::ORB::create(max_features > 0 ? max_features : 8000))
           : cv::Ptr<cv::Feature2D>(cv::SIFT::create(std::max(0, max_features)));
   detector->detectAndCompute(gray, cv::noArray(), features.keypoints, features.descriptors);
+  if (kind == FeatureKind::kSift) {
+    // OpenCV's SIFT reports x/2 for a point found at x in its 2× linear upsampling, which lies at
+    // x/2 − 0.25 of the image (feature_matches.h, step 1).
+    for (cv::KeyPoint& keypoint : features.keypoints) keypoint.pt -= cv::Point2f(0.25f, 0.25f);
+  }
   return features;
 }
 

@@ -6,7 +6,13 @@
 //      "Distinctive image features from scale-invariant keypoints", IJCV 2004) or ORB ones
 //      (cv::ORB; Rublee et al., "ORB: an efficient alternative to SIFT or SURF", ICCV 2011;
 //      binary descriptors) on the 8-bit grey image, at most `max_features` of the strongest
-//      (SIFT: 0 = all).
+//      (SIFT: 0 = all). OpenCV 4.6's SIFT first upsamples the image 2× by linear interpolation,
+//      where pixel x lies at x/2 − 0.25 of the image, and reports a point found at x as x/2: every
+//      keypoint 0.25 px right of and below the point it describes, in effect a principal point
+//      0.25 px off, which biased X on rendered scenes by about 2 σ per axis (docs/global.md,
+//      "Measured"). DetectFeatures subtracts 0.25 px from both coordinates of SIFT keypoints
+//      (checked by mirroring an image: feature_matches_test). ORB's keypoints are left as
+//      OpenCV gives them.
 //   2. MatchFeatures: for every descriptor of the first image its two nearest neighbours in the
 //      second (brute force; L2 for SIFT, Hamming for ORB's binary descriptors); kept when the
 //      nearest is closer than `ratio` (0.8, Lowe's ratio test) times the second nearest, in both
