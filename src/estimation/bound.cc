@@ -11,14 +11,18 @@
 namespace hecal::estimation {
 
 AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
-                              const PoseSigma& robot_sigma, const PoseSigma& camera_sigma) {
+                              const std::vector<Matrix6d>& robot,
+                              const std::vector<Matrix6d>& camera) {
+  if (robot.size() != truth.A.size() || camera.size() != truth.A.size()) {
+    throw std::invalid_argument("FirstOrderBound: one robot and one camera covariance per station");
+  }
   using Matrix12d = Eigen::Matrix<double, 12, 12>;
   Matrix12d information = Matrix12d::Zero();
   for (size_t i = 0; i < truth.A.size(); ++i) {
     Matrix6x12d J;
     LoopResidual(truth.A[i], truth.B[i], X, Z, &J);
     const Matrix6d W = WhiteningMatrix(
-        StationCovariance(truth.setup, truth.A[i], truth.B[i], X, robot_sigma, camera_sigma));
+        StationCovariance(truth.setup, truth.A[i], truth.B[i], X, robot[i], camera[i]));
     const Matrix6x12d WJ = W * J;
     information.noalias() += WJ.transpose() * WJ;
   }
@@ -35,6 +39,13 @@ AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, cons
   bound.rotation_rmse_Z = std::sqrt(bound.covariance.block<3, 3>(6, 6).trace());
   bound.translation_rmse_Z = std::sqrt(bound.covariance.block<3, 3>(9, 9).trace());
   return bound;
+}
+
+AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
+                              const PoseSigma& robot_sigma, const PoseSigma& camera_sigma) {
+  return FirstOrderBound(truth, X, Z,
+                         std::vector<Matrix6d>(truth.A.size(), PoseCovariance(robot_sigma)),
+                         std::vector<Matrix6d>(truth.A.size(), PoseCovariance(camera_sigma)));
 }
 
 }  // namespace hecal::estimation

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "hecal/estimation/station_covariance.h"
 #include "hecal/geometry/se3.h"
@@ -98,9 +99,38 @@ TEST(FirstOrderBound, ScalesWithTheNoiseAndShrinksWithMoreStations) {
   EXPECT_GT(five.translation_rmse_X, one.translation_rmse_X);
 }
 
+// Per-station covariances: the information adds up over stations, so a station measured twice
+// with covariance Σ carries the information of one station with covariance Σ / 2. Halving the
+// covariances of stations 0–4 of ten equals appending copies of those five stations at the
+// original sigmas — a known answer the sigma form cannot give.
+TEST(FirstOrderBound, PerStationCovariancesWeightTheirStations) {
+  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 34);
+  const handeye::Problem problem = data.MeasuredProblem();
+  const PoseSigma robot{1.0 * kDeg, 1e-3};
+  const PoseSigma camera{0.5 * kDeg, 2e-3};
+  std::vector<Matrix6d> robot_covariance(10, PoseCovariance(robot));
+  std::vector<Matrix6d> camera_covariance(10, PoseCovariance(camera));
+  handeye::Problem repeated = problem;
+  for (size_t i = 0; i < 5; ++i) {
+    robot_covariance[i] /= 2.0;
+    camera_covariance[i] /= 2.0;
+    repeated.A.push_back(problem.A[i]);
+    repeated.B.push_back(problem.B[i]);
+  }
+  const AccuracyBound weighted =
+      FirstOrderBound(problem, data.X, data.Z, robot_covariance, camera_covariance);
+  const AccuracyBound copies = FirstOrderBound(repeated, data.X, data.Z, robot, camera);
+  EXPECT_TRUE(weighted.covariance.isApprox(copies.covariance, 1e-9));
+  const AccuracyBound uniform = FirstOrderBound(problem, data.X, data.Z, robot, camera);
+  EXPECT_LT(weighted.rotation_rmse_X, 0.95 * uniform.rotation_rmse_X);
+  robot_covariance.pop_back();
+  EXPECT_THROW(FirstOrderBound(problem, data.X, data.Z, robot_covariance, camera_covariance),
+               std::invalid_argument);
+}
+
 TEST(FirstOrderBound, RejectsAZeroNoiseModel) {
   const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 33);
-  EXPECT_THROW(FirstOrderBound(data.MeasuredProblem(), data.X, data.Z, {}, {}),
+  EXPECT_THROW(FirstOrderBound(data.MeasuredProblem(), data.X, data.Z, PoseSigma{}, PoseSigma{}),
                std::invalid_argument);
 }
 

@@ -180,8 +180,7 @@ std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem&
   out.method = method;
   if (method == CovarianceMethod::kInformation) {
     out.covariance =
-        FirstOrderBound(problem, result.X, result.Z, result.robot_sigma, result.camera_sigma)
-            .covariance;
+        FirstOrderBound(problem, result.X, result.Z, noise.robot, noise.camera).covariance;
     return out;
   }
   CheckCovarianceFits(method, result.method, problem.A.size());

@@ -61,8 +61,14 @@ NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera,
 }
 
 Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
+                           const Matrix6d& robot, const Matrix6d& camera) {
+  const Matrix6d J = RobotNoiseJacobian(setup, A, B, X);
+  return J * robot * J.transpose() + camera;
+}
+
+Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
                            const PoseSigma& robot, const PoseSigma& camera) {
-  return CombineComponents(StationNoiseComponents(setup, A, B, X), Variances(robot, camera));
+  return StationCovariance(setup, A, B, X, PoseCovariance(robot), PoseCovariance(camera));
 }
 
 Matrix6d WhiteningMatrix(const Matrix6d& covariance) {

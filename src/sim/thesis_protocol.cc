@@ -106,11 +106,19 @@ SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const Noise
     data.T_camera_target_true.push_back(B);
   }
   // Noise after the truth so the noise-free data are the same whatever the noise model.
-  for (int i = 0; i < options.stations; ++i) {
-    data.T_base_gripper.push_back(AddNoise(data.T_base_gripper_true[i], robot_noise, rng));
-    data.T_camera_target.push_back(AddNoise(data.T_camera_target_true[i], camera_noise, rng));
-  }
+  AddMeasurementNoise(robot_noise, camera_noise, rng, &data);
   return data;
+}
+
+void AddMeasurementNoise(const NoiseModel& robot_noise, const NoiseModel& camera_noise,
+                         std::mt19937_64& rng, SimulatedData* data) {
+  const size_t n = data->T_base_gripper_true.size();
+  data->T_base_gripper.clear();
+  data->T_camera_target.clear();
+  for (size_t i = 0; i < n; ++i) {
+    data->T_base_gripper.push_back(AddNoise(data->T_base_gripper_true[i], robot_noise, rng));
+    data->T_camera_target.push_back(AddNoise(data->T_camera_target_true[i], camera_noise, rng));
+  }
 }
 
 }  // namespace hecal::sim

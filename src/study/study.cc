@@ -97,20 +97,13 @@ struct Estimate {
 // of the setting; with one, every method goes through Calibrate with that noise model.
 Estimate SolveX(estimation::Method method, const handeye::Problem& problem, const Setting& setting,
                 const StudyOptions& study) {
-  const estimation::CovarianceOptions& covariance = study.covariance;
-  const bool wants_covariance = covariance.method != estimation::CovarianceMethod::kNone;
+  const bool wants_covariance = study.covariance.method != estimation::CovarianceMethod::kNone;
   const std::optional<handeye::ClosedForm> form = estimation::Info(method).closed_form;
   if (form && !wants_covariance && !study.reject_outliers) {
     return {handeye::SolveClosedForm(*form, problem).X, std::nullopt, std::nullopt, false, {}, {}};
   }
-  estimation::CalibrateOptions options;
-  options.method = method;
-  options.covariance = covariance;
-  options.covariance.threads = 1;  // the trials run in parallel already
-  options.reject_outliers = study.reject_outliers;
-  options.model_check = wants_covariance;
-  if (!study.estimate_noise) SetRefinementSigmas(setting, &options);
-  const estimation::CalibrationResult result = estimation::Calibrate(problem, options);
+  const estimation::CalibrationResult result =
+      estimation::Calibrate(problem, TrialCalibrateOptions(method, setting, study));
   if (!result.covariance) {
     return {result.X, std::nullopt, std::nullopt, false, result.rejected, result.robot_sigma};
   }
@@ -193,6 +186,34 @@ estimation::PoseSigma CameraSigma(const Setting& setting) {
   return ModelSigma(setting, false);
 }
 
+sim::NoiseModel RobotNoise(const Setting& setting) {
+  return NoiseFor(setting, true, setting.noise_on != NoiseOn::kCamera);
+}
+
+sim::NoiseModel CameraNoise(const Setting& setting) {
+  return NoiseFor(setting, false, setting.noise_on != NoiseOn::kRobot);
+}
+
+sim::SimulatedData SimulateTrial(const Setting& setting, std::mt19937_64& rng) {
+  sim::ProtocolOptions protocol;
+  protocol.setup = setting.setup;
+  protocol.stations = setting.stations;
+  return sim::SimulateThesisProtocol(protocol, RobotNoise(setting), CameraNoise(setting), rng);
+}
+
+estimation::CalibrateOptions TrialCalibrateOptions(estimation::Method method,
+                                                   const Setting& setting,
+                                                   const StudyOptions& study) {
+  estimation::CalibrateOptions options;
+  options.method = method;
+  options.covariance = study.covariance;
+  options.covariance.threads = 1;  // the trials run in parallel already
+  options.reject_outliers = study.reject_outliers;
+  options.model_check = study.covariance.method != estimation::CovarianceMethod::kNone;
+  if (!study.estimate_noise) SetRefinementSigmas(setting, &options);
+  return options;
+}
+
 void ValidateStudyOptions(const StudyOptions& options) {
   if (options.settings.empty()) {
     throw InputError("StudyOptions.settings", 0, "the study has no setting",
@@ -256,12 +277,7 @@ StudyResult RunStudy(const StudyOptions& options) {
   auto run_job = [&](const Job& job) {
     const Setting& setting = options.settings[job.setting];
     std::mt19937_64 rng(TrialSeed(options.seed, setting.setup, setting.stations, job.trial));
-    sim::ProtocolOptions protocol;
-    protocol.setup = setting.setup;
-    protocol.stations = setting.stations;
-    sim::SimulatedData data = sim::SimulateThesisProtocol(
-        protocol, NoiseFor(setting, true, setting.noise_on != NoiseOn::kCamera),
-        NoiseFor(setting, false, setting.noise_on != NoiseOn::kRobot), rng);
+    sim::SimulatedData data = SimulateTrial(setting, rng);
     const sim::SimulatedData clean_data = data;
     const std::vector<int> replaced = sim::InjectGrossOutliers(&data, setting.gross_outliers, rng);
     const handeye::Problem problem = data.MeasuredProblem();

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/geometry/types.h"
@@ -35,9 +36,16 @@ struct AccuracyBound {
 };
 
 // `truth`: the noise-free problem (or the measured one; the Jacobians are then evaluated at
-// the measurements); X, Z: the true unknowns. Throws std::invalid_argument when the noise model
-// gives a singular station covariance (e.g. every sigma zero), hecal::DegenerateError when the
-// information is singular (degenerate data).
+// the measurements); X, Z: the true unknowns; robot[i], camera[i]: station i's covariances of
+// T_base_gripper_i and T_camera_target_i (right perturbations), mapped to Σ_i by
+// station_covariance.h. Throws std::invalid_argument when there is not one robot and one camera
+// covariance per station or a station covariance is singular (e.g. every sigma zero),
+// hecal::DegenerateError when the information is singular (degenerate data).
+AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
+                              const std::vector<Matrix6d>& robot,
+                              const std::vector<Matrix6d>& camera);
+
+// The same sigmas at every station (PoseCovariance, pose_sigma.h).
 AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
                               const PoseSigma& robot_sigma, const PoseSigma& camera_sigma);
 

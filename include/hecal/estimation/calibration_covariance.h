@@ -18,11 +18,13 @@
 //  - kMonteCarlo: `samples` perturbed data sets solved (uncertainty/monte_carlo.h), with the
 //    sampling error of each standard deviation; the reference the others are checked against.
 //  - kInformation: no solves: the inverse Fisher information I⁻¹ = (Σ_i J_iᵀ Σ_i⁻¹ J_i)⁻¹ of
-//    the noise model, evaluated at the measurements and the estimate (bound.h's formula; for ml
-//    the same as its kLinear). It is the first-order covariance of an efficient estimator, so
-//    for the closed forms and strobl it is a lower bound (Cramér–Rao): their actual covariance
-//    is larger by their inefficiency (README "Methods": 1–3× in RMSE on the thesis protocol).
-//    O(n) time and memory, the only one that stays cheap at 10⁴–10⁵ stations.
+//    the noise model, evaluated at the measurements and the estimate, Σ_i from station i's
+//    robot and camera covariances (StationNoise, station_covariance.h; bound.h's formula; for
+//    ml the same as its kLinear, whatever noise model was chosen). It is the first-order covariance
+//    of an efficient estimator, so for the closed forms and strobl it is a lower bound
+//    (Cramér–Rao): their actual covariance is larger by their inefficiency (README "Methods": 1–3×
+//    in RMSE on the thesis protocol). O(n) time and memory, the only one that stays cheap at
+//    10⁴–10⁵ stations.
 // The solver at a perturbed data set (Resolve): the closed-form methods exactly as on the data;
 // `ml` and `strobl` refined from the calibration's own (X̂, Ẑ) with its noise model held fixed
 // (the sigmas used, given or estimated; the perturbations are small, so the start is in the
@@ -69,10 +71,10 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
 // The covariance of `result` (computed by Calibrate(problem, calibrate_options)) under `noise`,
 // by options.method (nullopt: DefaultCovarianceMethod). Here kLinear is always the numeric
 // propagation through the solver, for ml too (Calibrate uses ml's analytic information instead;
-// the two agree to first order, which the tests check). kInformation uses result's sigmas (the
-// noise model is uniform there). kNone returns nullopt. Throws std::invalid_argument when the
-// noise does not have one matrix per station or the information is singular, and
-// hecal::DegenerateError when a solve fails at a sigma point (UT, linear).
+// the two agree to first order, which the tests check). kInformation uses `noise` as well (with
+// uniform noise it equals FirstOrderBound at result's sigmas). kNone returns nullopt. Throws
+// std::invalid_argument when the noise does not have one matrix per station or the information is
+// singular, and hecal::DegenerateError when a solve fails at a sigma point (UT, linear).
 std::optional<CalibrationCovariance> PropagateCovariance(const handeye::Problem& problem,
                                                          const CalibrationResult& result,
                                                          const CalibrateOptions& calibrate_options,

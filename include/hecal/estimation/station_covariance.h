@@ -72,7 +72,13 @@ Matrix6d CombineComponents(const NoiseComponents& components, const NoiseVarianc
 NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera,
                          const PoseSigma& camera_excess = {});
 
-// Σ_i for the given noise model.
+// Σ_i = J_g Σ_g J_gᵀ + Σ_c for a robot covariance Σ_g (of T_base_gripper as measured, whatever
+// the setup) and a camera covariance Σ_c (of T_camera_target), both 6 × 6 right perturbations,
+// any shape (e.g. the Student-t model's per-station scales or the camera's tilt / depth excess).
+Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
+                           const Matrix6d& robot, const Matrix6d& camera);
+
+// The same for isotropic sigmas (PoseCovariance, pose_sigma.h).
 Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
                            const PoseSigma& robot, const PoseSigma& camera);
 

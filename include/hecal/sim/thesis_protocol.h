@@ -54,7 +54,15 @@ struct SimulatedData {
 };
 
 // Throws hecal::InputError when !options.IsValid.
+// The rng draws the truth, then the stations, then the noise (AddMeasurementNoise).
 SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const NoiseModel& robot_noise,
                                      const NoiseModel& camera_noise, std::mt19937_64& rng);
+
+// The measured poses from the true ones: per station, in order, the robot pose's noise and then
+// the camera pose's, each T · Exp(δ) (noise.h). Replaces data->T_base_gripper and
+// data->T_camera_target; a second call with a fresh rng redraws the noise on the same truth
+// (a noise-only Monte Carlo over one geometry).
+void AddMeasurementNoise(const NoiseModel& robot_noise, const NoiseModel& camera_noise,
+                         std::mt19937_64& rng, SimulatedData* data);
 
 }  // namespace hecal::sim

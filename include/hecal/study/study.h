@@ -37,16 +37,19 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/covariance_method.h"
 #include "hecal/estimation/methods.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/sim/noise.h"
 #include "hecal/sim/summary_statistics.h"
+#include "hecal/sim/thesis_protocol.h"
 #include "hecal/uncertainty/consistency.h"
 
 namespace hecal::study {
@@ -209,6 +212,22 @@ struct StudyResult {
   std::vector<Bound> setting_bounds;       // per setting: RMS of the trial bounds
   std::vector<MethodSummary> summaries;    // setting-major, then method
 };
+
+// The noise a setting puts on the robot poses and on the camera poses (sim/noise.h; zero for a
+// device without noise, NoiseOn; kPnp shapes the camera's only).
+sim::NoiseModel RobotNoise(const Setting& setting);
+sim::NoiseModel CameraNoise(const Setting& setting);
+
+// The data set of one trial of `setting` before any gross outlier: the thesis protocol with the
+// setting's setup, stations and noise, drawn from `rng` (RunStudy seeds it with TrialSeed).
+sim::SimulatedData SimulateTrial(const Setting& setting, std::mt19937_64& rng);
+
+// What a method is told when it solves a trial through estimation::Calibrate: `study`'s
+// covariance on one thread, its outlier rejection, the model check with a covariance, and the
+// setting's sigmas unless study.estimate_noise (RobotSigma above).
+estimation::CalibrateOptions TrialCalibrateOptions(estimation::Method method,
+                                                   const Setting& setting,
+                                                   const StudyOptions& study);
 
 // Runs every trial of every setting; throws InputError for invalid options.
 StudyResult RunStudy(const StudyOptions& options);
