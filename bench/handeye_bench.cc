@@ -26,12 +26,12 @@
 
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "hecal/estimation/methods.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/study/bench.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
 #include "hecal/peers/opencv_handeye.h"
@@ -42,8 +42,6 @@ namespace {
 namespace estimation = hecal::estimation;
 namespace handeye = hecal::handeye;
 namespace study = hecal::study;
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr study::NoiseLevel kSigma = {0.1, 0.1};  // mm / deg per component
 constexpr int kDataSets = 8;
 
@@ -59,8 +57,9 @@ const std::vector<study::BenchDataSet>& DataSets(int stations) {
 void RunSolver(benchmark::State& state, const study::BenchSolver& solve, int stations, bool judge) {
   const std::vector<study::BenchDataSet>& sets = DataSets(stations);
   const study::BenchAccuracy accuracy = study::MeasureAccuracy(sets, solve);
-  if (judge && (accuracy.finite < kDataSets || accuracy.worst_rotation * kDeg > 1.0 ||
-                accuracy.worst_translation > 0.01)) {
+  if (judge &&
+      (accuracy.finite < kDataSets || accuracy.worst_rotation * hecal::kDegreesPerRadian > 1.0 ||
+       accuracy.worst_translation > 0.01)) {
     state.SkipWithError("wrong result: error above 1 deg / 10 mm, or a failed solve");
     return;
   }
@@ -76,7 +75,7 @@ void RunSolver(benchmark::State& state, const study::BenchSolver& solve, int sta
     }
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  state.counters["rot_err_deg"] = accuracy.rotation_error.value_or(nan) * kDeg;
+  state.counters["rot_err_deg"] = accuracy.rotation_error.value_or(nan) * hecal::kDegreesPerRadian;
   state.counters["trans_err_mm"] = accuracy.translation_error.value_or(nan) * 1e3;
   state.counters["failures"] = accuracy.failures;
 }

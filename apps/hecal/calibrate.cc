@@ -8,7 +8,6 @@
 #include <exception>
 #include <filesystem>
 #include <memory>
-#include <numbers>
 #include <utility>
 
 #include "bounds.h"
@@ -16,6 +15,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/plausibility.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/quaternion_columns.h"
 #include "hecal/report/pose_calibration.h"
@@ -23,17 +23,13 @@
 #include "list_flags.h"
 
 namespace hecal::cli {
-namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-}  // namespace
+namespace {}  // namespace
 
 // "MM,DEG" (ParseNoiseLevel) → PoseSigma in metres and radians (its range is
 // CalibrateOptions::IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text) {
   const study::NoiseLevel level = ParseNoiseLevel(flag, text, ',', /*single=*/false);
-  return {level.deg / kDegrees, level.mm * 1e-3};
+  return {level.deg / kDegreesPerRadian, level.mm * 1e-3};
 }
 
 std::optional<double> ParsePixelSigma(const std::string& text) {

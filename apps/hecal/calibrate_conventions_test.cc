@@ -10,13 +10,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli_test_util.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/sim/gross_outliers.h"
 #include "hecal/sim/thesis_protocol.h"
@@ -26,8 +26,6 @@ namespace {
 
 using cli_test::Hecal;
 using nlohmann::json;
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
 
 // How a pose file is written.
@@ -94,7 +92,7 @@ class CalibrateConventions : public cli_test::CliTest {
     sim::ProtocolOptions options;
     options.setup = setup;
     options.stations = 20;
-    const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, kDeg, 1e-3};
+    const sim::NoiseModel noise{sim::NoiseModel::Kind::kGaussian, kRadiansPerDegree, 1e-3};
     return sim::SimulateThesisProtocol(options, noise, noise, rng);
   }
 
@@ -143,7 +141,8 @@ TEST_F(CalibrateConventions, InvertedRobotFileIsNamed) {
     std::vector<std::string> fixed = Args(name);
     fixed.push_back("--robot-inverse");
     const json result = ExpectSolved(fixed);
-    EXPECT_LT(so3::Distance(PoseOf(result["X"]).linear(), data.X.linear()), 2.0 * kDeg) << name;
+    EXPECT_LT(so3::Distance(PoseOf(result["X"]).linear(), data.X.linear()), 2.0 * kRadiansPerDegree)
+        << name;
   }
 }
 
@@ -171,7 +170,8 @@ TEST_F(CalibrateConventions, SetupAutoPicksTheSetupThatFits) {
     const json result = ExpectSolved(Args("auto"));
     EXPECT_EQ(result["setup"], name);
     EXPECT_TRUE(AnyWarningContains(result, "--setup auto chose " + name)) << result["warnings"];
-    EXPECT_LT(so3::Distance(PoseOf(result["X"]).linear(), data.X.linear()), 2.0 * kDeg);
+    EXPECT_LT(so3::Distance(PoseOf(result["X"]).linear(), data.X.linear()),
+              2.0 * kRadiansPerDegree);
   }
 }
 
@@ -337,7 +337,7 @@ TEST_F(CamodocalConventions, SampleThirtySixIsRejectedAndChangesNothing) {
   for (int k = 0; k < 3; ++k) {
     const double sigma_r = with["covariance"]["sigma"]["X"]["rotation_deg"][k].get<double>();
     const double sigma_t = with["covariance"]["sigma"]["X"]["translation"][k].get<double>();
-    EXPECT_LT(std::abs(rotation(k)) / kDeg, 0.1 * sigma_r);
+    EXPECT_LT(std::abs(rotation(k)) / kRadiansPerDegree, 0.1 * sigma_r);
     EXPECT_LT(std::abs(a.translation()(k) - b.translation()(k)), 0.1 * sigma_t);
   }
   // --keep-outliers keeps it, flagged.
@@ -413,7 +413,8 @@ TEST_F(CalibrateConventions, ControllerMatricesCalibrateAndNonRotationsAreRefuse
       ExpectSolved({"calibrate", "--robot", Path("robot.txt"), "--camera", Path("camera.csv"),
                     "--setup", "eye-in-hand", "--output", Path("result.json")});
   EXPECT_TRUE(AnyWarningContains(controller, "projected onto the nearest rotation"));
-  EXPECT_LT(so3::Distance(PoseOf(controller["X"]).linear(), data.X.linear()), 2.0 * kDeg);
+  EXPECT_LT(so3::Distance(PoseOf(controller["X"]).linear(), data.X.linear()),
+            2.0 * kRadiansPerDegree);
 
   // A reflection, and a matrix 0.1 off: refused with the reason.
   std::istringstream in(lines.str());

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "hecal/geometry/angle_units.h"
 #include "testing/camera_yaml.h"
 #include "testing/detection_errors.h"
 #include "testing/render_once.h"
@@ -32,7 +33,6 @@ namespace {
 
 using cli_test::CliTest;
 using cli_test::Hecal;
-using hecal::testing::kDeg;
 using nlohmann::json;
 
 constexpr int kViews = 6;
@@ -40,12 +40,14 @@ constexpr int kViews = 6;
 // X = T_gripper_camera and Z = T_base_target of the scene (metres).
 Pose TrueX() {
   return MakePose(
-      Eigen::AngleAxisd(75 * kDeg, Eigen::Vector3d(-0.3, 1.0, 0.4).normalized()).toRotationMatrix(),
+      Eigen::AngleAxisd(75 * kRadiansPerDegree, Eigen::Vector3d(-0.3, 1.0, 0.4).normalized())
+          .toRotationMatrix(),
       Eigen::Vector3d(-0.05, 0.02, 0.12));
 }
 Pose TrueZ() {
   return MakePose(
-      Eigen::AngleAxisd(160 * kDeg, Eigen::Vector3d(0.9, 0.2, 0.1).normalized()).toRotationMatrix(),
+      Eigen::AngleAxisd(160 * kRadiansPerDegree, Eigen::Vector3d(0.9, 0.2, 0.1).normalized())
+          .toRotationMatrix(),
       Eigen::Vector3d(0.7, -0.1, 0.1));
 }
 

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "cli_test_util.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/sim/noise.h"
 #include "hecal/uncertainty/consistency.h"
@@ -48,7 +49,6 @@
 namespace hecal::cli {
 namespace {
 
-using hecal::testing::kDeg;
 using nlohmann::json;
 
 constexpr double kImageNoise = 20.0;             // grey levels
@@ -57,13 +57,15 @@ constexpr double kBlack = 80.0, kWhite = 180.0;  // grey levels of the print
 // X (camera 12 cm off the flange, looking sideways) and Z (board 70 cm in front of the base).
 Pose TrueX() {
   return MakePose(
-      Eigen::AngleAxisd(80 * kDeg, Eigen::Vector3d(-0.3, 1.0, 0.2).normalized()).toRotationMatrix(),
+      Eigen::AngleAxisd(80 * kRadiansPerDegree, Eigen::Vector3d(-0.3, 1.0, 0.2).normalized())
+          .toRotationMatrix(),
       Eigen::Vector3d(0.05, 0.02, 0.12));
 }
 Pose TrueZ() {
-  return MakePose(Eigen::AngleAxisd(160 * kDeg, Eigen::Vector3d(1.0, -0.2, 0.1).normalized())
-                      .toRotationMatrix(),
-                  Eigen::Vector3d(0.7, -0.1, 0.1));
+  return MakePose(
+      Eigen::AngleAxisd(160 * kRadiansPerDegree, Eigen::Vector3d(1.0, -0.2, 0.1).normalized())
+          .toRotationMatrix(),
+      Eigen::Vector3d(0.7, -0.1, 0.1));
 }
 
 // A random view of the board (see the header) with every corner 15 px inside the image.
@@ -72,12 +74,12 @@ Pose RandomView(std::mt19937_64& rng) {
   const pose::CameraModel camera = hecal::testing::RenderCamera();
   while (true) {
     const Pose view = hecal::testing::LookAtView(
-        0.36 + 0.08 * unit(rng), (10.0 + 25.0 * unit(rng)) * kDeg, 360.0 * kDeg * unit(rng),
-        0.2 * (unit(rng) - 0.5), 0.2 * (unit(rng) - 0.5));
-    const Pose roll =
-        MakePose(Eigen::AngleAxisd(120.0 * kDeg * (unit(rng) - 0.5), Eigen::Vector3d::UnitZ())
-                     .toRotationMatrix(),
-                 Eigen::Vector3d::Zero());
+        0.36 + 0.08 * unit(rng), (10.0 + 25.0 * unit(rng)) * kRadiansPerDegree,
+        360.0 * kRadiansPerDegree * unit(rng), 0.2 * (unit(rng) - 0.5), 0.2 * (unit(rng) - 0.5));
+    const Pose roll = MakePose(
+        Eigen::AngleAxisd(120.0 * kRadiansPerDegree * (unit(rng) - 0.5), Eigen::Vector3d::UnitZ())
+            .toRotationMatrix(),
+        Eigen::Vector3d::Zero());
     const Pose B = roll * view;
     bool inside = true;
     for (const pose::ObjectPoint& point : pose::ObjectPoints(hecal::testing::Board())) {
@@ -151,7 +153,8 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
     }
     outcome.ok = true;
     outcome.nees = uncertainty::Nees(se3::Log(Pose(M).inverse() * TrueX()), covariance);
-    outcome.robot_rotation = result["noise"]["robot_sigma"]["rotation_deg"].get<double>() * kDeg;
+    outcome.robot_rotation =
+        result["noise"]["robot_sigma"]["rotation_deg"].get<double>() * kRadiansPerDegree;
     outcome.robot_translation = result["noise"]["robot_sigma"]["translation"].get<double>();
     outcome.pixel_sigma = result["images"]["pixel_sigma_px"].get<double>();
     for (const json& warning : result["warnings"]) {
@@ -190,7 +193,7 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
       summary.translation_within += std::abs(rt - 1.0) <= 0.3 ? 1.0 : 0.0;
       summary.both_within += std::abs(rr - 1.0) <= 0.3 && std::abs(rt - 1.0) <= 0.3 ? 1.0 : 0.0;
       std::printf("set %3d: NEES %7.2f  robot %.3f deg (x%.2f) %.3f mm (x%.2f)  px %.3f  %s\n",
-                  static_cast<int>(first) + s, o.nees, o.robot_rotation / kDeg, rr,
+                  static_cast<int>(first) + s, o.nees, o.robot_rotation / kRadiansPerDegree, rr,
                   o.robot_translation * 1e3, rt, o.pixel_sigma, o.warnings.c_str());
     }
     EXPECT_EQ(done, sets);
@@ -209,8 +212,9 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
         "%d stations, robot %.3g deg / %.3g mm, %d sets: mean NEES %.2f, coverage %.1f%% / "
         "%.1f%%, robot sigma within 30%%: rotation %.1f%%, translation %.1f%%, both %.1f%% (median "
         "ratio rotation %.2f, translation %.2f), median pixel sigma %.3f px\n",
-        stations, robot_noise.rotation_sigma / kDeg, robot_noise.translation_sigma * 1e3, done,
-        summary.mean_nees, 100.0 * summary.coverage_1sigma, 100.0 * summary.coverage_2sigma,
+        stations, robot_noise.rotation_sigma / kRadiansPerDegree,
+        robot_noise.translation_sigma * 1e3, done, summary.mean_nees,
+        100.0 * summary.coverage_1sigma, 100.0 * summary.coverage_2sigma,
         100.0 * summary.rotation_within, 100.0 * summary.translation_within,
         100.0 * summary.both_within, median(rotation_ratio), median(translation_ratio),
         median(pixel));
@@ -219,7 +223,7 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
 };
 
 TEST_F(CalibrateImagesNoiseTest, EightStationsRobotNoiseEstimatedAndCovered) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.5 * kDeg, 0.002};
+  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.5 * kRadiansPerDegree, 0.002};
   const Summary summary = RunStudy(8, 100, robot, 1000);
   EXPECT_GE(summary.rotation_within, 0.90);
   EXPECT_GE(summary.translation_within, 0.90);
@@ -227,7 +231,7 @@ TEST_F(CalibrateImagesNoiseTest, EightStationsRobotNoiseEstimatedAndCovered) {
 }
 
 TEST_F(CalibrateImagesNoiseTest, TwentyEightStationsSmallRobotNoiseCovered) {
-  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kDeg, 0.00005};
+  const sim::NoiseModel robot{sim::NoiseModel::Kind::kGaussian, 0.01 * kRadiansPerDegree, 0.00005};
   const Summary summary = RunStudy(28, 30, robot, 5000);
   EXPECT_GE(summary.coverage_2sigma, 0.90);
 }

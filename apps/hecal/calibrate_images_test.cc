@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "hecal/geometry/angle_units.h"
 #include "testing/camera_yaml.h"
 #include "testing/detection_errors.h"
 #include "testing/render_once.h"
@@ -36,7 +37,6 @@ using cli_test::Hecal;
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
-using hecal::testing::kDeg;
 using nlohmann::json;
 
 constexpr int kViews = 8;
@@ -44,13 +44,15 @@ constexpr int kViews = 8;
 // X and Z of the scene (metres): a camera 10 cm off the flange, looking along the flange's x;
 // the board 60 cm in front of the robot base.
 Pose TrueX() {
-  return MakePose(Eigen::AngleAxisd(100 * kDeg, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
-                      .toRotationMatrix(),
-                  Eigen::Vector3d(0.04, -0.03, 0.10));
+  return MakePose(
+      Eigen::AngleAxisd(100 * kRadiansPerDegree, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
+          .toRotationMatrix(),
+      Eigen::Vector3d(0.04, -0.03, 0.10));
 }
 Pose TrueZ() {
   return MakePose(
-      Eigen::AngleAxisd(170 * kDeg, Eigen::Vector3d(1.0, 0.1, 0.0).normalized()).toRotationMatrix(),
+      Eigen::AngleAxisd(170 * kRadiansPerDegree, Eigen::Vector3d(1.0, 0.1, 0.0).normalized())
+          .toRotationMatrix(),
       Eigen::Vector3d(0.6, 0.1, 0.05));
 }
 

@@ -15,6 +15,7 @@
 
 #include "cli_test_util.h"
 #include "hecal/estimation/methods.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/sim/thesis_protocol.h"
 
@@ -24,7 +25,6 @@ namespace {
 using cli_test::Hecal;
 using nlohmann::json;
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
 const std::string kMoveIt = std::string(HECAL_SOURCE_DIR) + "/data/moveit-calibration/";
 
 // One pose per line: id, x, y, z in `scale` units, then the Hamilton quaternion.
@@ -207,7 +207,7 @@ TEST_F(CalibrateCommand, AllMethodsSideBySide) {
 // in mm (translations and the covariance's translation block) and X is within 4σ of the truth.
 TEST_F(CalibrateCommand, SyntheticDataInMillimetresWithGivenNoise) {
   const sim::SimulatedData data =
-      WriteSyntheticMm(handeye::Setup::kEyeInHand, 20, 5, 0.2 * kDegree, 0.5e-3);
+      WriteSyntheticMm(handeye::Setup::kEyeInHand, 20, 5, 0.2 * kRadiansPerDegree, 0.5e-3);
   const cli_test::Outcome run =
       Hecal({"calibrate", "--robot", Path("robot.csv"), "--camera", Path("camera.csv"), "--setup",
              "eye-in-hand", "--robot-sigma", "0.5,0.2", "--camera-sigma", "0.5,0.2", "--output",
@@ -240,7 +240,7 @@ TEST_F(CalibrateCommand, SyntheticDataInMillimetresWithGivenNoise) {
 // (the result file keeps them all), and a covariance propagated through the solver, which needs
 // a dense 12n x 12n input, is refused above 500 stations before anything is written.
 TEST_F(CalibrateCommand, ManyStationsPrintTheLargestResidualsAndBoundTheCovariance) {
-  WriteSyntheticMm(handeye::Setup::kEyeInHand, 501, 9, 0.2 * kDegree, 0.5e-3);
+  WriteSyntheticMm(handeye::Setup::kEyeInHand, 501, 9, 0.2 * kRadiansPerDegree, 0.5e-3);
   const std::vector<std::string> args = {
       "calibrate", "--robot",     Path("robot.csv"), "--camera",  Path("camera.csv"),
       "--setup",   "eye-in-hand", "--method",        "tsai-lenz", "--keep-outliers"};
@@ -268,7 +268,7 @@ TEST_F(CalibrateCommand, ManyStationsPrintTheLargestResidualsAndBoundTheCovarian
 // the UT's σ per axis is within 10% (+ 3 standard errors) of the Monte Carlo's, the file says
 // how it was computed, and the same seed writes the same file.
 TEST_F(CalibrateCommand, CovarianceMethodsAgreeAndMonteCarloIsSeeded) {
-  WriteSyntheticMm(handeye::Setup::kEyeToHand, 12, 6, 0.5 * kDegree, 1e-3);
+  WriteSyntheticMm(handeye::Setup::kEyeToHand, 12, 6, 0.5 * kRadiansPerDegree, 1e-3);
   const std::vector<std::string> base = {"calibrate",
                                          "--robot",
                                          Path("robot.csv"),

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "hecal/geometry/angle_units.h"
 #include "testing/csv_reader.h"
 #include "testing/detection_errors.h"
 #include "testing/render_once.h"
@@ -29,7 +30,6 @@ namespace {
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
 using cli_test::Hecal;
-using hecal::testing::kDeg;
 
 constexpr int kViews = 6;
 
@@ -58,12 +58,14 @@ std::string VispXml(const pose::CameraModel& c) {
 // X and Z of an eye-in-hand scene (metres); the robot pose that shows view B is Z·B⁻¹·X⁻¹.
 Pose TrueX() {
   return MakePose(
-      Eigen::AngleAxisd(80 * kDeg, Eigen::Vector3d(0.3, 1.0, 0.2).normalized()).toRotationMatrix(),
+      Eigen::AngleAxisd(80 * kRadiansPerDegree, Eigen::Vector3d(0.3, 1.0, 0.2).normalized())
+          .toRotationMatrix(),
       Eigen::Vector3d(0.05, 0.02, 0.08));
 }
 Pose TrueZ() {
-  return MakePose(Eigen::AngleAxisd(160 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix(),
-                  Eigen::Vector3d(0.5, -0.1, 0.02));
+  return MakePose(
+      Eigen::AngleAxisd(160 * kRadiansPerDegree, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+      Eigen::Vector3d(0.5, -0.1, 0.02));
 }
 
 class CameraFileImagesTest

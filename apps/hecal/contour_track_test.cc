@@ -6,11 +6,11 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <numbers>
 
 #include "cli_test_util.h"
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/perspective_view.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/csv_reader.h"
 
 namespace hecal::cli {
@@ -19,7 +19,6 @@ namespace {
 using cli_test::CliTest;
 using cli_test::Hecal;
 using cli_test::Outcome;
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
@@ -65,19 +64,20 @@ TEST_F(CliTest, ContourRenderThenTrackRecoversTheMotion) {
           << t << " " << m;
     }
     // The pose against the true motion (the Necker member PoseFromShape returns).
-    const Eigen::Matrix3d R =
-        contour::RotationZyx(truth.Number(t, "Rx_deg") * kDeg, truth.Number(t, "Ry_deg") * kDeg,
-                             truth.Number(t, "Rz_deg") * kDeg);
+    const Eigen::Matrix3d R = contour::RotationZyx(truth.Number(t, "Rx_deg") * kRadiansPerDegree,
+                                                   truth.Number(t, "Ry_deg") * kRadiansPerDegree,
+                                                   truth.Number(t, "Rz_deg") * kRadiansPerDegree);
     const Eigen::Vector3d T(truth.Number(t, "Tx"), truth.Number(t, "Ty"), truth.Number(t, "Tz"));
     const Vector6d expected =
         contour::PoseParameters(contour::CanonicalPose(R, T, contour::RotationForm::kZyx));
     EXPECT_NEAR(track.Number(t, "Tx"), expected(0), 1.5) << t;  // mm
     EXPECT_NEAR(track.Number(t, "Ty"), expected(1), 1.5) << t;
     EXPECT_NEAR(track.Number(t, "Tz"), expected(2), 15.0) << t;  // σ(Tz) ≈ 2 mm + model error
-    EXPECT_NEAR(track.Number(t, "Rz_deg"), expected(5) / kDeg, 0.5) << t;
-    if (std::acos(R(2, 2)) > 10.0 * kDeg) {  // tilt below 10° is not recoverable (docs/contour.md)
-      EXPECT_NEAR(track.Number(t, "Rx_deg"), expected(3) / kDeg, 2.0) << t;
-      EXPECT_NEAR(track.Number(t, "Ry_deg"), expected(4) / kDeg, 2.0) << t;
+    EXPECT_NEAR(track.Number(t, "Rz_deg"), expected(5) / kRadiansPerDegree, 0.5) << t;
+    if (std::acos(R(2, 2)) >
+        10.0 * kRadiansPerDegree) {  // tilt below 10° is not recoverable (docs/contour.md)
+      EXPECT_NEAR(track.Number(t, "Rx_deg"), expected(3) / kRadiansPerDegree, 2.0) << t;
+      EXPECT_NEAR(track.Number(t, "Ry_deg"), expected(4) / kRadiansPerDegree, 2.0) << t;
     }
     // The 1σ columns are there and positive after the first frame.
     if (t > 0) {
@@ -106,15 +106,15 @@ TEST_F(CliTest, ContourTrackWithThePrincipalPointRecoversTheMotionWithinItsSigma
   ASSERT_EQ(track.rows.size(), 10u);
   const std::array<std::string, 6> names = {"Tx", "Ty", "Tz", "Rx_deg", "Ry_deg", "Rz_deg"};
   for (std::size_t t = 1; t < 10; ++t) {
-    const Eigen::Matrix3d R =
-        contour::RotationZyx(truth.Number(t, "Rx_deg") * kDeg, truth.Number(t, "Ry_deg") * kDeg,
-                             truth.Number(t, "Rz_deg") * kDeg);
+    const Eigen::Matrix3d R = contour::RotationZyx(truth.Number(t, "Rx_deg") * kRadiansPerDegree,
+                                                   truth.Number(t, "Ry_deg") * kRadiansPerDegree,
+                                                   truth.Number(t, "Rz_deg") * kRadiansPerDegree);
     const Eigen::Vector3d T(truth.Number(t, "Tx"), truth.Number(t, "Ty"), truth.Number(t, "Tz"));
     const Vector6d expected =
         contour::PoseParameters(contour::CanonicalPose(R, T, contour::RotationForm::kZyx));
     for (std::size_t j = 0; j < 6; ++j) {
-      if (j >= 2 && j <= 4 && std::acos(R(2, 2)) < 10.0 * kDeg) continue;
-      const double value = expected(static_cast<int>(j)) * (j < 3 ? 1.0 : 1.0 / kDeg);
+      if (j >= 2 && j <= 4 && std::acos(R(2, 2)) < 10.0 * kRadiansPerDegree) continue;
+      const double value = expected(static_cast<int>(j)) * (j < 3 ? 1.0 : 1.0 / kRadiansPerDegree);
       EXPECT_NEAR(track.Number(t, names[j]), value, 3.5 * track.Number(t, "sd_" + names[j]))
           << t << " " << names[j];
     }

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cli.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/io/atomic_file.h"
 #include "testing/csv_reader.h"
 #include "testing/elementary_rotations.h"
@@ -23,7 +24,6 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
 
 // Independent definitions (not the library's Euler code): elementary rotations composed by hand.
 using testing::Rx;
@@ -110,8 +110,9 @@ TEST_F(PosesConvertTest, KukaToQuaternionKeepsIdStampAndUnit) {
   EXPECT_EQ(csv.Number(1, "z_mm"), 1000);
   const double abc[2][3] = {{10, 20, 30}, {170, -89.9, -179}};
   for (size_t i = 0; i < 2; ++i) {
-    const Eigen::Quaterniond expected(Rz(abc[i][0] * kDeg) * Ry(abc[i][1] * kDeg) *
-                                      Rx(abc[i][2] * kDeg));
+    const Eigen::Quaterniond expected(Rz(abc[i][0] * kRadiansPerDegree) *
+                                      Ry(abc[i][1] * kRadiansPerDegree) *
+                                      Rx(abc[i][2] * kRadiansPerDegree));
     const double sign = expected.w() < 0 ? -1.0 : 1.0;  // output has qw ≥ 0
     EXPECT_NEAR(csv.Number(i, "qw"), sign * expected.w(), 1e-15);
     EXPECT_NEAR(csv.Number(i, "qx"), sign * expected.x(), 1e-15);
@@ -132,8 +133,9 @@ TEST_F(PosesConvertTest, UnitsAndDegreesApplyToTheOutput) {
             (std::vector<std::string>{"id", "stamp", "x", "y", "z", "rx_deg", "ry_deg", "rz_deg"}));
   EXPECT_NEAR(csv.Number(0, "x"), 0.1, 1e-16);
   EXPECT_NEAR(csv.Number(1, "x"), -0.10025, 1e-16);
-  const Eigen::AngleAxisd expected(Rz(10 * kDeg) * Ry(20 * kDeg) * Rx(30 * kDeg));
-  const Eigen::Vector3d omega = expected.angle() * expected.axis() / kDeg;
+  const Eigen::AngleAxisd expected(Rz(10 * kRadiansPerDegree) * Ry(20 * kRadiansPerDegree) *
+                                   Rx(30 * kRadiansPerDegree));
+  const Eigen::Vector3d omega = expected.angle() * expected.axis() / kRadiansPerDegree;
   EXPECT_NEAR(csv.Number(0, "rx_deg"), omega.x(), 1e-12);
   EXPECT_NEAR(csv.Number(0, "ry_deg"), omega.y(), 1e-12);
   EXPECT_NEAR(csv.Number(0, "rz_deg"), omega.z(), 1e-12);
@@ -143,7 +145,7 @@ TEST_F(PosesConvertTest, UnitsAndDegreesApplyToTheOutput) {
   const Csv ur = ReadCsv(output);
   EXPECT_EQ(ur.header,
             (std::vector<std::string>{"id", "stamp", "x_mm", "y_mm", "z_mm", "rx", "ry", "rz"}));
-  EXPECT_NEAR(ur.Number(0, "rx"), omega.x() * kDeg, 1e-14);
+  EXPECT_NEAR(ur.Number(0, "rx"), omega.x() * kRadiansPerDegree, 1e-14);
 }
 
 TEST_F(PosesConvertTest, EulerOutputDeclaresItsSequence) {

@@ -20,7 +20,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,13 +27,12 @@
 #include "cli_test_util.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/methods.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/io/pose_table.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::cli {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kSeconds = 60.0;
 constexpr double kBytes = 2e9;
 
@@ -115,7 +113,7 @@ TEST_F(Scale, EveryMethodCalibratesTenToTheFiveStations) {
   const std::string hecal = Directory(std::filesystem::read_symlink("/proc/self/exe")) + "/hecal";
   ASSERT_TRUE(std::filesystem::exists(hecal)) << "build the hecal target first";
   ASSERT_TRUE(std::filesystem::exists("/usr/bin/time"));
-  const estimation::PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const estimation::PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   std::printf("%-17s %8s %9s %9s %9s %10s %12s %10s\n", "method", "stations", "wall s", "CPU s",
               "peak MB", "rot err/bd", "trans err/bd", "bound deg");
   for (int n : StationCounts()) {
@@ -142,7 +140,8 @@ TEST_F(Scale, EveryMethodCalibratesTenToTheFiveStations) {
       const double translation = error.translation / bound.translation_rmse_X;
       std::printf("%-17s %8d %9.2f %9.2f %9.0f %10.2f %12.2f %10.2g\n",
                   std::string(info.name).c_str(), n, run.seconds, run.cpu_seconds,
-                  run.peak_bytes / 1e6, rotation, translation, bound.rotation_rmse_X / kDeg);
+                  run.peak_bytes / 1e6, rotation, translation,
+                  bound.rotation_rmse_X / kRadiansPerDegree);
       std::fflush(stdout);
       const double limit = info.method == estimation::Method::kMl ? 10.0 : 100.0;
       EXPECT_LT(rotation, limit) << info.name << " n=" << n;

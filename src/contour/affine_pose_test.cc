@@ -11,13 +11,12 @@
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/euler.h"
 #include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 const ContourCamera kCamera{6024.0, 5000.0};  // the paper's setting in px and mm
 
 Eigen::Matrix3d Zxz(double phi, double theta, double psi) {
@@ -66,11 +65,11 @@ TEST(AffinePose, EveryAxisAloneZyx) {
   }
   // Out-of-plane angles over [0, 90°), including tiny ones (no cancellation near 0).
   for (double a : {1e-8, 1e-4, 0.5, 5.0, 20.0, 45.0, 80.0, 89.0}) {
-    ExpectRecovered(RotationZyx(a * kDeg, 0, 0), Eigen::Vector3d::Zero(), f, true);
-    ExpectRecovered(RotationZyx(0, a * kDeg, 0), Eigen::Vector3d::Zero(), f, true);
+    ExpectRecovered(RotationZyx(a * kRadiansPerDegree, 0, 0), Eigen::Vector3d::Zero(), f, true);
+    ExpectRecovered(RotationZyx(0, a * kRadiansPerDegree, 0), Eigen::Vector3d::Zero(), f, true);
   }
   for (double a : {0.0, 1e-6, 10.0, 90.0, 179.0, 180.0, 270.0, 359.9}) {
-    ExpectRecovered(RotationZyx(0, 0, a * kDeg), Eigen::Vector3d::Zero(), f, true);
+    ExpectRecovered(RotationZyx(0, 0, a * kRadiansPerDegree), Eigen::Vector3d::Zero(), f, true);
   }
 }
 
@@ -79,7 +78,9 @@ TEST(AffinePose, CombinedMotionsInRangeAreExactZyx) {
   std::uniform_real_distribution<double> tilt(0.0, 85.0), spin(0.0, 360.0), lateral(-400, 400),
       depth(-3500, 3000);
   for (int trial = 0; trial < 500; ++trial) {
-    const Eigen::Matrix3d R = RotationZyx(tilt(rng) * kDeg, tilt(rng) * kDeg, spin(rng) * kDeg);
+    const Eigen::Matrix3d R =
+        RotationZyx(tilt(rng) * kRadiansPerDegree, tilt(rng) * kRadiansPerDegree,
+                    spin(rng) * kRadiansPerDegree);
     if (!(R(2, 2) > 0.05)) continue;
     ExpectRecovered(R, Eigen::Vector3d(lateral(rng), lateral(rng), depth(rng)), RotationForm::kZyx,
                     true);
@@ -91,7 +92,8 @@ TEST(AffinePose, CombinedMotionsInRangeAreExactZxz) {
   std::uniform_real_distribution<double> phi(0.0, 179.9), theta(0.0, 87.0), psi(0.0, 359.9),
       lateral(-400, 400), depth(-3500, 3000);
   for (int trial = 0; trial < 500; ++trial) {
-    ExpectRecovered(Zxz(phi(rng) * kDeg, theta(rng) * kDeg, psi(rng) * kDeg),
+    ExpectRecovered(Zxz(phi(rng) * kRadiansPerDegree, theta(rng) * kRadiansPerDegree,
+                        psi(rng) * kRadiansPerDegree),
                     Eigen::Vector3d(lateral(rng), lateral(rng), depth(rng)), RotationForm::kZxz,
                     true);
   }
@@ -103,7 +105,9 @@ TEST(AffinePose, OutOfRangeGivesTheNeckerMirror) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> tilt(-85.0, 85.0), spin(0.0, 360.0);
   for (int trial = 0; trial < 300; ++trial) {
-    const Eigen::Matrix3d R = RotationZyx(tilt(rng) * kDeg, tilt(rng) * kDeg, spin(rng) * kDeg);
+    const Eigen::Matrix3d R =
+        RotationZyx(tilt(rng) * kRadiansPerDegree, tilt(rng) * kRadiansPerDegree,
+                    spin(rng) * kRadiansPerDegree);
     if (!(R(2, 2) > 0.05)) continue;
     const Eigen::Vector3d T(10, -20, 300);
     ExpectRecovered(R, T, RotationForm::kZyx, false);
@@ -113,11 +117,12 @@ TEST(AffinePose, OutOfRangeGivesTheNeckerMirror) {
     EXPECT_TRUE((got - R).norm() < 1e-9 || (got - NeckerMirror(R)).norm() < 1e-9);
   }
   // The rule: Rx = −30°, Ry = 10° comes back as its mirror (30°, −10°).
-  const ContourPose mirrored = PoseFromShape(
-      ShapeFromPose(RotationZyx(-30 * kDeg, 10 * kDeg, 0.5), Eigen::Vector3d::Zero(), kCamera),
-      kCamera, RotationForm::kZyx);
-  EXPECT_NEAR(mirrored.euler(2), 30 * kDeg, 1e-12);
-  EXPECT_NEAR(mirrored.euler(1), -10 * kDeg, 1e-12);
+  const ContourPose mirrored =
+      PoseFromShape(ShapeFromPose(RotationZyx(-30 * kRadiansPerDegree, 10 * kRadiansPerDegree, 0.5),
+                                  Eigen::Vector3d::Zero(), kCamera),
+                    kCamera, RotationForm::kZyx);
+  EXPECT_NEAR(mirrored.euler(2), 30 * kRadiansPerDegree, 1e-12);
+  EXPECT_NEAR(mirrored.euler(1), -10 * kRadiansPerDegree, 1e-12);
   EXPECT_NEAR(mirrored.euler(0), 0.5, 1e-12);
 }
 

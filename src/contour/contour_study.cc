@@ -14,12 +14,11 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/uncertainty/monte_carlo.h"
 
 namespace hecal::contour {
 namespace {
-
-constexpr double kRadians = std::numbers::pi / 180.0;
 
 struct MotionInfo {
   StudyMotion motion;
@@ -161,13 +160,13 @@ void StudyMotionPose(StudyMotion motion, double value, Eigen::Matrix3d* rotation
       translation->z() = value;
       break;
     case StudyMotion::kRx:
-      *rotation = RotationZyx(value * kRadians, 0.0, 0.0);
+      *rotation = RotationZyx(value * kRadiansPerDegree, 0.0, 0.0);
       break;
     case StudyMotion::kRy:
-      *rotation = RotationZyx(0.0, value * kRadians, 0.0);
+      *rotation = RotationZyx(0.0, value * kRadiansPerDegree, 0.0);
       break;
     case StudyMotion::kRz:
-      *rotation = RotationZyx(0.0, 0.0, value * kRadians);
+      *rotation = RotationZyx(0.0, 0.0, value * kRadiansPerDegree);
       break;
   }
 }

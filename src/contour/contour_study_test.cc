@@ -7,15 +7,13 @@
 
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::contour {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 enum { kTx, kTy, kTz, kRx, kRy, kRz };
 
 std::vector<StudyStep> Sweep(StudyMotion motion, double from, double to, int steps) {
@@ -63,13 +61,14 @@ TEST(ContourStudy, OutOfPlaneRotationsArePoorBelowTenDegreesWithTheSignBias) {
     const int j = motion == StudyMotion::kRx ? kRx : kRy;
     const std::vector<StudyStep> steps = Sweep(motion, 0, 40, 9);  // 0, 5, …, 40°
     const StudyStep& zero = steps.front();
-    EXPECT_GT(zero.mc_mean_error(j), 1.0 * kDeg);  // the sign restriction biases upwards
-    EXPECT_GT(zero.mc_sd(j), 1.5 * kDeg);
+    EXPECT_GT(zero.mc_mean_error(j),
+              1.0 * kRadiansPerDegree);  // the sign restriction biases upwards
+    EXPECT_GT(zero.mc_sd(j), 1.5 * kRadiansPerDegree);
     EXPECT_TRUE(zero.bias[static_cast<std::size_t>(j)]);
     for (const StudyStep& step : steps) {
       if (step.value < 10.0) continue;
-      EXPECT_LT(std::abs(step.mc_mean_error(j)), 0.3 * kDeg) << step.value;
-      EXPECT_LT(step.mc_sd(j), 1.0 * kDeg) << step.value;
+      EXPECT_LT(std::abs(step.mc_mean_error(j)), 0.3 * kRadiansPerDegree) << step.value;
+      EXPECT_LT(step.mc_sd(j), 1.0 * kRadiansPerDegree) << step.value;
       EXPECT_FALSE(step.bias[static_cast<std::size_t>(j)]) << step.value;
       // Away from zero tilt the UT matches the Monte Carlo on every component.
       for (int k = 0; k < 6; ++k) {
@@ -82,8 +81,8 @@ TEST(ContourStudy, OutOfPlaneRotationsArePoorBelowTenDegreesWithTheSignBias) {
 
 TEST(ContourStudy, InPlaneRotationIsNegligiblyInError) {
   for (const StudyStep& step : Sweep(StudyMotion::kRz, 0, 180, 5)) {
-    EXPECT_LT(std::abs(step.mc_mean_error(kRz)), 0.02 * kDeg) << step.value;
-    EXPECT_LT(step.mc_sd(kRz), 0.2 * kDeg) << step.value;
+    EXPECT_LT(std::abs(step.mc_mean_error(kRz)), 0.02 * kRadiansPerDegree) << step.value;
+    EXPECT_LT(step.mc_sd(kRz), 0.2 * kRadiansPerDegree) << step.value;
     EXPECT_NEAR(step.ut_sd(kRz) / step.mc_sd(kRz), 1.0, 0.10) << step.value;
   }
 }

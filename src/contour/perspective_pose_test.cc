@@ -10,11 +10,10 @@
 #include "hecal/contour/contour_study.h"
 #include "hecal/contour/perspective_view.h"
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::contour {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 TEST(PerspectivePose, RecoversTheMotionOfAPerspectiveViewExactly) {
   // The paper's camera and target (at 5 m the perspective bias of the weak pose is tens of σ).
@@ -26,7 +25,8 @@ TEST(PerspectivePose, RecoversTheMotionOfAPerspectiveViewExactly) {
       depth(-2500, 1500);
   for (int trial = 0; trial < 40; ++trial) {
     const Eigen::Matrix3d R =
-        RotationZyx((5 + tilt(rng)) * kDeg, tilt(rng) * kDeg, spin(rng) * kDeg);
+        RotationZyx((5 + tilt(rng)) * kRadiansPerDegree, tilt(rng) * kRadiansPerDegree,
+                    spin(rng) * kRadiansPerDegree);
     const Eigen::Vector3d T(lateral(rng), lateral(rng), depth(rng));
     const Vector6d S = model.PerspectiveShape(R, T);
     for (RotationForm form : {RotationForm::kZyx, RotationForm::kZxz}) {

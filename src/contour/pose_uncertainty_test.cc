@@ -11,12 +11,11 @@
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/options_validity.h"
 
 namespace hecal::contour {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 const ContourCamera kCamera{6024.0, 5000.0};
 
 struct Input {
@@ -30,7 +29,7 @@ Input WeakPerspectiveInput(const Eigen::Matrix3d& R, const Eigen::Vector3d& T) {
 }
 
 TEST(PoseUncertainty, ThirteenSigmaPointsAndMonteCarloAgreeAwayFromZeroTilt) {
-  const Eigen::Matrix3d R = RotationZyx(25 * kDeg, 0.0, 40 * kDeg);
+  const Eigen::Matrix3d R = RotationZyx(25 * kRadiansPerDegree, 0.0, 40 * kRadiansPerDegree);
   const Input in = WeakPerspectiveInput(R, Eigen::Vector3d(80, -40, -1000));
   const ContourPoseUncertainty ut =
       UnscentedPose(in.shape, in.covariance, kCamera, RotationForm::kZyx);
@@ -58,14 +57,16 @@ TEST(PoseUncertainty, BiasFlagNearZeroTiltOnly) {
   EXPECT_TRUE(folded.biased[3] || folded.biased[4]);
   EXPECT_GT(folded.mean(3) + folded.mean(4), folded.parameters(3) + folded.parameters(4));
   // 30° about x: far from the fold, no flag.
-  const Input tilted = WeakPerspectiveInput(RotationZyx(30 * kDeg, 0, 0), Eigen::Vector3d::Zero());
+  const Input tilted =
+      WeakPerspectiveInput(RotationZyx(30 * kRadiansPerDegree, 0, 0), Eigen::Vector3d::Zero());
   EXPECT_FALSE(
       UnscentedPose(tilted.shape, tilted.covariance, kCamera, RotationForm::kZyx).any_biased);
 }
 
 TEST(PoseUncertainty, InPlaneAngleIsUnwrappedAcrossZero) {
   // Rz = 0 with noise: samples on both sides of 0 / 2π must average near 0, not π.
-  const Input in = WeakPerspectiveInput(RotationZyx(20 * kDeg, 0, 0), Eigen::Vector3d::Zero());
+  const Input in =
+      WeakPerspectiveInput(RotationZyx(20 * kRadiansPerDegree, 0, 0), Eigen::Vector3d::Zero());
   const ContourPoseUncertainty ut =
       UnscentedPose(in.shape, in.covariance, kCamera, RotationForm::kZyx);
   EXPECT_LT(std::abs(PoseDifference(ut.mean, ut.parameters, RotationForm::kZyx)(5)), 1e-3);

@@ -1,7 +1,6 @@
 // Tracking and rendering contour sequences: see sequence.h.
 #include "hecal/contour/sequence.h"
 
-#include <numbers>
 #include <sstream>
 
 #include "hecal/contour/bspline.h"
@@ -10,6 +9,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::contour {
 
@@ -128,7 +128,6 @@ SequenceFrame SequenceTracker::Track(const GrayImage& image) {
 RenderedSequence RenderSequence(
     const SequenceRenderOptions& options,
     const std::function<void(const RenderedFrame&, const GrayImage&)>& on_frame) {
-  constexpr double kDegrees = 180.0 / std::numbers::pi;  // as the motion is given
   RequireValid(options);
   const ClosedBSpline target(options.target);
   const ShapeSpace check(options.target);  // a collinear target has no affine deformation
@@ -143,8 +142,9 @@ RenderedSequence RenderSequence(
     const double u = frames > 1 ? static_cast<double>(t) / (frames - 1) : 0.0;
     frame.motion = options.from + u * (options.to - options.from);
     const Eigen::Vector3d translation = frame.motion.head<3>();
-    const Eigen::Matrix3d rotation = RotationZyx(
-        frame.motion(3) / kDegrees, frame.motion(4) / kDegrees, frame.motion(5) / kDegrees);
+    const Eigen::Matrix3d rotation =
+        RotationZyx(frame.motion(3) / kDegreesPerRadian, frame.motion(4) / kDegreesPerRadian,
+                    frame.motion(5) / kDegreesPerRadian);
     const Eigen::Matrix2Xd outline =
         PerspectiveOutline(target, rotation, translation, options.camera, sequence.principal);
     frame.outside = outline.row(0).minCoeff() < 0.0 || outline.row(1).minCoeff() < 0.0 ||

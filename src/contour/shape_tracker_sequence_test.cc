@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -21,17 +20,17 @@
 #include "hecal/contour/render.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/contour/shape_tracker.h"
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::contour {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Six numbers; with `pose`, the last three (radians) in degrees.
 std::string Format(const Vector6d& v, bool pose) {
   char text[160];
   std::snprintf(text, sizeof text, "%.4g %.4g %.4g %.4g %.4g %.4g", v(0), v(1), v(2),
-                pose ? v(3) / kDeg : v(3), pose ? v(4) / kDeg : v(4), pose ? v(5) / kDeg : v(5));
+                pose ? v(3) / kRadiansPerDegree : v(3), pose ? v(4) / kRadiansPerDegree : v(4),
+                pose ? v(5) / kRadiansPerDegree : v(5));
   return text;
 }
 
@@ -104,7 +103,8 @@ Sequence RunSequence(const ShapeTrackerOptions& options, bool perspective, int f
     const double u = frames > 1 ? static_cast<double>(t) / (frames - 1) : 0.0;
     SequenceFrame frame;
     frame.translation = u * Eigen::Vector3d(60.0, -40.0, -900.0);
-    frame.rotation = RotationZyx(u * 20.0 * kDeg, u * 12.0 * kDeg, u * 25.0 * kDeg);
+    frame.rotation = RotationZyx(u * 20.0 * kRadiansPerDegree, u * 12.0 * kRadiansPerDegree,
+                                 u * 25.0 * kRadiansPerDegree);
     frame.tilt = std::acos(std::clamp(frame.rotation(2, 2), -1.0, 1.0));
     render.seed = seed * 1000 + static_cast<std::uint64_t>(t);
     frame.truth_shape = ShapeFromPose(frame.rotation, frame.translation, sequence.camera);
@@ -180,7 +180,7 @@ SequenceCheck Check(const Sequence& sequence) {
       check.shape_vs_truth.Add(z_truth(i));
       check.shape_vs_reference.Add(z_reference(i));
       const bool tilt_component = i == 3 || i == 4;
-      if (tilt_component && f.tilt < 10.0 * kDeg) continue;
+      if (tilt_component && f.tilt < 10.0 * kRadiansPerDegree) continue;
       check.pose_vs_truth.Add(z_pose(i));
       check.pose_component[static_cast<std::size_t>(i)].Add(z_pose(i));
     }
@@ -257,7 +257,7 @@ TEST(ShapeTrackerSequence, PerspectivePoseRecoversTheMotionWithinItsCovariance) 
     const Vector6d z =
         Normalised(PoseDifference(pose.parameters, truth, RotationForm::kZyx), pose.covariance);
     for (int i = 0; i < 6; ++i) {
-      if ((i == 3 || i == 4) && f.tilt < 10.0 * kDeg) continue;
+      if ((i == 3 || i == 4) && f.tilt < 10.0 * kRadiansPerDegree) continue;
       all.Add(z(i));
       component[static_cast<std::size_t>(i)].Add(z(i));
     }
@@ -293,7 +293,7 @@ TEST(ShapeTrackerSequence, ManySeedsStudy) {
           Normalised(PoseDifference(u.parameters, truth, RotationForm::kZyx), u.covariance);
       for (std::size_t i = 0; i < 6; ++i) {
         shape[i].Add(z(static_cast<int>(i)));
-        if ((i == 3 || i == 4) && f.tilt < 10.0 * kDeg) continue;
+        if ((i == 3 || i == 4) && f.tilt < 10.0 * kRadiansPerDegree) continue;
         pose[i].Add(zp(static_cast<int>(i)));
       }
     }

@@ -3,18 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <numbers>
 #include <stdexcept>
 #include <vector>
 
 #include "hecal/estimation/station_covariance.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Independent check: the Cramér–Rao bound of the FULL measurement model, with the true camera
 // poses T_i = T_camera_target_i as nuisance parameters, built by numeric differentiation and
@@ -68,14 +66,15 @@ class BoundTest : public ::testing::TestWithParam<handeye::Setup> {};
 
 TEST_P(BoundTest, EqualsTheFullModelBoundWithNuisanceStationPoses) {
   const testing::Scene data = testing::ThesisCase(GetParam(), 5, 31);
-  const PoseSigma robot{1.0 * kDeg, 1e-3};
-  const PoseSigma camera{0.5 * kDeg, 2e-3};
+  const PoseSigma robot{1.0 * kRadiansPerDegree, 1e-3};
+  const PoseSigma camera{0.5 * kRadiansPerDegree, 2e-3};
   const AccuracyBound bound =
       FirstOrderBound(data.MeasuredProblem(), data.X, data.Z, robot, camera);
   const Eigen::MatrixXd full = FullModelBound(data, robot, camera);
   EXPECT_LT((bound.covariance - full).norm(), 1e-5 * full.norm()) << bound.covariance << "\n\n"
                                                                   << full;
-  EXPECT_NEAR(bound.rotation_rmse_X, std::sqrt(full.block(0, 0, 3, 3).trace()), 1e-6 * kDeg);
+  EXPECT_NEAR(bound.rotation_rmse_X, std::sqrt(full.block(0, 0, 3, 3).trace()),
+              1e-6 * kRadiansPerDegree);
   EXPECT_NEAR(bound.translation_rmse_X, std::sqrt(full.block(3, 3, 3, 3).trace()), 1e-9);
 }
 
@@ -84,8 +83,8 @@ INSTANTIATE_TEST_SUITE_P(BothSetups, BoundTest,
 
 TEST(FirstOrderBound, ScalesWithTheNoiseAndShrinksWithMoreStations) {
   const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 20, 32);
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
-  const PoseSigma twice{2.0 * kDeg, 2e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
+  const PoseSigma twice{2.0 * kRadiansPerDegree, 2e-3};
   const handeye::Problem problem = data.MeasuredProblem();
   const AccuracyBound one = FirstOrderBound(problem, data.X, data.Z, sigma, sigma);
   const AccuracyBound two = FirstOrderBound(problem, data.X, data.Z, twice, twice);
@@ -106,8 +105,8 @@ TEST(FirstOrderBound, ScalesWithTheNoiseAndShrinksWithMoreStations) {
 TEST(FirstOrderBound, PerStationCovariancesWeightTheirStations) {
   const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 34);
   const handeye::Problem problem = data.MeasuredProblem();
-  const PoseSigma robot{1.0 * kDeg, 1e-3};
-  const PoseSigma camera{0.5 * kDeg, 2e-3};
+  const PoseSigma robot{1.0 * kRadiansPerDegree, 1e-3};
+  const PoseSigma camera{0.5 * kRadiansPerDegree, 2e-3};
   std::vector<Matrix6d> robot_covariance(10, PoseCovariance(robot));
   std::vector<Matrix6d> camera_covariance(10, PoseCovariance(camera));
   handeye::Problem repeated = problem;

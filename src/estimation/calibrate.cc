@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 
 #include "hecal/core/error.h"
@@ -14,14 +13,13 @@
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/strobl.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/handeye/observability.h"
 #include "hecal/handeye/station_consensus.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 bool SameSigma(const std::optional<PoseSigma>& a, const std::optional<PoseSigma>& b) {
   if (!a || !b) return !a && !b;
@@ -35,7 +33,7 @@ std::string Format(const char* format, double a, double b) {
 }
 
 std::string SigmaText(const PoseSigma& sigma) {
-  return Format("%.3g deg, %.3g mm", sigma.rotation * kRadToDeg, sigma.translation * 1e3);
+  return Format("%.3g deg, %.3g mm", sigma.rotation * kDegreesPerRadian, sigma.translation * 1e3);
 }
 
 // The richer and the heavy-tailed noise model of the result (noise_estimation.h, student_t.h),
@@ -335,7 +333,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     for (size_t k = 0; k < result.rejected_residuals.size(); ++k) {
       const StationResidual& r = result.rejected_residuals[k];
       if (k > 0) text += "; ";
-      text += Format("%.3g deg / %.3g mm", r.rotation * kRadToDeg, r.translation * 1e3);
+      text += Format("%.3g deg / %.3g mm", r.rotation * kDegreesPerRadian, r.translation * 1e3);
     }
     result.warnings.push_back(text + ", beyond 3 sigma of the noise of the other stations): " +
                               "check their robot pose, detection and pairing");

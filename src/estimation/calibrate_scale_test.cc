@@ -10,21 +10,19 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <numbers>
 #include <string>
 
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/calibration_covariance.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::estimation {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 TEST(CalibrateAtScale, TwentyThousandStationsAtTheAccuracyTheDataAllow) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   const int n = 20000;
   const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, n, 2026, sigma.rotation, sigma.translation);

@@ -9,14 +9,13 @@
 
 #include "hecal/core/error.h"
 #include "hecal/estimation/methods.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
 #include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 bool AnyWarningContains(const CalibrationResult& result, const std::string& text) {
   for (const std::string& warning : result.warnings)
@@ -50,7 +49,7 @@ TEST(Calibrate, EveryMethodDispatches) {
 }
 
 TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
-  const PoseSigma sigma{0.5 * kDeg, 1e-3};
+  const PoseSigma sigma{0.5 * kRadiansPerDegree, 1e-3};
   const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeToHand, 15, 82, sigma.rotation, sigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
@@ -80,17 +79,17 @@ TEST(Calibrate, MlReportsResidualsSigmasAndCovariance) {
   EXPECT_FALSE(known.sigmas_estimated);
   EXPECT_FALSE(AnyWarningContains(known, "estimated"));
   EXPECT_DOUBLE_EQ(known.robot_sigma.rotation, sigma.rotation);
-  EXPECT_LT(testing::Error(known.X, estimated.X).rotation, 0.1 * kDeg);
+  EXPECT_LT(testing::Error(known.X, estimated.X).rotation, 0.1 * kRadiansPerDegree);
 }
 
 // A station 5° / 20 mm off (10σ): rejected by default, listed with its residual, and the
 // estimate equals the one without it; with reject_outliers = false it is flagged and kept.
 TEST(Calibrate, RejectsACorruptedStationOrFlagsItWhenKept) {
-  const PoseSigma sigma{0.5 * kDeg, 1e-3};
+  const PoseSigma sigma{0.5 * kRadiansPerDegree, 1e-3};
   testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 83, sigma.rotation, sigma.translation);
   Vector6d gross;
-  gross << 5.0 * kDeg, 0.0, 0.0, 0.0, 0.02, 0.0;
+  gross << 5.0 * kRadiansPerDegree, 0.0, 0.0, 0.0, 0.02, 0.0;
   data.T_base_gripper[9] = data.T_base_gripper[9] * se3::Exp(gross);
   handeye::Problem without = data.MeasuredProblem();
   without.A.erase(without.A.begin() + 9);
@@ -102,7 +101,8 @@ TEST(Calibrate, RejectsACorruptedStationOrFlagsItWhenKept) {
     ASSERT_EQ(result.rejected, std::vector<int>{9});
     ASSERT_EQ(result.rejected_residuals.size(), 1u);
     EXPECT_GT(result.rejected_residuals[0].whitened, 3.0);
-    EXPECT_NEAR(result.rejected_residuals[0].rotation, 5.0 * kDeg, 2.0 * kDeg);
+    EXPECT_NEAR(result.rejected_residuals[0].rotation, 5.0 * kRadiansPerDegree,
+                2.0 * kRadiansPerDegree);
     EXPECT_EQ(result.residuals.size(), 14u);
     for (const StationResidual& r : result.residuals) EXPECT_FALSE(r.outlier);
     EXPECT_TRUE(AnyWarningContains(result, "station 10 rejected"));

@@ -7,20 +7,18 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <numbers>
 
 #include "hecal/estimation/calibration_covariance.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/uncertainty/consistency.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr const char* kAxes[] = {"rx", "ry", "rz", "tx", "ty", "tz"};
 
 TEST(UnscentedVsMonteCarlo, WithinTenPercentFromTenStations) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   std::printf("setup         method        n  seed  max|UT/MC-1|  (axis)\n");
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     for (Method method : {Method::kMl, Method::kParkMartin}) {

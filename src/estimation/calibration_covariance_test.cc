@@ -5,21 +5,19 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <random>
 
 #include "hecal/core/error.h"
 #include "hecal/core/limits.h"
 #include "hecal/estimation/bound.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "testing/handeye_cases.h"
 #include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
-const PoseSigma kSigma{1.0 * kDeg, 1e-3};  // the thesis' 1 mm / 1° per component
+const PoseSigma kSigma{1.0 * kRadiansPerDegree, 1e-3};  // the thesis' 1 mm / 1° per component
 
 struct Case {
   handeye::Problem problem;
@@ -175,7 +173,7 @@ TEST(Calibrate, EveryCovariancePathUsesTheStudentTStationCovariances) {
 // 1% of ml's linear per axis of X (measured: equal to 6 digits); from the isotropic sigmas alone
 // it is 2–74% below linear per axis.
 TEST(Calibrate, InformationCovarianceUsesTheCameraExcess) {
-  const PoseSigma robot{0.05 * kDeg, 0.05e-3};
+  const PoseSigma robot{0.05 * kRadiansPerDegree, 0.05e-3};
   std::mt19937_64 rng(25);
   sim::ProtocolOptions protocol;
   protocol.setup = handeye::Setup::kEyeInHand;
@@ -183,7 +181,7 @@ TEST(Calibrate, InformationCovarianceUsesTheCameraExcess) {
   const handeye::Problem problem =
       sim::SimulateThesisProtocol(
           protocol, {sim::NoiseModel::Kind::kGaussian, robot.rotation, robot.translation},
-          {sim::NoiseModel::Kind::kPnp, 1.0 * kDeg, 1e-3}, rng)
+          {sim::NoiseModel::Kind::kPnp, 1.0 * kRadiansPerDegree, 1e-3}, rng)
           .MeasuredProblem();
   CalibrateOptions options;
   options.robot_sigma = robot;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/epipolar_scenes.h"
 #include "testing/kuka2_scene.h"
@@ -19,18 +20,16 @@
 namespace hecal::estimation {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
-
 // Motions like a hand–eye data set: 10° rotations, 3 cm steps, points 0.6 m away, 0.1 px rays.
 testing::EpipolarSceneSpec ArmLikeSpec() {
   testing::EpipolarSceneSpec spec;
   spec.motions = 10;
   spec.pairs = 40;
-  spec.rotation = 10.0 * kDegree;
+  spec.rotation = 10.0 * kRadiansPerDegree;
   spec.step = 0.03;
   spec.depth = 0.6;
   spec.pixel_sigma = 0.1;
-  spec.robot_rotation_sigma = 0.03 * kDegree;
+  spec.robot_rotation_sigma = 0.03 * kRadiansPerDegree;
   spec.robot_translation_sigma = 0.25e-3;
   return spec;
 }
@@ -79,7 +78,7 @@ NeesStudy RunNeesStudy(const testing::EpipolarSceneSpec& spec, int trials) {
       "%s, %d scenes: mean NEES %.2f (independent pairs: %.2f); mean estimated robot noise %.4f "
       "deg, %.3f mm, ray %.3f px\n",
       spec.setup == handeye::Setup::kEyeInHand ? "eye-in-hand" : "eye-to-hand", trials,
-      study.mean_nees, study.plain_mean_nees, study.rotation_sigma / kDegree,
+      study.mean_nees, study.plain_mean_nees, study.rotation_sigma / kRadiansPerDegree,
       1e3 * study.translation_sigma, study.ray_sigma * spec.focal);
   return study;
 }

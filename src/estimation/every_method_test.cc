@@ -15,12 +15,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/calibrate_methods.h"
 #include "testing/handeye_solver_suite.h"
 
@@ -57,13 +57,12 @@ bool MovesWithTheBaseFrame(const std::string& method, handeye::Setup setup) {
 }
 
 TEST_P(EveryMethod, SolutionFollowsAChangeOfTheRobotBaseFrame) {
-  constexpr double kDeg = std::numbers::pi / 180.0;
   // Exact up to the iterative solvers' stopping tolerance (ml reaches ~1e-8).
   constexpr double kInvariant = 1e-6;
   std::mt19937_64 rng(31);
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     SCOPED_TRACE(std::string(handeye::SetupName(setup)));
-    const testing::Scene data = testing::ThesisCase(setup, 10, 32, 0.3 * kDeg, 0.3e-3);
+    const testing::Scene data = testing::ThesisCase(setup, 10, 32, 0.3 * kRadiansPerDegree, 0.3e-3);
     const Pose W = testing::RandomPose(rng, 1.0);
     std::vector<Pose> moved;
     for (const Pose& T_base_gripper : data.T_base_gripper) moved.push_back(W * T_base_gripper);

@@ -6,11 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/pose/pose_refinement.h"
 #include "testing/image_scene.h"
@@ -18,8 +18,6 @@
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::vector<ImageStation> Stations(const testing::ImageScene& s) {
   std::vector<ImageStation> stations;
@@ -60,7 +58,7 @@ TEST(CalibrateFromImages, NoiseFreeImagesGiveTheTruth) {
 // The camera noise of the pose level comes from the PnP covariances (not estimated), so only the
 // robot noise is estimated and the warning says so; with the robot noise known, nothing is.
 TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
-  const testing::PoseNoise robot{0.02 * kDeg, 0.1e-3};
+  const testing::PoseNoise robot{0.02 * kRadiansPerDegree, 0.1e-3};
   const testing::ImageScene s = testing::MakeImageScene(
       testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 12, 9, robot, 0.3));
   const std::vector<ImageStation> stations = Stations(s);
@@ -83,7 +81,8 @@ TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
   const auto at_target = [](const PoseSigma& sigma) {
     return std::hypot(sigma.translation, sigma.rotation * 1.0);
   };
-  EXPECT_NEAR(at_target(result.result.robot_sigma) / at_target({0.02 * kDeg, 0.1e-3}), 1.0, 0.3);
+  EXPECT_NEAR(at_target(result.result.robot_sigma) / at_target({0.02 * kRadiansPerDegree, 0.1e-3}),
+              1.0, 0.3);
 }
 
 // The reprojection refinement is at least as accurate as the pose-level ml it starts
@@ -95,7 +94,7 @@ TEST(CalibrateFromImages, CameraSigmaComesFromThePnpCovariances) {
 // conservative here, where the robot noise is small beside the pixel noise and its split between
 // rotation and translation is weakly identifiable (see above); asserted below 10.
 TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
-  const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
+  const testing::PoseNoise robot{0.01 * kRadiansPerDegree, 0.05e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     double pose_rotation = 0.0, pose_translation = 0.0;
     double image_rotation = 0.0, image_translation = 0.0, mahalanobis = 0.0;
@@ -119,8 +118,9 @@ TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
     std::printf(
         "%s: RMS X error pose-level ml %.4f deg / %.4f mm, reprojection %.4f deg / %.4f mm, "
         "mean Mahalanobis %.2f\n",
-        name.c_str(), std::sqrt(pose_rotation / kTrials) / kDeg,
-        1e3 * std::sqrt(pose_translation / kTrials), std::sqrt(image_rotation / kTrials) / kDeg,
+        name.c_str(), std::sqrt(pose_rotation / kTrials) / kRadiansPerDegree,
+        1e3 * std::sqrt(pose_translation / kTrials),
+        std::sqrt(image_rotation / kTrials) / kRadiansPerDegree,
         1e3 * std::sqrt(image_translation / kTrials), mahalanobis / kTrials);
   }
 }
@@ -129,13 +129,13 @@ TEST(CalibrateFromImages, ReprojectionIsAtLeastAsAccurateAsPoseLevelMl) {
 // agrees with the linear covariance of the reprojection problem (300 samples: the standard error
 // of each σ is ~4%; 15% + 3 standard errors per axis), and the samples' count is reported.
 TEST(CalibrateFromImages, MonteCarloCovarianceMatchesTheLinearOne) {
-  const testing::PoseNoise robot{0.02 * kDeg, 0.1e-3};
+  const testing::PoseNoise robot{0.02 * kRadiansPerDegree, 0.1e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::ImageScene s =
         testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 10, 31, robot, 0.5));
     ImageCalibrationOptions options = Options(setup);
     options.pixel_sigma = 0.5;
-    options.calibrate.robot_sigma = PoseSigma{0.02 * kDeg, 0.1e-3};
+    options.calibrate.robot_sigma = PoseSigma{0.02 * kRadiansPerDegree, 0.1e-3};
     const ImageCalibrationResult linear = CalibrateFromImages(Stations(s), options);
     options.calibrate.covariance.method = CovarianceMethod::kMonteCarlo;
     options.calibrate.covariance.samples = 300;
@@ -164,7 +164,7 @@ namespace {
 // a station whose robot pose is wrong by 5° (a pairing slip) at the pose level; both are listed
 // with the stations' ids, and X is as good as without them.
 TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
-  const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
+  const testing::PoseNoise robot{0.01 * kRadiansPerDegree, 0.05e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     testing::ImageScene s =
         testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 12, 31, robot, 0.2));
@@ -174,7 +174,7 @@ TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
       pixel += 2.0 * Eigen::Vector2d(gaussian(rng), gaussian(rng));  // 2 px on top of 0.2 px
     std::vector<ImageStation> stations = Stations(s);
     Vector6d slip;
-    slip << 0.0, 0.0, 5.0 * kDeg, 0.0, 0.0, 0.0;
+    slip << 0.0, 0.0, 5.0 * kRadiansPerDegree, 0.0, 0.0, 0.0;
     stations[8].T_base_gripper = stations[8].T_base_gripper * se3::Exp(slip);
     ImageCalibrationOptions options = Options(setup);
     for (int i = 0; i < 12; ++i) options.calibrate.station_ids.push_back("im" + std::to_string(i));
@@ -184,7 +184,7 @@ TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
     EXPECT_EQ(result.result.rejected, (std::vector<int>{3, 8}));
     EXPECT_EQ(result.result.rejected_ids, (std::vector<std::string>{"im3", "im8"}));
     ASSERT_EQ(result.result.rejected_residuals.size(), 2u);
-    EXPECT_GT(result.result.rejected_residuals[1].rotation, 3.0 * kDeg);
+    EXPECT_GT(result.result.rejected_residuals[1].rotation, 3.0 * kRadiansPerDegree);
     EXPECT_EQ(result.reprojection.image_rms_px.size(), 10u);
     EXPECT_EQ(result.result.residuals.size(), 10u);
     bool named = false;
@@ -192,7 +192,8 @@ TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
       named = named || (warning.rfind("image im3 (", 0) == 0 &&
                         warning.find(": rejected") != std::string::npos);
     EXPECT_TRUE(named);
-    EXPECT_LT(se3::Log(s.poses.X.inverse() * result.result.X).head<3>().norm(), 0.05 * kDeg);
+    EXPECT_LT(se3::Log(s.poses.X.inverse() * result.result.X).head<3>().norm(),
+              0.05 * kRadiansPerDegree);
   }
 }
 
@@ -200,22 +201,26 @@ TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
 // tolerance is a factor e^(2/√18) = 1.60 on the effect at the scene; the real set that motivated
 // it (0.026° from the images against 0.7° at the pose level) is far outside, 1.5× is inside.
 TEST(RobotNoiseAgreement, ToleranceFollowsTheSamplingErrorOfEightStations) {
-  const PoseSigma pose_level{0.7 * kDeg, 2e-3};
+  const PoseSigma pose_level{0.7 * kRadiansPerDegree, 2e-3};
   const std::string collapsed =
-      RobotNoiseAgreementWarning({0.026 * kDeg, 0.1e-3}, pose_level, 8, 0.5, "7", 1.9);
+      RobotNoiseAgreementWarning({0.026 * kRadiansPerDegree, 0.1e-3}, pose_level, 8, 0.5, "7", 1.9);
   EXPECT_NE(collapsed.find("factor"), std::string::npos);
   EXPECT_NE(collapsed.find("(1.60 with 8 stations)"), std::string::npos) << collapsed;
   EXPECT_NE(collapsed.find("station 7 (1.9 deg)"), std::string::npos) << collapsed;
   EXPECT_NE(collapsed.find("collapses toward zero"), std::string::npos);
   // Within the tolerance, on either side, and a different split with the same effect.
-  EXPECT_EQ(RobotNoiseAgreementWarning({1.05 * kDeg, 3e-3}, pose_level, 8, 0.5, "7", 1.9), "");
-  EXPECT_EQ(RobotNoiseAgreementWarning({0.47 * kDeg, 1.3e-3}, pose_level, 8, 0.5, "7", 1.9), "");
-  const double effect = std::hypot(2e-3, 0.7 * kDeg * 0.5);
+  EXPECT_EQ(
+      RobotNoiseAgreementWarning({1.05 * kRadiansPerDegree, 3e-3}, pose_level, 8, 0.5, "7", 1.9),
+      "");
+  EXPECT_EQ(
+      RobotNoiseAgreementWarning({0.47 * kRadiansPerDegree, 1.3e-3}, pose_level, 8, 0.5, "7", 1.9),
+      "");
+  const double effect = std::hypot(2e-3, 0.7 * kRadiansPerDegree * 0.5);
   EXPECT_EQ(RobotNoiseAgreementWarning({0.0, effect}, pose_level, 8, 0.5, "7", 1.9), "");
   // 1.5× is outside at 28 stations (e^(2/√78) = 1.25), and a larger joint estimate names the
   // other cause.
   const std::string larger =
-      RobotNoiseAgreementWarning({1.05 * kDeg, 3e-3}, pose_level, 28, 0.5, "3", 1.0);
+      RobotNoiseAgreementWarning({1.05 * kRadiansPerDegree, 3e-3}, pose_level, 28, 0.5, "3", 1.0);
   EXPECT_NE(larger.find("isotropic summary of the PnP covariances"), std::string::npos);
 }
 
@@ -224,14 +229,14 @@ TEST(RobotNoiseAgreement, ToleranceFollowsTheSamplingErrorOfEightStations) {
 // with the pose level within the rule's tolerance or the result carries the warning, and X's
 // error is inside its reported 3σ ellipsoid (χ²₆ 99.7% = 20.1) in at least 4 of 5 sets.
 TEST(CalibrateFromImages, RobotNoiseAgreesWithThePoseLevelOrSaysWhyNot) {
-  const testing::PoseNoise robot{0.5 * kDeg, 2e-3};
+  const testing::PoseNoise robot{0.5 * kRadiansPerDegree, 2e-3};
   int covered = 0;
   for (int set = 0; set < 5; ++set) {
     const testing::ImageScene s = testing::MakeImageScene(
         testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 8, 40 + set, robot, 0.2));
     std::vector<ImageStation> stations = Stations(s);
     Vector6d slip;
-    slip << 2.0 * kDeg, 0.0, 0.0, 0.0, 0.0, 0.0;
+    slip << 2.0 * kRadiansPerDegree, 0.0, 0.0, 0.0, 0.0, 0.0;
     stations[5].T_base_gripper = stations[5].T_base_gripper * se3::Exp(slip);
     const ImageCalibrationResult result =
         CalibrateFromImages(stations, Options(handeye::Setup::kEyeInHand));

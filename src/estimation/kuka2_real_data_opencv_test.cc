@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <numbers>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
@@ -17,13 +16,12 @@
 
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/methods.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 Pose PoseFromOpenCv(const cv::Mat& rvec, const cv::Mat& tvec) {
   const Eigen::Vector3d w(rvec.at<double>(0), rvec.at<double>(1), rvec.at<double>(2));
@@ -96,12 +94,12 @@ TEST(Kuka2RealData, EveryMethodMatchesTheReferenceX) {
     // reference (ml 0.014° / 0.41 mm).
     const bool algebraic_joint =
         info.method == Method::kDaniilidis || info.method == Method::kAndreff;
-    EXPECT_LT(rotation, (algebraic_joint ? 0.25 : 0.1) * kDeg) << info.name;
+    EXPECT_LT(rotation, (algebraic_joint ? 0.25 : 0.1) * kRadiansPerDegree) << info.name;
     EXPECT_LT(translation, 0.002) << info.name;
     if (info.method == Method::kMl) {
       // The target stays put in the base frame to sub-millimetre (SOURCE.md: < 0.5 mm std).
       EXPECT_LT(result.translation_rms, 1.5e-3);
-      EXPECT_LT(result.rotation_rms, 0.2 * kDeg);
+      EXPECT_LT(result.rotation_rms, 0.2 * kRadiansPerDegree);
       ASSERT_TRUE(result.covariance.has_value());
     }
   }

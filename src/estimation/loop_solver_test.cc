@@ -12,6 +12,7 @@
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/se3_manifold.h"
 #include "hecal/estimation/station_covariance.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "small_problem.h"
@@ -19,8 +20,6 @@
 
 namespace hecal::estimation::internal {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Case {
   std::string name;
@@ -34,7 +33,7 @@ struct Case {
 Case MakeCase(const std::string& name, const testing::Scene& data, uint64_t seed, bool outlier) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
-  const PoseSigma sigma{0.2 * kDeg, 0.5e-3};
+  const PoseSigma sigma{0.2 * kRadiansPerDegree, 0.5e-3};
   Case c{name, data.MeasuredProblem(), {data.X, data.Z}, {}};
   for (Pose& B : c.problem.B) {
     Vector6d e;
@@ -43,7 +42,7 @@ Case MakeCase(const std::string& name, const testing::Scene& data, uint64_t seed
   }
   if (outlier) {
     Vector6d gross;
-    gross << 0.0, 10.0 * kDeg, 0.0, 0.05, 0.0, 0.0;
+    gross << 0.0, 10.0 * kRadiansPerDegree, 0.0, 0.05, 0.0, 0.0;
     c.problem.B[3] = c.problem.B[3] * se3::Exp(gross);
   }
   for (size_t i = 0; i < c.problem.A.size(); ++i) {
@@ -102,7 +101,8 @@ void ExpectSamePose(const Pose& a, const Pose& b, const std::string& what) {
 // normal equations there (ml's covariance) to 1e-9 relative.
 TEST(MinimizeLoopCost, ReachesTheOptimumCeresReaches) {
   Vector6d offset;
-  offset << 3.0 * kDeg, -2.0 * kDeg, 1.0 * kDeg, 0.03, -0.02, 0.01;
+  offset << 3.0 * kRadiansPerDegree, -2.0 * kRadiansPerDegree, 1.0 * kRadiansPerDegree, 0.03, -0.02,
+      0.01;
   for (RobustLoss kind : {RobustLoss::kNone, RobustLoss::kHuber, RobustLoss::kCauchy}) {
     const std::unique_ptr<ceres::LossFunction> loss = MakeLoss(kind, kOutlierLevelScale);
     for (const Case& c : Cases(kind != RobustLoss::kNone)) {

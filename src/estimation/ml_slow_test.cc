@@ -11,17 +11,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/estimation/ml.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kTrials = 200;
 
 struct Figures {
@@ -31,7 +29,7 @@ struct Figures {
 };
 
 Figures Study(handeye::Setup setup, int stations, bool sigmas_given, uint64_t seed) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   MlOptions options;
   if (sigmas_given) options.robot_sigma = options.camera_sigma = sigma;
   Figures f;
@@ -57,9 +55,9 @@ Figures Study(handeye::Setup setup, int stations, bool sigmas_given, uint64_t se
       "%s n=%d sigmas %s: ml %.4f° / %.3f mm, bound %.4f° / %.3f mm, ratio %.3f / %.3f, "
       "worst trial %.2f× its bound\n",
       setup == handeye::Setup::kEyeInHand ? "eye-in-hand" : "eye-to-hand", stations,
-      sigmas_given ? "given" : "estimated", f.rotation / kDeg, f.translation * 1e3,
-      f.bound_rotation / kDeg, f.bound_translation * 1e3, f.rotation / f.bound_rotation,
-      f.translation / f.bound_translation, f.worst);
+      sigmas_given ? "given" : "estimated", f.rotation / kRadiansPerDegree, f.translation * 1e3,
+      f.bound_rotation / kRadiansPerDegree, f.bound_translation * 1e3,
+      f.rotation / f.bound_rotation, f.translation / f.bound_translation, f.worst);
   return f;
 }
 

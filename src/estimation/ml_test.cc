@@ -11,6 +11,7 @@
 #include "hecal/core/error.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/initialization.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/handeye/closed_form.h"
@@ -20,8 +21,6 @@
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 handeye::Problem TrueProblem(const testing::Scene& data) {
   return handeye::MakeProblem(data.setup, data.T_base_gripper_true, data.T_camera_target_true);
@@ -50,8 +49,8 @@ TEST_P(MlTest, NoiseFreeRecoversTheTruthWithAGivenNoiseModel) {
     const std::vector<handeye::Solution> starts = Solutions(InitialSolutions(problem));
     ASSERT_FALSE(starts.empty());
     MlOptions known;
-    known.robot_sigma = PoseSigma{1.0 * kDeg, 1e-3};
-    known.camera_sigma = PoseSigma{1.0 * kDeg, 1e-3};
+    known.robot_sigma = PoseSigma{1.0 * kRadiansPerDegree, 1e-3};
+    known.camera_sigma = PoseSigma{1.0 * kRadiansPerDegree, 1e-3};
     ExpectRecovers(RefineMl(problem, starts, known), data, 1e-9);
   }
 }
@@ -70,7 +69,7 @@ TEST_P(MlTest, NoiseFreeConvergesFromAPerturbedStart) {
 // The good-start path: RefineMl's refinement from that one start (the same X and Z, with and
 // without a robust loss), the truth to 1e-9 on noise-free data, and both sigmas required.
 TEST_P(MlTest, GoodStartIsRefineMlFromThatStart) {
-  const PoseSigma sigma{0.2 * kDeg, 0.5e-3};
+  const PoseSigma sigma{0.2 * kRadiansPerDegree, 0.5e-3};
   MlOptions options;
   options.robot_sigma = sigma;
   options.camera_sigma = sigma;
@@ -80,7 +79,7 @@ TEST_P(MlTest, GoodStartIsRefineMlFromThatStart) {
       testing::ThesisCase(GetParam(), 12, 55, sigma.rotation, sigma.translation);
   const handeye::Solution start{noisy.X * se3::Exp(offset), noisy.Z * se3::Exp(-offset)};
   // Isotropic, and with the anisotropic camera excess (tilt / depth) of a richer noise model.
-  for (const PoseSigma excess : {PoseSigma{}, PoseSigma{1.0 * kDeg, 5e-3}}) {
+  for (const PoseSigma excess : {PoseSigma{}, PoseSigma{1.0 * kRadiansPerDegree, 5e-3}}) {
     options.camera_excess = excess;
     for (RobustLoss loss : {RobustLoss::kNone, RobustLoss::kHuber}) {
       options.robust_loss = loss;
@@ -114,7 +113,7 @@ struct StudyFigures {
 StudyFigures Study(handeye::Setup setup, int stations, int trials, double sigma_deg_mm,
                    uint64_t seed) {
   StudyFigures f;
-  const PoseSigma sigma{sigma_deg_mm * kDeg, sigma_deg_mm * 1e-3};
+  const PoseSigma sigma{sigma_deg_mm * kRadiansPerDegree, sigma_deg_mm * 1e-3};
   MlOptions options;
   options.robot_sigma = sigma;
   options.camera_sigma = sigma;
@@ -151,8 +150,8 @@ TEST_P(MlTest, AttainsTheFirstOrderBoundShortStudy) {
   std::printf(
       "ml n=15 σ=1: rotation %.4f° (bound %.4f°), translation %.3f mm (bound %.3f mm), "
       "worst trial %.2f× bound\n",
-      f.rmse_rotation / kDeg, f.bound_rotation / kDeg, f.rmse_translation * 1e3,
-      f.bound_translation * 1e3, f.worst_ratio);
+      f.rmse_rotation / kRadiansPerDegree, f.bound_rotation / kRadiansPerDegree,
+      f.rmse_translation * 1e3, f.bound_translation * 1e3, f.worst_ratio);
   EXPECT_NEAR(f.rmse_rotation / f.bound_rotation, 1.0, 0.2);
   EXPECT_NEAR(f.rmse_translation / f.bound_translation, 1.0, 0.2);
   EXPECT_LT(f.worst_ratio, 10.0);
@@ -167,7 +166,7 @@ TEST_P(MlTest, AttainsTheFirstOrderBoundShortStudy) {
 // started at the truth.
 TEST_P(MlTest, MultiStartNeverEndsInAWrongMinimum) {
   const handeye::Setup setup = GetParam();
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   MlOptions options;
   options.robot_sigma = sigma;
   options.camera_sigma = sigma;
@@ -178,7 +177,8 @@ TEST_P(MlTest, MultiStartNeverEndsInAWrongMinimum) {
     const handeye::Problem problem = data.MeasuredProblem();
     std::mt19937_64 rng(trial);
     Pose X_bad = data.X;
-    X_bad.linear() = data.X.linear() * so3::Exp(testing::RandomRotationVector(rng, 150.0 * kDeg));
+    X_bad.linear() =
+        data.X.linear() * so3::Exp(testing::RandomRotationVector(rng, 150.0 * kRadiansPerDegree));
     const handeye::Solution bad{X_bad, handeye::EstimateZ(problem, X_bad)};
     std::vector<InitialSolution> initial = InitialSolutions(problem);
     initial.push_back({handeye::ClosedForm::kTsaiLenz, bad});  // the label is irrelevant here
@@ -208,7 +208,7 @@ INSTANTIATE_TEST_SUITE_P(BothSetups, MlTest,
 // camera noise, the estimator's split). n = 150: relative standard error ≈ 1/√(2·3n·...) is
 // ≈ 2% on σ_r and ≈ 4% on σ_t (see noise_estimation_test.cc).
 TEST(Ml, EstimatesTheNoiseScale) {
-  const PoseSigma sigma{0.5 * kDeg, 2e-3};
+  const PoseSigma sigma{0.5 * kRadiansPerDegree, 2e-3};
   const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 150, 61, sigma.rotation, sigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
@@ -223,12 +223,12 @@ TEST(Ml, EstimatesTheNoiseScale) {
 // A gross outlier (one station's camera pose off by 20° and 10 cm): a Huber loss keeps the
 // estimate near the clean data's, while plain least squares is pulled away.
 TEST(Ml, RobustLossReducesTheEffectOfAGrossOutlier) {
-  const PoseSigma sigma{0.2 * kDeg, 0.5e-3};
+  const PoseSigma sigma{0.2 * kRadiansPerDegree, 0.5e-3};
   testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 62, sigma.rotation, sigma.translation);
   const handeye::Problem clean = data.MeasuredProblem();
   Vector6d gross;
-  gross << 0.0, 20.0 * kDeg, 0.0, 0.1, 0.0, 0.0;
+  gross << 0.0, 20.0 * kRadiansPerDegree, 0.0, 0.1, 0.0, 0.0;
   data.T_camera_target[4] = data.T_camera_target[4] * se3::Exp(gross);
   const handeye::Problem corrupted = data.MeasuredProblem();
   MlOptions options;

@@ -4,12 +4,12 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/calibration_covariance.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
 
@@ -17,7 +17,6 @@ namespace hecal::estimation {
 namespace {
 
 using Matrix12d = Eigen::Matrix<double, 12, 12>;
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Every station is left out exactly once: by itself up to 20 stations, in one of 20 groups
 // beyond.
@@ -78,7 +77,7 @@ TEST(CompareWithJackknife, KnownSpreadAgainstTheModel) {
 // Too few stations: no check, and the result says so.
 TEST(ApplyModelCheck, SixStationsAreTooFewToCheck) {
   const testing::Scene data =
-      testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 3, 0.5 * kDeg, 0.5e-3);
+      testing::ThesisCase(handeye::Setup::kEyeInHand, 6, 3, 0.5 * kRadiansPerDegree, 0.5e-3);
   CalibrateOptions options;
   options.reject_outliers = false;
   const CalibrationResult result = Calibrate(data.MeasuredProblem(), options);
@@ -102,10 +101,10 @@ TEST(ApplyModelCheck, ExpectedJackknifeMatchesTheSpreadWhenTheModelIsRight) {
   const int data_sets = 40;
   for (int k = 0; k < data_sets; ++k) {
     const testing::Scene data =
-        testing::ThesisCase(handeye::Setup::kEyeInHand, 12, 500 + k, 1.0 * kDeg, 1e-3);
+        testing::ThesisCase(handeye::Setup::kEyeInHand, 12, 500 + k, 1.0 * kRadiansPerDegree, 1e-3);
     CalibrateOptions options;
     options.reject_outliers = false;
-    options.robot_sigma = options.camera_sigma = PoseSigma{1.0 * kDeg, 1e-3};
+    options.robot_sigma = options.camera_sigma = PoseSigma{1.0 * kRadiansPerDegree, 1e-3};
     const CalibrationResult result = Calibrate(data.MeasuredProblem(), options);
     ASSERT_TRUE(result.model_check && result.model_check->possible);
     const Eigen::Matrix<double, 12, 1> ratio = result.model_check->Ratio();
@@ -126,11 +125,11 @@ TEST(ApplyModelCheck, ExpectedJackknifeMatchesTheSpreadWhenTheModelIsRight) {
 // solve.
 TEST(LinearizedWithoutGroups, MatchesTheDeleteGroupSolves) {
   const testing::Scene data =
-      testing::ThesisCase(handeye::Setup::kEyeToHand, 300, 77, 1.0 * kDeg, 1e-3);
+      testing::ThesisCase(handeye::Setup::kEyeToHand, 300, 77, 1.0 * kRadiansPerDegree, 1e-3);
   CalibrateOptions options;
   options.reject_outliers = false;
   options.model_check = false;
-  options.robot_sigma = options.camera_sigma = PoseSigma{1.0 * kDeg, 1e-3};
+  options.robot_sigma = options.camera_sigma = PoseSigma{1.0 * kRadiansPerDegree, 1e-3};
   const handeye::Problem problem = data.MeasuredProblem();
   const CalibrationResult result = Calibrate(problem, options);
   const std::vector<std::vector<bool>> groups = JackknifeGroups(problem.A.size());

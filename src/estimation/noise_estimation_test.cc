@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/sim/thesis_protocol.h"
 #include "testing/handeye_cases.h"
@@ -13,8 +13,6 @@
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 sim::SimulatedData Simulate(handeye::Setup setup, int stations, const PoseSigma& robot,
                             const PoseSigma& camera, uint64_t seed) {
@@ -56,7 +54,7 @@ TEST(NoiseSpec, FollowsTheGivenSigmas) {
 // error ≈ 1/√(2·2n) ≈ 2.5% on σ_t, ~1% on σ_r; 7% is > 2.5σ for σ_t.
 TEST(EstimateNoise, RecoversTheSigmaScaleBothSetups) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    const PoseSigma sigma{1.0 * kDeg, 1e-3};
+    const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
     const sim::SimulatedData data = Simulate(setup, 400, sigma, sigma, 21);
     const handeye::Problem problem = data.MeasuredProblem();
     const NoiseEstimate estimate = EstimateNoise(LinearizeStations(problem, data.X, data.Z),
@@ -74,8 +72,8 @@ TEST(EstimateNoise, RecoversTheSigmaScaleBothSetups) {
 
 // With the robot noise given, the camera's own rotation and translation sigmas are estimated.
 TEST(EstimateNoise, EstimatesTheCameraGivenTheRobot) {
-  const PoseSigma robot{0.2 * kDeg, 0.5e-3};
-  const PoseSigma camera{1.0 * kDeg, 3e-3};
+  const PoseSigma robot{0.2 * kRadiansPerDegree, 0.5e-3};
+  const PoseSigma camera{1.0 * kRadiansPerDegree, 3e-3};
   const sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, 300, robot, camera, 22);
   const handeye::Problem problem = data.MeasuredProblem();
   const NoiseEstimate estimate =
@@ -89,7 +87,7 @@ TEST(EstimateNoise, EstimatesTheCameraGivenTheRobot) {
 // Linearised anywhere near the optimum (here: a perturbed truth) the linear re-fit inside the
 // estimator removes the offset, so the estimate does not depend on the exact point.
 TEST(EstimateNoise, IndependentOfTheLinearisationPointNearTheOptimum) {
-  const PoseSigma sigma{0.5 * kDeg, 2e-3};
+  const PoseSigma sigma{0.5 * kRadiansPerDegree, 2e-3};
   const sim::SimulatedData data = Simulate(handeye::Setup::kEyeToHand, 60, sigma, sigma, 23);
   const handeye::Problem problem = data.MeasuredProblem();
   const NoiseSpec spec = NoiseSpec::FromSigmas(std::nullopt, std::nullopt);
@@ -105,11 +103,11 @@ TEST(EstimateNoise, IndependentOfTheLinearisationPointNearTheOptimum) {
 
 // One corrupted station is flagged, the others are not, and it does not inflate the sigmas.
 TEST(EstimateNoise, FlagsACorruptedStationWithoutBeingMaskedByIt) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, 15, sigma, sigma, 24);
   const sim::SimulatedData clean = data;
   Vector6d gross;
-  gross << 0.0, 8.0 * kDeg, 0.0, 0.0, 0.0, 0.0;
+  gross << 0.0, 8.0 * kRadiansPerDegree, 0.0, 0.0, 0.0, 0.0;
   data.T_camera_target[6] = data.T_camera_target[6] * se3::Exp(gross);
   const NoiseSpec spec = NoiseSpec::FromSigmas(std::nullopt, std::nullopt);
   const handeye::Problem problem = data.MeasuredProblem();
@@ -125,10 +123,10 @@ TEST(EstimateNoise, FlagsACorruptedStationWithoutBeingMaskedByIt) {
 }
 
 TEST(EstimateNoise, GivenSigmasAreUsedAsIsAndTooSmallOnesFlagEverything) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   const sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, 15, sigma, sigma, 25);
   const handeye::Problem problem = data.MeasuredProblem();
-  const PoseSigma small{0.05 * kDeg, 0.05e-3};
+  const PoseSigma small{0.05 * kRadiansPerDegree, 0.05e-3};
   const NoiseEstimate estimate =
       EstimateNoise(LinearizeStations(problem, data.X, data.Z), NoiseSpec::FromSigmas(small, small),
                     handeye::LengthScale(problem));
@@ -147,7 +145,7 @@ TEST(EstimateNoise, GivenSigmasAreUsedAsIsAndTooSmallOnesFlagEverything) {
 // upward — the data cannot bound σ_t from above either (measured RMS ratio 1.66 over the 40
 // sets) — but not wildly: RMS ratio within 0.8–2.
 TEST(EstimateNoise, PosteriorMeanDoesNotCollapseWithEightStations) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   int reml_collapsed = 0, posterior_collapsed = 0;
   double sum_ratio2 = 0.0;
   const int sets = 40;
@@ -176,7 +174,7 @@ TEST(EstimateNoise, PosteriorMeanDoesNotCollapseWithEightStations) {
 // With many stations the likelihood is sharp and the posterior mean σ² is the REML point times
 // ≈ 1 + 2.9/ν ≈ 1.01 (ν ≈ 3n − 6 rotation degrees of freedom at n = 100).
 TEST(EstimateNoise, PosteriorMeanIsTheRemlPointWhenWellDetermined) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const sim::SimulatedData data = Simulate(setup, 100, sigma, sigma, 77);
     const handeye::Problem problem = data.MeasuredProblem();
@@ -208,23 +206,24 @@ TEST(EstimateNoise, NoiseFreeDataGiveTinyPositiveSigmas) {
 // (0.1°), isotropic translation = the lateral σ (0.5 mm), tilt excess √(2² − 0.1²)° and depth
 // excess √(5² − 0.5²) mm. n = 300: each σ to a few percent (≥ 150 degrees of freedom each).
 TEST(EstimateNoise, ChoosesTheAnisotropicCameraModelForPnpShapedNoise) {
-  const PoseSigma robot{0.05 * kDeg, 0.05e-3};
+  const PoseSigma robot{0.05 * kRadiansPerDegree, 0.05e-3};
   std::mt19937_64 rng(25);
   sim::ProtocolOptions options;
   options.setup = handeye::Setup::kEyeInHand;
   options.stations = 300;
   const sim::SimulatedData data = sim::SimulateThesisProtocol(
       options, {sim::NoiseModel::Kind::kGaussian, robot.rotation, robot.translation},
-      {sim::NoiseModel::Kind::kPnp, 1.0 * kDeg, 1e-3}, rng);
+      {sim::NoiseModel::Kind::kPnp, 1.0 * kRadiansPerDegree, 1e-3}, rng);
   const handeye::Problem problem = data.MeasuredProblem();
   const NoiseEstimate estimate =
       EstimateNoise(LinearizeStations(problem, data.X, data.Z),
                     NoiseSpec::FromSigmas(robot, std::nullopt), handeye::LengthScale(problem));
   EXPECT_TRUE(estimate.richer);
   EXPECT_GT(estimate.likelihood_ratio, 5.991);
-  EXPECT_NEAR(estimate.camera().rotation / (0.1 * kDeg), 1.0, 0.15);
+  EXPECT_NEAR(estimate.camera().rotation / (0.1 * kRadiansPerDegree), 1.0, 0.15);
   EXPECT_NEAR(estimate.camera().translation / 0.5e-3, 1.0, 0.1);
-  EXPECT_NEAR(estimate.camera_excess().rotation / (std::sqrt(4.0 - 0.01) * kDeg), 1.0, 0.1);
+  EXPECT_NEAR(estimate.camera_excess().rotation / (std::sqrt(4.0 - 0.01) * kRadiansPerDegree), 1.0,
+              0.1);
   EXPECT_NEAR(estimate.camera_excess().translation / (std::sqrt(25.0 - 0.25) * 1e-3), 1.0, 0.1);
 }
 
@@ -232,7 +231,7 @@ TEST(EstimateNoise, ChoosesTheAnisotropicCameraModelForPnpShapedNoise) {
 // is about 2%, so a chance choice is possible on other data; these are fixed), and with the
 // camera noise given it is not tried at all.
 TEST(EstimateNoise, KeepsTheIsotropicModelForIsotropicNoise) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const sim::SimulatedData data = Simulate(setup, 40, sigma, sigma, 26);
     const handeye::Problem problem = data.MeasuredProblem();
@@ -256,8 +255,8 @@ TEST(EstimateNoise, KeepsTheIsotropicModelForIsotropicNoise) {
 // rotation variances are told apart and the richer model is chosen (the equal split would put
 // 0.72° on each). n = 60: each rotation σ to about 10%.
 TEST(EstimateNoise, TellsUnequalRobotAndCameraRotationNoiseApart) {
-  const PoseSigma robot{1.0 * kDeg, 1e-3};
-  const PoseSigma camera{0.2 * kDeg, 0.2e-3};
+  const PoseSigma robot{1.0 * kRadiansPerDegree, 1e-3};
+  const PoseSigma camera{0.2 * kRadiansPerDegree, 0.2e-3};
   const sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, 60, robot, camera, 27);
   const handeye::Problem problem = data.MeasuredProblem();
   const NoiseEstimate estimate = EstimateNoise(LinearizeStations(problem, data.X, data.Z),

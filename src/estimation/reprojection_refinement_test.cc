@@ -10,14 +10,13 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/image_scene.h"
 #include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 const testing::PoseNoise kNoNoise{0.0, 0.0};
 
 ReprojectionOptions Options(handeye::Setup setup, PoseSigma robot) {
@@ -35,7 +34,7 @@ TEST(ReprojectionRefinement, NoiseFreeDataConvergeToTheTruth) {
     const testing::ImageScene s =
         testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 8, 21, kNoNoise, 0.0));
     const Vector6d kick = (Vector6d() << 0.01, -0.012, 0.008, 0.005, -0.004, 0.003).finished();
-    for (PoseSigma robot : {PoseSigma{0.05 * kDeg, 1e-4}, PoseSigma{0.0, 0.0}}) {
+    for (PoseSigma robot : {PoseSigma{0.05 * kRadiansPerDegree, 1e-4}, PoseSigma{0.0, 0.0}}) {
       ReprojectionOptions options = Options(setup, robot);
       options.pixel_sigma = 0.5;
       const ReprojectionResult result =
@@ -55,7 +54,7 @@ TEST(ReprojectionRefinement, RefinesTheIntrinsicsToTheTruth) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::ImageScene s =
         testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 10, 41, kNoNoise, 0.0));
-    ReprojectionOptions options = Options(setup, PoseSigma{0.05 * kDeg, 1e-4});
+    ReprojectionOptions options = Options(setup, PoseSigma{0.05 * kRadiansPerDegree, 1e-4});
     options.pixel_sigma = 0.5;
     options.refine_intrinsics = true;
     const pose::CameraModel truth = testing::DefaultCamera();
@@ -81,7 +80,7 @@ TEST(ReprojectionRefinement, RefinesTheIntrinsicsToTheTruth) {
 // sigma is the true one within 5%.
 TEST(ReprojectionRefinement, CovarianceMatchesTheErrors) {
   const double pixel_sigma = 0.4;
-  const PoseSigma robot{0.03 * kDeg, 0.2e-3};
+  const PoseSigma robot{0.03 * kRadiansPerDegree, 0.2e-3};
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     double mahalanobis = 0.0, sigma_ratio = 0.0;
     constexpr int kTrials = 100;
@@ -132,7 +131,8 @@ TEST(ReprojectionRefinement, RefusesTooFewImagesAndBadSigmas) {
 TEST(ReprojectionRefinement, RefusesAStartItCannotUse) {
   const testing::ImageScene s = testing::MakeImageScene(
       testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 6, 43, kNoNoise, 0.0));
-  const ReprojectionOptions options = Options(handeye::Setup::kEyeInHand, {0.05 * kDeg, 1e-4});
+  const ReprojectionOptions options =
+      Options(handeye::Setup::kEyeInHand, {0.05 * kRadiansPerDegree, 1e-4});
   const auto message = [&](const std::vector<Pose>& robot, const Pose& X, const Pose& Z) {
     try {
       RefineReprojection(robot, s.ImagesAs<ImagePoints>(), X, Z, options);

@@ -3,18 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <stdexcept>
 
 #include "hecal/estimation/loop_residual.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/sim/noise.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Monte Carlo covariance of r = Log(Z⁻¹ Ã X B̃) at the truth, with Ã built from a noisy robot pose
 // the way MakeProblem does (so the eye-to-hand inverse is exercised), and B̃ a noisy camera pose.
@@ -52,13 +50,13 @@ TEST_P(StationCovarianceTest, MatchesMonteCarloForRobotCameraAndBothNoise) {
   const testing::Scene data = testing::ThesisCase(setup, 4, 11);
   const handeye::Problem truth = data.MeasuredProblem();
   const PoseSigma zero;
-  const PoseSigma robot{0.5 * kDeg, 1e-3};
-  const PoseSigma camera{0.3 * kDeg, 2e-3};
+  const PoseSigma robot{0.5 * kRadiansPerDegree, 1e-3};
+  const PoseSigma camera{0.3 * kRadiansPerDegree, 2e-3};
   for (int station = 0; station < 4; ++station) {
     const Pose& A = truth.A[station];
     const Pose& B = truth.B[station];
     // Robot noise alone needs a tiny camera noise to keep Σ invertible for the whitening.
-    const PoseSigma tiny{1e-4 * kDeg, 1e-6};
+    const PoseSigma tiny{1e-4 * kRadiansPerDegree, 1e-6};
     ExpectWhitenedIdentity(StationCovariance(setup, A, B, data.X, robot, tiny),
                            MonteCarloCovariance(data, station, robot, tiny, 10000, 100 + station),
                            0.06);
@@ -82,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(BothSetups, StationCovarianceTest,
 TEST(StationCovariance, TiltAndDepthExcessMatchPnpShapedNoise) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::Scene data = testing::ThesisCase(setup, 4, 5, 0.0, 0.0);
-    const double sr = 0.5 * kDeg, st = 1e-3;
+    const double sr = 0.5 * kRadiansPerDegree, st = 1e-3;
     const sim::NoiseModel pnp{sim::NoiseModel::Kind::kPnp, sr, st};
     std::mt19937_64 rng(7);
     for (int station = 0; station < 4; ++station) {
@@ -110,8 +108,8 @@ TEST(StationCovariance, TiltAndDepthExcessMatchPnpShapedNoise) {
 TEST(StationCovariance, WrongSideOfTheRobotPoseIsDetected) {
   const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 2, 12);
   const handeye::Problem truth = data.MeasuredProblem();
-  const PoseSigma robot{0.5 * kDeg, 1e-3};
-  const PoseSigma camera{0.3 * kDeg, 2e-3};
+  const PoseSigma robot{0.5 * kRadiansPerDegree, 1e-3};
+  const PoseSigma camera{0.3 * kRadiansPerDegree, 2e-3};
   const Matrix6d wrong =
       StationCovariance(handeye::Setup::kEyeInHand, truth.A[0], truth.B[0], data.X, robot, camera);
   const Matrix6d W = WhiteningMatrix(wrong);

@@ -11,16 +11,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <numbers>
 #include <random>
 
 #include "hecal/estimation/station_selection.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/scene.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kSets = 200;
 
 // Fraction of kSets clean data sets from which SelectStations rejects any station.
@@ -33,16 +31,16 @@ double FalseRejectionRate(handeye::Setup setup, int stations, bool camera_covari
     scene.stations = stations;
     StationSelectionOptions options;
     if (camera_covariances) {
-      scene.robot_noise = {0.5 * kDeg, 2e-3};
-      scene.camera_noise = {0.01 * kDeg, 2e-5};
+      scene.robot_noise = {0.5 * kRadiansPerDegree, 2e-3};
+      scene.camera_noise = {0.01 * kRadiansPerDegree, 2e-5};
       Vector6d variances;
-      variances << Eigen::Vector3d::Constant(0.01 * kDeg * 0.01 * kDeg),
+      variances << Eigen::Vector3d::Constant(0.01 * kRadiansPerDegree * 0.01 * kRadiansPerDegree),
           Eigen::Vector3d::Constant(2e-5 * 2e-5);
       options.camera_covariances.assign(static_cast<size_t>(stations),
                                         Matrix6d(variances.asDiagonal()));
-      options.camera_sigma = PoseSigma{0.01 * kDeg, 2e-5};
+      options.camera_sigma = PoseSigma{0.01 * kRadiansPerDegree, 2e-5};
     } else {
-      scene.robot_noise = scene.camera_noise = {kDeg, 1e-3};
+      scene.robot_noise = scene.camera_noise = {kRadiansPerDegree, 1e-3};
     }
     const testing::Scene data = testing::MakeScene(scene, rng);
     if (!SelectStations(data.MeasuredProblem(), options).Rejected().empty()) ++sets_with_rejection;

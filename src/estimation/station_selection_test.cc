@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <random>
 
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/initialization.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
 #include "testing/options_validity.h"
@@ -15,13 +15,12 @@
 namespace hecal::estimation {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // A moderate outlier (a 4° robot error against 0.5° noise per axis) is rejected, and it alone.
 TEST(SelectStations, AModerateOutlierIsRejected) {
-  testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 41, 0.5 * kDeg, 1e-3);
+  testing::Scene data =
+      testing::ThesisCase(handeye::Setup::kEyeInHand, 15, 41, 0.5 * kRadiansPerDegree, 1e-3);
   Vector6d offset;
-  offset << 0.0, 4.0 * kDeg, 0.0, 0.0, 0.0, 0.0;
+  offset << 0.0, 4.0 * kRadiansPerDegree, 0.0, 0.0, 0.0, 0.0;
   data.T_base_gripper[4] = data.T_base_gripper[4] * se3::Exp(offset);
   const StationSelection selection = SelectStations(data.MeasuredProblem(), {});
   EXPECT_EQ(selection.Rejected(), std::vector<int>{4});
@@ -37,7 +36,8 @@ TEST(SelectStations, CleanDataLoseAlmostNothing) {
   for (int trial = 0; trial < 40; ++trial) {
     const handeye::Setup setup =
         trial % 2 == 0 ? handeye::Setup::kEyeInHand : handeye::Setup::kEyeToHand;
-    const testing::Scene data = testing::ThesisCase(setup, 20, 600 + trial, kDeg, 1e-3);
+    const testing::Scene data =
+        testing::ThesisCase(setup, 20, 600 + trial, kRadiansPerDegree, 1e-3);
     rejected += static_cast<int>(SelectStations(data.MeasuredProblem(), {}).Rejected().size());
   }
   EXPECT_LE(rejected, 8);
@@ -47,12 +47,13 @@ TEST(SelectStations, CleanDataLoseAlmostNothing) {
 // returned — ml from every closed-form start on the stations kept, exactly — and Calibrate's result
 // is the same bit for bit as calibrating those stations alone without rejection.
 TEST(SelectStations, TheFirstRoundFitIsMlOnTheStationsKept) {
-  testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 20, 45, kDeg, 1e-3);
+  testing::Scene data =
+      testing::ThesisCase(handeye::Setup::kEyeToHand, 20, 45, kRadiansPerDegree, 1e-3);
   std::mt19937_64 rng(5);
   const std::vector<int> replaced = testing::ReplaceRobotPoses(&data, 2, rng);
   const handeye::Problem problem = data.MeasuredProblem();
   StationSelectionOptions options;
-  options.robot_sigma = options.camera_sigma = PoseSigma{kDeg, 1e-3};
+  options.robot_sigma = options.camera_sigma = PoseSigma{kRadiansPerDegree, 1e-3};
   const StationSelection selection = SelectStations(problem, options);
   ASSERT_EQ(selection.rounds, 1);
   ASSERT_TRUE(selection.fit.has_value());
@@ -80,9 +81,10 @@ TEST(SelectStations, TheFirstRoundFitIsMlOnTheStationsKept) {
 // More stations fail the test than may be rejected — here the given sigmas are 20 times too
 // small: nothing is rejected and too_many says why.
 TEST(SelectStations, TooManyFlaggedRejectsNothing) {
-  const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 42, kDeg, 1e-3);
+  const testing::Scene data =
+      testing::ThesisCase(handeye::Setup::kEyeToHand, 10, 42, kRadiansPerDegree, 1e-3);
   StationSelectionOptions options;
-  options.robot_sigma = options.camera_sigma = PoseSigma{0.05 * kDeg, 5e-5};
+  options.robot_sigma = options.camera_sigma = PoseSigma{0.05 * kRadiansPerDegree, 5e-5};
   const StationSelection selection = SelectStations(data.MeasuredProblem(), options);
   EXPECT_TRUE(selection.too_many);
   EXPECT_TRUE(selection.Rejected().empty());
@@ -91,7 +93,8 @@ TEST(SelectStations, TooManyFlaggedRejectsNothing) {
 
 // Four stations cannot spare one: nothing is tested, every station is used.
 TEST(SelectStations, FourStationsAreAllUsed) {
-  testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 4, 43, kDeg, 1e-3);
+  testing::Scene data =
+      testing::ThesisCase(handeye::Setup::kEyeInHand, 4, 43, kRadiansPerDegree, 1e-3);
   std::mt19937_64 rng(1);
   testing::ReplaceRobotPoses(&data, 1, rng);
   const StationSelection selection = SelectStations(data.MeasuredProblem(), {});
@@ -109,7 +112,8 @@ TEST(SelectStations, PerStationCameraCovariancesKeepImpreciseViews) {
   std::vector<Matrix6d> covariances;
   std::normal_distribution<double> gaussian;
   for (size_t i = 0; i < data.T_camera_target.size(); ++i) {
-    const double sigma_r = (i == 7 ? 1.0 : 0.1) * kDeg, sigma_t = (i == 7 ? 5e-3 : 5e-4);
+    const double sigma_r = (i == 7 ? 1.0 : 0.1) * kRadiansPerDegree,
+                 sigma_t = (i == 7 ? 5e-3 : 5e-4);
     Vector6d delta;
     for (int k = 0; k < 6; ++k) delta(k) = gaussian(rng) * (k < 3 ? sigma_r : sigma_t);
     if (i == 7) delta << 2.0 * sigma_r, -2.0 * sigma_r, 1.5 * sigma_r, 2.0 * sigma_t, 0, 0;
@@ -120,8 +124,8 @@ TEST(SelectStations, PerStationCameraCovariancesKeepImpreciseViews) {
     covariances.push_back(variances.asDiagonal());
   }
   StationSelectionOptions isotropic;
-  isotropic.camera_sigma = PoseSigma{0.1 * kDeg, 5e-4};
-  isotropic.robot_sigma = PoseSigma{0.01 * kDeg, 1e-5};
+  isotropic.camera_sigma = PoseSigma{0.1 * kRadiansPerDegree, 5e-4};
+  isotropic.robot_sigma = PoseSigma{0.01 * kRadiansPerDegree, 1e-5};
   EXPECT_EQ(SelectStations(data.MeasuredProblem(), isotropic).Rejected(), std::vector<int>{7});
   StationSelectionOptions per_station = isotropic;
   per_station.camera_covariances = covariances;

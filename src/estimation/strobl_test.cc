@@ -3,18 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/initialization.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
 #include "testing/options_validity.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 class StroblTest : public ::testing::TestWithParam<handeye::Setup> {};
 
@@ -34,7 +32,7 @@ TEST_P(StroblTest, NoiseFreeConvergesFromAPerturbedStart) {
 // sensible one: within 2× the first-order bound on the thesis protocol (it ignores the lever-arm
 // structure of the noise, so it is not expected to reach the bound like ml).
 TEST_P(StroblTest, AutomaticWeightingAndAccuracyWithNoise) {
-  const PoseSigma sigma{1.0 * kDeg, 1e-3};
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   double error2 = 0.0, bound2 = 0.0;
   for (int trial = 0; trial < 20; ++trial) {
     const testing::Scene data =

@@ -4,20 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <vector>
 
 #include "hecal/estimation/initialization.h"
 #include "hecal/estimation/ml.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::estimation {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kDimension = 6;
 
 // Squared norms of 6-vectors: standard normal (Gaussian) or a standard normal over the square
@@ -77,7 +75,7 @@ TEST(StudentTTest, ChoosesTheTModelOnHeavyTailsOnly) {
 // outlier"). Without the bad station the same data choose the Gaussian; with the robot sigma
 // given the t model is not tried.
 TEST(StudentTTest, DownWeightsAStationWithATenSigmaError) {
-  const double rotation = 0.2 * kDeg, translation = 0.5e-3;
+  const double rotation = 0.2 * kRadiansPerDegree, translation = 0.5e-3;
   testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 20, 21, rotation, translation);
   const auto solve = [](const testing::Scene& scene) {

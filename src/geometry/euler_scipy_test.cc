@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/euler.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/geometry/so3.h"
@@ -33,7 +34,6 @@ namespace hecal {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
 
 // Agreement with scipy away from gimbal lock, and with the exact angles at the lock.
 constexpr double kAngleTolerance = 1e-9;
@@ -224,7 +224,7 @@ TEST(ScipyReference, EulerAnglesMatchScipy) {
     const Table table = ReadCsv("expected_" + target.stem + ".csv");
     ExpectSameIdsAndPositions(table, target.stem);
     if (table.rows.size() != input.ids.size()) continue;
-    const double unit = target.degrees ? kDegree : 1.0;
+    const double unit = target.degrees ? kRadiansPerDegree : 1.0;
     double worst = 0.0, worst_far = 0.0, worst_lock = 0.0;
     double worst_ours_back = 0.0, worst_reference_back = 0.0;
     int locked = 0;

@@ -4,19 +4,17 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <numbers>
 #include <random>
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_solver_suite.h"
 #include "testing/scene.h"
 
 namespace hecal::handeye {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 Motion MotionFor(const Pose& X, const Eigen::Vector3d& rotation_vector, std::mt19937_64& rng) {
   const Pose B = MakePose(so3::Exp(rotation_vector), testing::RandomPose(rng).translation());
@@ -27,13 +25,14 @@ Motion MotionFor(const Pose& X, const Eigen::Vector3d& rotation_vector, std::mt1
 // must not enter: with 30 noisy motions of 0.05°–0.5° (axes essentially random) next to 10 good
 // ones, the estimate stays at the accuracy of the good ones.
 TEST(ChouKamel, NearZeroRotationsDoNotEnterTheUnitAxisSystem) {
-  const testing::PoseNoise noise{0.05 * kDegree, 0.0};
+  const testing::PoseNoise noise{0.05 * kRadiansPerDegree, 0.0};
   std::mt19937_64 rng(51);
   double worst_good = 0.0, worst_all = 0.0;
   for (int trial = 0; trial < 20; ++trial) {
     const Pose X = testing::RandomPose(rng, 0.1);
     std::vector<Motion> motions;
-    std::uniform_real_distribution<double> large(0.5, 3.0), small(0.05 * kDegree, 0.5 * kDegree);
+    std::uniform_real_distribution<double> large(0.5, 3.0),
+        small(0.05 * kRadiansPerDegree, 0.5 * kRadiansPerDegree);
     for (int k = 0; k < 10; ++k) {
       motions.push_back(MotionFor(X, large(rng) * testing::RandomUnitVector(rng), rng));
     }
@@ -47,7 +46,7 @@ TEST(ChouKamel, NearZeroRotationsDoNotEnterTheUnitAxisSystem) {
     worst_all = std::max(worst_all, testing::Error(SolveChouKamel(motions), X).rotation);
   }
   std::printf("worst rotation error: %.3f deg from 10 good motions, %.3f deg with 30 tiny ones\n",
-              worst_good / kDegree, worst_all / kDegree);
+              worst_good / kRadiansPerDegree, worst_all / kRadiansPerDegree);
   EXPECT_LT(worst_all, 1.5 * worst_good);
 }
 

@@ -2,20 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::handeye {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // Thesis-protocol data of `setup` (20 stations, 0.1 mm / 0.1°), units not named.
 PoseData Correct(Setup setup) {
-  const testing::Scene scene = testing::ThesisCase(setup, 20, 5003, 0.1 * kDeg, 0.1e-3);
+  const testing::Scene scene =
+      testing::ThesisCase(setup, 20, 5003, 0.1 * kRadiansPerDegree, 0.1e-3);
   PoseData data;
   data.T_base_gripper = scene.T_base_gripper;
   data.T_camera_target = scene.T_camera_target;

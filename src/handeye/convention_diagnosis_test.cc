@@ -4,15 +4,13 @@
 
 #include <cstdio>
 #include <future>
-#include <numbers>
 #include <string>
 
+#include "hecal/geometry/angle_units.h"
 #include "testing/handeye_cases.h"
 
 namespace hecal::handeye {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Every alternative applies: units not named, quaternion files.
 PoseData Open(const testing::Scene& data) {
@@ -47,8 +45,8 @@ TEST(ConventionDiagnosis, NeverFiresOnCorrectData) {
     for (int n : {4, 5, 8, 15, 30}) {
       for (double sigma : {0.0, 0.1, 1.0, 3.0}) {
         for (int seed = 0; seed < 30; ++seed) {
-          const testing::Scene data =
-              testing::ThesisCase(setup, n, 1000 + 7 * seed + n, sigma * kDeg, sigma * 1e-3);
+          const testing::Scene data = testing::ThesisCase(setup, n, 1000 + 7 * seed + n,
+                                                          sigma * kRadiansPerDegree, sigma * 1e-3);
           const ConventionDiagnosis diagnosis = DiagnoseConventions(Open(data), Fast());
           if (diagnosis.better || !diagnosis.given.solved || diagnosis.alternatives.size() != 9) {
             alarms.push_back(std::string(SetupName(setup)) + " n " + std::to_string(n) + " sigma " +
@@ -120,8 +118,8 @@ TEST(ConventionDiagnosis, NamesEveryMistake) {
     for (int n : {5, 8, 20}) {
       for (double sigma : {0.1, 1.0}) {
         for (int seed = 0; seed < 10; ++seed) {
-          const PoseData correct =
-              Open(testing::ThesisCase(setup, n, 5000 + seed, sigma * kDeg, sigma * 1e-3));
+          const PoseData correct = Open(
+              testing::ThesisCase(setup, n, 5000 + seed, sigma * kRadiansPerDegree, sigma * 1e-3));
           for (const Mistake& mistake : kMistakes) {
             const ConventionDiagnosis diagnosis =
                 DiagnoseConventions(Make(correct, mistake.name), Fast());

@@ -2,13 +2,13 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_solver_suite.h"
 #include "testing/moveit_dataset.h"
@@ -18,8 +18,6 @@
 
 namespace hecal::handeye {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // The DegenerateError thrown for `problem` (fails the test when nothing is thrown).
 DegenerateError Thrown(const Problem& problem) {
@@ -44,7 +42,7 @@ TEST(Observability, AcceptsTheThesisProtocol) {
     for (int n : {3, 5, 15, 50}) {
       EXPECT_NO_THROW(CheckObservability(testing::ThesisCase(setup, n, 40 + n).MeasuredProblem()));
       EXPECT_NO_THROW(CheckObservability(
-          testing::ThesisCase(setup, n, 60 + n, 1.0 * kDegree, 1e-3).MeasuredProblem()));
+          testing::ThesisCase(setup, n, 60 + n, 1.0 * kRadiansPerDegree, 1e-3).MeasuredProblem()));
     }
     EXPECT_NO_THROW(CheckObservability(testing::WideRotationCase(setup, 5, 7).MeasuredProblem()));
   }
@@ -124,7 +122,7 @@ TEST(Observability, ParallelAxesMessageNamesTheAxis) {
 // Axes a small but real angle apart are accepted; closer than kParallelAxes they are not.
 TEST(Observability, AxisSpreadThreshold) {
   const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
-  for (double spread : {1.0 * kDegree, 0.2 * kDegree, 1e-5}) {
+  for (double spread : {1.0 * kRadiansPerDegree, 0.2 * kRadiansPerDegree, 1e-5}) {
     const Eigen::Vector3d tilted = so3::Exp(spread * Eigen::Vector3d::UnitZ()) * x;
     const Problem problem =
         StationsWithAxes({Eigen::Vector3d::Zero(), 1.0 * x, 1.0 * tilted, -1.0 * x}, 5);
@@ -160,7 +158,8 @@ DegenerateError ThrownUnderNoise(const Problem& problem, double sigma) {
 
 TEST(ObservabilityUnderNoise, NoisyParallelAxesAndPureTranslationsAreDegenerate) {
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    for (double sigma : {0.05 * kDegree, 0.3 * kDegree, 1.0 * kDegree}) {
+    for (double sigma :
+         {0.05 * kRadiansPerDegree, 0.3 * kRadiansPerDegree, 1.0 * kRadiansPerDegree}) {
       const Problem parallel = WithRobotNoise(testing::ParallelAxesCase(setup, 15, 1), sigma, 2);
       EXPECT_NO_THROW(CheckObservability(parallel));  // the exact check cannot see it
       const std::string axis = ThrownUnderNoise(parallel, sigma).unobservable();
@@ -180,7 +179,7 @@ TEST(ObservabilityUnderNoise, AcceptsTheThesisProtocolAndTheRealDataSets) {
     // 1% degenerate, i.e. three stations whose axes differ by little more than the noise).
     for (int n : {5, 15}) {
       for (uint64_t seed = 0; seed < 50; ++seed) {
-        const double sigma = 1.0 * kDegree;
+        const double sigma = 1.0 * kRadiansPerDegree;
         const Problem problem =
             testing::ThesisCase(setup, n, 100 + seed, sigma, 1e-3).MeasuredProblem();
         EXPECT_EQ(CheckObservabilityUnderNoise(problem, sigma), "") << n << " " << seed;
@@ -191,21 +190,22 @@ TEST(ObservabilityUnderNoise, AcceptsTheThesisProtocolAndTheRealDataSets) {
   // Tabb's robot noise estimated from ml residuals is ~0.14°; moveit's ~0.04°.
   EXPECT_EQ(CheckObservabilityUnderNoise(
                 MakeProblem(handeye::Setup::kEyeInHand, tabb.T_base_gripper, tabb.T_camera_target),
-                0.14 * kDegree),
+                0.14 * kRadiansPerDegree),
             "");
-  EXPECT_EQ(CheckObservabilityUnderNoise(testing::LoadMoveItProblem(), 0.04 * kDegree), "");
+  EXPECT_EQ(CheckObservabilityUnderNoise(testing::LoadMoveItProblem(), 0.04 * kRadiansPerDegree),
+            "");
 }
 
 // Axes a few noise levels apart are weakly observed (a warning), not degenerate.
 TEST(ObservabilityUnderNoise, WeakSpreadWarns) {
   const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d tilted = so3::Exp(0.5 * kDegree * Eigen::Vector3d::UnitZ()) * x;
+  const Eigen::Vector3d tilted = so3::Exp(0.5 * kRadiansPerDegree * Eigen::Vector3d::UnitZ()) * x;
   const Problem problem =
       StationsWithAxes({Eigen::Vector3d::Zero(), 1.0 * x, 1.0 * tilted, -1.0 * x}, 5);
-  const std::string warning = CheckObservabilityUnderNoise(problem, 0.05 * kDegree);
+  const std::string warning = CheckObservabilityUnderNoise(problem, 0.05 * kRadiansPerDegree);
   EXPECT_NE(warning.find("weakly observed"), std::string::npos) << warning;
   EXPECT_EQ(CheckObservabilityUnderNoise(problem, 0.0), "");
-  EXPECT_THROW(CheckObservabilityUnderNoise(problem, 0.3 * kDegree), DegenerateError);
+  EXPECT_THROW(CheckObservabilityUnderNoise(problem, 0.3 * kRadiansPerDegree), DegenerateError);
 }
 
 TEST(Observability, MismatchedPoseCountsAreAPreconditionViolation) {

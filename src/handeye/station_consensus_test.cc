@@ -6,6 +6,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_cases.h"
 #include "testing/options_validity.h"
@@ -13,8 +14,6 @@
 
 namespace hecal::handeye {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Noise-free data: the consensus is every station, the solution exact, the medians zero.
 TEST(StationConsensus, NoiseFreeDataAreOneConsensusAndExact) {
@@ -41,7 +40,8 @@ TEST(StationConsensus, ExcludesGrossOutliersUpToTheRejectionLimit) {
   for (handeye::Setup setup : {Setup::kEyeInHand, Setup::kEyeToHand}) {
     for (int k : {1, 3, 8}) {
       for (int trial = 0; trial < 10; ++trial) {
-        testing::Scene data = testing::ThesisCase(setup, 20, 1000 * k + trial, kDeg, 1e-3);
+        testing::Scene data =
+            testing::ThesisCase(setup, 20, 1000 * k + trial, kRadiansPerDegree, 1e-3);
         std::mt19937_64 rng(77 + trial);
         const std::vector<int> replaced = testing::ReplaceRobotPoses(&data, k, rng);
         const StationConsensus consensus = FindStationConsensus(data.MeasuredProblem(), {});
@@ -54,8 +54,9 @@ TEST(StationConsensus, ExcludesGrossOutliersUpToTheRejectionLimit) {
             good_kept += consensus.inlier[i] ? 1 : 0;
           }
         }
-        EXPECT_LT(consensus.median_rotation, 5.0 * kDeg);  // 2–3.5° for 1° on both devices
-        EXPECT_LT(consensus.median_translation, 0.1);      // outliers: tens of degrees, ~1 m
+        EXPECT_LT(consensus.median_rotation,
+                  5.0 * kRadiansPerDegree);            // 2–3.5° for 1° on both devices
+        EXPECT_LT(consensus.median_translation, 0.1);  // outliers: tens of degrees, ~1 m
       }
     }
   }
@@ -64,7 +65,8 @@ TEST(StationConsensus, ExcludesGrossOutliersUpToTheRejectionLimit) {
 
 // Many stations: random triples (seeded, deterministic) and a scored subset.
 TEST(StationConsensus, RandomTriplesAreDeterministicAndStillFindTheConsensus) {
-  testing::Scene data = testing::ThesisCase(Setup::kEyeInHand, 60, 9, 0.5 * kDeg, 5e-4);
+  testing::Scene data =
+      testing::ThesisCase(Setup::kEyeInHand, 60, 9, 0.5 * kRadiansPerDegree, 5e-4);
   std::mt19937_64 rng(3);
   const std::vector<int> replaced = testing::ReplaceRobotPoses(&data, 12, rng);
   ConsensusOptions options;
@@ -90,9 +92,11 @@ TEST(StationConsensus, HypothesisCountFollowsTheBreakdownBound) {
   EXPECT_EQ(RequiredHypotheses(1000), 236);
   EXPECT_EQ(RequiredHypotheses(10000), 238);
   // 9 stations: 84 triples, fewer than the bound, so all of them.
-  const testing::Scene nine = testing::ThesisCase(Setup::kEyeInHand, 9, 21, kDeg, 1e-3);
+  const testing::Scene nine =
+      testing::ThesisCase(Setup::kEyeInHand, 9, 21, kRadiansPerDegree, 1e-3);
   EXPECT_EQ(FindStationConsensus(nine.MeasuredProblem(), {}).hypotheses, 84);
-  const testing::Scene fifty = testing::ThesisCase(Setup::kEyeInHand, 50, 22, kDeg, 1e-3);
+  const testing::Scene fifty =
+      testing::ThesisCase(Setup::kEyeInHand, 50, 22, kRadiansPerDegree, 1e-3);
   EXPECT_EQ(FindStationConsensus(fifty.MeasuredProblem(), {}).hypotheses, 197);
 }
 

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_solver_suite.h"
 #include "testing/scene.h"
@@ -15,13 +16,11 @@
 namespace hecal::handeye {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
-
 // Thesis-like stations (±45° tilt, free spin, 1 m from the target) with X's rotation angle fixed
 // to `x_angle`, σ = 0.3 mm / 0.3° on robot and camera.
 testing::Scene NoisyCaseWithXAngle(double x_angle, int stations, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> tilt(-45.0 * kDegree, 45.0 * kDegree);
+  std::uniform_real_distribution<double> tilt(-45.0 * kRadiansPerDegree, 45.0 * kRadiansPerDegree);
   std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
   std::vector<Pose> T_target_camera;
   for (int i = 0; i < stations; ++i) {
@@ -34,7 +33,7 @@ testing::Scene NoisyCaseWithXAngle(double x_angle, int stations, uint64_t seed) 
   testing::Scene data = testing::CaseFromCameraPoses(Setup::kEyeInHand, T_target_camera, rng);
   // Re-pose the robot for the chosen X (Z = A X B).
   data.X.linear() = so3::Exp(testing::RandomRotationVector(rng, x_angle));
-  const testing::PoseNoise noise{0.3 * kDegree, 0.3e-3};
+  const testing::PoseNoise noise{0.3 * kRadiansPerDegree, 0.3e-3};
   for (int i = 0; i < stations; ++i) {
     data.T_base_gripper_true[i] = data.Z * T_target_camera[i] * data.X.inverse();
     data.T_base_gripper[i] = testing::AddPoseNoise(data.T_base_gripper_true[i], noise, rng);
@@ -47,7 +46,7 @@ testing::Scene NoisyCaseWithXAngle(double x_angle, int stations, uint64_t seed) 
 // solve is ill-conditioned there; in the pre-rotated frame the noisy error stays at the level of
 // the noise, as for any other X.
 TEST(TsaiLenz, NoisyDataWithXNearHalfTurnStayAccurate) {
-  for (double x_angle : {std::numbers::pi, std::numbers::pi - 1e-3 * kDegree, 1.0}) {
+  for (double x_angle : {std::numbers::pi, std::numbers::pi - 1e-3 * kRadiansPerDegree, 1.0}) {
     double worst = 0.0;
     for (uint64_t seed = 1; seed <= 40; ++seed) {
       const testing::Scene data = NoisyCaseWithXAngle(x_angle, 8, seed);
@@ -55,7 +54,7 @@ TEST(TsaiLenz, NoisyDataWithXNearHalfTurnStayAccurate) {
       worst = std::max(worst, testing::Degrees(testing::Error(X, data.X).rotation));
     }
     std::printf("X angle %.5f deg: worst rotation error %.3f deg over 40 noisy data sets\n",
-                x_angle / kDegree, worst);
+                x_angle / kRadiansPerDegree, worst);
     EXPECT_LT(worst, 2.0) << x_angle;
   }
 }
@@ -70,7 +69,7 @@ TEST(TsaiLenz, PureTranslationStationsAreHarmless) {
         worst_without,
         testing::Error(SolveTsaiLenz(AllPairMotions(data.MeasuredProblem())), data.X).rotation);
     std::mt19937_64 rng(seed);
-    const testing::PoseNoise noise{0.3 * kDegree, 0.3e-3};
+    const testing::PoseNoise noise{0.3 * kRadiansPerDegree, 0.3e-3};
     for (int k = 0; k < 20; ++k) {  // same orientation as station 0, moved by up to 10 cm
       const Pose shift =
           MakePose(Eigen::Matrix3d::Identity(), testing::RandomPose(rng, 0.1).translation());

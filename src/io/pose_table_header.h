@@ -4,12 +4,12 @@
 #pragma once
 
 #include <array>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/euler.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/pose_table.h"
@@ -63,8 +63,6 @@ std::optional<EulerSequence> EulerDirective(std::string_view comment_line);
 std::string Quoted(std::string_view text);
 // "%.1e", for "how far off" in messages.
 std::string Scientific(double value);
-
-inline constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
 // File length unit → metres. Dividing by 1000 (rather than multiplying by 0.001) makes mm → m → mm
 // reproduce the file's digits in more cases.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/import_tabb.h"
@@ -27,7 +28,6 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
 
 // Independent definitions (not the library's Euler code): elementary rotations composed by hand.
 using testing::Rx;
@@ -274,11 +274,15 @@ TEST(ReadPoseTableTest, EulerPresetsAgainstElementaryRotations) {
   const PoseTable kuka = Parse("x,y,z,a,b,c\n0,0,0,10,-35,120\n");
   EXPECT_EQ(kuka.rotation->ToString(), "kuka");
   EXPECT_TRUE(kuka.degrees);
-  ExpectRotationNear(kuka.rows[0].pose, Rz(a * kDeg) * Ry(b * kDeg) * Rx(c * kDeg), 1e-15);
+  ExpectRotationNear(
+      kuka.rows[0].pose,
+      Rz(a * kRadiansPerDegree) * Ry(b * kRadiansPerDegree) * Rx(c * kRadiansPerDegree), 1e-15);
   // fanuc: W, P, R = extrinsic xyz → Rz(R) Ry(P) Rx(W); degrees by default.
   const PoseTable fanuc = Parse("x,y,z,w,p,r\n0,0,0,10,-35,120\n");
   EXPECT_EQ(fanuc.rotation->ToString(), "fanuc");
-  ExpectRotationNear(fanuc.rows[0].pose, Rz(c * kDeg) * Ry(b * kDeg) * Rx(a * kDeg), 1e-15);
+  ExpectRotationNear(
+      fanuc.rows[0].pose,
+      Rz(c * kRadiansPerDegree) * Ry(b * kRadiansPerDegree) * Rx(a * kRadiansPerDegree), 1e-15);
   // rpy: extrinsic xyz in radians.
   const PoseTable rpy = Parse("x,y,z,roll,pitch,yaw\n0,0,0,0.1,-0.2,0.3\n");
   EXPECT_EQ(rpy.rotation->ToString(), "rpy");
@@ -289,7 +293,9 @@ TEST(ReadPoseTableTest, EulerPresetsAgainstElementaryRotations) {
   EXPECT_FALSE(kuka_rad.degrees);
   ExpectRotationNear(kuka_rad.rows[0].pose, Rz(0.1) * Ry(-0.2) * Rx(0.3), 1e-15);
   const PoseTable rpy_deg = Parse("x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0,10,-35,120\n");
-  ExpectRotationNear(rpy_deg.rows[0].pose, Rz(c * kDeg) * Ry(b * kDeg) * Rx(a * kDeg), 1e-15);
+  ExpectRotationNear(
+      rpy_deg.rows[0].pose,
+      Rz(c * kRadiansPerDegree) * Ry(b * kRadiansPerDegree) * Rx(a * kRadiansPerDegree), 1e-15);
 }
 
 TEST(ReadPoseTableTest, GenericEulerNeedsASequence) {
@@ -331,8 +337,11 @@ TEST(ReadPoseTableTest, PresetColumnsRejectAConflictingSequence) {
 
 TEST(ReadPoseTableTest, GimbalLockRowsReadExactly) {
   const PoseTable table = Parse("x,y,z,a,b,c\n0,0,0,30,90,40\n0,0,0,-30,-90,20\n");
-  ExpectRotationNear(table.rows[0].pose, Rz(30 * kDeg) * Ry(kPi / 2) * Rx(40 * kDeg), 1e-15);
-  ExpectRotationNear(table.rows[1].pose, Rz(-30 * kDeg) * Ry(-kPi / 2) * Rx(20 * kDeg), 1e-15);
+  ExpectRotationNear(table.rows[0].pose,
+                     Rz(30 * kRadiansPerDegree) * Ry(kPi / 2) * Rx(40 * kRadiansPerDegree), 1e-15);
+  ExpectRotationNear(table.rows[1].pose,
+                     Rz(-30 * kRadiansPerDegree) * Ry(-kPi / 2) * Rx(20 * kRadiansPerDegree),
+                     1e-15);
 }
 
 // ---- layout, units, ids, stamps

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/camera_yaml.h"
 #include "testing/detection_errors.h"
 #include "testing/render_once.h"
@@ -25,19 +26,19 @@
 namespace hecal::jobs {
 namespace {
 
-using hecal::testing::kDeg;
-
 constexpr int kViews = 8;
 
 // A camera 10 cm off the flange looking along its x; the board 60 cm in front of the base.
 Pose TrueX() {
-  return MakePose(Eigen::AngleAxisd(100 * kDeg, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
-                      .toRotationMatrix(),
-                  Eigen::Vector3d(0.04, -0.03, 0.10));
+  return MakePose(
+      Eigen::AngleAxisd(100 * kRadiansPerDegree, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
+          .toRotationMatrix(),
+      Eigen::Vector3d(0.04, -0.03, 0.10));
 }
 Pose TrueZ() {
   return MakePose(
-      Eigen::AngleAxisd(170 * kDeg, Eigen::Vector3d(1.0, 0.1, 0.0).normalized()).toRotationMatrix(),
+      Eigen::AngleAxisd(170 * kRadiansPerDegree, Eigen::Vector3d(1.0, 0.1, 0.0).normalized())
+          .toRotationMatrix(),
       Eigen::Vector3d(0.6, 0.1, 0.05));
 }
 

@@ -2,12 +2,11 @@
 #include "hecal/report/bench_file.h"
 
 #include <nlohmann/json.hpp>
-#include <numbers>
+
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::report {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 nlohmann::json StartJson(study::BenchStart start) {
   switch (start) {
@@ -36,7 +35,7 @@ std::string BenchJson(const study::BenchResult& result) {
     object["start"] = StartJson(row.start);
     object["stations"] = row.stations;
     object["us_per_solve"] = row.us_per_solve;
-    object["rotation_error_deg"] = Optional(row.accuracy.rotation_error, kDeg);
+    object["rotation_error_deg"] = Optional(row.accuracy.rotation_error, kDegreesPerRadian);
     object["translation_error"] = Optional(row.accuracy.translation_error, 1.0);
     object["translation_unit"] = "m";
     object["failures"] = row.accuracy.failures;

@@ -3,21 +3,20 @@
 
 #include <array>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <string_view>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/report/json_matrix.h"
 
 namespace hecal::report {
 
 std::string ContourPoseJson(const contour::ShapePose& result) {
-  constexpr double kDegrees = 180.0 / std::numbers::pi;
   const contour::ContourPose& pose = result.pose;
   nlohmann::json json = {
       {"translation", JsonVector(pose.translation)},
       {"rotation_matrix", JsonRows(pose.rotation)},
       {"euler", JsonVector(pose.euler)},
-      {"euler_deg", JsonVector(pose.euler * kDegrees)},
+      {"euler_deg", JsonVector(pose.euler * kDegreesPerRadian)},
       {"sequence", contour::RotationSequence(pose.form)},
       {"units", {{"translation", "unit of --z0"}, {"euler", "rad"}, {"euler_deg", "deg"}}},
   };

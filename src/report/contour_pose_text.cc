@@ -4,17 +4,16 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
-#include <numbers>
 #include <optional>
 #include <string_view>
 
 #include "hecal/contour/affine_pose.h"
 #include "hecal/contour/pose_uncertainty.h"
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::report {
 
 void PrintContourPose(std::ostream& out, const contour::ShapePose& result) {
-  constexpr double kDegrees = 180.0 / std::numbers::pi;
   const contour::ContourPose& pose = result.pose;
   const std::optional<contour::ContourPoseUncertainty>& ut = result.uncertainty;
   const std::string_view sequence = contour::RotationSequence(pose.form);
@@ -24,12 +23,12 @@ void PrintContourPose(std::ostream& out, const contour::ShapePose& result) {
   out << "rotation matrix\n";
   for (int r = 0; r < 3; ++r) out << "  " << pose.rotation.row(r) << "\n";
   out << "euler " << sequence << " = (" << pose.euler.transpose() << ") rad = ("
-      << (pose.euler * kDegrees).transpose() << ") deg\n";
+      << (pose.euler * kDegreesPerRadian).transpose() << ") deg\n";
   if (ut) {
     out << "UT (13 sigma points), 1σ:";
     for (std::size_t j = 0; j < 6; ++j) {
       const double sd = std::sqrt(ut->covariance(static_cast<int>(j), static_cast<int>(j)));
-      out << " " << names[j] << " " << (j < 3 ? sd : sd * kDegrees) << (j < 3 ? "" : "°")
+      out << " " << names[j] << " " << (j < 3 ? sd : sd * kDegreesPerRadian) << (j < 3 ? "" : "°")
           << (ut->biased[j] ? " (biased)" : "");
     }
     out << "\n";

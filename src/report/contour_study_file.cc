@@ -3,20 +3,16 @@
 
 #include <cmath>
 #include <iomanip>
-#include <numbers>
 #include <sstream>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/report/svg_figure.h"
 
 namespace hecal::report {
-namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-}  // namespace
+namespace {}  // namespace
 
 double StudyDisplay(int component, double value) {
-  return component < 3 ? value : value * kDegrees;
+  return component < 3 ? value : value * kDegreesPerRadian;
 }
 
 std::string StudyMotionLabel(contour::StudyMotion motion) {

@@ -5,17 +5,15 @@
 #include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <string_view>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/io/delimited_text.h"
 #include "hecal/report/json_matrix.h"
 #include "hecal/version.h"
 
 namespace hecal::report {
 namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 constexpr std::array<std::string_view, 6> kShapeNames = {"tx",    "ty",  "m11m1",
                                                          "m22m1", "m21", "m12"};
 
@@ -65,7 +63,7 @@ std::string ContourTrackCsv(const ContourTrack& track) {
       const int j = i % 6;
       const double value =
           i < 6 ? f.pose->parameters(j) : std::sqrt(std::max(0.0, f.pose->covariance(j, j)));
-      io::AppendDouble(j < 3 ? value : value * kDegrees, &csv);
+      io::AppendDouble(j < 3 ? value : value * kDegreesPerRadian, &csv);
     }
     if (f.pose) {
       for (std::size_t j = 0; j < 6; ++j) {
@@ -131,7 +129,7 @@ std::string ContourTrackJson(const ContourTrack& track) {
       frame["pose"] = {
           {"translation", JsonVector(f.pose->pose.translation)},
           {"rotation_matrix", JsonRows(f.pose->pose.rotation)},
-          {"euler_deg", JsonVector(f.pose->pose.euler * kDegrees)},
+          {"euler_deg", JsonVector(f.pose->pose.euler * kDegreesPerRadian)},
           {"parameters", JsonVector(f.pose->parameters)},
           {"covariance", JsonRows(f.pose->covariance)},
           {"ut_mean", JsonVector(f.pose->mean)},

@@ -3,13 +3,13 @@
 
 #include <array>
 #include <cstdio>
-#include <numbers>
 #include <string_view>
+
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::report {
 
 std::string ContourTrackLine(const contour::TrackedImage& image, contour::RotationForm form) {
-  constexpr double kDegrees = 180.0 / std::numbers::pi;
   const std::array<std::string_view, 6> names = contour::PoseParameterNames(form);
   const contour::SequenceFrame& frame = image.frame;
   char line[256];
@@ -21,7 +21,8 @@ std::string ContourTrackLine(const contour::TrackedImage& image, contour::Rotati
     const Vector6d& p = frame.pose->parameters;
     std::snprintf(line, sizeof line, "  T = (%.3f, %.3f, %.3f)  %s,%s,%s = (%.3f, %.3f, %.3f)°",
                   p(0), p(1), p(2), std::string(names[3]).c_str(), std::string(names[4]).c_str(),
-                  std::string(names[5]).c_str(), p(3) * kDegrees, p(4) * kDegrees, p(5) * kDegrees);
+                  std::string(names[5]).c_str(), p(3) * kDegreesPerRadian, p(4) * kDegreesPerRadian,
+                  p(5) * kDegreesPerRadian);
     text += line;
     if (frame.pose->any_biased) text += "  (bias)";
   }

@@ -5,19 +5,17 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/image_scene.h"
 
 namespace hecal::report {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // 13 images im0 … im12: im1 was skipped by the front end; the other twelve are stations, with
 // the true camera poses (σ 0.1 mrad / 0.1 mm) and pixels of 0.2 px noise, except im4 (the fourth
@@ -42,7 +40,7 @@ ImageCalibrationInput Input(const testing::ImageScene& s) {
 }
 
 TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
-  const testing::PoseNoise robot{0.01 * kDeg, 0.05e-3};
+  const testing::PoseNoise robot{0.01 * kRadiansPerDegree, 0.05e-3};
   testing::ImageScene s = testing::MakeImageScene(
       testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 12, 31, robot, 0.2));
   std::mt19937_64 rng(9);
@@ -52,7 +50,7 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   }
   ImageCalibrationInput input = Input(s);
   Vector6d slip;
-  slip << 0.0, 0.0, 5.0 * kDeg, 0.0, 0.0, 0.0;
+  slip << 0.0, 0.0, 5.0 * kRadiansPerDegree, 0.0, 0.0, 0.0;
   input.stations[8].T_base_gripper = input.stations[8].T_base_gripper * se3::Exp(slip);
   estimation::ImageCalibrationOptions options;
   options.setup = handeye::Setup::kEyeInHand;
@@ -77,7 +75,7 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   EXPECT_EQ(result.rejected_ids, (std::vector<std::string>{"im4", "im9"}));
   ASSERT_FALSE(result.warnings.empty());
   EXPECT_EQ(result.warnings.front(), "a note of the caller");
-  EXPECT_LT(se3::Log(s.poses.X.inverse() * result.X).head<3>().norm(), 0.05 * kDeg);
+  EXPECT_LT(se3::Log(s.poses.X.inverse() * result.X).head<3>().norm(), 0.05 * kRadiansPerDegree);
 }
 
 TEST(ImageCalibration, StationsMustMatchTheUsedImages) {

@@ -2,17 +2,13 @@
 #include "hecal/report/pose_text.h"
 
 #include <iomanip>
-#include <numbers>
 #include <string_view>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::report {
-namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-}  // namespace
+namespace {}  // namespace
 
 void PrintPoseEstimate(std::ostream& out, const pose::PoseEstimate& estimate, std::size_t points,
                        io::LengthUnit unit) {
@@ -29,10 +25,12 @@ void PrintPoseEstimate(std::ostream& out, const pose::PoseEstimate& estimate, st
     out << " |" << std::setw(12) << T.translation()(r) * scale << " ]\n";
   }
   out << "  t = (" << (T.translation() * scale).transpose() << ") " << unit_name << "\n";
-  out << "  rvec = (" << rvec.transpose() << ") rad, " << rvec.norm() * kDegrees << " deg\n";
+  out << "  rvec = (" << rvec.transpose() << ") rad, " << rvec.norm() * kDegreesPerRadian
+      << " deg\n";
   if (estimate.covariance) {
     const Vector6d sd = estimate.covariance->diagonal().cwiseSqrt();
-    out << "  1σ rotation (rx, ry, rz) = (" << sd.head<3>().transpose() * kDegrees << ") deg\n";
+    out << "  1σ rotation (rx, ry, rz) = (" << sd.head<3>().transpose() * kDegreesPerRadian
+        << ") deg\n";
     out << "  1σ translation (tx, ty, tz) = (" << sd.tail<3>().transpose() * scale << ") "
         << unit_name << "\n";
   }

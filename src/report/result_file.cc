@@ -4,8 +4,8 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <numbers>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/json_matrix.h"
@@ -16,8 +16,6 @@ namespace hecal::report {
 namespace {
 
 using nlohmann::json;
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 // A pose in the output length unit: 4×4 matrix, translation, Hamilton quaternion (w, x, y, z).
 json PoseJson(const Pose& T, std::string_view frame, double scale) {
@@ -42,7 +40,7 @@ json CovarianceJson(const Matrix6d& covariance, double scale) {
 
 // Per-axis values of a (ω, v) 6-vector of standard deviations: degrees and the output unit.
 json SigmaJson(const Vector6d& sd, double scale) {
-  const Eigen::Vector3d r = sd.head<3>() * kDegrees;
+  const Eigen::Vector3d r = sd.head<3>() * kDegreesPerRadian;
   const Eigen::Vector3d t = sd.tail<3>() * scale;
   return {{"rotation_deg", {r.x(), r.y(), r.z()}}, {"translation", {t.x(), t.y(), t.z()}}};
 }
@@ -190,7 +188,7 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
   for (size_t k = 0; k < used.size() && k < result.residuals.size(); ++k) {
     const estimation::StationResidual& r = result.residuals[k];
     per_station.push_back({{"id", used[k]},
-                           {"rotation_deg", r.rotation * kDegrees},
+                           {"rotation_deg", r.rotation * kDegreesPerRadian},
                            {"translation", r.translation * scale},
                            {"whitened", r.whitened},
                            {"outlier", r.outlier}});
@@ -203,24 +201,25 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
     rejected_residuals.push_back(
         {{"id", k < result.rejected_ids.size() ? result.rejected_ids[k]
                                                : std::to_string(result.rejected[k])},
-         {"rotation_deg", r.rotation * kDegrees},
+         {"rotation_deg", r.rotation * kDegreesPerRadian},
          {"translation", r.translation * scale},
          {"whitened", r.whitened}});
   }
-  object["residuals"] = {{"rotation_rms_deg", result.rotation_rms * kDegrees},
+  object["residuals"] = {{"rotation_rms_deg", result.rotation_rms * kDegreesPerRadian},
                          {"translation_rms", result.translation_rms * scale},
                          {"per_station", per_station},
                          {"rejected", rejected_residuals}};
   object["noise"] = {{"robot_sigma",
-                      {{"rotation_deg", result.robot_sigma.rotation * kDegrees},
+                      {{"rotation_deg", result.robot_sigma.rotation * kDegreesPerRadian},
                        {"translation", result.robot_sigma.translation * scale}}},
                      {"camera_sigma",
-                      {{"rotation_deg", result.camera_sigma.rotation * kDegrees},
+                      {{"rotation_deg", result.camera_sigma.rotation * kDegreesPerRadian},
                        {"translation", result.camera_sigma.translation * scale}}},
                      {"estimated", result.sigmas_estimated}};
   if (result.camera_excess.rotation > 0.0 || result.camera_excess.translation > 0.0) {
-    object["noise"]["camera_excess"] = {{"tilt_deg", result.camera_excess.rotation * kDegrees},
-                                        {"depth", result.camera_excess.translation * scale}};
+    object["noise"]["camera_excess"] = {
+        {"tilt_deg", result.camera_excess.rotation * kDegreesPerRadian},
+        {"depth", result.camera_excess.translation * scale}};
   }
   if (result.student_t_dof > 0.0) object["noise"]["student_t_dof"] = result.student_t_dof;
   object["stations"] = {

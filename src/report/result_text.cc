@@ -12,14 +12,13 @@
 #include <vector>
 
 #include "hecal/estimation/methods.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/rotation.h"
 #include "hecal/io/units.h"
 #include "hecal/report/translation_sigma.h"
 
 namespace hecal::report {
 namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 // The printout lists every station up to this many, else the largest residuals only.
 constexpr size_t kMaxPrintedStations = 200;
 constexpr size_t kLargestPrintedStations = 20;
@@ -33,7 +32,7 @@ void PrintPose(std::ostream& out, std::string_view name, std::string_view frame,
     for (int c = 0; c < 3; ++c) out << std::setw(11) << T.linear()(r, c);
     out << " |" << std::setw(11) << T.translation()(r) * scale << " ]\n";
   }
-  out << "  rotation " << aa.angle * kDegrees << " deg about (" << aa.axis.transpose()
+  out << "  rotation " << aa.angle * kDegreesPerRadian << " deg about (" << aa.axis.transpose()
       << "), translation " << (T.translation() * scale).transpose() << " " << unit << "\n";
 }
 
@@ -41,7 +40,7 @@ void PrintPose(std::ostream& out, std::string_view name, std::string_view frame,
 // along the pose's own axes (the covariance's; translation_sigma.h gives t's parent-frame σ).
 void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covariance) {
   const Vector6d sd = covariance.diagonal().cwiseSqrt();
-  out << "  1σ " << name << ": rotation (" << sd.head<3>().transpose() * kDegrees
+  out << "  1σ " << name << ": rotation (" << sd.head<3>().transpose() * kDegreesPerRadian
       << ") deg, translation (" << sd.tail<3>().transpose() * 1000.0 << ") mm\n";
 }
 
@@ -70,8 +69,8 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
     PrintSigma(out, "Z", c.Z());
     PrintTranslationSigmaInParent(out, "Z", handeye::ZFrameName(document.setup), result.Z, c.Z());
   }
-  out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegrees << " deg, "
-      << result.translation_rms * scale << " " << unit << "\n";
+  out << std::setprecision(4) << "residual RMS: " << result.rotation_rms * kDegreesPerRadian
+      << " deg, " << result.translation_rms * scale << " " << unit << "\n";
   out << "  station        rotation_deg   translation_" << unit << "   whitened\n";
   const std::vector<std::string> used = UsedStationIds(document);
   const size_t shown = std::min(used.size(), result.residuals.size());
@@ -91,7 +90,7 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
   for (const size_t k : order) {
     const estimation::StationResidual& r = result.residuals[k];
     out << "  " << std::left << std::setw(14) << used[k] << std::right << std::setw(12)
-        << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)
+        << r.rotation * kDegreesPerRadian << std::setw(17) << r.translation * scale << std::setw(11)
         << r.whitened << (r.outlier ? "   > 3σ, check this station" : "") << "\n";
   }
   for (size_t k = 0; k < result.rejected_residuals.size(); ++k) {
@@ -99,7 +98,7 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
     const std::string id = k < result.rejected_ids.size() ? result.rejected_ids[k]
                                                           : std::to_string(result.rejected[k] + 1);
     out << "  " << std::left << std::setw(14) << id << std::right << std::setw(12)
-        << r.rotation * kDegrees << std::setw(17) << r.translation * scale << std::setw(11)
+        << r.rotation * kDegreesPerRadian << std::setw(17) << r.translation * scale << std::setw(11)
         << r.whitened << "   rejected: outlier, not used\n";
   }
   for (const std::string& warning : result.warnings) out << "warning: " << warning << "\n";
@@ -126,17 +125,17 @@ void PrintMethodComparison(std::ostream& out, const ResultDocument& document) {
     const Eigen::Vector3d t = r.X.translation() * scale;
     out << "  " << std::left << std::setw(16) << estimation::Info(r.method).name << std::right
         << std::setprecision(6) << std::setw(11) << t.x() << std::setw(12) << t.y() << std::setw(12)
-        << t.z() << std::setprecision(4) << std::setw(12) << r.rotation_rms * kDegrees
+        << t.z() << std::setprecision(4) << std::setw(12) << r.rotation_rms * kDegreesPerRadian
         << std::setw(9) << r.translation_rms * scale;
     if (ml != document.results.end()) {
       const Pose d = ml->X.inverse() * r.X;
-      out << std::setw(12) << AxisAngleFromMatrix(d.linear()).angle * kDegrees << std::setw(10)
-          << (r.X.translation() - ml->X.translation()).norm() * scale;
+      out << std::setw(12) << AxisAngleFromMatrix(d.linear()).angle * kDegreesPerRadian
+          << std::setw(10) << (r.X.translation() - ml->X.translation()).norm() * scale;
     }
     if (r.covariance) {  // predicted RMS error of X: sqrt(trace) of each block
       const Matrix6d C = r.covariance->X();
-      out << std::setw(10) << std::sqrt(C.topLeftCorner<3, 3>().trace()) * kDegrees << std::setw(9)
-          << std::sqrt(C.bottomRightCorner<3, 3>().trace()) * 1000.0 << "  "
+      out << std::setw(10) << std::sqrt(C.topLeftCorner<3, 3>().trace()) * kDegreesPerRadian
+          << std::setw(9) << std::sqrt(C.bottomRightCorner<3, 3>().trace()) * 1000.0 << "  "
           << estimation::CovarianceMethodName(r.covariance->method);
     }
     out << "\n";

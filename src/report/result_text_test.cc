@@ -8,14 +8,13 @@
 
 #include <Eigen/Geometry>
 #include <array>
-#include <numbers>
 #include <sstream>
 #include <string>
 
+#include "hecal/geometry/angle_units.h"
+
 namespace hecal::report {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 estimation::CalibrationResult QuarterTurn(estimation::Method method, double tz_m) {
   estimation::CalibrationResult result;
@@ -24,11 +23,12 @@ estimation::CalibrationResult QuarterTurn(estimation::Method method, double tz_m
   R << 0, -1, 0, 1, 0, 0, 0, 0, 1;
   result.X.linear() = R;
   result.X.translation() = Eigen::Vector3d(0.1, 0.2, tz_m);
-  result.residuals = {{0.5 * kDeg, 1.25e-3, 0.8, false}, {2.0 * kDeg, 4e-3, 3.5, true}};
-  result.rotation_rms = 1.5 * kDeg;
+  result.residuals = {{0.5 * kRadiansPerDegree, 1.25e-3, 0.8, false},
+                      {2.0 * kRadiansPerDegree, 4e-3, 3.5, true}};
+  result.rotation_rms = 1.5 * kRadiansPerDegree;
   result.translation_rms = 3e-3;
   result.rejected = {1};
-  result.rejected_residuals = {{10.0 * kDeg, 0.05, 20.0, true}};
+  result.rejected_residuals = {{10.0 * kRadiansPerDegree, 0.05, 20.0, true}};
   result.rejected_ids = {"s2"};
   result.warnings = {"a warning"};
   return result;
@@ -115,7 +115,8 @@ TEST(ResultText, ImageSummaryLines) {
   ImageReport images;
   images.pose_level.method = estimation::Method::kTsaiLenz;
   images.pose_level.X = document.results[0].X;
-  images.pose_level.X.linear() *= Eigen::AngleAxisd(-2.0 * kDeg, Eigen::Vector3d::UnitX()).matrix();
+  images.pose_level.X.linear() *=
+      Eigen::AngleAxisd(-2.0 * kRadiansPerDegree, Eigen::Vector3d::UnitX()).matrix();
   images.pose_level.X.translation() += Eigen::Vector3d(3e-3, 4e-3, 0.0);
   images.rms_px = 0.25;
   images.pixel_sigma = 0.1876;

@@ -1,19 +1,17 @@
 // The study tables as text: see study_text.h.
 #include "hecal/report/study_text.h"
 
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "hecal/estimation/methods.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/report/text_table.h"
 #include "hecal/study/study_csv.h"
 
 namespace hecal::report {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // Consistency of the predicted covariances of X (study.h), one line per method.
 void PrintConsistency(const study::StudyResult& result, size_t setting, std::ostream& out) {
@@ -64,7 +62,7 @@ void PrintRejection(const study::StudyResult& result, size_t setting, std::ostre
         << Pad(percent(m.outliers_rejected, m.outliers_injected), 9)
         << Pad(percent(m.trials_all_found, m.trials - m.failures), 11)
         << Pad(percent(m.good_rejected, m.good_stations), 10)
-        << Pad(Readable(m.rotation_rmse_clean * kDeg), 12)
+        << Pad(Readable(m.rotation_rmse_clean * kDegreesPerRadian), 12)
         << Pad(Fixed(m.rotation.rmse / m.rotation_rmse_clean, 3), 7)
         << Pad(Readable(m.translation_rmse_clean * 1000.0), 17)
         << Pad(Fixed(m.translation.rmse / m.translation_rmse_clean, 3), 7) << "\n";
@@ -95,8 +93,8 @@ void PrintStudyTable(std::ostream& out, const study::StudyResult& result) {
         << sim::NoiseKindName(setting.noise_kind) << " noise on "
         << study::NoiseOnName(setting.noise_on) << ", sigma "
         << study::FormatNumber(setting.translation_sigma * 1000.0) << " mm / "
-        << study::FormatNumber(setting.rotation_sigma * kDeg) << " deg, " << result.options.trials
-        << " trials";
+        << study::FormatNumber(setting.rotation_sigma * kDegreesPerRadian) << " deg, "
+        << result.options.trials << " trials";
     if (setting.robot_scale != 1.0)
       out << ", robot noise " << study::FormatNumber(setting.robot_scale) << "x";
     if (setting.gross_outliers > 0) {
@@ -105,7 +103,7 @@ void PrintStudyTable(std::ostream& out, const study::StudyResult& result) {
     out << "\n";
     const study::Bound& bound = result.setting_bounds[s];
     out << "  first-order bound (ml at the truth): rotation RMSE "
-        << Readable(bound.rotation * kDeg) << " deg, translation RMSE "
+        << Readable(bound.rotation * kDegreesPerRadian) << " deg, translation RMSE "
         << Readable(bound.translation * 1000.0) << " mm\n";
     out << "  " << Pad("method", 18, true) << Pad("fail", 5) << Pad("outl", 5)
         << Pad("rot median", 12) << Pad("rmse", 10) << Pad("p10", 10) << Pad("p90", 10)
@@ -116,9 +114,11 @@ void PrintStudyTable(std::ostream& out, const study::StudyResult& result) {
       const study::MethodSummary& m = result.summaries[row];
       out << "  " << Pad(std::string(estimation::Info(m.method).name), 18, true)
           << Pad(std::to_string(m.failures), 5) << Pad(std::to_string(m.outliers), 5)
-          << Pad(Readable(m.rotation.median * kDeg), 12)
-          << Pad(Readable(m.rotation.rmse * kDeg), 10) << Pad(Readable(m.rotation.p10 * kDeg), 10)
-          << Pad(Readable(m.rotation.p90 * kDeg), 10) << Pad(Readable(m.rotation.max * kDeg), 11)
+          << Pad(Readable(m.rotation.median * kDegreesPerRadian), 12)
+          << Pad(Readable(m.rotation.rmse * kDegreesPerRadian), 10)
+          << Pad(Readable(m.rotation.p10 * kDegreesPerRadian), 10)
+          << Pad(Readable(m.rotation.p90 * kDegreesPerRadian), 10)
+          << Pad(Readable(m.rotation.max * kDegreesPerRadian), 11)
           << Pad(Readable(m.translation.median * 1000.0), 12)
           << Pad(Readable(m.translation.rmse * 1000.0), 10)
           << Pad(Readable(m.translation.p10 * 1000.0), 10)
@@ -154,10 +154,10 @@ void PrintBenchTable(std::ostream& out, const study::BenchResult& result) {
         << Pad(std::to_string(row.stations), 4) << Pad(Printf("%.2f", row.us_per_solve), 12)
         << Pad(peer ? Printf("%.2f", peer->us_per_solve) : "-", 12)
         << Pad(peer ? Printf("%.1fx", peer->us_per_solve / row.us_per_solve) : "-", 10)
-        << Pad(ErrorText(row.accuracy.rotation_error, kDeg), 11)
+        << Pad(ErrorText(row.accuracy.rotation_error, kDegreesPerRadian), 11)
         << Pad(ErrorText(row.accuracy.translation_error, 1000.0), 10)
         << Pad(std::to_string(row.accuracy.failures), 5)
-        << Pad(peer ? ErrorText(peer->accuracy.rotation_error, kDeg) : "-", 12)
+        << Pad(peer ? ErrorText(peer->accuracy.rotation_error, kDegreesPerRadian) : "-", 12)
         << Pad(peer ? ErrorText(peer->accuracy.translation_error, 1000.0) : "-", 11)
         << Pad(peer ? std::to_string(peer->accuracy.failures) : "-", 5) << "\n";
   }
@@ -176,7 +176,7 @@ void PrintBenchTable(std::ostream& out, const study::BenchResult& result) {
         << (multi ? Printf(", %.1fx faster than from the closed-form starts",
                            multi->us_per_solve / row.us_per_solve)
                   : std::string())
-        << " (X " << ErrorText(row.accuracy.rotation_error, kDeg) << " deg / "
+        << " (X " << ErrorText(row.accuracy.rotation_error, kDegreesPerRadian) << " deg / "
         << ErrorText(row.accuracy.translation_error, 1000.0) << " mm, " << row.accuracy.failures
         << " fail)\n";
   }

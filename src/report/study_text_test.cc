@@ -4,14 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <sstream>
 #include <string>
 
+#include "hecal/geometry/angle_units.h"
+
 namespace hecal::report {
 namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
 
 bool Has(const std::string& text, const std::string& line) {
   return text.find(line + "\n") != std::string::npos;
@@ -22,16 +21,22 @@ TEST(StudyText, OneSettingOneMethod) {
   study::Setting setting;
   setting.stations = 5;
   setting.translation_sigma = 1e-3;
-  setting.rotation_sigma = 1.0 * kRad;
+  setting.rotation_sigma = 1.0 * kRadiansPerDegree;
   result.options.settings = {setting};
   result.options.trials = 10;
-  result.setting_bounds = {{0.5 * kRad, 0.25e-3}};
+  result.setting_bounds = {{0.5 * kRadiansPerDegree, 0.25e-3}};
   study::MethodSummary m;
   m.method = estimation::Method::kTsaiLenz;
   m.trials = 10;
   m.failures = 1;
   m.outliers = 2;
-  m.rotation = {9, 1, 1.0 * kRad, 2.0 * kRad, 0.5 * kRad, 3.0 * kRad, 4.0 * kRad};
+  m.rotation = {9,
+                1,
+                1.0 * kRadiansPerDegree,
+                2.0 * kRadiansPerDegree,
+                0.5 * kRadiansPerDegree,
+                3.0 * kRadiansPerDegree,
+                4.0 * kRadiansPerDegree};
   m.translation = {9, 1, 2e-3, 3e-3, 1e-3, 4e-3, 5e-6};
   result.summaries = {m};
   std::ostringstream out;
@@ -65,7 +70,7 @@ TEST(StudyText, BenchAgainstThePeer) {
   hecal.start = study::BenchStart::kNotApplicable;
   hecal.stations = 10;
   hecal.us_per_solve = 5.0;
-  hecal.accuracy.rotation_error = 0.01 * kRad;
+  hecal.accuracy.rotation_error = 0.01 * kRadiansPerDegree;
   hecal.accuracy.translation_error = 2e-7;  // 2e-4 mm: scientific
   study::BenchRow peer = hecal;
   peer.impl = "opencv";

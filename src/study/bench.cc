@@ -5,18 +5,16 @@
 #include <ctime>
 #include <exception>
 #include <memory>
-#include <numbers>
 #include <random>
 
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/calibration_covariance.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/study/study_csv.h"
 
 namespace hecal::study {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kFailureDeg = 10.0;
 
 // Every timed solve writes here, so the optimiser cannot drop it.
@@ -31,7 +29,7 @@ double ProcessCpuSeconds() {
 }
 
 sim::NoiseModel Noise(const NoiseLevel& sigma) {
-  return {sim::NoiseModel::Kind::kGaussian, sigma.deg / kDeg, sigma.mm * 1e-3};
+  return {sim::NoiseModel::Kind::kGaussian, sigma.deg / kDegreesPerRadian, sigma.mm * 1e-3};
 }
 
 // The solve only (no covariance, no model check), told the true sigmas unless the level is 0.
@@ -197,7 +195,7 @@ BenchAccuracy MeasureAccuracy(const std::vector<BenchDataSet>& sets, const Bench
       accuracy.worst_rotation = std::max(accuracy.worst_rotation, error.rotation);
       accuracy.worst_translation = std::max(accuracy.worst_translation, error.translation);
       ++accuracy.finite;
-      if (error.rotation * kDeg > kFailureDeg) ++accuracy.failures;
+      if (error.rotation * kDegreesPerRadian > kFailureDeg) ++accuracy.failures;
     } catch (const std::exception&) {
       ++accuracy.failures;
     }

@@ -11,16 +11,14 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <numbers>
 #include <vector>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/study/oracle_covariance.h"
 #include "hecal/uncertainty/consistency.h"
 
 namespace hecal::study {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kRedraws = 100;
 
 struct Row {
@@ -74,7 +72,7 @@ Row Cell(const char* name, handeye::Setup setup, sim::NoiseModel::Kind noise, in
   options.setting.stations = 8;
   options.setting.noise_kind = noise;
   options.setting.translation_sigma = 1e-3;
-  options.setting.rotation_sigma = 1.0 * kDeg;
+  options.setting.rotation_sigma = 1.0 * kRadiansPerDegree;
   options.study.covariance.method = estimation::CovarianceMethod::kLinear;
   options.study.estimate_noise = true;
   options.trials = trials;

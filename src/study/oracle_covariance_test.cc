@@ -8,22 +8,20 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
-#include <numbers>
 #include <random>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/uncertainty/consistency.h"
 
 namespace hecal::study {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 OracleOptions GivenSigmas(int trials, int redraws) {
   OracleOptions options;
   options.setting.setup = handeye::Setup::kEyeToHand;
   options.setting.stations = 15;
   options.setting.translation_sigma = 1e-3;
-  options.setting.rotation_sigma = 1.0 * kDeg;
+  options.setting.rotation_sigma = 1.0 * kRadiansPerDegree;
   options.study.covariance.method = estimation::CovarianceMethod::kLinear;
   options.trials = trials;
   options.redraws = redraws;

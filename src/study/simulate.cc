@@ -2,15 +2,13 @@
 #include "hecal/study/simulate.h"
 
 #include <cmath>
-#include <numbers>
 
 #include "hecal/core/options_check.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/study/study_csv.h"
 
 namespace hecal::study {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 std::string Range(std::int64_t low, std::int64_t high) {
   return std::to_string(low) + " to " + std::to_string(high);
@@ -151,7 +149,7 @@ StudyOptions MakeStudyOptions(const SimulateOptions& options) {
                 setting.noise_on = on;
                 setting.noise_kind = kind;
                 setting.translation_sigma = sigma.mm * 1e-3;
-                setting.rotation_sigma = sigma.deg / kDeg;
+                setting.rotation_sigma = sigma.deg / kDegreesPerRadian;
                 setting.gross_outliers = k;
                 setting.robot_scale = robot_scale;
                 study.settings.push_back(setting);

@@ -2,13 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <sstream>
+
+#include "hecal/geometry/angle_units.h"
 
 namespace hecal::study {
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kMm = 1000.0;
 
 std::string Quoted(const std::string& text) {
@@ -25,7 +24,8 @@ std::string SettingColumns(const Setting& s) {
   return std::string(handeye::SetupName(s.setup)) + "," + std::to_string(s.stations) + "," +
          std::string(NoiseOnName(s.noise_on)) + "," +
          std::string(sim::NoiseKindName(s.noise_kind)) + "," +
-         FormatNumber(s.translation_sigma * kMm) + "," + FormatNumber(s.rotation_sigma * kDeg);
+         FormatNumber(s.translation_sigma * kMm) + "," +
+         FormatNumber(s.rotation_sigma * kDegreesPerRadian);
 }
 
 void AppendStatistics(std::ostringstream& out, const sim::SummaryStatistics& s, double rmse_inliers,
@@ -57,17 +57,18 @@ std::string TrialsCsv(const StudyResult& result) {
     const Bound& bound = result.bounds[trial.setting][trial.trial];
     out << SettingColumns(setting) << ',' << trial.trial << ','
         << estimation::Info(trial.method).name << ',' << TrialStatusName(trial.status) << ','
-        << FormatNumber(trial.rotation_error * kDeg) << ','
+        << FormatNumber(trial.rotation_error * kDegreesPerRadian) << ','
         << FormatNumber(trial.translation_error * kMm) << ',' << (trial.outlier ? 1 : 0) << ','
-        << FormatNumber(bound.rotation * kDeg) << ',' << FormatNumber(bound.translation * kMm)
-        << ',' << FormatNumber(trial.nees) << ','
+        << FormatNumber(bound.rotation * kDegreesPerRadian) << ','
+        << FormatNumber(bound.translation * kMm) << ',' << FormatNumber(trial.nees) << ','
         << (trial.message.empty() ? std::string() : Quoted(trial.message)) << ','
         << setting.gross_outliers << ',' << trial.rejected_outliers << ',' << trial.rejected_good
-        << ',' << FormatNumber(trial.rotation_error_clean * kDeg) << ','
+        << ',' << FormatNumber(trial.rotation_error_clean * kDegreesPerRadian) << ','
         << FormatNumber(trial.translation_error_clean * kMm) << ','
         << FormatNumber(setting.robot_scale) << ',' << FormatNumber(trial.nees_model) << ','
-        << (trial.check_used ? 1 : 0) << ',' << FormatNumber(trial.robot_sigma.rotation * kDeg)
-        << ',' << FormatNumber(trial.robot_sigma.translation * kMm) << '\n';
+        << (trial.check_used ? 1 : 0) << ','
+        << FormatNumber(trial.robot_sigma.rotation * kDegreesPerRadian) << ','
+        << FormatNumber(trial.robot_sigma.translation * kMm) << '\n';
   }
   return out.str();
 }
@@ -91,10 +92,10 @@ std::string SummaryCsv(const StudyResult& result) {
     out << SettingColumns(result.options.settings[s.setting]) << ','
         << estimation::Info(s.method).name << ',' << s.trials << ',' << s.failures << ','
         << s.outliers << ',';
-    AppendStatistics(out, s.rotation, s.rotation_rmse_inliers, kDeg);
+    AppendStatistics(out, s.rotation, s.rotation_rmse_inliers, kDegreesPerRadian);
     out << ',';
     AppendStatistics(out, s.translation, s.translation_rmse_inliers, kMm);
-    out << ',' << FormatNumber(bound.rotation * kDeg) << ','
+    out << ',' << FormatNumber(bound.rotation * kDegreesPerRadian) << ','
         << FormatNumber(bound.translation * kMm) << ',' << FormatNumber(s.worst_rotation_over_bound)
         << ',' << FormatNumber(s.worst_translation_over_bound);
     if (s.consistency) {
@@ -114,7 +115,7 @@ std::string SummaryCsv(const StudyResult& result) {
         << FormatNumber(fraction(s.outliers_rejected, s.outliers_injected)) << ','
         << FormatNumber(fraction(s.good_rejected, s.good_stations)) << ','
         << FormatNumber(fraction(s.trials_all_found, s.trials - s.failures)) << ','
-        << FormatNumber(s.rotation_rmse_clean * kDeg) << ','
+        << FormatNumber(s.rotation_rmse_clean * kDegreesPerRadian) << ','
         << FormatNumber(s.translation_rmse_clean * kMm) << ','
         << FormatNumber(result.options.settings[s.setting].robot_scale);
     if (s.consistency_model) {

@@ -3,14 +3,12 @@
 // the same numbers for the README's tables.
 #include <gtest/gtest.h>
 
-#include <numbers>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/study/study.h"
 
 namespace hecal::study {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::vector<Setting> Sweep(const std::vector<int>& stations, double mm, double deg) {
   std::vector<Setting> settings;
@@ -20,7 +18,7 @@ std::vector<Setting> Sweep(const std::vector<int>& stations, double mm, double d
       s.setup = setup;
       s.stations = n;
       s.translation_sigma = mm * 1e-3;
-      s.rotation_sigma = deg * kDeg;
+      s.rotation_sigma = deg * kRadiansPerDegree;
       settings.push_back(s);
     }
   }
@@ -73,7 +71,7 @@ TEST(ThesisStudy, NoCatastrophicClosedFormTrialAtLowNoise) {
   const StudyResult result = RunStudy(options);
   for (const MethodSummary& s : result.summaries) {
     EXPECT_EQ(s.failures, 0) << estimation::Info(s.method).name;
-    EXPECT_LT(s.rotation.max, 10.0 * kDeg) << estimation::Info(s.method).name;
+    EXPECT_LT(s.rotation.max, 10.0 * kRadiansPerDegree) << estimation::Info(s.method).name;
   }
 }
 

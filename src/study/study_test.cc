@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <utility>
 #include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/estimation/calibrate.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/sim/thesis_protocol.h"
@@ -19,8 +19,6 @@
 
 namespace hecal::study {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 Setting MakeSetting(handeye::Setup setup, int stations, double mm, double deg,
                     NoiseOn on = NoiseOn::kBoth,
@@ -31,7 +29,7 @@ Setting MakeSetting(handeye::Setup setup, int stations, double mm, double deg,
   s.noise_on = on;
   s.noise_kind = kind;
   s.translation_sigma = mm * 1e-3;
-  s.rotation_sigma = deg * kDeg;
+  s.rotation_sigma = deg * kRadiansPerDegree;
   return s;
 }
 
@@ -48,7 +46,7 @@ TEST(PoseError, AngleOfRelativeRotationAndTranslationDistance) {
 TEST(NoiseSigmas, DeviceSelectionAndUniformScaling) {
   const Setting robot_only = MakeSetting(handeye::Setup::kEyeInHand, 5, 1.0, 2.0, NoiseOn::kRobot);
   EXPECT_NEAR(RobotSigma(robot_only).translation, 1e-3, 1e-15);
-  EXPECT_NEAR(RobotSigma(robot_only).rotation, 2.0 * kDeg, 1e-15);
+  EXPECT_NEAR(RobotSigma(robot_only).rotation, 2.0 * kRadiansPerDegree, 1e-15);
   EXPECT_EQ(CameraSigma(robot_only).translation, 0.0);
   EXPECT_EQ(CameraSigma(robot_only).rotation, 0.0);
   const Setting uniform = MakeSetting(handeye::Setup::kEyeInHand, 5, 3.0, 3.0, NoiseOn::kCamera,
@@ -134,7 +132,7 @@ TEST(RunStudy, LayoutNoiseFreeExactnessAndSummaries) {
       EXPECT_LT(t.translation_error, 1e-9);
     } else {
       EXPECT_GT(t.rotation_error, 1e-6);  // noisy: errors are real
-      EXPECT_LT(t.rotation_error, 10.0 * kDeg);
+      EXPECT_LT(t.rotation_error, 10.0 * kRadiansPerDegree);
     }
   }
   // Bounds: 0 without noise, positive with.
@@ -308,9 +306,9 @@ TEST(RunStudy, TheTranslationNoiseOfTrial182DoesNotCollapse) {
   protocol.setup = handeye::Setup::kEyeInHand;
   protocol.stations = 8;
   sim::NoiseModel robot, camera;
-  robot.rotation_sigma = kDeg;
+  robot.rotation_sigma = kRadiansPerDegree;
   robot.translation_sigma = 1e-3;
-  camera.rotation_sigma = 0.2 * kDeg;
+  camera.rotation_sigma = 0.2 * kRadiansPerDegree;
   camera.translation_sigma = 0.2e-3;
   const sim::SimulatedData data = sim::SimulateThesisProtocol(protocol, robot, camera, rng);
   estimation::CalibrateOptions options;

@@ -22,12 +22,12 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <numbers>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
 
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/types.h"
 #include "hecal/pose/camera_model.h"
 #include "hecal/pose/target.h"
@@ -35,8 +35,6 @@
 #include "testing/image_scene.h"
 
 namespace hecal::testing {
-
-inline constexpr double kDeg = std::numbers::pi / 180.0;
 
 // 800 × 600 px, f = 700 px, principal point off-centre, the radial and tangential distortion of
 // a typical machine-vision lens: the detection tests.
@@ -92,10 +90,11 @@ inline Eigen::Vector3d TargetCentre(const pose::TargetSpec& target) {
 // axes (frontal at zero).
 inline Pose FrontalView(const pose::TargetSpec& target, double distance, double tilt_x_deg,
                         double tilt_y_deg, double roll_deg) {
-  const Eigen::Matrix3d R = (Eigen::AngleAxisd(tilt_x_deg * kDeg, Eigen::Vector3d::UnitX()) *
-                             Eigen::AngleAxisd(tilt_y_deg * kDeg, Eigen::Vector3d::UnitY()) *
-                             Eigen::AngleAxisd(roll_deg * kDeg, Eigen::Vector3d::UnitZ()))
-                                .toRotationMatrix();
+  const Eigen::Matrix3d R =
+      (Eigen::AngleAxisd(tilt_x_deg * kRadiansPerDegree, Eigen::Vector3d::UnitX()) *
+       Eigen::AngleAxisd(tilt_y_deg * kRadiansPerDegree, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(roll_deg * kRadiansPerDegree, Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
   return MakePose(R, Eigen::Vector3d(0.0, 0.0, distance) - R * TargetCentre(target));
 }
 
@@ -145,10 +144,10 @@ struct ViewSpread {
 inline std::vector<Pose> SpreadViews(const ViewSpread& spread = {}) {
   std::vector<Pose> views;
   for (int k = 0; k < spread.count; ++k) {
-    views.push_back(LookAtView(spread.nearest + spread.step * (k % 3),
-                               (15.0 + 10.0 * (k % 3)) * kDeg, (k * 60.0 + spread.turn_deg) * kDeg,
-                               (k % 2 == 0 ? 0.08 : -0.08), (k % 4 < 2 ? 0.12 : -0.12),
-                               spread.centre));
+    views.push_back(LookAtView(
+        spread.nearest + spread.step * (k % 3), (15.0 + 10.0 * (k % 3)) * kRadiansPerDegree,
+        (k * 60.0 + spread.turn_deg) * kRadiansPerDegree, (k % 2 == 0 ? 0.08 : -0.08),
+        (k % 4 < 2 ? 0.12 : -0.12), spread.centre));
   }
   return views;
 }

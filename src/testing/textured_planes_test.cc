@@ -11,10 +11,10 @@
 #include <cmath>
 #include <vector>
 
+#include "hecal/geometry/angle_units.h"
+
 namespace hecal::testing {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(RenderPlanes, ImagesSharpDotsWhereTheCameraModelProjectsThem) {
   // 640 × 480, radial distortion of a machine-vision lens.
@@ -24,10 +24,11 @@ TEST(RenderPlanes, ImagesSharpDotsWhereTheCameraModelProjectsThem) {
       {0.0, 0.0}, {0.07, 0.05}, {-0.08, 0.06}, {0.09, -0.07}, {-0.06, -0.05}};
   constexpr double kRadius = 0.002;
   TexturedPlane plane;
-  plane.T_world_plane = MakePose((Eigen::AngleAxisd(20 * kDeg, Eigen::Vector3d::UnitX()) *
-                                  Eigen::AngleAxisd(-25 * kDeg, Eigen::Vector3d::UnitY()))
-                                     .toRotationMatrix(),
-                                 Eigen::Vector3d(0.01, -0.02, 0.5));
+  plane.T_world_plane =
+      MakePose((Eigen::AngleAxisd(20 * kRadiansPerDegree, Eigen::Vector3d::UnitX()) *
+                Eigen::AngleAxisd(-25 * kRadiansPerDegree, Eigen::Vector3d::UnitY()))
+                   .toRotationMatrix(),
+               Eigen::Vector3d(0.01, -0.02, 0.5));
   plane.width = 0.3;
   plane.height = 0.25;
   plane.texture = [&dots](double x, double y) {
@@ -71,8 +72,9 @@ TEST(RenderPlanes, TheNearestPlaneWinsWhateverTheOrder) {
   const TexturedPlane back{MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, 0.6)),
                            0.4, 0.4, uniform(1.0)};
   const TexturedPlane front{
-      MakePose(Eigen::AngleAxisd(30 * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix(),
-               Eigen::Vector3d(0.0, 0.0, 0.4)),
+      MakePose(
+          Eigen::AngleAxisd(30 * kRadiansPerDegree, Eigen::Vector3d::UnitY()).toRotationMatrix(),
+          Eigen::Vector3d(0.0, 0.0, 0.4)),
       0.1, 0.1, uniform(0.0)};
   const TexturedPlane behind{MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, -0.3)),
                              10.0, 10.0, uniform(0.5)};

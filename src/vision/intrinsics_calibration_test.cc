@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/image_scene.h"
 #include "testing/options_validity.h"
 #include "testing/synthetic_views.h"
@@ -20,8 +20,6 @@ namespace {
 
 using testing::LookAt;
 using testing::Project;
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 pose::CameraModel TrueCamera() {
   return {.fx = 1000.0,
@@ -53,8 +51,8 @@ Pose View(double distance, double tilt, double azimuth, const Eigen::Vector2d& p
 std::vector<Pose> SpreadViews() {
   std::vector<Pose> views;
   for (int k = 0; k < 12; ++k) {
-    const double tilt = (20.0 + 20.0 * (k % 3) / 2.0) * kDeg;
-    const double azimuth = k * 45.0 * kDeg;
+    const double tilt = (20.0 + 20.0 * (k % 3) / 2.0) * kRadiansPerDegree;
+    const double azimuth = k * 45.0 * kRadiansPerDegree;
     const Eigen::Vector2d pan((k % 2 == 0 ? 0.12 : -0.12), (k % 4 < 2 ? 0.18 : -0.18));
     views.push_back(View(0.55 + 0.02 * (k % 5), tilt, azimuth, pan));
   }
@@ -176,8 +174,8 @@ TEST(IntrinsicsCalibration, WarnsWhenAllBoardsAreParallel) {
     // Tilted by at most 4° (normals within 8° of each other), turned about the optical axis,
     // at 0.5–0.7 m, moved around the image.
     const Eigen::Matrix3d R =
-        (Eigen::AngleAxisd(15.0 * kDeg * k, Eigen::Vector3d::UnitZ()) *
-         Eigen::AngleAxisd(4.0 * kDeg, Eigen::Vector3d(std::cos(k), std::sin(k), 0.0)))
+        (Eigen::AngleAxisd(15.0 * kRadiansPerDegree * k, Eigen::Vector3d::UnitZ()) *
+         Eigen::AngleAxisd(4.0 * kRadiansPerDegree, Eigen::Vector3d(std::cos(k), std::sin(k), 0.0)))
             .toRotationMatrix();
     const Eigen::Vector3d centre_camera((k % 2 == 0 ? 0.06 : -0.06), (k % 4 < 2 ? 0.05 : -0.05),
                                         0.5 + 0.03 * k);
@@ -199,7 +197,8 @@ TEST(IntrinsicsCalibration, WarnsWhenThePointsCoverLittleOfTheImage) {
   const pose::CameraModel truth = TrueCamera();
   std::vector<Pose> poses;
   for (int k = 0; k < 12; ++k) {
-    poses.push_back(View(1.3, 30.0 * kDeg, k * 30.0 * kDeg, Eigen::Vector2d::Zero()));
+    poses.push_back(
+        View(1.3, 30.0 * kRadiansPerDegree, k * 30.0 * kRadiansPerDegree, Eigen::Vector2d::Zero()));
   }
   std::mt19937_64 rng(5);
   const IntrinsicsResult result =

@@ -7,10 +7,10 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/angle_units.h"
 #include "testing/image_scene.h"
 #include "testing/options_validity.h"
 #include "testing/synthetic_views.h"
@@ -19,8 +19,6 @@ namespace hecal::vision {
 namespace {
 
 using Kind = IntrinsicsCorrection::Kind;
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kNoisePx = 0.05;
 
 // A 1920 × 1200 machine-vision camera (the kind of data/rwhe-kuka2).
@@ -42,8 +40,8 @@ std::vector<CalibrationView> Views(const std::vector<Eigen::Vector3d>& points,
   std::mt19937_64 rng(7);
   std::vector<CalibrationView> views;
   for (int k = 0; k < 8; ++k) {
-    const double tilt = (15.0 + 10.0 * (k % 3)) * kDeg;
-    const double azimuth = 45.0 * k * kDeg;
+    const double tilt = (15.0 + 10.0 * (k % 3)) * kRadiansPerDegree;
+    const double azimuth = 45.0 * k * kRadiansPerDegree;
     const Eigen::Vector3d eye =
         centre + (distance + 0.05 * (k % 4)) * Eigen::Vector3d(std::sin(tilt) * std::cos(azimuth),
                                                                std::sin(tilt) * std::sin(azimuth),

@@ -8,13 +8,12 @@
 #include "detection_internal.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/vision/opencv_pnp.h"
 
 namespace hecal::vision {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 // Chessboard colours: fraction of interior squares that must agree with one of the two orders.
 constexpr double kColourAgreement = 0.8;
 
@@ -258,7 +257,7 @@ OrderReport ResolveOrder(const pose::TargetSpec& target, const OrderOptions& opt
         for (size_t i = 0; i < views.size(); ++i) {
           if (state[i] != State::kOrdered) continue;
           const Decision decision =
-              RobotDecision(views[i], views[j], options.angle_tolerance_deg * kDeg);
+              RobotDecision(views[i], views[j], options.angle_tolerance_deg * kRadiansPerDegree);
           keep = keep || decision == Decision::kKeep;
           half_turn = half_turn || decision == Decision::kTurn;
         }
@@ -271,7 +270,7 @@ OrderReport ResolveOrder(const pose::TargetSpec& target, const OrderOptions& opt
     for (size_t j = 1; j < views.size(); ++j) {
       if (state[j - 1] != State::kOrdered) break;
       const Decision decision =
-          ImageDecision(views[j - 1], views[j], options.direction_margin_deg * kDeg);
+          ImageDecision(views[j - 1], views[j], options.direction_margin_deg * kRadiansPerDegree);
       apply(j, decision == Decision::kKeep, decision == Decision::kTurn);
     }
   }
