@@ -41,24 +41,12 @@ using nlohmann::json;
 
 constexpr int kViews = 8;
 
-// X and Z of the scene (metres): a camera 10 cm off the flange, looking along the flange's x;
-// the board 60 cm in front of the robot base.
-Pose TrueX() {
-  return MakePose(
-      Eigen::AngleAxisd(100 * kRadiansPerDegree, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
-          .toRotationMatrix(),
-      Eigen::Vector3d(0.04, -0.03, 0.10));
-}
-Pose TrueZ() {
-  return MakePose(
-      Eigen::AngleAxisd(170 * kRadiansPerDegree, Eigen::Vector3d(1.0, 0.1, 0.0).normalized())
-          .toRotationMatrix(),
-      Eigen::Vector3d(0.6, 0.1, 0.05));
-}
+using hecal::testing::RigX;
+using hecal::testing::RigZ;
 
 // The robot pose T_base_gripper that makes the camera see the board from view B (Z = A X B).
 Pose RobotPose(handeye::Setup setup, const Pose& B) {
-  const Pose A = TrueZ() * B.inverse() * TrueX().inverse();
+  const Pose A = hecal::testing::RigRobotPose(B);
   return setup == handeye::Setup::kEyeInHand ? A : A.inverse();
 }
 
@@ -137,10 +125,10 @@ TEST_F(CalibrateImagesTest, RecoversXAndZFromRenderedImages) {
     ASSERT_EQ(run.code, 0) << run.err;
     const json result = json::parse(Read("result.json"));
     const std::string name(handeye::SetupName(setup));
-    EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05) << name;
-    EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 0.3) << name;
-    EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["Z"]), TrueZ()), 0.05) << name;
-    EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["Z"]), TrueZ()), 0.3) << name;
+    EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX()), 0.05) << name;
+    EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), RigX()), 0.3) << name;
+    EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["Z"]), RigZ()), 0.05) << name;
+    EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["Z"]), RigZ()), 0.3) << name;
     EXPECT_EQ(result["X"]["frame"], std::string(handeye::XFrameName(setup)));
     EXPECT_EQ(result["refinement"], "reprojection");
     EXPECT_EQ(result["method"], "ml");
@@ -184,8 +172,8 @@ TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
   std::printf("refined fx %.3f fy %.3f cx %.3f cy %.3f (truth 620 622 321.5 238)\n",
               intrinsics["fx"].get<double>(), intrinsics["fy"].get<double>(),
               intrinsics["cx"].get<double>(), intrinsics["cy"].get<double>());
-  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.1);
-  EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 1.0);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX()), 0.1);
+  EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), RigX()), 1.0);
   EXPECT_NE(run.out.find("intrinsics refined with X and Z"), std::string::npos) << run.out;
 }
 
@@ -218,10 +206,10 @@ TEST_F(CalibrateImagesTest, ReprojectionIsAtLeastAsAccurateAsPoseLevelOnRendered
       ASSERT_EQ(run.code, 0) << run.err;
       const json result = json::parse(Read("result.json"));
       const Pose pose_level = PoseOf(result["images"]["pose_level"]["X"]);
-      pose_rotation += std::pow(hecal::testing::RotationErrorDeg(pose_level, TrueX()), 2);
-      pose_translation += std::pow(hecal::testing::TranslationErrorMm(pose_level, TrueX()), 2);
-      rotation += std::pow(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 2);
-      translation += std::pow(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 2);
+      pose_rotation += std::pow(hecal::testing::RotationErrorDeg(pose_level, RigX()), 2);
+      pose_translation += std::pow(hecal::testing::TranslationErrorMm(pose_level, RigX()), 2);
+      rotation += std::pow(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX()), 2);
+      translation += std::pow(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), RigX()), 2);
     }
     const std::string name(handeye::SetupName(setup));
     EXPECT_LE(rotation, pose_rotation) << name;
@@ -245,7 +233,7 @@ TEST_F(CalibrateImagesTest, PairsRobotRowsByIdInAnyOrder) {
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.err.find("id 'view_08' has no image"), std::string::npos) << run.err;
   const json result = json::parse(Read("result.json"));
-  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX()), 0.05);
   EXPECT_EQ(result["stations"]["used"][0], "view_00");
 }
 
@@ -261,7 +249,7 @@ TEST_F(CalibrateImagesTest, IdsThatNameNoImagePairByOrder) {
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.err.find("no id equals an image's file stem"), std::string::npos) << run.err;
   const json result = json::parse(Read("result.json"));
-  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX()), 0.05);
 }
 
 // One sub-folder per station (pose_NN/image.png, the robot pose file beside it ignored): robot
@@ -284,8 +272,8 @@ TEST_F(CalibrateImagesTest, StationsInSubFolders) {
   cli_test::Outcome run = Hecal(args);
   ASSERT_EQ(run.code, 0) << run.err;
   json result = json::parse(Read("result.json"));
-  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
-  EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX()), 0.3);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX()), 0.05);
+  EXPECT_LT(hecal::testing::TranslationErrorMm(PoseOf(result["X"]), RigX()), 0.3);
   EXPECT_EQ(result["stations"]["used"][0], "pose_00");
   EXPECT_EQ(result["images"]["per_image"][7]["id"], "pose_07");
 
@@ -294,7 +282,7 @@ TEST_F(CalibrateImagesTest, StationsInSubFolders) {
   run = Hecal(args);
   ASSERT_EQ(run.code, 0) << run.err;
   result = json::parse(Read("result.json"));
-  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX()), 0.05);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX()), 0.05);
 }
 
 // Views of a single 100 mm AprilTag (4 corners per image) from 0.3–0.4 m, exact robot poses:
@@ -317,11 +305,11 @@ TEST_F(CalibrateImagesTest, SingleTagStations) {
     ASSERT_EQ(run.code, 0) << run.err;
     const json result = json::parse(Read("result.json"));
     const std::string name(handeye::SetupName(setup));
-    const double rotation = hecal::testing::RotationErrorDeg(PoseOf(result["X"]), TrueX());
-    const double translation = hecal::testing::TranslationErrorMm(PoseOf(result["X"]), TrueX());
+    const double rotation = hecal::testing::RotationErrorDeg(PoseOf(result["X"]), RigX());
+    const double translation = hecal::testing::TranslationErrorMm(PoseOf(result["X"]), RigX());
     std::printf("single tag, %s: X %.4f deg %.3f mm, Z %.4f deg %.3f mm\n", name.c_str(), rotation,
-                translation, hecal::testing::RotationErrorDeg(PoseOf(result["Z"]), TrueZ()),
-                hecal::testing::TranslationErrorMm(PoseOf(result["Z"]), TrueZ()));
+                translation, hecal::testing::RotationErrorDeg(PoseOf(result["Z"]), RigZ()),
+                hecal::testing::TranslationErrorMm(PoseOf(result["Z"]), RigZ()));
     EXPECT_LT(rotation, 0.2) << name;
     EXPECT_LT(translation, 0.06) << name;
     EXPECT_EQ(result["stations"]["used"].size(), static_cast<size_t>(kViews)) << name;

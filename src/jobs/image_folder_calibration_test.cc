@@ -28,19 +28,8 @@ namespace {
 
 constexpr int kViews = 8;
 
-// A camera 10 cm off the flange looking along its x; the board 60 cm in front of the base.
-Pose TrueX() {
-  return MakePose(
-      Eigen::AngleAxisd(100 * kRadiansPerDegree, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
-          .toRotationMatrix(),
-      Eigen::Vector3d(0.04, -0.03, 0.10));
-}
-Pose TrueZ() {
-  return MakePose(
-      Eigen::AngleAxisd(170 * kRadiansPerDegree, Eigen::Vector3d(1.0, 0.1, 0.0).normalized())
-          .toRotationMatrix(),
-      Eigen::Vector3d(0.6, 0.1, 0.05));
-}
+using hecal::testing::RigX;
+using hecal::testing::RigZ;
 
 void WriteFile(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
@@ -53,7 +42,7 @@ std::string RobotCsv(int rows, bool ids) {
   std::ostringstream csv;
   csv << std::setprecision(17) << (ids ? "id," : "") << "x,y,z,qw,qx,qy,qz\n";
   for (int i = 0; i < rows; ++i) {
-    const Pose G = TrueZ() * views[std::size_t(i)].inverse() * TrueX().inverse();
+    const Pose G = hecal::testing::RigRobotPose(views[std::size_t(i)]);
     const Eigen::Quaterniond q(G.linear());
     if (ids) csv << "view_0" << i << ",";
     csv << G.translation().x() << "," << G.translation().y() << "," << G.translation().z() << ","
@@ -100,10 +89,10 @@ TEST_F(ImageFolderCalibrationTest, RecoversXAndZFromRenderedImages) {
   const report::ResultDocument& document = result.document;
   ASSERT_EQ(document.results.size(), 1u);
   const estimation::CalibrationResult& r = document.results.front();
-  EXPECT_LT(hecal::testing::RotationErrorDeg(r.X, TrueX()), 0.05);
-  EXPECT_LT(hecal::testing::TranslationErrorMm(r.X, TrueX()), 0.3);
-  EXPECT_LT(hecal::testing::RotationErrorDeg(r.Z, TrueZ()), 0.05);
-  EXPECT_LT(hecal::testing::TranslationErrorMm(r.Z, TrueZ()), 0.3);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(r.X, RigX()), 0.05);
+  EXPECT_LT(hecal::testing::TranslationErrorMm(r.X, RigX()), 0.3);
+  EXPECT_LT(hecal::testing::RotationErrorDeg(r.Z, RigZ()), 0.05);
+  EXPECT_LT(hecal::testing::TranslationErrorMm(r.Z, RigZ()), 0.3);
   EXPECT_EQ(result.camera.fx, 620.0);
   EXPECT_EQ(result.camera.cx, 321.5);
   ASSERT_TRUE(document.images.has_value());

@@ -157,6 +157,26 @@ inline ViewSpread TagSpread(int count) {
   return {.count = count, .nearest = 0.3, .step = 0.05, .centre = Eigen::Vector3d::Zero()};
 }
 
+// The hand–eye rig of the rendered calibration tests: a camera 10 cm off the flange looking along
+// the flange's x (RigX = T_gripper_camera), the board 60 cm in front of the robot base
+// (RigZ = T_base_target). RigRobotPose gives the robot pose T_base_gripper = Z B⁻¹ X⁻¹ that
+// makes the camera see the board from view B = T_camera_target (eye-in-hand: A X B = Z).
+inline Pose RigX() {
+  return MakePose(
+      Eigen::AngleAxisd(100 * kRadiansPerDegree, Eigen::Vector3d(0.2, 1.0, -0.3).normalized())
+          .toRotationMatrix(),
+      Eigen::Vector3d(0.04, -0.03, 0.10));
+}
+inline Pose RigZ() {
+  return MakePose(
+      Eigen::AngleAxisd(170 * kRadiansPerDegree, Eigen::Vector3d(1.0, 0.1, 0.0).normalized())
+          .toRotationMatrix(),
+      Eigen::Vector3d(0.6, 0.1, 0.05));
+}
+inline Pose RigRobotPose(const Pose& T_camera_target) {
+  return RigZ() * T_camera_target.inverse() * RigX().inverse();
+}
+
 // Pixel of every object point of `target` (index = id) seen from T_camera_target.
 inline StationImage ProjectedTruth(const pose::TargetSpec& target, const pose::CameraModel& camera,
                                    const Pose& T_camera_target) {
