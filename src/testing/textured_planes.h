@@ -35,6 +35,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/pixel_jitter.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/geometry/types.h"
 #include "hecal/pose/camera_model.h"
@@ -51,11 +52,6 @@ struct TexturedPlane {
   Texture texture;
 };
 
-// A uniform number in [0, 1) from 53 bits of a hash.
-inline double HashUnit(std::uint64_t bits) {
-  return static_cast<double>(bits >> 11) * 0x1.0p-53;
-}
-
 // Multi-scale blobs (see above): lattice pitches finest, 2·finest, … (metres).
 inline Texture BlobTexture(std::uint64_t seed, double finest = 0.004, int octaves = 4) {
   return [seed, finest, octaves](double x, double y) {
@@ -69,7 +65,7 @@ inline Texture BlobTexture(std::uint64_t seed, double finest = 0.004, int octave
             SplitMix64(seed * 0x9e3779b97f4a7c15ULL + static_cast<std::uint64_t>(k)) ^
             (static_cast<std::uint64_t>(static_cast<std::int64_t>(i)) * 0x100000001b3ULL +
              static_cast<std::uint64_t>(static_cast<std::int64_t>(j))));
-        return HashUnit(SplitMix64(key));
+        return UnitInterval(SplitMix64(key));
       };
       const auto smooth = [](double s) { return s * s * (3.0 - 2.0 * s); };
       const double a = smooth(u - fu), b = smooth(v - fv);
@@ -201,14 +197,11 @@ inline GreyImage RenderPlanes(const std::vector<TexturedPlane>& planes,
       }
       const Eigen::Vector2d &p00 = *corners[k00], &p10 = *corners[k00 + 1];
       const Eigen::Vector2d &p01 = *corners[k01], &p11 = *corners[k01 + 1];
-      const std::uint64_t pixel_key = SplitMix64(static_cast<std::uint64_t>(j) * 0x100000001b3ULL +
-                                                 static_cast<std::uint64_t>(i));
+      const std::uint64_t pixel_key = PixelKey(i, j);
       double sum = 0.0;
       for (int b = 0; b < s; ++b) {
         for (int a = 0; a < s; ++a) {
-          const std::uint64_t h = SplitMix64(pixel_key + static_cast<std::uint64_t>(b * s + a));
-          const double fx = (a + HashUnit(h)) / s;
-          const double fy = (b + HashUnit(SplitMix64(h))) / s;
+          const auto [fx, fy] = JitteredSample(pixel_key, a, b, s);
           const Eigen::Vector2d x =
               (1.0 - fy) * ((1.0 - fx) * p00 + fx * p10) + fy * ((1.0 - fx) * p01 + fx * p11);
           sum += grey_of_ray(Eigen::Vector3d(x.x(), x.y(), 1.0));

@@ -16,7 +16,7 @@
 #include "detection_internal.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
-#include "hecal/core/split_mix.h"
+#include "hecal/core/pixel_jitter.h"
 
 namespace hecal::vision {
 namespace {
@@ -307,10 +307,6 @@ class PrintedBoard {
   std::unordered_multimap<long long, size_t> buckets_;
 };
 
-double UnitInterval(std::uint64_t bits) {
-  return static_cast<double>(bits >> 11) * 0x1.0p-53;
-}
-
 }  // namespace
 
 bool RenderOptions::IsValid(std::string* why) const {
@@ -438,14 +434,11 @@ cv::Mat RenderTarget(const pose::TargetSpec& target, const pose::CameraModel& ca
           row[i] = static_cast<float>(corner_grey[k00]);
           continue;
         }
-        const std::uint64_t pixel_key = SplitMix64(
-            static_cast<std::uint64_t>(j) * 0x100000001b3ULL + static_cast<std::uint64_t>(i));
+        const std::uint64_t pixel_key = PixelKey(i, j);
         double sum = 0.0;
         for (int b = 0; b < s; ++b) {
           for (int a = 0; a < s; ++a) {
-            const std::uint64_t h = SplitMix64(pixel_key + static_cast<std::uint64_t>(b * s + a));
-            const double fx = (a + UnitInterval(h)) / s;
-            const double fy = (b + UnitInterval(SplitMix64(h))) / s;
+            const auto [fx, fy] = JitteredSample(pixel_key, a, b, s);
             sum += grey(reflectance_at((1.0 - fy) * ((1.0 - fx) * p00 + fx * p10) +
                                        fy * ((1.0 - fx) * p01 + fx * p11)));
           }

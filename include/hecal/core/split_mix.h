@@ -15,4 +15,10 @@ constexpr std::uint64_t SplitMix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
+// A uniform number in [0, 1) from the top 53 bits of a hash (every double of that grid equally
+// likely).
+constexpr double UnitInterval(std::uint64_t bits) {
+  return static_cast<double>(bits >> 11) * 0x1.0p-53;
+}
+
 }  // namespace hecal
