@@ -2,6 +2,7 @@
 #include "bounds.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -63,6 +64,36 @@ CLI::Option* AddWholeNumberList(CLI::App& command, const std::string& flag,
         }
       },
       help);
+}
+
+std::vector<double> ParseNumberList(const std::string& flag, const std::string& text,
+                                    std::size_t count, const std::string& what) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    double value = 0.0;
+    if (!io::ParseDouble(io::Trim(part), &value) || !std::isfinite(value)) {
+      throw InputError(flag, 0, "'" + part + "' is not a finite number (in '" + text + "')",
+                       "give " + std::to_string(count) + " comma-separated numbers " + what);
+    }
+    values.push_back(value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (values.size() != count) {
+    throw InputError(flag, 0,
+                     "expected " + std::to_string(count) + " numbers, got " +
+                         std::to_string(values.size()) + " ('" + text + "')",
+                     "give " + std::to_string(count) + " comma-separated numbers " + what);
+  }
+  return values;
+}
+
+double ParseNumber(const std::string& flag, const std::string& text, const std::string& what) {
+  return ParseNumberList(flag, text, 1, what).front();
 }
 
 }  // namespace hecal::cli

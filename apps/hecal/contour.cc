@@ -13,7 +13,6 @@
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/contour/shape_pose.h"
 #include "hecal/core/error.h"
-#include "hecal/io/delimited_text.h"
 #include "hecal/io/point_file.h"
 #include "hecal/report/contour_pose_file.h"
 #include "hecal/report/contour_pose_text.h"
@@ -40,36 +39,6 @@ Matrix6d ParseShapeCovariance(const std::string& text) {
 }
 
 }  // namespace
-
-std::vector<double> ParseNumberList(const std::string& flag, const std::string& text,
-                                    std::size_t count, const std::string& what) {
-  std::vector<double> values;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string part =
-        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    double value = 0.0;
-    if (!io::ParseDouble(io::Trim(part), &value) || !std::isfinite(value)) {
-      throw InputError(flag, 0, "'" + part + "' is not a finite number (in '" + text + "')",
-                       "give " + std::to_string(count) + " comma-separated numbers " + what);
-    }
-    values.push_back(value);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (values.size() != count) {
-    throw InputError(flag, 0,
-                     "expected " + std::to_string(count) + " numbers, got " +
-                         std::to_string(values.size()) + " ('" + text + "')",
-                     "give " + std::to_string(count) + " comma-separated numbers " + what);
-  }
-  return values;
-}
-
-double ParseNumber(const std::string& flag, const std::string& text, const std::string& what) {
-  return ParseNumberList(flag, text, 1, what).front();
-}
 
 contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0) {
   contour::ContourCamera camera;

@@ -8,18 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "bounds.h"
 #include "cli.h"
 #include "hecal/contour/affine_pose.h"
 
 namespace hecal::cli {
 
-// `count` comma-separated finite numbers from flag `flag` (InputError naming the flag
-// otherwise). `what` describes them for the fix, e.g. "TX,TY,TZ,RX,RY,RZ".
-std::vector<double> ParseNumberList(const std::string& flag, const std::string& text,
-                                    std::size_t count, const std::string& what);
-
-// One finite number (ParseNumberList with count 1).
-double ParseNumber(const std::string& flag, const std::string& text, const std::string& what);
 // The camera of the contour commands from --focal and --z0 (contour::ValidateContourCamera).
 contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0);
 
