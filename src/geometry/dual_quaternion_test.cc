@@ -14,6 +14,7 @@
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "testing/random_poses.h"
+#include "testing/screw_motions.h"
 
 namespace hecal {
 namespace {
@@ -31,11 +32,6 @@ double MaxAbs(const Vector8d& v) {
 // Distance between the 8-vectors up to the overall sign.
 double SignFreeDistance(const DualQuaternion& a, const DualQuaternion& b) {
   return std::min(MaxAbs(a.ToVector() - b.ToVector()), MaxAbs(a.ToVector() + b.ToVector()));
-}
-
-Eigen::Vector3d RandomVector(std::mt19937_64& rng, double sigma = 1.0) {
-  std::normal_distribution<double> normal(0.0, sigma);
-  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
 }
 
 Eigen::Quaterniond RandomQuaternion(std::mt19937_64& rng) {  // not unit
@@ -62,18 +58,13 @@ DualQuaternion HalfTwist(const Vector6d& xi) {
   return DualQuaternion(Pure(0.5 * xi.head<3>()), Pure(0.5 * xi.tail<3>()));
 }
 
-Pose ScrewMotion(const Eigen::Vector3d& n, const Eigen::Vector3d& c, double theta, double d) {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, n).toRotationMatrix();
-  return MakePose(R, c - R * c + d * n);
-}
-
 // Random poses plus the edge cases: identity, pure translation, exactly π about each axis,
 // tiny angles, near π, gimbal-lock orientations.
 std::vector<Pose> TestPoses(std::mt19937_64& rng) {
   std::vector<Pose> poses;
   for (int i = 0; i < kSamples; ++i) poses.push_back(testing::RandomPose(rng, 2.0));
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    poses.push_back(MakePose(so3::Exp(omega), RandomVector(rng)));
+    poses.push_back(MakePose(so3::Exp(omega), testing::RandomGaussianVector(rng)));
   }
   poses.push_back(Pose::Identity());
   poses.push_back(MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.1, -0.2, 0.3)));
@@ -111,7 +102,7 @@ TEST(DualQuaternion, RotationTranslationConstructorIsHalfTQ) {
   std::mt19937_64 rng(501);
   for (int i = 0; i < kSamples; ++i) {
     const Eigen::Quaterniond q = RandomQuaternion(rng);  // normalised by the constructor
-    const Eigen::Vector3d t = RandomVector(rng);
+    const Eigen::Vector3d t = testing::RandomGaussianVector(rng);
     const DualQuaternion dq(q, t);
     const Eigen::Quaterniond unit = q.normalized();
     EXPECT_LT((Wxyz(dq.real()) - Wxyz(unit)).norm(), 1e-15);
@@ -164,8 +155,10 @@ TEST(DualQuaternion, NegativeRealPartStillGivesThePose) {
   std::mt19937_64 rng(504);
   for (int i = 0; i < 200; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const Pose A = MakePose(Eigen::AngleAxisd(0.9 * kPi, n).toRotationMatrix(), RandomVector(rng));
-    const Pose B = MakePose(Eigen::AngleAxisd(0.9 * kPi, n).toRotationMatrix(), RandomVector(rng));
+    const Pose A = MakePose(Eigen::AngleAxisd(0.9 * kPi, n).toRotationMatrix(),
+                            testing::RandomGaussianVector(rng));
+    const Pose B = MakePose(Eigen::AngleAxisd(0.9 * kPi, n).toRotationMatrix(),
+                            testing::RandomGaussianVector(rng));
     const DualQuaternion product = DualQuaternion::FromPose(A) * DualQuaternion::FromPose(B);
     ASSERT_LT(product.real().w(), 0.0);
     EXPECT_LT(PoseError(product.ToPose(), A * B), 1e-14);
@@ -282,10 +275,11 @@ TEST(DualQuaternion, ExpMatchesSe3Exp) {
   std::uniform_real_distribution<double> angle(0.0, 3.0 * kPi);
   std::vector<Vector6d> twists;
   for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(Twist(testing::RandomRotationVector(rng, angle(rng)), RandomVector(rng)));
+    twists.push_back(
+        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
   }
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    twists.push_back(Twist(omega, RandomVector(rng)));
+    twists.push_back(Twist(omega, testing::RandomGaussianVector(rng)));
   }
   twists.push_back(Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)));
   twists.push_back(Vector6d::Zero());
@@ -313,7 +307,8 @@ TEST(DualQuaternion, ExpLogRoundTrips) {
   }
   std::uniform_real_distribution<double> angle(0.0, kPi);
   for (int i = 0; i < kSamples; ++i) {
-    const Vector6d xi = Twist(testing::RandomRotationVector(rng, angle(rng)), RandomVector(rng));
+    const Vector6d xi =
+        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng));
     const DualQuaternion p = HalfTwist(xi);
     const double scale = 1 + xi.tail<3>().norm();
     EXPECT_LT(MaxAbs(p.Exp().Log().ToVector() - p.ToVector()), 1e-14 * scale) << xi.transpose();
@@ -321,7 +316,8 @@ TEST(DualQuaternion, ExpLogRoundTrips) {
   // Tiny and near-π angles, around the series switches (σ at 1e-4, κ at 1e-2 half-angles).
   for (double theta : {1e-12, 1e-9, 1.99e-4, 2.01e-4, 1.99e-2, 2.01e-2, kPi - 1e-6, kPi - 1e-9}) {
     for (int i = 0; i < 20; ++i) {
-      const Vector6d xi = Twist(testing::RandomRotationVector(rng, theta), RandomVector(rng));
+      const Vector6d xi =
+          Twist(testing::RandomRotationVector(rng, theta), testing::RandomGaussianVector(rng));
       const DualQuaternion p = HalfTwist(xi);
       EXPECT_LT(MaxAbs(p.Exp().Log().ToVector() - p.ToVector()), 1e-14) << theta;
       EXPECT_LT(PoseError(p.Exp().ToPose(), se3::Exp(xi)), 1e-14) << theta;
@@ -368,7 +364,7 @@ TEST(DualQuaternion, TransformPointAndVector) {
   std::mt19937_64 rng(512);
   for (const Pose& T : TestPoses(rng)) {
     const DualQuaternion dq = DualQuaternion::FromPose(T);
-    const Eigen::Vector3d p = RandomVector(rng, 2.0);
+    const Eigen::Vector3d p = testing::RandomGaussianVector(rng, 2.0);
     const double scale = 1 + T.translation().norm() + p.norm();
     EXPECT_LT((dq.TransformPoint(p) - T * p).norm(), 4e-15 * scale);
     EXPECT_LT((dq.TransformVector(p) - T.linear() * p).norm(), 4e-15 * scale);
@@ -414,17 +410,17 @@ TEST(DualQuaternion, ScrewConversions) {
     // Daniilidis: q̌ = (cos(θ̌/2), sin(θ̌/2) ľ), θ̌ = θ + εd, ľ = l + εm, expanded here.
     Screw screw;
     screw.l = testing::RandomUnitVector(rng);
-    const Eigen::Vector3d c = RandomVector(rng);
+    const Eigen::Vector3d c = testing::RandomGaussianVector(rng);
     screw.m = c.cross(screw.l);
     screw.theta = angle(rng);
-    screw.d = RandomVector(rng).x();
+    screw.d = testing::RandomGaussianVector(rng).x();
     const double ch = std::cos(0.5 * screw.theta), sh = std::sin(0.5 * screw.theta);
     Vector8d expected;
     expected << ch, sh * screw.l, -0.5 * screw.d * sh, sh * screw.m + 0.5 * screw.d * ch * screw.l;
     const DualQuaternion dq = DualQuaternion::FromScrew(screw);
     EXPECT_LT(MaxAbs(dq.ToVector() - expected), 1e-15 * (1 + c.norm()));
     // It is the constructed screw motion, and agrees with screw.h's PoseFromScrew.
-    const Pose T = ScrewMotion(screw.l, c, screw.theta, screw.d);
+    const Pose T = testing::ScrewMotion(screw.l, c, screw.theta, screw.d);
     EXPECT_LT(PoseError(dq.ToPose(), T), 1e-14 * (1 + c.norm()));
     EXPECT_LT(PoseError(dq.ToPose(), PoseFromScrew(screw)), 1e-14 * (1 + c.norm()));
     // Log = ½ θ̌ ľ = ½ (θ l + ε (θ m + d l)).
@@ -459,7 +455,7 @@ TEST(DualQuaternion, VectorLayoutAndArithmetic) {
   std::mt19937_64 rng(515);
   for (int i = 0; i < 100; ++i) {
     Vector8d v;
-    for (int k = 0; k < 8; ++k) v(k) = RandomVector(rng).x();
+    for (int k = 0; k < 8; ++k) v(k) = testing::RandomGaussianVector(rng).x();
     const DualQuaternion dq = DualQuaternion::FromVector(v);
     EXPECT_EQ(dq.ToVector(), v);
     EXPECT_EQ(dq.real().w(), v(0));
@@ -467,7 +463,7 @@ TEST(DualQuaternion, VectorLayoutAndArithmetic) {
     EXPECT_EQ(dq.dual().w(), v(4));
     EXPECT_EQ(dq.dual().x(), v(5));
     Vector8d u;
-    for (int k = 0; k < 8; ++k) u(k) = RandomVector(rng).x();
+    for (int k = 0; k < 8; ++k) u(k) = testing::RandomGaussianVector(rng).x();
     const DualQuaternion other = DualQuaternion::FromVector(u);
     EXPECT_EQ((dq + other).ToVector(), v + u);
     EXPECT_EQ((dq - other).ToVector(), v - u);

@@ -12,6 +12,7 @@
 
 #include "hecal/geometry/se3.h"
 #include "testing/random_poses.h"
+#include "testing/screw_motions.h"
 
 namespace hecal {
 namespace {
@@ -21,16 +22,6 @@ constexpr int kSamples = 3000;
 
 double PoseError(const Pose& A, const Pose& B) {
   return (A.matrix() - B.matrix()).cwiseAbs().maxCoeff();
-}
-
-Eigen::Vector3d RandomVector(std::mt19937_64& rng, double sigma = 1.0) {
-  std::normal_distribution<double> normal(0.0, sigma);
-  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
-}
-
-Pose ScrewMotion(const Eigen::Vector3d& n, const Eigen::Vector3d& c, double theta, double d) {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, n).toRotationMatrix();
-  return MakePose(R, c - R * c + d * n);
 }
 
 // The invariants every Screw from ScrewFromPose satisfies.
@@ -55,13 +46,9 @@ void ExpectDescribesMotion(const Screw& s, const Pose& T, double tolerance) {
 
 TEST(Screw, RecoversConstructedScrewMotion) {
   std::mt19937_64 rng(401);
-  std::uniform_real_distribution<double> angle(1e-3, kPi - 1e-3);
   for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const Eigen::Vector3d c = RandomVector(rng);
-    const double theta = angle(rng);
-    const double d = RandomVector(rng).x();
-    const Pose T = ScrewMotion(n, c, theta, d);
+    const auto [n, c, theta, d] = testing::RandomScrewLine(rng, 1e-3, kPi - 1e-3);
+    const Pose T = testing::ScrewMotion(n, c, theta, d);
     const Screw s = ScrewFromPose(T);
     ExpectValidScrew(s);
     // θ ∈ (0, π): the axis sign is fixed by θ ≥ 0, so l = n, d and the line are unique.
@@ -76,7 +63,8 @@ TEST(Screw, RecoversConstructedScrewMotion) {
 
 TEST(Screw, KnownExample) {
   // Quarter turn about the vertical line through (1, 2, 0), then 0.5 up: l = z, m = c × z.
-  const Pose T = ScrewMotion(Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 2, 0), kPi / 2, 0.5);
+  const Pose T =
+      testing::ScrewMotion(Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 2, 0), kPi / 2, 0.5);
   const Screw s = ScrewFromPose(T);
   EXPECT_LT((s.l - Eigen::Vector3d::UnitZ()).norm(), 1e-16);
   EXPECT_LT((s.m - Eigen::Vector3d(2, -1, 0)).norm(), 1e-15);
@@ -93,7 +81,7 @@ TEST(Screw, RoundTripsRandomPoses) {
     const Eigen::Matrix3d R = theta == 0.0
                                   ? Eigen::Matrix3d::Identity()
                                   : Eigen::AngleAxisd(theta, omega / theta).toRotationMatrix();
-    poses.push_back(MakePose(R, RandomVector(rng)));
+    poses.push_back(MakePose(R, testing::RandomGaussianVector(rng)));
   }
   for (const Pose& T : poses) {
     const Screw s = ScrewFromPose(T);
@@ -110,10 +98,10 @@ TEST(Screw, RoundTripsScrewParameters) {
   for (int i = 0; i < kSamples; ++i) {
     Screw s;
     s.l = testing::RandomUnitVector(rng);
-    const Eigen::Vector3d point = RandomVector(rng);
+    const Eigen::Vector3d point = testing::RandomGaussianVector(rng);
     s.m = point.cross(s.l);
     s.theta = angle(rng);
-    s.d = RandomVector(rng).x();
+    s.d = testing::RandomGaussianVector(rng).x();
     const Screw back = ScrewFromPose(PoseFromScrew(s));
     EXPECT_LT((back.l - s.l).norm(), 1e-15 / s.theta + 1e-15);
     EXPECT_LT((back.m - s.m).norm(), 1e-14 * (1 + s.m.norm()) / s.theta);
@@ -125,18 +113,15 @@ TEST(Screw, RoundTripsScrewParameters) {
 TEST(Screw, PoseFromScrewMatchesGeometry) {
   // Non-unit l is normalised; a component of m along l is ignored.
   std::mt19937_64 rng(404);
-  std::uniform_real_distribution<double> angle(0.0, kPi);
   for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const Eigen::Vector3d c = RandomVector(rng);
-    const double theta = angle(rng);
-    const double d = RandomVector(rng).x();
+    const auto [n, c, theta, d] = testing::RandomScrewLine(rng);
     Screw s;
     s.l = 3.0 * n;
     s.m = c.cross(n) + 0.7 * n;
     s.theta = theta;
     s.d = d;
-    EXPECT_LT(PoseError(PoseFromScrew(s), ScrewMotion(n, c, theta, d)), 1e-14 * (1 + c.norm()));
+    EXPECT_LT(PoseError(PoseFromScrew(s), testing::ScrewMotion(n, c, theta, d)),
+              1e-14 * (1 + c.norm()));
   }
 }
 

@@ -18,6 +18,7 @@
 #include "hecal/geometry/skew.h"
 #include "hecal/geometry/so3.h"
 #include "testing/random_poses.h"
+#include "testing/screw_motions.h"
 
 namespace hecal {
 namespace {
@@ -38,24 +39,12 @@ Vector6d Twist(const Eigen::Vector3d& omega, const Eigen::Vector3d& v) {
   return xi;
 }
 
-Eigen::Vector3d RandomVector(std::mt19937_64& rng, double sigma = 1.0) {
-  std::normal_distribution<double> normal(0.0, sigma);
-  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
-}
-
 // exp of the 4×4 twist matrix [[ω]× v; 0 0]: a peer that knows nothing about Jacobians.
 Eigen::Matrix4d MatrixExponential(const Vector6d& xi) {
   Eigen::Matrix4d X = Eigen::Matrix4d::Zero();
   X.topLeftCorner<3, 3>() = Skew(xi.head<3>());
   X.topRightCorner<3, 1>() = xi.tail<3>();
   return X.exp();
-}
-
-// Screw motion built from its geometry: rotate θ about the line through c with direction n, then
-// translate d along n.
-Pose ScrewMotion(const Eigen::Vector3d& n, const Eigen::Vector3d& c, double theta, double d) {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, n).toRotationMatrix();
-  return MakePose(R, c - R * c + d * n);
 }
 
 // Rotation angles for Jacobian checks: tiny, both sides of 1e-2 (so3 series) and of 0.1 (the
@@ -65,17 +54,6 @@ const std::vector<double>& JacobianTestAngles() {
                                              1.01e-2, 0.0999, 0.1001,     0.5,       1.0,
                                              2.0,     3.0,    kPi - 1e-2, kPi - 1e-3};
   return angles;
-}
-
-// ω = θ n with |ω| strictly below / at-or-above `threshold`, within a few ulps of it.
-Eigen::Vector3d AtThreshold(const Eigen::Vector3d& n, double threshold, bool below) {
-  double theta = threshold;
-  Eigen::Vector3d omega = theta * n;
-  while ((omega.norm() < threshold) != below) {
-    theta = std::nextafter(theta, below ? 0.0 : 1.0);
-    omega = theta * n;
-  }
-  return omega;
 }
 
 TEST(Se3, TangentOrderIsRotationFirst) {
@@ -101,10 +79,11 @@ TEST(Se3Exp, MatchesMatrixExponential) {
   std::uniform_real_distribution<double> angle(0.0, 3.0 * kPi);
   std::vector<Vector6d> twists;
   for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(Twist(testing::RandomRotationVector(rng, angle(rng)), RandomVector(rng)));
+    twists.push_back(
+        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
   }
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    twists.push_back(Twist(omega, RandomVector(rng)));
+    twists.push_back(Twist(omega, testing::RandomGaussianVector(rng)));
   }
   for (const Vector6d& xi : twists) {
     const double scale = 1.0 + xi.tail<3>().norm();
@@ -116,13 +95,9 @@ TEST(Se3Exp, MatchesMatrixExponential) {
 TEST(Se3Exp, GivesTheConstructedScrewMotion) {
   // Chasles: Exp(θ n, θ c × n + d n) is rotation θ about the line through c along n, then d.
   std::mt19937_64 rng(302);
-  std::uniform_real_distribution<double> angle(0.0, kPi);
   for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const Eigen::Vector3d c = RandomVector(rng);
-    const double theta = angle(rng);
-    const double d = RandomVector(rng).x();
-    const Pose expected = ScrewMotion(n, c, theta, d);
+    const auto [n, c, theta, d] = testing::RandomScrewLine(rng);
+    const Pose expected = testing::ScrewMotion(n, c, theta, d);
     const Vector6d xi = Twist(theta * n, theta * c.cross(n) + d * n);
     EXPECT_LT(PoseError(se3::Exp(xi), expected), 1e-14 * (1 + c.norm())) << theta;
   }
@@ -142,7 +117,8 @@ TEST(Se3Adjoint, MatchesExplicitBlocksAndConjugation) {
       EXPECT_LT((Ad.col(j).tail<3>() - T.translation().cross(R.col(j))).norm(), 1e-15 * 8);
     }
     // T Exp(δ) T⁻¹ = Exp(Ad(T) δ), checked with the matrix exponential peer.
-    const Vector6d delta = Twist(testing::RandomRotationVector(rng, 2.0), RandomVector(rng));
+    const Vector6d delta =
+        Twist(testing::RandomRotationVector(rng, 2.0), testing::RandomGaussianVector(rng));
     const Eigen::Matrix4d lhs = T.matrix() * MatrixExponential(delta) * T.inverse().matrix();
     EXPECT_LT(MaxAbs(lhs - se3::Exp(Ad * delta).matrix()), 4e-14);
   }
@@ -164,7 +140,8 @@ std::vector<Vector6d> JacobianTwists(std::mt19937_64& rng) {
   std::vector<Vector6d> result;
   for (double theta : JacobianTestAngles()) {
     for (int i = 0; i < 10; ++i) {
-      result.push_back(Twist(testing::RandomRotationVector(rng, theta), RandomVector(rng)));
+      result.push_back(
+          Twist(testing::RandomRotationVector(rng, theta), testing::RandomGaussianVector(rng)));
     }
   }
   return result;
@@ -175,7 +152,8 @@ TEST(Se3Jacobians, InversesAndLeftRightRelations) {
   std::uniform_real_distribution<double> angle(0.0, kPi);
   std::vector<Vector6d> twists = JacobianTwists(rng);
   for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(Twist(testing::RandomRotationVector(rng, angle(rng)), RandomVector(rng)));
+    twists.push_back(
+        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
   }
   for (const Vector6d& xi : twists) {
     const double scale = 1 + xi.tail<3>().norm();
@@ -217,13 +195,16 @@ TEST(Se3Jacobians, MatchLongDoubleSeriesToRounding) {
   for (double threshold : {0.1, 1e-2}) {
     for (int i = 0; i < 50; ++i) {
       const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-      twists.push_back(Twist(AtThreshold(n, threshold, true), RandomVector(rng)));
-      twists.push_back(Twist(AtThreshold(n, threshold, false), RandomVector(rng)));
+      twists.push_back(Twist(testing::RotationVectorAtThreshold(n, threshold, true),
+                             testing::RandomGaussianVector(rng)));
+      twists.push_back(Twist(testing::RotationVectorAtThreshold(n, threshold, false),
+                             testing::RandomGaussianVector(rng)));
     }
   }
   std::uniform_real_distribution<double> angle(0.05, 0.6);  // where the closed forms cancel most
   for (int i = 0; i < 500; ++i) {
-    twists.push_back(Twist(testing::RandomRotationVector(rng, angle(rng)), RandomVector(rng)));
+    twists.push_back(
+        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
   }
   for (const Vector6d& xi : twists) {
     const Matrix6d reference = LeftJacobianBySeries(xi);
@@ -246,9 +227,9 @@ TEST(Se3Jacobians, ContinuousAcrossSeriesThresholds) {
   for (double threshold : {0.1, 1e-2}) {
     for (int i = 0; i < 100; ++i) {
       const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-      const Eigen::Vector3d v = RandomVector(rng);
-      const Vector6d below = Twist(AtThreshold(n, threshold, true), v);
-      const Vector6d above = Twist(AtThreshold(n, threshold, false), v);
+      const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
+      const Vector6d below = Twist(testing::RotationVectorAtThreshold(n, threshold, true), v);
+      const Vector6d above = Twist(testing::RotationVectorAtThreshold(n, threshold, false), v);
       const double tolerance = 2e-15 * (1 + v.norm()) + (above - below).norm() * (1 + v.norm());
       EXPECT_LT(MaxAbs(se3::LeftJacobian(below) - se3::LeftJacobian(above)), tolerance);
       EXPECT_LT(MaxAbs(se3::LeftJacobianInverse(below) - se3::LeftJacobianInverse(above)),
@@ -259,19 +240,15 @@ TEST(Se3Jacobians, ContinuousAcrossSeriesThresholds) {
 
 TEST(Se3Interpolate, EndpointsAndScrewGeodesic) {
   std::mt19937_64 rng(312);
-  std::uniform_real_distribution<double> angle(0.0, kPi - 1e-6);
   for (int i = 0; i < 1000; ++i) {
     const Pose T0 = testing::RandomPose(rng, 2.0);
-    const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const Eigen::Vector3d c = RandomVector(rng);
-    const double theta = angle(rng);
-    const double d = RandomVector(rng).x();
-    const Pose T1 = T0 * ScrewMotion(n, c, theta, d);
+    const auto [n, c, theta, d] = testing::RandomScrewLine(rng, 0.0, kPi - 1e-6);
+    const Pose T1 = T0 * testing::ScrewMotion(n, c, theta, d);
     EXPECT_LT(PoseError(se3::Interpolate(T0, T1, 0.0), T0), 1e-15);
     EXPECT_LT(PoseError(se3::Interpolate(T0, T1, 1.0), T1), 1e-14);
     for (double s : {0.1, 0.5, 0.8}) {
       // The geodesic follows the same screw: rotation sθ about the same line, translation s d.
-      const Pose expected = T0 * ScrewMotion(n, c, s * theta, s * d);
+      const Pose expected = T0 * testing::ScrewMotion(n, c, s * theta, s * d);
       EXPECT_LT(PoseError(se3::Interpolate(T0, T1, s), expected), 1e-14 * (1 + c.norm()));
     }
   }

@@ -12,11 +12,6 @@ namespace {
 
 constexpr int kSamples = 2000;
 
-Eigen::Vector3d RandomVector(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal(0.0, 3.0);
-  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
-}
-
 TEST(Skew, EntriesAreTheStandardHatMatrix) {
   Eigen::Matrix3d expected;
   expected << 0, -3, 2,  //
@@ -28,8 +23,8 @@ TEST(Skew, EntriesAreTheStandardHatMatrix) {
 TEST(Skew, TimesVectorIsCrossProduct) {
   std::mt19937_64 rng(11);
   for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Vector3d a = RandomVector(rng);
-    const Eigen::Vector3d b = RandomVector(rng);
+    const Eigen::Vector3d a = testing::RandomGaussianVector(rng, 3.0);
+    const Eigen::Vector3d b = testing::RandomGaussianVector(rng, 3.0);
     const Eigen::Vector3d cross = a.cross(b);  // Eigen's cross product: independent peer
     EXPECT_LT((Skew(a) * b - cross).norm(), 1e-15 * a.norm() * b.norm()) << a.transpose();
   }
@@ -40,7 +35,7 @@ TEST(Skew, TimesVectorIsCrossProduct) {
 TEST(Skew, IsAntisymmetricAndSquaresToProjector) {
   std::mt19937_64 rng(12);
   for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Vector3d a = RandomVector(rng);
+    const Eigen::Vector3d a = testing::RandomGaussianVector(rng, 3.0);
     const Eigen::Matrix3d S = Skew(a);
     EXPECT_EQ(S.transpose(), -S);
     // [a]×² = a aᵀ − |a|² I.
@@ -53,7 +48,7 @@ TEST(Skew, IsAntisymmetricAndSquaresToProjector) {
 TEST(Skew, VeeInvertsSkewExactly) {
   std::mt19937_64 rng(13);
   for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Vector3d a = RandomVector(rng);
+    const Eigen::Vector3d a = testing::RandomGaussianVector(rng, 3.0);
     EXPECT_EQ(Vee(Skew(a)), a);
   }
 }

@@ -307,25 +307,13 @@ TEST(So3Jacobians, InversesAndLeftRightRelations) {
   }
 }
 
-// ω = θ n with |ω| on the requested side of `threshold` (below: |ω| < threshold), within a few
-// ulps of it, so a test can evaluate both branches of a piecewise formula at (almost) one point.
-Eigen::Vector3d AtThreshold(const Eigen::Vector3d& n, double threshold, bool below) {
-  double theta = threshold;
-  Eigen::Vector3d omega = theta * n;
-  while ((omega.norm() < threshold) != below) {
-    theta = std::nextafter(theta, below ? 0.0 : 1.0);
-    omega = theta * n;
-  }
-  return omega;
-}
-
 TEST(So3Jacobians, ContinuousAcrossSeriesThreshold) {
   // so3.cc switches to Taylor series below θ = 1e-2: the branches must agree to rounding there.
   std::mt19937_64 rng(116);
   for (int i = 0; i < 100; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const Eigen::Vector3d below = AtThreshold(n, 1e-2, true);
-    const Eigen::Vector3d above = AtThreshold(n, 1e-2, false);
+    const Eigen::Vector3d below = testing::RotationVectorAtThreshold(n, 1e-2, true);
+    const Eigen::Vector3d above = testing::RotationVectorAtThreshold(n, 1e-2, false);
     const double step = (above - below).norm();  // J changes by at most ~step/2 between them
     EXPECT_LT(MaxAbs(so3::LeftJacobian(below) - so3::LeftJacobian(above)), 2.3e-16 + step);
     EXPECT_LT(MaxAbs(so3::LeftJacobianInverse(below) - so3::LeftJacobianInverse(above)),

@@ -20,6 +20,12 @@ inline Eigen::Matrix3d RandomRotation(std::mt19937_64& rng) {
   return q.normalized().toRotationMatrix();
 }
 
+// Each component N(0, sigma²).
+inline Eigen::Vector3d RandomGaussianVector(std::mt19937_64& rng, double sigma = 1.0) {
+  std::normal_distribution<double> normal(0.0, sigma);
+  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+}
+
 inline Eigen::Vector3d RandomUnitVector(std::mt19937_64& rng) {
   std::normal_distribution<double> normal;
   return Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
@@ -57,6 +63,20 @@ inline std::vector<Eigen::Vector3d> EdgeCaseRotationVectors(std::mt19937_64& rng
     for (int i = 0; i < 3; ++i) cases.push_back(RandomRotationVector(rng, angle));
   }
   return cases;
+}
+
+// ω = θ n with |ω| on the requested side of `threshold` (below: |ω| < threshold), within a few
+// ulps of it, so a test can evaluate both branches of a piecewise formula (a series below a
+// threshold, the closed form above) at (almost) one point.
+inline Eigen::Vector3d RotationVectorAtThreshold(const Eigen::Vector3d& n, double threshold,
+                                                 bool below) {
+  double theta = threshold;
+  Eigen::Vector3d omega = theta * n;
+  while ((omega.norm() < threshold) != below) {
+    theta = std::nextafter(theta, below ? 0.0 : 1.0);
+    omega = theta * n;
+  }
+  return omega;
 }
 
 }  // namespace hecal::testing
