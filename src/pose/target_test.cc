@@ -9,20 +9,13 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "testing/target_specs.h"
 
 namespace hecal::pose {
 namespace {
 
+using hecal::testing::Chessboard;
 using ::testing::HasSubstr;
-
-TargetSpec Chessboard(int cols, int rows, double square) {
-  TargetSpec spec;
-  spec.type = TargetType::kChessboard;
-  spec.cols = cols;
-  spec.rows = rows;
-  spec.square = square;
-  return spec;
-}
 
 TargetSpec Charuco(int cols, int rows, double square, double marker) {
   TargetSpec spec = Chessboard(cols, rows, square);

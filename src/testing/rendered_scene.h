@@ -33,6 +33,7 @@
 #include "hecal/pose/target.h"
 #include "hecal/vision/render.h"
 #include "testing/image_scene.h"
+#include "testing/target_specs.h"
 
 namespace hecal::testing {
 
@@ -45,16 +46,6 @@ inline pose::CameraModel DetectionCamera() {
 // 640 × 480 px, f ≈ 620 px, radial distortion only: the CLI tests on rendered images.
 inline pose::CameraModel RenderCamera() {
   return {620.0, 622.0, 321.5, 238.0, 640, 480, {-0.12, 0.05, 0.0, 0.0, 0.0}};
-}
-
-// A chessboard of cols × rows inner corners, `square` metres apart (pose/target.h).
-inline pose::TargetSpec Chessboard(int cols, int rows, double square) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = cols;
-  target.rows = rows;
-  target.square = square;
-  return target;
 }
 
 // 9 × 6 inner corners (cols + rows odd: the square colours fix the order), 25 mm squares.

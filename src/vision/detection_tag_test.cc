@@ -28,21 +28,11 @@ using hecal::testing::ProjectedTruth;
 using hecal::testing::RotationErrorDeg;
 
 pose::TargetSpec AprilTag(int id) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kAprilTag;
-  target.family = "tag36h11";
-  target.id = id;
-  target.size = 0.08;
-  return target;
+  return {.type = pose::TargetType::kAprilTag, .family = "tag36h11", .id = id, .size = 0.08};
 }
 
 pose::TargetSpec ArucoTag(int id) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kAruco;
-  target.dictionary = "DICT_5X5_100";
-  target.id = id;
-  target.size = 0.06;
-  return target;
+  return {.type = pose::TargetType::kAruco, .dictionary = "DICT_5X5_100", .id = id, .size = 0.06};
 }
 
 struct TagCase {
@@ -196,14 +186,7 @@ TEST(DetectTag, OpenCvSingleMarkerPoseIsTurnedAboutX) {
 // ids were.
 TEST(DetectTag, OtherTagsInViewAreIgnored) {
   const pose::CameraModel camera = DetectionCamera();
-  pose::TargetSpec grid;
-  grid.type = pose::TargetType::kAprilTagGrid;
-  grid.cols = 5;
-  grid.rows = 4;
-  grid.marker = 0.04;
-  grid.spacing = 0.012;
-  grid.family = "tag36h11";
-  grid.first_id = 3;
+  const pose::TargetSpec grid = hecal::testing::AprilTagGrid();
   const Pose T = FrontalView(grid, 0.5, -15.0, 10.0, 20.0);
   RenderOptions render;
   render.blur_sigma = 0.7;
@@ -232,21 +215,19 @@ TEST(DetectTag, RealPhotoMarkersMatchTheGridDetection) {
       std::string(HECAL_SOURCE_DIR) + "/data/moveit-calibration/test_aruco_marker_detection.png",
       cv::IMREAD_GRAYSCALE);
   ASSERT_FALSE(image.empty());
-  pose::TargetSpec grid;
-  grid.type = pose::TargetType::kArucoGrid;
-  grid.cols = 3;
-  grid.rows = 4;
-  grid.marker = 0.0256;
-  grid.spacing = 0.0066;
-  grid.dictionary = "DICT_4X4_250";
+  pose::TargetSpec grid{.type = pose::TargetType::kArucoGrid,
+                        .cols = 3,
+                        .rows = 4,
+                        .marker = 0.0256,
+                        .spacing = 0.0066,
+                        .dictionary = "DICT_4X4_250"};
   const Detection all = DetectTarget(image, grid);
   ASSERT_EQ(all.num_points(), 48) << all.message;
   for (const int id : {0, 5, 11}) {
-    pose::TargetSpec tag;
-    tag.type = pose::TargetType::kAruco;
-    tag.dictionary = grid.dictionary;
-    tag.id = id;
-    tag.size = grid.marker;
+    pose::TargetSpec tag{.type = pose::TargetType::kAruco,
+                         .dictionary = grid.dictionary,
+                         .id = id,
+                         .size = grid.marker};
     const Detection one = DetectTarget(image, tag);
     ASSERT_EQ(one.status, DetectionStatus::kFound) << one.message;
     for (const ImagePoint& p : one.points) {

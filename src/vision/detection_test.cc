@@ -21,71 +21,41 @@
 namespace hecal::vision {
 namespace {
 
+using hecal::testing::AprilTagGrid;
 using hecal::testing::CompareWithTruth;
 using hecal::testing::DetectionCamera;
 using hecal::testing::FrontalView;
 using hecal::testing::ProjectedTruth;
 
 pose::TargetSpec Chessboard() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = 9;
-  target.rows = 6;
-  target.square = 0.03;
-  return target;
+  return {.type = pose::TargetType::kChessboard, .cols = 9, .rows = 6, .square = 0.03};
 }
 
 pose::TargetSpec Charuco() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kCharuco;
-  target.cols = 7;
-  target.rows = 5;
-  target.square = 0.04;
-  target.marker = 0.03;
-  target.dictionary = "DICT_5X5_250";
-  return target;
+  return {.type = pose::TargetType::kCharuco,
+          .cols = 7,
+          .rows = 5,
+          .square = 0.04,
+          .marker = 0.03,
+          .dictionary = "DICT_5X5_250"};
 }
 
 pose::TargetSpec ArucoGrid() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kArucoGrid;
-  target.cols = 5;
-  target.rows = 4;
-  target.marker = 0.04;
-  target.spacing = 0.01;
-  target.dictionary = "DICT_4X4_250";
-  target.first_id = 7;
-  return target;
-}
-
-pose::TargetSpec AprilTagGrid() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kAprilTagGrid;
-  target.cols = 5;
-  target.rows = 4;
-  target.marker = 0.04;
-  target.spacing = 0.012;
-  target.family = "tag36h11";
-  target.first_id = 3;
-  return target;
+  return {.type = pose::TargetType::kArucoGrid,
+          .cols = 5,
+          .rows = 4,
+          .marker = 0.04,
+          .spacing = 0.01,
+          .dictionary = "DICT_4X4_250",
+          .first_id = 7};
 }
 
 pose::TargetSpec Circles() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kCircles;
-  target.cols = 7;
-  target.rows = 5;
-  target.square = 0.04;
-  return target;
+  return {.type = pose::TargetType::kCircles, .cols = 7, .rows = 5, .square = 0.04};
 }
 
 pose::TargetSpec AsymmetricCircles() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kAsymmetricCircles;
-  target.cols = 4;
-  target.rows = 11;
-  target.square = 0.02;
-  return target;
+  return {.type = pose::TargetType::kAsymmetricCircles, .cols = 4, .rows = 11, .square = 0.02};
 }
 
 bool IsCircleGrid(const pose::TargetSpec& target) {

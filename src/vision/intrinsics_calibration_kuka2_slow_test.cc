@@ -24,16 +24,13 @@
 
 #include "hecal/vision/detection.h"
 #include "hecal/vision/intrinsics_calibration.h"
+#include "testing/target_specs.h"
 
 namespace hecal::vision {
 namespace {
 
 TEST(IntrinsicsCalibrationKuka2, ReproducesTheOpenCvReference) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = 24;
-  target.rows = 17;
-  target.square = 0.015;
+  const pose::TargetSpec target = hecal::testing::Chessboard(24, 17, 0.015);
   const std::vector<pose::ObjectPoint> board = pose::ObjectPoints(target);
 
   DetectOptions sb_only;

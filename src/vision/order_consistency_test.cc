@@ -22,22 +22,8 @@ using hecal::testing::DetectionCamera;
 using hecal::testing::FrontalView;
 using hecal::testing::ProjectedTruth;
 
-pose::TargetSpec Chessboard(int cols, int rows) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = cols;
-  target.rows = rows;
-  target.square = 0.03;
-  return target;
-}
-
 pose::TargetSpec SymmetricCircles() {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kCircles;
-  target.cols = 7;
-  target.rows = 5;
-  target.square = 0.035;
-  return target;
+  return {.type = pose::TargetType::kCircles, .cols = 7, .rows = 5, .square = 0.035};
 }
 
 cv::Mat Render(const pose::TargetSpec& target, const Pose& T) {
@@ -65,7 +51,7 @@ double GridError(const std::vector<cv::Point2f>& grid, const std::vector<Eigen::
 // four labellings of the grid — as given, turned by a half turn, mirrored along x or along y — is
 // brought back to the true order by handedness and square colours.
 TEST(CanonicalGridOrder, ChessboardWithOddSumIsUniqueFromAnyStartingCorner) {
-  const pose::TargetSpec target = Chessboard(9, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(9, 6, 0.03);
   for (const double roll : {0.0, 75.0, 160.0, 250.0}) {
     const Pose T = FrontalView(target, 0.45, 15.0, -10.0, roll);
     const cv::Mat image = Render(target, T);
@@ -92,7 +78,7 @@ TEST(CanonicalGridOrder, ChessboardWithOddSumIsUniqueFromAnyStartingCorner) {
 
 // Without readable square colours (a flat image) the rule does not guess: symmetric.
 TEST(CanonicalGridOrder, UnreadableColoursAreNotGuessed) {
-  const pose::TargetSpec target = Chessboard(9, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(9, 6, 0.03);
   const Pose T = FrontalView(target, 0.45, 0.0, 0.0, 0.0);
   std::vector<cv::Point2f> grid = ToGrid(ProjectedTruth(target, DetectionCamera(), T).pixels);
   const cv::Mat flat(600, 800, CV_8U, cv::Scalar(128));
@@ -100,7 +86,7 @@ TEST(CanonicalGridOrder, UnreadableColoursAreNotGuessed) {
 }
 
 TEST(CanonicalGridOrder, DegenerateGridsAreInvalid) {
-  const pose::TargetSpec target = Chessboard(9, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(9, 6, 0.03);
   const cv::Mat flat(600, 800, CV_8U, cv::Scalar(128));
   std::vector<cv::Point2f> line;
   for (int k = 0; k < 54; ++k) line.emplace_back(10.0f + k, 20.0f + 2.0f * k);
@@ -112,7 +98,7 @@ TEST(CanonicalGridOrder, DegenerateGridsAreInvalid) {
 // The synthetic image turned by 180° in-plane: the same physical corners get the same ids (each
 // moves to (W − 1 − u, H − 1 − v)), whichever corner the detector starts from.
 TEST(DetectTarget, ChessboardTurnedInThePlaneKeepsItsIds) {
-  const pose::TargetSpec target = Chessboard(9, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(9, 6, 0.03);
   const Pose T = FrontalView(target, 0.45, 15.0, -10.0, 8.0);
   const cv::Mat image = Render(target, T);
   cv::Mat turned;
@@ -169,7 +155,7 @@ void ExpectConsistentWithTruth(const ViewSet& set, const std::vector<int>& indic
 // every view alone is ambiguous; the image rule orders them all like the first (whose x axis
 // points right, as the truth's), turning those the per-image rule had started from the far end.
 TEST(ResolveOrder, ImageRuleOrdersViewsThatTurnGradually) {
-  const pose::TargetSpec target = Chessboard(8, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(8, 6, 0.03);
   ViewSet set = SymmetricViews(target, {0.0, 60.0, 120.0, 180.0, 240.0, 300.0});
   for (const Detection& detection : set.detections) {
     ASSERT_EQ(detection.status, DetectionStatus::kAmbiguous) << detection.message;
@@ -187,7 +173,7 @@ TEST(ResolveOrder, ImageRuleOrdersViewsThatTurnGradually) {
 // A view rolled by a quarter turn from the one before cannot be ordered from the images: it
 // stays ambiguous and is listed, never guessed, and so does every later view (the chain breaks).
 TEST(ResolveOrder, ImageRuleLeavesQuarterTurnsAmbiguous) {
-  const pose::TargetSpec target = Chessboard(8, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(8, 6, 0.03);
   ViewSet set = SymmetricViews(target, {0.0, 90.0, 110.0});
   const OrderReport report = ResolveOrder(target, {}, &set.detections);
   EXPECT_EQ(report.ambiguous, (std::vector<int>{1, 2}));
@@ -200,7 +186,7 @@ TEST(ResolveOrder, ImageRuleLeavesQuarterTurnsAmbiguous) {
 // With the robot's rotations the relative rotation angles decide, whatever the roll between
 // views: quarter and three-quarter turns are ordered correctly.
 TEST(ResolveOrder, RobotRuleOrdersAnyRoll) {
-  const pose::TargetSpec target = Chessboard(8, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(8, 6, 0.03);
   ViewSet set = SymmetricViews(target, {0.0, 90.0, 180.0, 270.0, 135.0});
   OrderOptions options;
   options.camera = DetectionCamera();
@@ -213,7 +199,7 @@ TEST(ResolveOrder, RobotRuleOrdersAnyRoll) {
 // Robot rotations that do not belong to these views agree with neither order: the views stay
 // ambiguous instead of being ordered by chance.
 TEST(ResolveOrder, RobotRuleRefusesRotationsThatDoNotFit) {
-  const pose::TargetSpec target = Chessboard(8, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(8, 6, 0.03);
   ViewSet set = SymmetricViews(target, {0.0, 90.0, 180.0});
   OrderOptions options;
   options.camera = DetectionCamera();
@@ -237,7 +223,7 @@ TEST(ResolveOrder, SymmetricCircleGridsToo) {
 }
 
 TEST(ResolveOrder, LeavesUniquelyOrderedDetectionsAlone) {
-  const pose::TargetSpec target = Chessboard(9, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(9, 6, 0.03);
   std::vector<Detection> detections = {
       DetectTarget(Render(target, FrontalView(target, 0.45, 0.0, 0.0, 170.0)), target)};
   const std::vector<Detection> before = detections;
@@ -250,7 +236,7 @@ TEST(ResolveOrder, LeavesUniquelyOrderedDetectionsAlone) {
 }
 
 TEST(ResolveOrder, RejectsInconsistentOptions) {
-  const pose::TargetSpec target = Chessboard(8, 6);
+  const pose::TargetSpec target = hecal::testing::Chessboard(8, 6, 0.03);
   std::vector<Detection> detections(2);
   OrderOptions options;
   options.R_base_gripper.assign(2, Eigen::Matrix3d::Identity());

@@ -55,13 +55,12 @@ RenderOptions BlackAndWhite() {
 // marker 98 px = 7 cells of 14 px) so that OpenCV's float arithmetic rounds no size.
 TEST(RenderTarget, CharucoMatchesOpenCvDrawing) {
   constexpr double kPixel = 1.0 / 16384.0;
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kCharuco;
-  target.cols = 5;
-  target.rows = 4;
-  target.square = 128 * kPixel;
-  target.marker = 98 * kPixel;
-  target.dictionary = "DICT_5X5_100";
+  pose::TargetSpec target{.type = pose::TargetType::kCharuco,
+                          .cols = 5,
+                          .rows = 4,
+                          .square = 128 * kPixel,
+                          .marker = 98 * kPixel,
+                          .dictionary = "DICT_5X5_100"};
   const FrontalView view = Frontal(640, 512, kPixel);
   const cv::Mat ours = RenderTarget(target, view.camera, view.T_camera_target, BlackAndWhite());
   const cv::Ptr<cv::aruco::CharucoBoard> board = cv::aruco::CharucoBoard::create(
@@ -93,10 +92,7 @@ TEST(RenderTarget, ArucoGridMatchesOpenCvDrawing) {
 // A single ArUco marker is centred on the target origin (pose/target.h): seen frontally with the
 // tag's top-left corner on pixel corner (0, 0), it is OpenCV's drawMarker, pixel for pixel.
 TEST(RenderTarget, SingleArucoMarkerMatchesOpenCvDrawing) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kAruco;
-  target.dictionary = "DICT_4X4_250";
-  target.id = 17;
+  pose::TargetSpec target{.type = pose::TargetType::kAruco, .dictionary = "DICT_4X4_250", .id = 17};
   constexpr double kPixel = 1e-4;
   target.size = 60 * kPixel;  // 6 cells of 10 px
   FrontalView view = Frontal(60, 60, kPixel);
@@ -112,11 +108,8 @@ TEST(RenderTarget, SingleArucoMarkerMatchesOpenCvDrawing) {
 // the black by δ px would add δ × the squares' perimeter (here ~2000 px): the tolerance, 1 px²,
 // bounds δ at 0.0005 px.
 TEST(RenderTarget, ImagedBlackAreaEqualsProjectedArea) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = 3;
-  target.rows = 2;
-  target.square = 0.06;
+  pose::TargetSpec target{
+      .type = pose::TargetType::kChessboard, .cols = 3, .rows = 2, .square = 0.06};
   pose::CameraModel camera = hecal::testing::DetectionCamera();
   camera.distortion = {0.0, 0.0, 0.0, 0.0, 0.0};  // straight edges: the squares are quadrilaterals
   const double s = target.square;
@@ -159,11 +152,7 @@ TEST(RenderTarget, ImagedBlackAreaEqualsProjectedArea) {
 
 // The same area test for a disc: its imaged dark area equals the area of the projected circle.
 TEST(RenderTarget, CirclesHaveTheirProjectedArea) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kCircles;
-  target.cols = 3;
-  target.rows = 2;
-  target.square = 0.1;
+  pose::TargetSpec target{.type = pose::TargetType::kCircles, .cols = 3, .rows = 2, .square = 0.1};
   pose::CameraModel camera = hecal::testing::DetectionCamera();
   const Pose T = hecal::testing::FrontalView(target, 0.6, 20.0, 0.0, 0.0);
   RenderOptions options;
@@ -189,11 +178,8 @@ TEST(RenderTarget, CirclesHaveTheirProjectedArea) {
 // Background only (the board out of view): mean and spread are the background and noise_sigma;
 // the same seed gives the same image, another seed another one.
 TEST(RenderTarget, NoiseIsGaussianAndSeeded) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = 5;
-  target.rows = 4;
-  target.square = 0.02;
+  pose::TargetSpec target{
+      .type = pose::TargetType::kChessboard, .cols = 5, .rows = 4, .square = 0.02};
   const Pose away = MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(5.0, 0.0, 1.0));
   RenderOptions options;
   options.noise_sigma = 4.0;
@@ -213,11 +199,8 @@ TEST(RenderTarget, NoiseIsGaussianAndSeeded) {
 }
 
 TEST(RenderTarget, RejectsImpossibleRequests) {
-  pose::TargetSpec target;
-  target.type = pose::TargetType::kChessboard;
-  target.cols = 5;
-  target.rows = 4;
-  target.square = 0.02;
+  pose::TargetSpec target{
+      .type = pose::TargetType::kChessboard, .cols = 5, .rows = 4, .square = 0.02};
   const pose::CameraModel camera = hecal::testing::DetectionCamera();
   const Pose behind = MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, -0.5));
   EXPECT_THROW(RenderTarget(target, camera, behind), InputError);
@@ -229,13 +212,12 @@ TEST(RenderTarget, RejectsImpossibleRequests) {
   no_size.width = no_size.height = 0;
   EXPECT_THROW(RenderTarget(target, no_size, in_front), InputError);
   // AprilTags whose data bits lie outside the border (tagStandard41h12) need room between them.
-  pose::TargetSpec tags;
-  tags.type = pose::TargetType::kAprilTagGrid;
-  tags.cols = 2;
-  tags.rows = 2;
-  tags.marker = 0.05;
-  tags.spacing = 0.001;
-  tags.family = "tagStandard41h12";
+  pose::TargetSpec tags{.type = pose::TargetType::kAprilTagGrid,
+                        .cols = 2,
+                        .rows = 2,
+                        .marker = 0.05,
+                        .spacing = 0.001,
+                        .family = "tagStandard41h12"};
   EXPECT_THROW(RenderTarget(tags, camera, hecal::testing::FrontalView(tags, 0.5, 0.0, 0.0, 0.0)),
                InputError);
   pose::TargetSpec bad = target;

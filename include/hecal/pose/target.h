@@ -78,18 +78,20 @@ enum class TargetType {
   kAprilTag  // one AprilTag
 };
 
+// Every field has a default (the unused ones stay zero or empty), so that a spec can be written
+// with designated initializers: {.type = TargetType::kChessboard, .cols = 9, .rows = 6}.
 struct TargetSpec {
   TargetType type = TargetType::kChessboard;
   int cols = 0;  // chessboard/circles/acircles: points along x; charuco: squares; grids: markers
   int rows = 0;  // likewise along y
-  double square = 0.0;     // chessboard/charuco square side; circles/acircles pitch (see above)
-  double marker = 0.0;     // charuco / aruco_grid / apriltag_grid marker side
-  double spacing = 0.0;    // aruco_grid / apriltag_grid gap between neighbouring markers
-  std::string dictionary;  // charuco / aruco_grid: an ArucoDictionaries() name, "DICT_5X5_250"
-  std::string family;      // apriltag_grid / apriltag: an AprilTagFamilies() name, "tag36h11"
-  int first_id = 0;        // grids: tag id of the top-left marker
-  int id = 0;              // aruco / apriltag: the tag's id
-  double size = 0.0;       // aruco / apriltag: the tag's side (see above)
+  double square = 0.0;       // chessboard/charuco square side; circles/acircles pitch (see above)
+  double marker = 0.0;       // charuco / aruco_grid / apriltag_grid marker side
+  double spacing = 0.0;      // aruco_grid / apriltag_grid gap between neighbouring markers
+  std::string dictionary{};  // charuco / aruco_grid: an ArucoDictionaries() name, "DICT_5X5_250"
+  std::string family{};      // apriltag_grid / apriltag: an AprilTagFamilies() name, "tag36h11"
+  int first_id = 0;          // grids: tag id of the top-left marker
+  int id = 0;                // aruco / apriltag: the tag's id
+  double size = 0.0;         // aruco / apriltag: the tag's side (see above)
 };
 
 // "chessboard" | "charuco" | "aruco_grid" | "apriltag_grid" | "circles" | "acircles" | "aruco" |
