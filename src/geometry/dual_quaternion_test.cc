@@ -47,12 +47,6 @@ Eigen::Vector4d Wxyz(const Eigen::Quaterniond& q) {
   return {q.w(), q.x(), q.y(), q.z()};
 }
 
-Vector6d Twist(const Eigen::Vector3d& omega, const Eigen::Vector3d& v) {
-  Vector6d xi;
-  xi << omega, v;
-  return xi;
-}
-
 // Pure dual quaternion ½ (ω + ε v): ω in the real vector part, v in the dual vector part.
 DualQuaternion HalfTwist(const Vector6d& xi) {
   return DualQuaternion(Pure(0.5 * xi.head<3>()), Pure(0.5 * xi.tail<3>()));
@@ -272,16 +266,8 @@ TEST(DualQuaternion, LogIsHalfTheSe3Twist) {
 TEST(DualQuaternion, ExpMatchesSe3Exp) {
   // Exp(½ (ω + ε v)) = DQ(se3::Exp(ω, v)) up to sign, for any angle (Exp is total).
   std::mt19937_64 rng(508);
-  std::uniform_real_distribution<double> angle(0.0, 3.0 * kPi);
-  std::vector<Vector6d> twists;
-  for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(
-        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
-  }
-  for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    twists.push_back(Twist(omega, testing::RandomGaussianVector(rng)));
-  }
-  twists.push_back(Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)));
+  std::vector<Vector6d> twists = testing::RandomTwists(rng, kSamples, 3.0 * kPi);
+  twists.push_back(testing::Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)));
   twists.push_back(Vector6d::Zero());
   for (const Vector6d& xi : twists) {
     const DualQuaternion exp = HalfTwist(xi).Exp();
@@ -307,8 +293,8 @@ TEST(DualQuaternion, ExpLogRoundTrips) {
   }
   std::uniform_real_distribution<double> angle(0.0, kPi);
   for (int i = 0; i < kSamples; ++i) {
-    const Vector6d xi =
-        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng));
+    const Vector6d xi = testing::Twist(testing::RandomRotationVector(rng, angle(rng)),
+                                       testing::RandomGaussianVector(rng));
     const DualQuaternion p = HalfTwist(xi);
     const double scale = 1 + xi.tail<3>().norm();
     EXPECT_LT(MaxAbs(p.Exp().Log().ToVector() - p.ToVector()), 1e-14 * scale) << xi.transpose();
@@ -316,8 +302,8 @@ TEST(DualQuaternion, ExpLogRoundTrips) {
   // Tiny and near-π angles, around the series switches (σ at 1e-4, κ at 1e-2 half-angles).
   for (double theta : {1e-12, 1e-9, 1.99e-4, 2.01e-4, 1.99e-2, 2.01e-2, kPi - 1e-6, kPi - 1e-9}) {
     for (int i = 0; i < 20; ++i) {
-      const Vector6d xi =
-          Twist(testing::RandomRotationVector(rng, theta), testing::RandomGaussianVector(rng));
+      const Vector6d xi = testing::Twist(testing::RandomRotationVector(rng, theta),
+                                         testing::RandomGaussianVector(rng));
       const DualQuaternion p = HalfTwist(xi);
       EXPECT_LT(MaxAbs(p.Exp().Log().ToVector() - p.ToVector()), 1e-14) << theta;
       EXPECT_LT(PoseError(p.Exp().ToPose(), se3::Exp(xi)), 1e-14) << theta;

@@ -33,12 +33,6 @@ double PoseError(const Pose& A, const Pose& B) {
   return MaxAbs(A.matrix() - B.matrix());
 }
 
-Vector6d Twist(const Eigen::Vector3d& omega, const Eigen::Vector3d& v) {
-  Vector6d xi;
-  xi << omega, v;
-  return xi;
-}
-
 // exp of the 4×4 twist matrix [[ω]× v; 0 0]: a peer that knows nothing about Jacobians.
 Eigen::Matrix4d MatrixExponential(const Vector6d& xi) {
   Eigen::Matrix4d X = Eigen::Matrix4d::Zero();
@@ -58,33 +52,25 @@ const std::vector<double>& JacobianTestAngles() {
 
 TEST(Se3, TangentOrderIsRotationFirst) {
   // (0,0,0, 1,0,0) is a pure translation along x; (θ,0,0, 0,0,0) a pure rotation about x.
-  const Pose T = se3::Exp(Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()));
+  const Pose T = se3::Exp(testing::Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()));
   EXPECT_EQ(T.linear(), Eigen::Matrix3d::Identity());
   EXPECT_EQ(T.translation(), Eigen::Vector3d::UnitX());
-  const Pose R = se3::Exp(Twist(0.5 * Eigen::Vector3d::UnitX(), Eigen::Vector3d::Zero()));
+  const Pose R = se3::Exp(testing::Twist(0.5 * Eigen::Vector3d::UnitX(), Eigen::Vector3d::Zero()));
   EXPECT_LT(
       MaxAbs(R.linear() - Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX()).toRotationMatrix()),
       1e-16);
   EXPECT_EQ(R.translation(), Eigen::Vector3d::Zero());
   // Log of a pure translation puts it in the last three slots.
   const Vector6d xi = se3::Log(MakePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1, 2, 3)));
-  EXPECT_EQ(xi, Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)));
+  EXPECT_EQ(xi, testing::Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)));
   // ω ∥ v: a screw along z, rotation θ and translation d along the same axis.
-  const Pose S = se3::Exp(Twist(Eigen::Vector3d(0, 0, 1.2), Eigen::Vector3d(0, 0, 0.7)));
+  const Pose S = se3::Exp(testing::Twist(Eigen::Vector3d(0, 0, 1.2), Eigen::Vector3d(0, 0, 0.7)));
   EXPECT_LT((S.translation() - Eigen::Vector3d(0, 0, 0.7)).norm(), 1e-16);
 }
 
 TEST(Se3Exp, MatchesMatrixExponential) {
   std::mt19937_64 rng(301);
-  std::uniform_real_distribution<double> angle(0.0, 3.0 * kPi);
-  std::vector<Vector6d> twists;
-  for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(
-        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
-  }
-  for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    twists.push_back(Twist(omega, testing::RandomGaussianVector(rng)));
-  }
+  std::vector<Vector6d> twists = testing::RandomTwists(rng, kSamples, 3.0 * kPi);
   for (const Vector6d& xi : twists) {
     const double scale = 1.0 + xi.tail<3>().norm();
     EXPECT_LT(MaxAbs(se3::Exp(xi).matrix() - MatrixExponential(xi)), 1e-14 * scale)
@@ -98,7 +84,7 @@ TEST(Se3Exp, GivesTheConstructedScrewMotion) {
   for (int i = 0; i < kSamples; ++i) {
     const auto [n, c, theta, d] = testing::RandomScrewLine(rng);
     const Pose expected = testing::ScrewMotion(n, c, theta, d);
-    const Vector6d xi = Twist(theta * n, theta * c.cross(n) + d * n);
+    const Vector6d xi = testing::Twist(theta * n, theta * c.cross(n) + d * n);
     EXPECT_LT(PoseError(se3::Exp(xi), expected), 1e-14 * (1 + c.norm())) << theta;
   }
 }
@@ -118,7 +104,7 @@ TEST(Se3Adjoint, MatchesExplicitBlocksAndConjugation) {
     }
     // T Exp(δ) T⁻¹ = Exp(Ad(T) δ), checked with the matrix exponential peer.
     const Vector6d delta =
-        Twist(testing::RandomRotationVector(rng, 2.0), testing::RandomGaussianVector(rng));
+        testing::Twist(testing::RandomRotationVector(rng, 2.0), testing::RandomGaussianVector(rng));
     const Eigen::Matrix4d lhs = T.matrix() * MatrixExponential(delta) * T.inverse().matrix();
     EXPECT_LT(MaxAbs(lhs - se3::Exp(Ad * delta).matrix()), 4e-14);
   }
@@ -140,8 +126,8 @@ std::vector<Vector6d> JacobianTwists(std::mt19937_64& rng) {
   std::vector<Vector6d> result;
   for (double theta : JacobianTestAngles()) {
     for (int i = 0; i < 10; ++i) {
-      result.push_back(
-          Twist(testing::RandomRotationVector(rng, theta), testing::RandomGaussianVector(rng)));
+      result.push_back(testing::Twist(testing::RandomRotationVector(rng, theta),
+                                      testing::RandomGaussianVector(rng)));
     }
   }
   return result;
@@ -152,8 +138,8 @@ TEST(Se3Jacobians, InversesAndLeftRightRelations) {
   std::uniform_real_distribution<double> angle(0.0, kPi);
   std::vector<Vector6d> twists = JacobianTwists(rng);
   for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(
-        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
+    twists.push_back(testing::Twist(testing::RandomRotationVector(rng, angle(rng)),
+                                    testing::RandomGaussianVector(rng)));
   }
   for (const Vector6d& xi : twists) {
     const double scale = 1 + xi.tail<3>().norm();
@@ -195,16 +181,16 @@ TEST(Se3Jacobians, MatchLongDoubleSeriesToRounding) {
   for (double threshold : {0.1, 1e-2}) {
     for (int i = 0; i < 50; ++i) {
       const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-      twists.push_back(Twist(testing::RotationVectorAtThreshold(n, threshold, true),
-                             testing::RandomGaussianVector(rng)));
-      twists.push_back(Twist(testing::RotationVectorAtThreshold(n, threshold, false),
-                             testing::RandomGaussianVector(rng)));
+      twists.push_back(testing::Twist(testing::RotationVectorAtThreshold(n, threshold, true),
+                                      testing::RandomGaussianVector(rng)));
+      twists.push_back(testing::Twist(testing::RotationVectorAtThreshold(n, threshold, false),
+                                      testing::RandomGaussianVector(rng)));
     }
   }
   std::uniform_real_distribution<double> angle(0.05, 0.6);  // where the closed forms cancel most
   for (int i = 0; i < 500; ++i) {
-    twists.push_back(
-        Twist(testing::RandomRotationVector(rng, angle(rng)), testing::RandomGaussianVector(rng)));
+    twists.push_back(testing::Twist(testing::RandomRotationVector(rng, angle(rng)),
+                                    testing::RandomGaussianVector(rng)));
   }
   for (const Vector6d& xi : twists) {
     const Matrix6d reference = LeftJacobianBySeries(xi);
@@ -228,8 +214,10 @@ TEST(Se3Jacobians, ContinuousAcrossSeriesThresholds) {
     for (int i = 0; i < 100; ++i) {
       const Eigen::Vector3d n = testing::RandomUnitVector(rng);
       const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
-      const Vector6d below = Twist(testing::RotationVectorAtThreshold(n, threshold, true), v);
-      const Vector6d above = Twist(testing::RotationVectorAtThreshold(n, threshold, false), v);
+      const Vector6d below =
+          testing::Twist(testing::RotationVectorAtThreshold(n, threshold, true), v);
+      const Vector6d above =
+          testing::Twist(testing::RotationVectorAtThreshold(n, threshold, false), v);
       const double tolerance = 2e-15 * (1 + v.norm()) + (above - below).norm() * (1 + v.norm());
       EXPECT_LT(MaxAbs(se3::LeftJacobian(below) - se3::LeftJacobian(above)), tolerance);
       EXPECT_LT(MaxAbs(se3::LeftJacobianInverse(below) - se3::LeftJacobianInverse(above)),

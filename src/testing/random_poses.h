@@ -65,6 +65,27 @@ inline std::vector<Eigen::Vector3d> EdgeCaseRotationVectors(std::mt19937_64& rng
   return cases;
 }
 
+// The twist (ω, v): rotation first, as geometry/se3.h orders the tangent.
+inline Vector6d Twist(const Eigen::Vector3d& omega, const Eigen::Vector3d& v) {
+  Vector6d xi;
+  xi << omega, v;
+  return xi;
+}
+
+// `count` twists with |ω| uniform in [0, max_angle) about a random axis and v ~ N(0, I), then one
+// per EdgeCaseRotationVectors entry, v ~ N(0, I).
+inline std::vector<Vector6d> RandomTwists(std::mt19937_64& rng, int count, double max_angle) {
+  std::uniform_real_distribution<double> angle(0.0, max_angle);
+  std::vector<Vector6d> twists;
+  for (int i = 0; i < count; ++i) {
+    twists.push_back(Twist(RandomRotationVector(rng, angle(rng)), RandomGaussianVector(rng)));
+  }
+  for (const Eigen::Vector3d& omega : EdgeCaseRotationVectors(rng)) {
+    twists.push_back(Twist(omega, RandomGaussianVector(rng)));
+  }
+  return twists;
+}
+
 // ω = θ n with |ω| on the requested side of `threshold` (below: |ω| < threshold), within a few
 // ulps of it, so a test can evaluate both branches of a piecewise formula (a series below a
 // threshold, the closed form above) at (almost) one point.
