@@ -9,8 +9,9 @@
 //   --units and kin    m | mm                               io::LengthUnit (io/units.h)
 //   --euler            three axis letters, lowercase = extrinsic, uppercase = intrinsic
 //                      (geometry/euler.h)
-// Used by `hecal import`, `hecal detect` (none yet) and `hecal poses convert`; `hecal calibrate`,
-// `hecal pose`, `hecal bench` and `hecal simulate` read the same choices.
+// Used by `hecal import` (--format, --units, --setup) and `hecal poses convert` (--to, --units,
+// --input-units, --euler); `hecal calibrate` (--setup with auto, --units, --euler), `hecal pose`
+// (--units), `hecal bench` and `hecal simulate` (--setup) read the same choices.
 #pragma once
 
 #include <CLI/CLI.hpp>
