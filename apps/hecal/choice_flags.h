@@ -4,9 +4,12 @@
 //
 //   FLAG: unknown WHAT 'TEXT' (fix: use ...)
 //
+// (CLI11 runs the parse as it reads the flag, so a wrong choice is reported before a missing
+// required flag and before --help.)
+//
 // The choices several commands share (docs/cli.md, docs/conventions.md):
 //   --setup            eye-in-hand | eye-to-hand [| auto]   handeye::Setup (handeye/problem.h)
-//   --units and kin    m | mm                               io::LengthUnit (io/units.h)
+//   --units, ...       m | mm                               io::LengthUnit (io/units.h)
 //   --euler            three axis letters, lowercase = extrinsic, uppercase = intrinsic
 //                      (geometry/euler.h)
 // Used by `hecal import` (--format, --units, --setup) and `hecal poses convert` (--to, --units,
