@@ -24,8 +24,8 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
   options.images = {flags.images, flags.target, flags.intrinsics, flags.threads,
                     vision::ImageUse::kPoses};
   options.output = flags.output;
+  // The options first, then every output, before the detection; written all or none after it.
   RequireValid(options);
-  // Every output is checked before the detection and written all or none after it.
   const io::DetectionOutputPaths paths = io::DetectionCompanionPaths(flags.output);
   const std::string camera_path = flags.intrinsics.empty() ? paths.camera : "";
   io::CheckOutputs({{"--output", flags.output},
@@ -37,8 +37,9 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
   std::vector<io::OutputFile> outputs = {
       {"--output", flags.output, io::FormatPoseTable(result.table, result.write)},
       {"--output (points)", paths.points, io::FormatDetectedPoints(result.points)}};
-  if (result.camera_yaml)
+  if (result.camera_yaml) {
     outputs.push_back({"--output (intrinsics)", camera_path, *result.camera_yaml});
+  }
   io::WriteFilesAtomically(outputs);
   io.out << "hecal: wrote " << result.table.rows.size() << " poses to " << flags.output
          << " (T_camera_target, m, quaternion), points to " << paths.points
