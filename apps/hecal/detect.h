@@ -1,9 +1,8 @@
 // `hecal detect` (docs/cli.md#hecal-detect, docs/targets.md): camera poses T_camera_target from
-// images of a calibration target, for `hecal calibrate`. The image front end is
-// jobs::DetectImages (jobs/image_front_end.h: vision::DetectImageSet with its stages as text,
-// printed by job_output.h), shared with `hecal calibrate --images`; this command checks the output
-// paths first (io::CheckOutputs) and writes the pose table, the points file and the estimated
-// intrinsics, all or none.
+// images of a calibration target, for `hecal calibrate`. The job is jobs::DetectCameraPoses
+// (jobs/pose_detection.h: the image front end shared with `hecal calibrate --images`, its stages
+// printed by job_output.h); this command checks the output paths first (io::CheckOutputs) and
+// writes the pose table, the points file and the estimated intrinsics, all or none.
 #pragma once
 
 #include <string>

@@ -5,13 +5,10 @@
 #include <memory>
 #include <optional>
 
-#include "hecal/core/error.h"
+#include "choice_flags.h"
 #include "hecal/io/atomic_file.h"
-#include "hecal/io/import.h"
-#include "hecal/io/import_output.h"
-#include "hecal/io/pose_table.h"
+#include "hecal/io/import_job.h"
 #include "hecal/io/units.h"
-#include "hecal/version.h"
 
 namespace hecal::cli {
 namespace {
@@ -43,79 +40,23 @@ Errors: one line on stderr, exit code 2, and no output file is written or change
 
 }  // namespace
 
-void RunImport(const ImportCommandOptions& options, const Io& io) {
-  const std::optional<io::ImportFormat> format = io::ParseImportFormat(options.format);
-  if (!format) {
-    throw InputError("--format", 0, "unknown import format '" + options.format + "'",
-                     "use one of " + io::ImportFormatList());
-  }
-  io::ImportOptions import_options;
-  if (!options.units.empty()) {
-    import_options.units = io::ParseLengthUnit(options.units);
-    if (!import_options.units) {
-      throw InputError("--units", 0, "unknown length unit '" + options.units + "'", "use m or mm");
-    }
-  }
-  if (!options.setup.empty()) {
-    if (options.setup == "eye-in-hand") {
-      import_options.setup = io::ImportSetup::kEyeInHand;
-    } else if (options.setup == "eye-to-hand") {
-      import_options.setup = io::ImportSetup::kEyeToHand;
-    } else {
-      throw InputError("--setup", 0, "unknown setup '" + options.setup + "'",
-                       "use eye-in-hand or eye-to-hand");
-    }
-  }
-  import_options.robot_inverse = options.robot_inverse;
-  import_options.camera_inverse = options.camera_inverse;
-  const bool robot_only = *format == io::ImportFormat::kMatrix16 && options.inputs.size() == 1;
-  if (options.camera.empty() && !robot_only) {
-    throw InputError("--camera", 0, "is required for --format " + options.format,
-                     "give --camera camera.csv (only a robot-only matrix16 import may omit it)");
-  }
-  if (!options.camera.empty() && robot_only) {
-    throw InputError("--camera", 0, "given, but matrix16 got only a robot file",
-                     "pass the camera matrix file after the robot file, or drop --camera");
-  }
-  if (!options.intrinsics.empty() && *format != io::ImportFormat::kTabb) {
-    throw InputError("--intrinsics", 0,
-                     "only tabb sources hold intrinsics (cali.txt), not " + options.format,
-                     "drop --intrinsics");
-  }
-
-  const io::ImportedPoses imported = io::ImportFiles(*format, options.inputs, import_options);
-
-  const io::ImportTexts texts = io::FormatImportedPoses(
-      imported, "written by hecal " + std::string(kVersion) + " import --format " + options.format);
-  std::vector<io::OutputFile> outputs;
-  outputs.push_back({"--robot", options.robot, texts.robot});
-  if (texts.camera) outputs.push_back({"--camera", options.camera, *texts.camera});
+void RunImport(const io::ImportJobOptions& options, const Io& io) {
+  const io::ImportJob job = io::ImportSamples(options);
+  std::vector<io::OutputFile> outputs = {{"--robot", options.robot, job.texts.robot}};
+  if (job.texts.camera) outputs.push_back({"--camera", options.camera, *job.texts.camera});
   if (!options.intrinsics.empty()) {
-    if (!texts.intrinsics) {
-      throw InputError(options.inputs.back(), 0,
-                       "the images do not share one camera model (intrinsics differ between "
-                       "lines), so no single camera.yaml can be written",
-                       "drop --intrinsics");
-    }
-    outputs.push_back({"--intrinsics", options.intrinsics, *texts.intrinsics});
+    outputs.push_back({"--intrinsics", options.intrinsics, *job.texts.intrinsics});
   }
   std::vector<io::PathArgument> output_paths, inputs;
   for (const io::OutputFile& output : outputs) output_paths.push_back({output.flag, output.path});
-  for (const std::string& source : imported.sources) inputs.push_back({"input", source});
+  for (const std::string& source : job.imported.sources) inputs.push_back({"input", source});
   io::CheckOutputs(output_paths, inputs);
   io::WriteFilesAtomically(outputs);
-  for (const std::string& warning : imported.robot.warnings) {
-    io.err << "hecal: warning: " << warning << "\n";
-  }
-  if (imported.camera) {
-    for (const std::string& warning : imported.camera->warnings) {
-      io.err << "hecal: warning: " << warning << "\n";
-    }
-  }
+  for (const std::string& warning : job.warnings) io.err << "hecal: warning: " << warning << "\n";
 
-  const std::string unit(io::UnitName(imported.robot.unit));
+  const io::ImportedPoses& imported = job.imported;
   io.out << "hecal: wrote " << imported.robot.rows.size() << " robot poses (T_base_gripper, "
-         << unit << ") to " << options.robot;
+         << io::UnitName(imported.robot.unit) << ") to " << options.robot;
   if (imported.camera) {
     io.out << " and " << imported.camera->rows.size() << " camera poses (T_camera_target, "
            << io::UnitName(imported.camera->unit) << ") to " << options.camera;
@@ -131,24 +72,34 @@ void RunImport(const ImportCommandOptions& options, const Io& io) {
 void RegisterImportCommand(CLI::App& app, const Io& io) {
   CLI::App* command = app.add_subcommand(
       "import", "Convert another tool's calibration samples into robot.csv and camera.csv");
-  auto options = std::make_shared<ImportCommandOptions>();
-  command->add_option("--format", options->format, io::ImportFormatList())->required();
+  auto options = std::make_shared<io::ImportJobOptions>();
+  auto setup = std::make_shared<std::optional<handeye::Setup>>();
+  AddChoice<io::ImportFormat>(*command, "--format", options->format, io::ParseImportFormat,
+                              "import format", "use one of " + io::ImportFormatList(),
+                              io::ImportFormatList())
+      ->required();
   command->add_option("inputs", options->inputs, "INPUT... (see below)")->required();
   command->add_option("--robot", options->robot, "output: robot poses T_base_gripper (CSV)")
       ->required();
   command->add_option("--camera", options->camera, "output: camera poses T_camera_target (CSV)");
-  command->add_option("--units", options->units,
-                      "m|mm: length unit of matrix16 and opencv-yaml inputs (default m)");
-  command->add_option("--setup", options->setup,
-                      "eye-in-hand|eye-to-hand: for easy_handeye files that do not say");
-  command->add_flag("--robot-inverse", options->robot_inverse,
+  AddLengthUnitFlag(*command, "--units", options->read.units,
+                    "m|mm: length unit of matrix16 and opencv-yaml inputs (default m)");
+  AddSetupFlag(*command, *setup, SetupChoices::kGiven,
+               "eye-in-hand|eye-to-hand: for easy_handeye files that do not say");
+  command->add_flag("--robot-inverse", options->read.robot_inverse,
                     "the robot file holds the inverse of the format's convention; invert it");
-  command->add_flag("--camera-inverse", options->camera_inverse,
+  command->add_flag("--camera-inverse", options->read.camera_inverse,
                     "the camera file holds the inverse of the format's convention; invert it");
   command->add_option("--intrinsics", options->intrinsics,
                       "tabb: also write the camera intrinsics of cali.txt (camera.yaml)");
   command->footer(kImportFooter);
-  command->callback([options, io] { RunImport(*options, io); });
+  command->callback([options, setup, io] {
+    if (*setup) {
+      options->read.setup = **setup == handeye::Setup::kEyeInHand ? io::ImportSetup::kEyeInHand
+                                                                  : io::ImportSetup::kEyeToHand;
+    }
+    RunImport(*options, io);
+  });
 }
 
 }  // namespace hecal::cli

@@ -1,28 +1,16 @@
 // `hecal import` (docs/cli.md#hecal-import, docs/import-formats.md): another tool's calibration
-// samples → the canonical pose tables, all or nothing. The readers and their conventions are
-// include/hecal/io/import*.h; this command binds the flags and writes the files.
+// samples → the canonical pose tables, all or nothing. The job is io::ImportSamples
+// (io/import_job.h; the readers and their conventions are include/hecal/io/import*.h); this
+// command binds the flags to its options, checks the output paths and writes the files.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include "cli.h"
+#include "hecal/io/import_job.h"
 
 namespace hecal::cli {
 
-struct ImportCommandOptions {
-  std::string format;               // moveit | easy_handeye | ... (io::ParseImportFormat)
-  std::vector<std::string> inputs;  // INPUT...
-  std::string robot;                // --robot robot.csv
-  std::string camera;               // --camera camera.csv ("" only for robot-only matrix16)
-  std::string units;                // --units m|mm (matrix16, opencv-yaml)
-  std::string setup;                // --setup eye-in-hand|eye-to-hand (easy_handeye)
-  bool robot_inverse = false;       // --robot-inverse (any format)
-  bool camera_inverse = false;      // --camera-inverse (any format)
-  std::string intrinsics;           // --intrinsics camera.yaml (tabb)
-};
-
-// Runs the import; throws hecal::InputError for bad flags or input.
-void RunImport(const ImportCommandOptions& options, const Io& io);
+// Runs the import job (io/import_job.h), checks the output paths and writes the files; throws
+// hecal::InputError for bad flags or input.
+void RunImport(const io::ImportJobOptions& options, const Io& io);
 
 }  // namespace hecal::cli

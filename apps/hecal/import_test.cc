@@ -303,10 +303,11 @@ TEST_F(ImportTest, BadFlagsAndInputsWriteNothing) {
   ExpectFailure({"--format", "moveit", json, "--robot", robot, "--camera", camera, "--units", "mm"},
                 "--units");
   ExpectFailure({"--format", "matrix16", json, "--robot", robot, "--units", "cm"},
-                "unknown length unit 'cm'");
+                "--units: unknown unit 'cm' (fix: use m or mm)");
   ExpectFailure({"--format", "easy_handeye", json, "--robot", robot, "--camera", camera, "--setup",
                  "sideways"},
-                "unknown setup 'sideways'");
+                "--setup: unknown setup 'sideways' (fix: use eye-in-hand (camera on the robot) or "
+                "eye-to-hand (camera fixed))");
   ExpectFailure({"--format", "moveit", json, "--robot", robot, "--camera", camera, "--intrinsics",
                  Path("k.yaml")},
                 "--intrinsics");

@@ -4,11 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 
-#include "hecal/core/error.h"
+#include "choice_flags.h"
 #include "hecal/io/atomic_file.h"
-#include "hecal/io/pose_conversion.h"
-#include "hecal/io/pose_table.h"
-#include "hecal/io/rotation_format.h"
 #include "hecal/io/units.h"
 
 namespace hecal::cli {
@@ -28,83 +25,57 @@ Units: header suffixes (x_mm, a_deg, rx_rad) win over flags. Without suffixes th
 Output: id and stamp columns are kept; quaternions have qw >= 0; --invert writes T^-1.
 Errors: one line on stderr, exit code 2, and no output file.)";
 
-std::optional<io::LengthUnit> UnitFlag(const std::string& text, const char* flag) {
-  if (text.empty()) return std::nullopt;
-  const std::optional<io::LengthUnit> unit = io::ParseLengthUnit(text);
-  if (!unit) throw InputError(flag, 0, "unknown length unit '" + text + "'", "use m or mm");
-  return unit;
-}
-
 }  // namespace
 
-void RunPosesConvert(const PosesConvertOptions& options, const Io& io) {
-  io::PoseConversionOptions job;
-  job.input = options.input;
-  const std::optional<io::RotationFormat> format = io::ParseRotationFormat(options.to);
-  if (!format) {
-    throw InputError("--to", 0, "unknown rotation format '" + options.to + "'",
-                     "use one of " + std::string(io::RotationFormatSpellings()));
-  }
-  job.to = *format;
-  job.units = UnitFlag(options.units, "--units");
-  job.degrees = options.degrees;
-  job.read.units = UnitFlag(options.input_units, "--input-units").value_or(io::LengthUnit::kMetre);
-  job.read.degrees = options.input_degrees;
-  job.read.invert = options.invert;
-  if (!options.euler.empty()) {
-    job.read.euler = EulerSequence::Parse(options.euler);
-    if (!job.read.euler) {
-      throw InputError("--euler", 0, "unknown Euler sequence '" + options.euler + "'",
-                       "use three axis letters, lowercase = extrinsic, uppercase = intrinsic "
-                       "(e.g. xyz, ZYX, ZXZ)");
-    }
-  }
-
-  io::CheckOutputs({{"--output", options.output}}, {{"--input", options.input}});
-  const io::PoseConversion result = io::ConvertPoseTable(job);
+void RunPosesConvert(const io::PoseConversionOptions& options, const std::string& output,
+                     const Io& io) {
+  io::CheckOutputs({{"--output", output}}, {{"--input", options.input}});
+  const io::PoseConversion result = io::ConvertPoseTable(options);
   for (const std::string& warning : result.table.warnings) {
     io.err << "hecal: warning: " << warning << "\n";
   }
-  io::WritePoseTable(options.output, result.table, result.write);
+  io::WritePoseTable(output, result.table, result.write);
 
-  const bool angles = format->kind == io::RotationFormat::Kind::kRotationVector ||
-                      format->kind == io::RotationFormat::Kind::kEuler;
-  io.out << "hecal: wrote " << result.table.rows.size() << " poses to " << options.output << " ("
-         << format->ToString() << ", " << io::UnitName(result.write.units)
-         << (angles ? (options.degrees || format->angles_in_degrees ? ", degrees" : ", radians")
+  const io::RotationFormat& format = options.to;
+  const bool angles = format.kind == io::RotationFormat::Kind::kRotationVector ||
+                      format.kind == io::RotationFormat::Kind::kEuler;
+  io.out << "hecal: wrote " << result.table.rows.size() << " poses to " << output << " ("
+         << format.ToString() << ", " << io::UnitName(result.write.units)
+         << (angles ? (options.degrees || format.angles_in_degrees ? ", degrees" : ", radians")
                     : "")
-         << (options.invert ? ", inverted" : "") << ")\n";
+         << (options.read.invert ? ", inverted" : "") << ")\n";
 }
 
 void RegisterPosesCommand(CLI::App& app, const Io& io) {
   CLI::App* poses = app.add_subcommand("poses", "Pose files: convert rotation forms and units");
   poses->require_subcommand(1);
 
-  auto options = std::make_shared<PosesConvertOptions>();
+  auto options = std::make_shared<io::PoseConversionOptions>();
+  auto output = std::make_shared<std::string>();
   CLI::App* convert =
       poses->add_subcommand("convert", "Convert a pose table to another rotation form and/or unit");
   convert->add_option("--input", options->input, "Input pose table (CSV or matrix lines)")
       ->required();
-  convert->add_option("--output", options->output, "Output CSV (written atomically)")->required();
-  convert
-      ->add_option("--to", options->to,
-                   "Rotation form: quaternion | rotvec | matrix | euler:SEQ (e.g. euler:ZYX, "
-                   "euler:xyz; lowercase = extrinsic, uppercase = intrinsic) | rpy | kuka | "
-                   "fanuc | abb | ur")
+  convert->add_option("--output", *output, "Output CSV (written atomically)")->required();
+  AddChoice<io::RotationFormat>(
+      *convert, "--to", options->to, io::ParseRotationFormat, "rotation format",
+      "use one of " + std::string(io::RotationFormatSpellings()),
+      "Rotation form: quaternion | rotvec | matrix | euler:SEQ (e.g. euler:ZYX, euler:xyz; "
+      "lowercase = extrinsic, uppercase = intrinsic) | rpy | kuka | fanuc | abb | ur")
       ->required();
-  convert->add_option("--units", options->units,
-                      "Output length unit m|mm (default: the input's unit)");
+  AddLengthUnitFlag(*convert, "--units", options->units,
+                    "Output length unit m|mm (default: the input's unit)");
   convert->add_flag("--degrees", options->degrees,
                     "Output angles in degrees (rotvec, euler:SEQ, rpy; kuka/fanuc always are)");
-  convert->add_flag("--invert", options->invert, "Write the inverse of every pose");
-  convert->add_option("--input-units", options->input_units,
-                      "Input length unit m|mm when the header has no suffix (default m)");
-  convert->add_flag("--input-degrees", options->input_degrees,
+  convert->add_flag("--invert", options->read.invert, "Write the inverse of every pose");
+  AddLengthUnitFlag(*convert, "--input-units", options->read.units,
+                    "Input length unit m|mm when the header has no suffix (default m)");
+  convert->add_flag("--input-degrees", options->read.degrees,
                     "Input angles in degrees when the header has no suffix");
-  convert->add_option("--euler", options->euler,
-                      "Euler sequence of a1,a2,a3 input columns (e.g. ZYX, xyz)");
+  AddEulerFlag(*convert, "--euler", options->read.euler,
+               "Euler sequence of a1,a2,a3 input columns (e.g. ZYX, xyz)");
   convert->footer(kConvertFooter);
-  convert->callback([options, io] { RunPosesConvert(*options, io); });
+  convert->callback([options, output, io] { RunPosesConvert(*options, *output, io); });
 }
 
 }  // namespace hecal::cli

@@ -258,9 +258,9 @@ TEST_F(PosesConvertTest, BadFlags) {
   ExpectBadInput({"--input", input, "--to", "quat"}, "--to", "unknown rotation format 'quat'");
   ExpectBadInput({"--input", input, "--to", "euler:XYZX"}, "--to", "unknown rotation format");
   ExpectBadInput({"--input", input, "--to", "rotvec", "--units", "cm"}, "--units",
-                 "unknown length unit 'cm'");
+                 "--units: unknown unit 'cm' (fix: use m or mm)");
   ExpectBadInput({"--input", input, "--to", "rotvec", "--input-units", "inch"}, "--input-units",
-                 "unknown length unit");
+                 "--input-units: unknown unit 'inch'");
   ExpectBadInput({"--input", input, "--to", "rotvec", "--euler", "abc"}, "--euler",
                  "unknown Euler sequence 'abc'");
   ExpectBadInput({"--input", input}, "--to", "required");
