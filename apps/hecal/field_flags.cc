@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 82> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 89> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ConventionCheckOptions.setup", "--setup"},
@@ -91,6 +91,13 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 82> kFieldFl
     {"GlobalCalibrationOptions.robot_sigma", "--robot-sigma"},
     {"PoseFileCalibrationOptions.robot", "--robot"},
     {"PoseFileCalibrationOptions.camera", "--camera"},
+    {"GlobalImageMatchOptions.robot", "--robot"},
+    {"GlobalImageMatchOptions.images", "--images"},
+    {"GlobalImageMatchOptions.target", "--target"},
+    {"GlobalImageMatchOptions.intrinsics", "--intrinsics"},
+    {"GlobalImageMatchOptions.threads", "--threads"},
+    {"GlobalImageMatchOptions.matches_per_motion", "--matches-per-motion"},
+    {"GlobalImageMatchOptions.pixel_sigma", "--pixel-sigma"},
 }};
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".
