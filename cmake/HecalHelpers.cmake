@@ -16,18 +16,35 @@ endif()
 install(TARGETS hecal_compile_options EXPORT hecalTargets)
 
 # hecal_add_module(<name> [DEPENDS <public targets>...] [PRIVATE_DEPENDS <targets>...]
-#                  [TEST_DEPENDS <targets>...])
+#                  [TEST_DEPENDS <targets>...] [ONLY <stems>...])
 # Builds library hecal_<name> (alias hecal::<name>) from src/<name>/*.cc (an INTERFACE library
 # when the module has headers only) and one GoogleTest
 # executable per src/<name>/*_test.cc, registered with CTest under the label "unit".
 # A test file named *_slow_test.cc gets the label "slow" instead (kept out of the default run).
 # A test file named *_opencv_test.cc uses OpenCV as a peer and is built only with
 # HECAL_BUILD_VISION (the core libraries themselves never link OpenCV).
+# ONLY keeps the sources <stem>.cc and <stem>_test.cc of the stems listed (a module whose other
+# sources need a layer that is not built).
 function(hecal_add_module name)
-  cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS;TEST_DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS;TEST_DEPENDS;ONLY" ${ARGN})
   set(dir ${PROJECT_SOURCE_DIR}/src/${name})
   file(GLOB all_sources CONFIGURE_DEPENDS ${dir}/*.cc)
   file(GLOB test_sources CONFIGURE_DEPENDS ${dir}/*_test.cc)
+  if(ARG_ONLY)
+    set(kept)
+    foreach(stem ${ARG_ONLY})
+      list(APPEND kept ${dir}/${stem}.cc ${dir}/${stem}_test.cc)
+    endforeach()
+    foreach(sources all_sources test_sources)
+      set(filtered)
+      foreach(source ${${sources}})
+        if(source IN_LIST kept)
+          list(APPEND filtered ${source})
+        endif()
+      endforeach()
+      set(${sources} ${filtered})
+    endforeach()
+  endif()
   set(lib_sources ${all_sources})
   if(test_sources)
     list(REMOVE_ITEM lib_sources ${test_sources})

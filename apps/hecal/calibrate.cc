@@ -2,11 +2,8 @@
 #include "calibrate.h"
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <exception>
-#include <filesystem>
 #include <memory>
 #include <utility>
 
@@ -14,16 +11,13 @@
 #include "conventions.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
-#include "hecal/estimation/plausibility.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/io/atomic_file.h"
-#include "hecal/io/quaternion_columns.h"
-#include "hecal/report/pose_calibration.h"
+#include "hecal/jobs/pose_file_calibration.h"
 #include "hecal/report/result_text.h"
 #include "list_flags.h"
 
 namespace hecal::cli {
-namespace {}  // namespace
 
 // "MM,DEG" (ParseNoiseLevel) → PoseSigma in metres and radians (its range is
 // CalibrateOptions::IsValid's).
@@ -133,72 +127,27 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
 
 namespace {
 
-// The same poses as robot and camera (one file given twice, or a copy) cannot calibrate anything.
-void RefuseSameFile(const CalibrateFlags& flags, const io::Stations& stations) {
-  std::error_code error;
-  const bool same_path = std::filesystem::equivalent(flags.robot, flags.camera, error) && !error;
-  bool same_poses = !stations.robot.empty();
-  for (size_t i = 0; same_poses && i < stations.robot.size(); ++i) {
-    same_poses = stations.robot[i].isApprox(stations.camera[i], 1e-12) ||
-                 stations.robot[i].isApprox(stations.camera[i].inverse(), 1e-12);
-  }
-  if (same_path || same_poses) {
-    throw InputError(
-        flags.camera, 0,
-        same_path ? "is the same file as --robot " + flags.robot
-                  : "holds the same poses as --robot " + flags.robot + " (or their inverses)",
-        "give the robot poses (T_base_gripper, from the controller) with --robot and "
-        "the camera poses (T_camera_target, from PnP or hecal detect) with --camera");
-  }
-}
-
+// The flags bound into jobs::PoseFileCalibrationOptions; the job runs, then the summaries print.
 void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& settings,
                        const Io& io) {
-  const bool all = settings.all;
-  const estimation::CalibrateOptions& options = settings.options;
-  const io::PoseReadOptions& read = settings.read;
-  io::PoseReadOptions robot_read = read;
-  robot_read.invert = flags.robot_inverse;
-  io::PoseReadOptions camera_read = read;
-  camera_read.invert = flags.camera_inverse;
-  const io::PoseTable robot = io::ReadPoseTable(flags.robot, robot_read);
-  const io::PoseTable camera = io::ReadPoseTable(flags.camera, camera_read);
-  const io::Stations stations = io::PairStations(robot, camera);
-  RefuseSameFile(flags, stations);
-
-  handeye::PoseData data;
-  data.T_base_gripper = stations.robot;
-  data.T_camera_target = stations.camera;
-  data.robot_unit_named = robot.unit_named;
-  data.camera_unit_named = camera.unit_named;
-  data.robot_quaternions = io::HasQuaternionColumns(robot);
-  data.camera_quaternions = io::HasQuaternionColumns(camera);
-  const handeye::ConventionCheck check =
-      handeye::CheckConventions(data, {.setup = settings.setup,
-                                       .consensus = options.consensus,
-                                       .robot_source = flags.robot,
-                                       .camera_source = flags.camera,
-                                       .robot_inverted = flags.robot_inverse,
-                                       .camera_inverted = flags.camera_inverse,
-                                       .robot_matrix_lines = !robot.rotation,
-                                       .camera_matrix_lines = !camera.rotation,
-                                       .words = ConventionFlagWords()});
-  const handeye::Setup setup = check.setup;
-  const handeye::Problem problem = handeye::MakeProblem(setup, stations.robot, stations.camera);
-
-  report::PoseCalibrationInput input{
-      problem, robot.unit, stations.ids,
-      estimation::PlausibilityInput{setup, stations.robot, stations.camera, robot.unit_named,
-                                    camera.unit_named},
-      check.notes};
-  input.notes.insert(input.notes.end(), robot.warnings.begin(), robot.warnings.end());
-  input.notes.insert(input.notes.end(), camera.warnings.begin(), camera.warnings.end());
-  const report::ResultDocument document = report::CalibrateFromPoses(input, options, all);
+  jobs::PoseFileCalibrationOptions options;
+  options.robot = flags.robot;
+  options.camera = flags.camera;
+  options.robot_read = settings.read;
+  options.robot_read.invert = flags.robot_inverse;
+  options.camera_read = settings.read;
+  options.camera_read.invert = flags.camera_inverse;
+  options.setup = settings.setup;
+  options.calibrate = settings.options;
+  options.all_methods = settings.all;
+  options.words = ConventionFlagWords();
+  options.file_words = {"--robot", "--camera"};
+  const report::ResultDocument document = jobs::CalibrateFromPoseFiles(options).document;
   for (size_t k = 0; k < document.results.size(); ++k) {
     if (k > 0) io.out << "\n";
     report::PrintResultSummary(io.out, document, document.results[k]);
   }
-  if (all) report::PrintMethodComparison(io.out, document);
+  if (settings.all) report::PrintMethodComparison(io.out, document);
   if (!flags.output.empty()) {
     report::WriteResult(flags.output, document);
     io.out << "wrote " << flags.output << "\n";

@@ -20,7 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "rendered_global_scene.h"
+#include "testing/rendered_global_scene.h"
 #endif
 
 namespace hecal::cli {
@@ -38,7 +38,7 @@ struct Summary {
   double inliers = 0.0, removed = 0.0;
   int certified = 0;
 
-  void Add(const cli_test::RenderedGlobalOutcome& o) {
+  void Add(const testing::RenderedGlobalOutcome& o) {
     std::printf(
         "%s %2d: error %.4f deg / %.3f mm, 1 sigma %.4f deg / %.3f mm, NEES %6.2f, z (%.1f %.1f "
         "%.1f | %.1f %.1f %.1f), %d kept, %d removed%s\n",
@@ -81,9 +81,9 @@ TEST_F(CalibrateGlobalRenderedStudy, OnePlaneAgainstABoxCorner) {
     for (Summary* s : {&plane, &corner}) {
       testing::TexturedStationSpec spec;
       spec.shape = s == &plane ? testing::SceneShape::kPlane : testing::SceneShape::kCorner;
-      const cli_test::RenderedGlobalOutcome o = cli_test::CalibrateRenderedScene(
+      const testing::RenderedGlobalOutcome o = testing::CalibrateRenderedScene(
           spec, 100 + std::uint64_t(trial), dir_ / (std::string(s->name) + std::to_string(trial)),
-          {"--max-cubes", "20000"});
+          {"--max-cubes", "20000"}, cli_test::Hecal);
       EXPECT_EQ(o.code, 0) << o.err;
       if (o.code == 0) s->Add(o);
     }

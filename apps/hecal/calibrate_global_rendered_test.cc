@@ -16,7 +16,7 @@
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <cstdio>
 
-#include "rendered_global_scene.h"
+#include "testing/rendered_global_scene.h"
 #endif
 
 namespace hecal::cli {
@@ -34,8 +34,8 @@ TEST_F(CalibrateGlobalRendered, RecoversXFromOnePlaneAndFromABoxCorner) {
        {testing::SceneShape::kPlane, testing::SceneShape::kCorner}) {
     spec.shape = shape;
     const bool plane = shape == testing::SceneShape::kPlane;
-    const cli_test::RenderedGlobalOutcome o = cli_test::CalibrateRenderedScene(
-        spec, 1, dir_ / (plane ? "plane" : "corner"), {"--max-cubes", "2000"});
+    const testing::RenderedGlobalOutcome o = testing::CalibrateRenderedScene(
+        spec, 1, dir_ / (plane ? "plane" : "corner"), {"--max-cubes", "2000"}, cli_test::Hecal);
     ASSERT_EQ(o.code, 0) << o.err;
     std::printf(
         "%s: error %.4f deg / %.3f mm, 1 sigma %.4f deg / %.3f mm, NEES %.2f, %d kept, %d "

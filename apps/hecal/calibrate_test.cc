@@ -18,28 +18,16 @@
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/sim/thesis_protocol.h"
+#include "testing/pose_csv.h"
 
 namespace hecal::cli {
 namespace {
 
 using cli_test::Hecal;
 using nlohmann::json;
+using testing::PoseCsv;
 
 const std::string kMoveIt = std::string(HECAL_SOURCE_DIR) + "/data/moveit-calibration/";
-
-// One pose per line: id, x, y, z in `scale` units, then the Hamilton quaternion.
-std::string PoseCsv(const std::vector<Pose>& poses, double scale, const std::string& unit) {
-  std::ostringstream csv;
-  csv.precision(17);
-  csv << "id,x" << unit << ",y" << unit << ",z" << unit << ",qw,qx,qy,qz\n";
-  for (size_t i = 0; i < poses.size(); ++i) {
-    const Eigen::Quaterniond q(poses[i].linear());
-    const Eigen::Vector3d t = poses[i].translation() * scale;
-    csv << "s" << i << "," << t.x() << "," << t.y() << "," << t.z() << "," << q.w() << "," << q.x()
-        << "," << q.y() << "," << q.z() << "\n";
-  }
-  return csv.str();
-}
 
 Pose PoseOf(const json& object) {
   Eigen::Matrix4d M;

@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 84> kFieldFlags = {{
+constexpr auto kFieldFlags = std::to_array<std::pair<std::string_view, std::string_view>>({
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ConventionCheckOptions.setup", "--setup"},
@@ -93,7 +93,16 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 84> kFieldFl
     {"ImportJobOptions.camera", "--camera"},
     {"ImportJobOptions.intrinsics", "--intrinsics"},
     {"PoseDetectionOptions.output", "--output"},
-}};
+    {"PoseFileCalibrationOptions.robot", "--robot"},
+    {"PoseFileCalibrationOptions.camera", "--camera"},
+    {"GlobalImageMatchOptions.robot", "--robot"},
+    {"GlobalImageMatchOptions.images", "--images"},
+    {"GlobalImageMatchOptions.target", "--target"},
+    {"GlobalImageMatchOptions.intrinsics", "--intrinsics"},
+    {"GlobalImageMatchOptions.threads", "--threads"},
+    {"GlobalImageMatchOptions.matches_per_motion", "--matches-per-motion"},
+    {"GlobalImageMatchOptions.pixel_sigma", "--pixel-sigma"},
+});
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".
 constexpr std::string_view kPnpMethod = "PnpMethod ";

@@ -1,9 +1,9 @@
-// Test support for the CLI tests of `hecal calibrate --method global --target none` on rendered
-// textured scenes (testing/textured_stations.h): writes a scene's files into a folder, runs the
-// user's command on them in-process (cli_test_util.h: RunHecal) and reads the result file against the
-// truth. The error is the right perturbation δ = Log(X̂⁻¹ X) (geometry/se3.h; rotation first,
-// radians and metres), read with the result's own covariance (covariance.X, the same
-// perturbation): NEES = δᵀ C⁻¹ δ, χ²₆ when the covariance holds.
+// Test support (not installed) for the tests of `hecal calibrate --method global --target none` on
+// rendered textured scenes (testing/textured_stations.h): writes a scene's files into a folder,
+// runs the user's command on them through the caller's runner (the CLI tests run hecal
+// in-process) and reads the result file against the truth. The error is the right perturbation δ =
+// Log(X̂⁻¹ X) (geometry/se3.h; rotation first, radians and metres), read with the result's own
+// covariance (covariance.X, the same perturbation): NEES = δᵀ C⁻¹ δ, χ²₆ when the covariance holds.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,14 +11,14 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "cli_test_util.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/io/atomic_file.h"
 #include "testing/textured_stations.h"
 
-namespace hecal::cli::cli_test {
+namespace hecal::testing {
 
 struct RenderedGlobalOutcome {
   int code = 0;                    // hecal's exit code
@@ -35,13 +35,15 @@ struct RenderedGlobalOutcome {
 };
 
 // `flags` are added to: calibrate --images DIR/images --target none --intrinsics DIR/camera.yaml
-// --robot DIR/robot.csv --setup eye-in-hand --method global --output DIR/out.json.
-inline RenderedGlobalOutcome CalibrateRenderedScene(const testing::TexturedStationSpec& spec,
-                                                    std::uint64_t seed,
-                                                    const std::filesystem::path& dir,
-                                                    const std::vector<std::string>& flags) {
-  const testing::TexturedStations scene = testing::MakeTexturedStations(spec, seed);
-  testing::WriteStationFiles(scene, spec.rendering, seed, dir);
+// --robot DIR/robot.csv --setup eye-in-hand --method global --output DIR/out.json; `run(args)`
+// runs hecal with them (no program name) and returns its exit code and standard error as the
+// members `code` and `err`.
+template <typename Run>
+RenderedGlobalOutcome CalibrateRenderedScene(const TexturedStationSpec& spec, std::uint64_t seed,
+                                             const std::filesystem::path& dir,
+                                             const std::vector<std::string>& flags, Run&& run) {
+  const TexturedStations scene = MakeTexturedStations(spec, seed);
+  WriteStationFiles(scene, spec.rendering, seed, dir);
   std::vector<std::string> args = {"calibrate",
                                    "--images",
                                    (dir / "images").string(),
@@ -58,11 +60,11 @@ inline RenderedGlobalOutcome CalibrateRenderedScene(const testing::TexturedStati
                                    "--output",
                                    (dir / "out.json").string()};
   args.insert(args.end(), flags.begin(), flags.end());
-  const Outcome run = Hecal(args);
+  const auto ran = std::forward<Run>(run)(args);
   RenderedGlobalOutcome outcome;
-  outcome.code = run.code;
-  outcome.err = run.err;
-  if (run.code != 0) return outcome;
+  outcome.code = ran.code;
+  outcome.err = ran.err;
+  if (ran.code != 0) return outcome;
   const nlohmann::json result = nlohmann::json::parse(io::ReadFile((dir / "out.json").string()));
   Eigen::Matrix3d R;
   Eigen::Vector3d t;
@@ -87,4 +89,4 @@ inline RenderedGlobalOutcome CalibrateRenderedScene(const testing::TexturedStati
   return outcome;
 }
 
-}  // namespace hecal::cli::cli_test
+}  // namespace hecal::testing
