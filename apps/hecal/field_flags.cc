@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 80> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 82> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ConventionCheckOptions.setup", "--setup"},
@@ -89,6 +89,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 80> kFieldFl
     {"GlobalCalibrationOptions.threads", "--threads"},
     {"GlobalCalibrationOptions.pixel_sigma", "--pixel-sigma"},
     {"GlobalCalibrationOptions.robot_sigma", "--robot-sigma"},
+    {"ContourTrackingOptions.images", "--images"},
+    {"ContourTrackingOptions.init", "--init"},
 }};
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".
