@@ -1,19 +1,18 @@
-// `hecal contour` and `hecal contour pose`: see contour.h.
+// `hecal contour` and `hecal contour pose`: see contour.h. The flags bind typed values into
+// contour::ShapePoseOptions (numbers read by bounds.h's rule, so a bad number names its flag);
+// its IsValid checks the camera, Σ_S and w0 (field_flags.h names the flag).
 #include "contour.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <memory>
 #include <optional>
-#include <string_view>
+#include <vector>
 
-#include "hecal/contour/affine_pose.h"
+#include "bounds.h"
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/contour/shape_pose.h"
 #include "hecal/core/error.h"
-#include "hecal/io/point_file.h"
 #include "hecal/report/contour_pose_file.h"
 #include "hecal/report/contour_pose_text.h"
 
@@ -38,15 +37,33 @@ Matrix6d ParseShapeCovariance(const std::string& text) {
   return C;
 }
 
-}  // namespace
+// `contour pose`: the shape vector and the library's options, typed.
+struct PoseCommand {
+  Vector6d shape = Vector6d::Zero();
+  contour::ShapePoseOptions options;
+  bool json = false;
+};
 
-contour::ContourCamera ParseContourCamera(const std::string& focal, const std::string& z0) {
-  contour::ContourCamera camera;
-  camera.focal = ParseNumber("--focal", focal, "the focal length");
-  camera.z0 = ParseNumber("--z0", z0, "the initial distance Z0");
-  contour::ValidateContourCamera(camera);
-  return camera;
+void RunContourPose(const PoseCommand& command, const Io& io) {
+  const contour::ShapePose result = contour::EstimateShapePose(command.shape, command.options);
+  if (command.json) {
+    io.out << report::ContourPoseJson(result);
+    return;
+  }
+  report::PrintContourPose(io.out, result);
 }
+
+// Binds `flag` to the number `value` by bounds.h's rule (ParseNumber: a bad number names the
+// flag); `what` describes it in the fix.
+CLI::Option* AddNumber(CLI::App& command, const std::string& flag, double& value,
+                       const std::string& what, const std::string& help) {
+  return command.add_option_function<std::string>(
+      flag,
+      [flag, what, &value](const std::string& text) { value = ParseNumber(flag, text, what); },
+      help);
+}
+
+}  // namespace
 
 contour::RotationForm ParseRotationFlag(const std::string& text) {
   const std::optional<contour::RotationForm> form = contour::ParseRotationForm(text);
@@ -57,65 +74,47 @@ contour::RotationForm ParseRotationFlag(const std::string& text) {
   return *form;
 }
 
-Eigen::Matrix2Xd ReadContourFile(const std::string& path) {
-  constexpr std::array<std::string_view, 2> kColumns = {"x", "y"};
-  const io::PointFile file = io::ReadPointFile(path, kColumns, /*lengths=*/false,
-                                               io::LengthUnit::kMetre, "contour points");
-  if (file.rows.size() < 4) {
-    throw InputError(path, 0,
-                     "a closed contour needs at least 4 points, the file has " +
-                         std::to_string(file.rows.size()),
-                     "give the header x,y and then 4 or more points around the contour");
-  }
-  Eigen::Matrix2Xd Q(2, static_cast<Eigen::Index>(file.rows.size()));
-  for (std::size_t i = 0; i < file.rows.size(); ++i) {
-    Q.col(static_cast<Eigen::Index>(i)) = file.rows[i].value.head<2>();
-  }
-  return Q;
-}
-
-void RunContourPose(const ContourPoseOptions& options, const Io& io) {
-  const std::vector<double> s =
-      ParseNumberList("--shape", options.shape, 6, "tx,ty,m11m1,m22m1,m21,m12");
-  const Vector6d shape = Eigen::Map<const Vector6d>(s.data());
-  const contour::ContourCamera camera = ParseContourCamera(options.focal, options.z0);
-  contour::ShapePoseOptions pose_options;
-  pose_options.camera = camera;
-  pose_options.form = ParseRotationFlag(options.rotation);
-  if (!options.covariance.empty()) {
-    const double w0 = ParseNumber("--ut-w0", options.ut_w0, "w0 < 1");
-    pose_options.unscented.unscented = uncertainty::UnscentedParameters::Symmetric(w0);
-    pose_options.shape_covariance = ParseShapeCovariance(options.covariance);
-  }
-  const contour::ShapePose result = contour::EstimateShapePose(shape, pose_options);
-  if (options.json) {
-    io.out << report::ContourPoseJson(result);
-    return;
-  }
-  report::PrintContourPose(io.out, result);
-}
-
 void RegisterContourCommand(CLI::App& app, const Io& io) {
   CLI::App* contour = app.add_subcommand(
       "contour", "Camera motion from the affine deformation of a planar contour (docs/contour.md)");
   contour->require_subcommand(1);
 
-  auto options = std::make_shared<ContourPoseOptions>();
+  auto command = std::make_shared<PoseCommand>();
+  contour::ShapePoseOptions& o = command->options;
   CLI::App* pose = contour->add_subcommand("pose", "The camera motion of one shape vector");
-  pose->add_option("--shape", options->shape,
-                   "tx,ty,m11m1,m22m1,m21,m12: S = (tx, ty, M11−1, M22−1, M21, M12), tx, ty in "
-                   "the unit of --focal (use --shape=… when it starts with '-')")
+  pose->add_option_function<std::string>(
+          "--shape",
+          [command](const std::string& text) {
+            const std::vector<double> s =
+                ParseNumberList("--shape", text, 6, "tx,ty,m11m1,m22m1,m21,m12");
+            command->shape = Eigen::Map<const Vector6d>(s.data());
+          },
+          "tx,ty,m11m1,m22m1,m21,m12: S = (tx, ty, M11−1, M22−1, M21, M12), tx, ty in "
+          "the unit of --focal (use --shape=… when it starts with '-')")
       ->required()
       ->allow_extra_args(false);
-  pose->add_option("--z0", options->z0, "Initial distance Z0 (the unit of the translation)")
+  AddNumber(*pose, "--z0", o.camera.z0, "the initial distance Z0",
+            "Initial distance Z0 (the unit of the translation)")
       ->required();
-  pose->add_option("--focal", options->focal, "Focal length F (the unit of tx, ty)")->required();
-  pose->add_option("--rotation", options->rotation, "zyx (default; roll–pitch–yaw) or zxz");
-  pose->add_flag("--json", options->json, "Print JSON");
-  pose->add_option("--covariance", options->covariance,
-                   "Σ_S: 6 variances or 36 row-major entries → UT pose covariance");
-  pose->add_option("--ut-w0", options->ut_w0, "UT centre weight w0 (default 0)");
-  pose->callback([options, io] { RunContourPose(*options, io); });
+  AddNumber(*pose, "--focal", o.camera.focal, "the focal length",
+            "Focal length F (the unit of tx, ty)")
+      ->required();
+  pose->add_option_function<std::string>(
+      "--rotation", [&o](const std::string& text) { o.form = ParseRotationFlag(text); },
+      "zyx (default; roll–pitch–yaw) or zxz");
+  pose->add_flag("--json", command->json, "Print JSON");
+  pose->add_option_function<std::string>(
+      "--covariance",
+      [&o](const std::string& text) { o.shape_covariance = ParseShapeCovariance(text); },
+      "Σ_S: 6 variances or 36 row-major entries → UT pose covariance");
+  pose->add_option_function<std::string>(
+      "--ut-w0",
+      [&o](const std::string& text) {
+        o.unscented.unscented =
+            uncertainty::UnscentedParameters::Symmetric(ParseNumber("--ut-w0", text, "w0 < 1"));
+      },
+      "UT centre weight w0 (default 0)");
+  pose->callback([command, io] { RunContourPose(*command, io); });
 
   AddContourStudyCommand(*contour, io);
   AddContourTrackCommand(*contour, io);

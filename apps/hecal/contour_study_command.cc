@@ -12,6 +12,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/io/contour_file.h"
 #include "hecal/report/contour_study_file.h"
 #include "hecal/report/contour_study_text.h"
 
@@ -27,7 +28,7 @@ struct StudyCommand {
 
 void RunStudy(StudyCommand command, const Io& io) {
   contour::ContourStudyOptions& o = command.options;
-  if (!command.contour.empty()) o.target = ReadContourFile(command.contour);
+  if (!command.contour.empty()) o.target = io::ReadContourFile(command.contour);
   if (!command.covariance_plot.empty()) o.keep_samples = 1000;
   std::string why;
   if (!o.IsValid(&why)) throw OptionsError(why);

@@ -1,9 +1,9 @@
 // `hecal contour track` and `hecal contour render` (docs/cli.md#hecal-contour-track,
-// docs/cli.md#hecal-contour-render, docs/contour.md): the jobs contour::SequenceTracker and
-// contour::RenderSequence (contour/sequence.h) over options that validate themselves, with the
-// images read and encoded by vision/contour_images.h and the text files written by
-// report/contour_track_file.h and report/contour_render_file.h; these commands bind the flags,
-// print and write the files.
+// docs/cli.md#hecal-contour-render, docs/contour.md): the flags bound into the options of
+// jobs/contour_tracking.h and jobs/contour_rendering.h, which validate themselves (field_flags.h
+// names the flag); these commands print the frames as they come and write the files:
+// report/contour_track_file.h's CSV or JSON (by --output's extension), and the rendered folder
+// all or none (io/atomic_file.h, StagedFolder). Without the vision layer both refuse to run.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
@@ -16,18 +16,15 @@
 
 #include "bounds.h"
 #include "contour.h"
-#include "hecal/contour/bspline.h"
-#include "hecal/contour/contour_study.h"
 #include "hecal/contour/sequence.h"
 #include "hecal/core/error.h"
-#include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
-#include "hecal/report/contour_render_file.h"
 #include "hecal/report/contour_track_file.h"
 #include "hecal/report/contour_track_text.h"
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "hecal/vision/contour_images.h"
-#endif
+// The jobs' options are plain structs, bound in every build; the jobs run with the vision layer.
+#include "hecal/jobs/contour_rendering.h"
+#include "hecal/jobs/contour_tracking.h"
+#include "job_output.h"
 
 namespace hecal::cli {
 namespace {
@@ -56,50 +53,27 @@ OutputKind ParseOutputKind(const std::string& output) {
 }
 
 struct TrackCommand {
-  contour::SequenceTrackingOptions options;  // control and principal point: from the files
-  std::string images, init, output;
-  bool curve = false;                        // --init-points curve
-  std::optional<Eigen::Vector2d> principal;  // --principal-point
-  std::optional<bool> perspective;           // --pose-model; auto: with --principal-point
+  jobs::ContourTrackingOptions options;
+  std::string output;
 };
 
-void RunTrack(TrackCommand command, const Io& io) {
-  contour::SequenceTrackingOptions& tracking = command.options;
-  // The pose model: the contour paper's weak perspective, or the perspective correction
-  // (contour/perspective_pose.h), which needs the true principal point; auto picks it when
-  // --principal-point is given.
-  tracking.perspective = command.perspective.value_or(command.principal.has_value());
-  RequireValid(tracking);
+void RunTrack(const TrackCommand& command, const Io& io) {
   const OutputKind output_kind = ParseOutputKind(command.output);
-  io::CheckOutputs({{"--output", command.output}}, {{"--init", command.init}});
-
-  tracking.control = ReadContourFile(command.init);
-  if (command.curve) {
-    tracking.control = contour::ClosedBSpline::Interpolating(tracking.control).control_points();
-  }
-  tracking.principal = command.principal.value_or(tracking.control.rowwise().mean());
-  contour::SequenceTracker tracker(tracking);
-  io.out << "pose model: "
-         << (tracking.perspective
-                 ? "perspective (weak-perspective bias removed, principal point given)"
-                 : "weak perspective (the contour paper's; give --principal-point for perspective)")
-         << "\n";
+  io::CheckOutputs({{"--output", command.output}}, {{"--init", command.options.init}});
 #if defined(HECAL_HAVE_OPENCV_PEERS)
   // One line per frame on stdout, as it is tracked.
-  const auto print = [&](const vision::TrackedImage& image) {
-    io.out << report::ContourTrackLine(image, tracking.form);
-  };
-  const std::vector<vision::TrackedImage> frames =
-      vision::TrackImageSequence(command.images, &tracker, print);
+  const contour::RotationForm form = command.options.tracking.form;
+  const report::ContourTrack track = jobs::TrackContourImages(
+      command.options, PrintingCallbacks(io),
+      [&](const contour::TrackedImage& image) { io.out << report::ContourTrackLine(image, form); });
   if (output_kind != OutputKind::kNone) {
-    const report::ContourTrack track{tracking, tracker.tracker().template_shape(),
-                                     tracker.tracker().polarity(), frames};
     io::WriteFileAtomically(command.output, output_kind == OutputKind::kCsv
                                                 ? report::ContourTrackCsv(track)
                                                 : report::ContourTrackJson(track));
   }
 #else
   (void)output_kind;
+  (void)io;
   NeedsVision("--images");
 #endif
 }
@@ -107,87 +81,31 @@ void RunTrack(TrackCommand command, const Io& io) {
 // ---- render ------------------------------------------------------------------------------------
 
 struct RenderCommand {
-  contour::SequenceRenderOptions options;
-  std::string output, contour;  // --contour: the target's control points, read into options
+  jobs::ContourRenderingOptions options;
+  std::string output;
 };
 
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-// Creates the output folder of `contour render` when it is missing; returns the topmost folder
-// created (to remove on failure), nullopt when it existed. An existing path that is not a folder
-// is an InputError.
-std::optional<fs::path> CreateFolder(const std::string& output) {
-  std::error_code error;
-  const fs::file_status status = fs::status(output, error);
-  if (fs::exists(status)) {
-    if (!fs::is_directory(status)) {
-      throw InputError(output, 0, "cannot write the frames: it exists and is not a folder",
-                       "give --output a folder (created when missing)");
-    }
-    return std::nullopt;
-  }
-  fs::path topmost = fs::absolute(output, error);
-  while (topmost.has_parent_path() && topmost.parent_path() != topmost &&
-         !fs::exists(topmost.parent_path(), error)) {
-    topmost = topmost.parent_path();
-  }
-  fs::create_directories(output, error);
-  if (error || !fs::is_directory(output)) {
-    throw InputError(output, 0, "cannot create the output folder: " + error.message(),
-                     "give --output a folder that can be created or written");
-  }
-  return topmost;
-}
-
-// Renders the sequence into the output folder (created before the first frame is written):
-// every file is staged and renamed when all are rendered (io/atomic_file.h). `created` receives
-// the topmost folder created, to remove on failure.
-void RenderFrames(const RenderCommand& command, std::optional<fs::path>* created, const Io& io) {
-  const contour::SequenceRenderOptions& sequence = command.options;
-  const fs::path folder(command.output);
-  io::StagedFiles staged;
-  bool folder_ready = false;
-  const contour::RenderedSequence rendered = contour::RenderSequence(
-      sequence, [&](const contour::RenderedFrame& frame, const contour::GrayImage& image) {
-        if (!folder_ready) {
-          *created = CreateFolder(command.output);
-          folder_ready = true;
-        }
-        const std::string path = (folder / report::RenderedFrameName(frame.index)).string();
-        staged.Stage("--output", path, vision::EncodePng(image, path));
-      });
-  staged.Stage("--output", (folder / "init.csv").string(), report::RenderInitCsv(rendered));
-  staged.Stage("--output", (folder / "truth.csv").string(),
-               report::RenderTruthCsv(sequence, rendered));
-  staged.Commit();
-  io.out << "rendered " << sequence.frames << " frames (" << sequence.width << "×"
-         << sequence.height << ") to " << command.output << "\n";
-  if (rendered.outside > 0) {
-    io.err << "hecal: warning: the target leaves the image in " << rendered.outside
-           << " frame(s); the tracker cannot follow it there (fix: a smaller motion or a larger "
-              "--size)\n";
-  }
-}
-#endif
-
-void RunRender(RenderCommand command, const Io& io) {
-  contour::SequenceRenderOptions& sequence = command.options;
-  sequence.target =
-      command.contour.empty() ? contour::DefaultTarget() : ReadContourFile(command.contour);
-  RequireValid(sequence);
+void RunRender(const RenderCommand& command, const Io& io) {
 #if !defined(HECAL_HAVE_OPENCV_PEERS)
+  (void)command;
   (void)io;
   NeedsVision("--output");
 #else
-  // A folder created here is removed again when the command fails.
-  std::optional<fs::path> created;
-  try {
-    RenderFrames(command, &created, io);
-  } catch (...) {
-    if (created) {
-      std::error_code ignored;
-      fs::remove_all(*created, ignored);
-    }
-    throw;
+  // The folder is created at the first frame, and removed again when the command fails.
+  io::StagedFolder folder("--output", command.output, "the frames");
+  const jobs::ContourRendering rendered = jobs::RenderContourSequence(
+      command.options,
+      [&folder](const std::string& name, const std::string& png) { folder.Stage(name, png); });
+  folder.Stage("init.csv", rendered.init_csv);
+  folder.Stage("truth.csv", rendered.truth_csv);
+  folder.Commit();
+  const contour::SequenceRenderOptions& sequence = rendered.options;
+  io.out << "rendered " << sequence.frames << " frames (" << sequence.width << "×"
+         << sequence.height << ") to " << command.output << "\n";
+  if (rendered.rendered.outside > 0) {
+    io.err << "hecal: warning: the target leaves the image in " << rendered.rendered.outside
+           << " frame(s); the tracker cannot follow it there (fix: a smaller motion or a larger "
+              "--size)\n";
   }
 #endif
 }
@@ -205,23 +123,27 @@ Vector6d ParseMotion(const std::string& flag, const std::string& text) {
 
 void AddContourTrackCommand(CLI::App& contour, const Io& io) {
   auto command = std::make_shared<TrackCommand>();
-  contour::SequenceTrackingOptions& o = command->options;
+  jobs::ContourTrackingOptions& track_options = command->options;
+  contour::SequenceTrackingOptions& o = track_options.tracking;
   CLI::App* track = contour.add_subcommand(
       "track", "Track a planar contour through images (shape-space Kalman filter) → motion");
-  track->add_option("--images", command->images, "Folder of the image sequence (sorted by name)")
+  track
+      ->add_option("--images", track_options.images,
+                   "Folder of the image sequence (sorted by name)")
       ->required();
-  track->add_option("--init", command->init, "Initial contour in the first image: CSV x,y (px)")
+  track
+      ->add_option("--init", track_options.init, "Initial contour in the first image: CSV x,y (px)")
       ->required();
   track->add_option("--focal", o.camera.focal, "Focal length F (px)")->required();
   track->add_option("--z0", o.camera.z0, "Initial distance Z0 (the unit of the translation)")
       ->required();
   track->add_option_function<std::string>(
       "--pose-model",
-      [command](const std::string& text) {
+      [&track_options](const std::string& text) {
         if (text == "auto") {
-          command->perspective.reset();
+          track_options.perspective.reset();
         } else if (text == "weak" || text == "perspective") {
-          command->perspective = text == "perspective";
+          track_options.perspective = text == "perspective";
         } else {
           throw InputError("--pose-model", 0, "unknown pose model '" + text + "'",
                            "use auto, weak or perspective");
@@ -231,20 +153,20 @@ void AddContourTrackCommand(CLI::App& contour, const Io& io) {
       "contour paper's weak perspective) or perspective (its bias removed)");
   track->add_option_function<std::string>(
       "--principal-point",
-      [command](const std::string& text) {
+      [&track_options](const std::string& text) {
         const std::vector<double> p = ParseNumberList("--principal-point", text, 2, "CX,CY (px)");
-        command->principal = Eigen::Vector2d(p[0], p[1]);
+        track_options.principal = Eigen::Vector2d(p[0], p[1]);
       },
       "CX,CY (px; default: centroid of the init control points)");
   track->add_option_function<std::string>(
       "--init-points",
-      [command](const std::string& text) {
+      [&track_options](const std::string& text) {
         if (text != "control" && text != "curve") {
           throw InputError(
               "--init-points", 0, "unknown kind '" + text + "'",
               "use control (B-spline control points) or curve (points on the contour)");
         }
-        command->curve = text == "curve";
+        track_options.init_on_curve = text == "curve";
       },
       "control (default: B-spline control points) or curve (points on it)");
   track->add_option_function<std::string>(
@@ -273,14 +195,14 @@ void AddContourTrackCommand(CLI::App& contour, const Io& io) {
 
 void AddContourRenderCommand(CLI::App& contour, const Io& io) {
   auto command = std::make_shared<RenderCommand>();
-  contour::SequenceRenderOptions& o = command->options;
+  contour::SequenceRenderOptions& o = command->options.sequence;
   o.render.noise_sigma = 3.0;
   o.render.quantize = true;
   CLI::App* render = contour.add_subcommand(
       "render", "Render a synthetic sequence of a moving planar contour target (known motion)");
   render->add_option("--output", command->output, "Output folder (created when missing)")
       ->required();
-  render->add_option("--contour", command->contour,
+  render->add_option("--contour", command->options.contour,
                      "Target control points: CSV x,y in its plane (Z0's unit; default built-in)");
   AddWholeNumber(*render, "--frames", o.frames, "Number of frames (default 30)");
   render->add_option_function<std::string>(

@@ -102,6 +102,8 @@ constexpr auto kFieldFlags = std::to_array<std::pair<std::string_view, std::stri
     {"GlobalImageMatchOptions.threads", "--threads"},
     {"GlobalImageMatchOptions.matches_per_motion", "--matches-per-motion"},
     {"GlobalImageMatchOptions.pixel_sigma", "--pixel-sigma"},
+    {"ContourTrackingOptions.images", "--images"},
+    {"ContourTrackingOptions.init", "--init"},
 });
 
 // vision/opencv_pnp.h names the PnP method as "PnpMethod NAME".

@@ -13,6 +13,7 @@
 #include <optional>
 #include <random>
 #include <stdexcept>
+#include <utility>
 
 #include "hecal/core/error.h"
 
@@ -308,6 +309,53 @@ void StagedFiles::Commit() {
   }
   remove_backups();
   staged_.clear();
+  committed_ = true;
+}
+
+StagedFolder::StagedFolder(std::string flag, std::string folder, std::string what)
+    : flag_(std::move(flag)), folder_(std::move(folder)), what_(std::move(what)) {}
+
+StagedFolder::~StagedFolder() {
+  if (committed_ || created_.empty()) return;
+  std::error_code ignored;
+  fs::remove_all(created_, ignored);  // the staged files in it too
+}
+
+void StagedFolder::Create() {
+  const std::string give =
+      flag_.empty() ? std::string("give a folder") : "give " + flag_ + " a folder";
+  std::error_code error;
+  const fs::file_status status = fs::status(folder_, error);
+  if (fs::exists(status)) {
+    if (!fs::is_directory(status)) {
+      throw InputError(folder_, 0, "cannot write " + what_ + ": it exists and is not a folder",
+                       give + " (created when missing)");
+    }
+    ready_ = true;
+    return;
+  }
+  fs::path topmost = fs::absolute(folder_, error);
+  while (topmost.has_parent_path() && topmost.parent_path() != topmost &&
+         !fs::exists(topmost.parent_path(), error)) {
+    topmost = topmost.parent_path();
+  }
+  fs::create_directories(folder_, error);
+  if (error || !fs::is_directory(folder_)) {
+    throw InputError(folder_, 0, "cannot create the output folder: " + error.message(),
+                     give + " that can be created or written");
+  }
+  created_ = topmost.string();
+  ready_ = true;
+}
+
+void StagedFolder::Stage(const std::string& name, std::string_view contents) {
+  if (!ready_) Create();
+  files_.Stage(flag_, (fs::path(folder_) / name).string(), contents);
+}
+
+void StagedFolder::Commit() {
+  if (!ready_) Create();
+  files_.Commit();
   committed_ = true;
 }
 

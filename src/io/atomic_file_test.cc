@@ -218,5 +218,58 @@ TEST_F(AtomicFileTest, SeveralFilesAreWrittenAllOrNone) {
   EXPECT_EQ(Entries(), (std::vector<std::string>{"kept.csv", "late", "s.csv"}));
 }
 
+// StagedFolder: the files appear together at Commit; a failure midway (an exception after some
+// files were staged) leaves no trace: no new folder, not even a created parent, and an existing
+// folder exactly as it was.
+TEST_F(AtomicFileTest, AFolderOfFilesAppearsAtCommit) {
+  const fs::path folder = dir_ / "a" / "b";
+  {
+    StagedFolder staged("--output", folder.string());
+    staged.Stage("one.txt", "1\n");
+    staged.Stage("two.txt", "2\n");
+    EXPECT_FALSE(fs::exists(folder / "one.txt"));  // staged, not yet in place
+    staged.Commit();
+  }
+  EXPECT_EQ(ReadFile((folder / "one.txt").string()), "1\n");
+  EXPECT_EQ(ReadFile((folder / "two.txt").string()), "2\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 2);
+}
+
+TEST_F(AtomicFileTest, AFolderWriteThatFailsMidwayLeavesNothing) {
+  const fs::path folder = dir_ / "new" / "frames";
+  EXPECT_THROW(
+      {
+        StagedFolder staged("--output", folder.string());
+        staged.Stage("frame_0000.png", "first");
+        EXPECT_TRUE(fs::is_directory(folder));
+        throw InputError("frame_0001.png", 0, "cannot encode", "a smaller image");
+      },
+      InputError);
+  EXPECT_EQ(Entries(), std::vector<std::string>{});  // "new" is gone too
+
+  // An existing folder keeps its files, and gets none of the failed write's.
+  const fs::path existing = dir_ / "existing";
+  fs::create_directories(existing);
+  WriteFileAtomically((existing / "one.txt").string(), "before\n");
+  {
+    StagedFolder staged("--output", existing.string());
+    staged.Stage("one.txt", "after\n");
+    staged.Stage("two.txt", "2\n");
+    EXPECT_THROW(staged.Stage("one.txt", "again\n"), InputError);  // the same file twice
+  }
+  EXPECT_EQ(ReadFile((existing / "one.txt").string()), "before\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(existing), fs::directory_iterator()), 1);
+}
+
+TEST_F(AtomicFileTest, AFolderPathThatIsAFileIsRefused) {
+  const std::string file = (dir_ / "file").string();
+  WriteFileAtomically(file, "kept\n");
+  StagedFolder staged("--output", file, "the frames");
+  const std::string error = ErrorOf([&] { staged.Stage("x.txt", "x"); });
+  EXPECT_THAT(error, HasSubstr("cannot write the frames: it exists and is not a folder"));
+  EXPECT_THAT(error, HasSubstr("give --output a folder"));
+  EXPECT_EQ(ReadFile(file), "kept\n");
+}
+
 }  // namespace
 }  // namespace hecal::io

@@ -72,6 +72,39 @@ class StagedFiles {
   bool committed_ = false;
 };
 
+// A folder of files written all or none (`hecal contour render`'s frames and text files): the
+// folder, with any missing parents, is created when the first file is staged; each file is staged
+// in it (StagedFiles) and all are renamed together by Commit. Destroyed without a successful
+// Commit (a failure midway), it removes its staged files and every folder it created, so the
+// folder is left as it was, or not there. An existing folder is written into: files of the same
+// names are replaced, others are kept. Errors (hecal::InputError, source the folder): the path
+// exists and is not a folder, the folder cannot be created; those of StagedFiles (naming the
+// file).
+class StagedFolder {
+ public:
+  // `flag` names the folder in fixes ("--output"; "" for none), `what` its files in messages
+  // ("the frames").
+  StagedFolder(std::string flag, std::string folder, std::string what = "the files");
+  ~StagedFolder();
+  StagedFolder(const StagedFolder&) = delete;
+  StagedFolder& operator=(const StagedFolder&) = delete;
+
+  // Stages the file `name` (a file name, no folder) of the folder with `contents`.
+  void Stage(const std::string& name, std::string_view contents);
+  // Renames every staged file into place (StagedFiles::Commit); the folder then stays.
+  void Commit();
+
+ private:
+  void Create();
+  std::string flag_;
+  std::string folder_;
+  std::string what_;
+  bool ready_ = false;   // the folder exists (found or created)
+  std::string created_;  // the topmost folder created here, "" when none
+  bool committed_ = false;
+  StagedFiles files_;
+};
+
 struct OutputFile {
   std::string flag;
   std::string path;
