@@ -1,0 +1,77 @@
+// The job of `hecal pose` with every method by name: see pose_from_points.h.
+#include "hecal/jobs/pose_from_points.h"
+
+#include <optional>
+
+#include "hecal/core/options_check.h"
+#include "hecal/pose/pose_method.h"
+#include "hecal/vision/opencv_pnp.h"
+
+namespace hecal::jobs {
+namespace {
+
+// OpenCV's `method`, its pose finished by pose::FinishPose (refined for iterative only).
+report::PointPoseSolver OpenCvSolver(vision::PnpMethod method) {
+  return [method](const std::vector<Eigen::Vector3d>& object,
+                  const std::vector<Eigen::Vector2d>& pixels, const pose::CameraModel& camera,
+                  const pose::PoseOptions& pose_options) {
+    const Pose T = vision::SolvePnPOpenCv(method, object, pixels, camera);
+    return pose::FinishPose(std::string(vision::Info(method).name), T,
+                            method == vision::PnpMethod::kIterative, object, pixels, camera,
+                            pose_options.refinement);
+  };
+}
+
+// `options` solving with the method called `name`; nullopt when there is none.
+std::optional<report::PointPoseOptions> WithMethod(report::PointPoseOptions options,
+                                                   std::string_view name) {
+  if (const std::optional<pose::PoseMethod> method = pose::ParsePoseMethod(name)) {
+    options.method = *method;
+    options.solver = nullptr;
+    return options;
+  }
+  if (const std::optional<vision::PnpMethod> method = vision::ParsePnpMethod(name)) {
+    options.solver = OpenCvSolver(*method);
+    return options;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<PoseMethodEntry> PoseMethods() {
+  std::vector<PoseMethodEntry> methods;
+  for (const pose::PoseMethodInfo& info : pose::PoseMethods()) {
+    methods.push_back({info.name, std::string(info.summary)});
+  }
+  for (const vision::PnpMethodInfo& info : vision::OpenCvPnpMethods()) {
+    methods.push_back(
+        {info.name, std::string(info.summary) + (info.method == vision::PnpMethod::kIterative
+                                                     ? " (+ hecal refinement for the covariance)"
+                                                     : " (no covariance)")});
+  }
+  return methods;
+}
+
+std::string PoseMethodNames() {
+  std::string names;
+  for (const PoseMethodEntry& entry : PoseMethods()) {
+    names += (names.empty() ? "" : ", ") + std::string(entry.name);
+  }
+  return names;
+}
+
+bool PoseFromFilesOptions::IsValid(std::string* why) const {
+  if (!WithMethod(points, method)) {
+    return Invalid(why, "PoseFromFilesOptions.method", "unknown method '" + method + "'",
+                   "use one of " + PoseMethodNames());
+  }
+  return points.IsValid(why);
+}
+
+report::PointPoseResult EstimatePoseFromFiles(const PoseFromFilesOptions& options) {
+  RequireValid(options);
+  return report::EstimatePoseFromFiles(*WithMethod(options.points, options.method));
+}
+
+}  // namespace hecal::jobs
