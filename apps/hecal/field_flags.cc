@@ -8,7 +8,7 @@ namespace {
 
 // Options field (the library's InputError source) → the flag that sets it. A field set by no
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 81> kFieldFlags = {{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 80> kFieldFlags = {{
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"ConventionCheckOptions.setup", "--setup"},
@@ -50,7 +50,6 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 81> kFieldFl
     {"PointPoseOptions.focal", "--focal"},
     {"PointPoseOptions.principal_point", "--principal-point"},
     {"PointPoseOptions.pixel_sigma", "--pixel-sigma"},
-    {"PoseFromFilesOptions.method", "--method"},
     {"ImportOptions.format", "--format"},
     {"ImportOptions.units", "--units"},
     {"ImportOptions.setup", "--setup"},

@@ -1,5 +1,5 @@
 // `hecal pose` (docs/cli.md#hecal-pose, docs/pose-from-points.md): binds the flags into
-// jobs::PoseFromFilesOptions (jobs/pose_from_points.h: every method by name; its IsValid names
+// jobs::PoseFromFilesOptions (jobs/pose_from_points.h: every method, by name; its IsValid names
 // fields, shown as flags by field_flags.h), runs the job, prints the pose and writes its JSON
 // (report/pose_file.h). Built without the vision layer, the command runs report's job
 // (report/point_pose.h) with the pose layer's methods and refuses OpenCV's by name.
@@ -52,7 +52,8 @@ std::string MethodList() {
 }
 
 void SetMethod(const std::string& method, PoseOptions& options) {
-  options.method = method;  // checked by the job's IsValid
+  options.method =
+      ParseChoice("--method", method, jobs::ParsePoseMethod, "method", "one of " + MethodList());
 }
 
 report::PointPoseResult EstimatePose(const PoseOptions& options) {

@@ -1,9 +1,10 @@
 // `hecal pose`, `bench` and `simulate` refusing bad values through the command line: the pose
-// job's options (jobs::PoseFromFilesOptions::IsValid: the method by name, checked before the
-// point options and before any file is read) and the shared readers of choices (list_flags.h:
-// ParseChoice, ParseChoiceList) and number lists (bounds.h: ParseNumberList). Each refusal exits
-// 2 with exactly one line `hecal: --flag: problem (fix: ...)` naming the flag (never the options
-// field), prints nothing on stdout and writes no output file.
+// job's options (jobs::PoseFromFilesOptions: --method read by jobs::ParsePoseMethod as the flag is
+// read, before anything else; the point options by its IsValid before any file is read) and the
+// shared readers of choices (list_flags.h: ParseChoice, ParseChoiceList) and number lists
+// (bounds.h: ParseNumberList). Each refusal exits 2 with exactly one line
+// `hecal: --flag: problem (fix: ...)` naming the flag (never the options field), prints nothing
+// on stdout and writes no output file.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,9 +43,13 @@ class PoseBenchOptions : public cli_test::CliTest {
 
 constexpr const char* kPoseMethods = "linear, linear-raw, dlt, ippe, sqpnp, epnp, iterative";
 
-// PoseFromFilesOptions.method is --method; it is checked first (the camera is missing too, the
-// files do not exist).
+// --method is read as the flag is read: first, whatever else is missing (here the camera, the
+// files, even the required --points).
 TEST_F(PoseBenchOptions, AnUnknownPoseMethodNamesTheFlagBeforeAnythingElse) {
+  ExpectRefused(
+      {"pose", "--method", "p3p"},
+      std::string("--method: unknown method 'p3p' (fix: use one of ") + kPoseMethods + ")",
+      "pose.json");
   ExpectRefused(
       Pose({"--method", "p3p"}),
       std::string("--method: unknown method 'p3p' (fix: use one of ") + kPoseMethods + ")",
@@ -53,7 +58,7 @@ TEST_F(PoseBenchOptions, AnUnknownPoseMethodNamesTheFlagBeforeAnythingElse) {
       Pose({"--method", "IPPE", "--focal", "800"}),
       std::string("--method: unknown method 'IPPE' (fix: use one of ") + kPoseMethods + ")",
       "pose.json");
-  // A known method: the point options come next.
+  // A known method: PoseFromFilesOptions::IsValid (the point options) comes next.
   ExpectRefused(Pose({"--method", "sqpnp", "--focal", "0"}),
                 "--focal: expected a positive number, got '0' (fix: give the focal length in px)",
                 "pose.json");

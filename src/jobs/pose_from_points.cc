@@ -1,11 +1,7 @@
 // The job of `hecal pose` with every method by name: see pose_from_points.h.
 #include "hecal/jobs/pose_from_points.h"
 
-#include <optional>
-
 #include "hecal/core/options_check.h"
-#include "hecal/pose/pose_method.h"
-#include "hecal/vision/opencv_pnp.h"
 
 namespace hecal::jobs {
 namespace {
@@ -22,19 +18,15 @@ report::PointPoseSolver OpenCvSolver(vision::PnpMethod method) {
   };
 }
 
-// `options` solving with the method called `name`; nullopt when there is none.
-std::optional<report::PointPoseOptions> WithMethod(report::PointPoseOptions options,
-                                                   std::string_view name) {
-  if (const std::optional<pose::PoseMethod> method = pose::ParsePoseMethod(name)) {
-    options.method = *method;
+// `options` solving with `method`.
+report::PointPoseOptions WithMethod(report::PointPoseOptions options, const AnyPoseMethod& method) {
+  if (const pose::PoseMethod* core = std::get_if<pose::PoseMethod>(&method)) {
+    options.method = *core;
     options.solver = nullptr;
-    return options;
+  } else {
+    options.solver = OpenCvSolver(std::get<vision::PnpMethod>(method));
   }
-  if (const std::optional<vision::PnpMethod> method = vision::ParsePnpMethod(name)) {
-    options.solver = OpenCvSolver(*method);
-    return options;
-  }
-  return std::nullopt;
+  return options;
 }
 
 }  // namespace
@@ -42,13 +34,13 @@ std::optional<report::PointPoseOptions> WithMethod(report::PointPoseOptions opti
 std::vector<PoseMethodEntry> PoseMethods() {
   std::vector<PoseMethodEntry> methods;
   for (const pose::PoseMethodInfo& info : pose::PoseMethods()) {
-    methods.push_back({info.name, std::string(info.summary)});
+    methods.push_back({info.method, info.name, std::string(info.summary)});
   }
   for (const vision::PnpMethodInfo& info : vision::OpenCvPnpMethods()) {
-    methods.push_back(
-        {info.name, std::string(info.summary) + (info.method == vision::PnpMethod::kIterative
-                                                     ? " (+ hecal refinement for the covariance)"
-                                                     : " (no covariance)")});
+    methods.push_back({info.method, info.name,
+                       std::string(info.summary) + (info.method == vision::PnpMethod::kIterative
+                                                        ? " (+ hecal refinement for the covariance)"
+                                                        : " (no covariance)")});
   }
   return methods;
 }
@@ -61,17 +53,20 @@ std::string PoseMethodNames() {
   return names;
 }
 
-bool PoseFromFilesOptions::IsValid(std::string* why) const {
-  if (!WithMethod(points, method)) {
-    return Invalid(why, "PoseFromFilesOptions.method", "unknown method '" + method + "'",
-                   "use one of " + PoseMethodNames());
+std::optional<AnyPoseMethod> ParsePoseMethod(std::string_view name) {
+  for (const PoseMethodEntry& entry : PoseMethods()) {
+    if (entry.name == name) return entry.method;
   }
+  return std::nullopt;
+}
+
+bool PoseFromFilesOptions::IsValid(std::string* why) const {
   return points.IsValid(why);
 }
 
 report::PointPoseResult EstimatePoseFromFiles(const PoseFromFilesOptions& options) {
   RequireValid(options);
-  return report::EstimatePoseFromFiles(*WithMethod(options.points, options.method));
+  return report::EstimatePoseFromFiles(WithMethod(options.points, options.method));
 }
 
 }  // namespace hecal::jobs

@@ -1,12 +1,13 @@
-// Every pose method by name on written point files with a known pose: exact pixels of a
-// distortion-free pinhole, so each method returns the true T_camera_target (ippe on a plane, the
-// others on points in a volume); the covariance exactly for the refined methods; the list of
-// methods; an unknown name refused before any file is read.
+// Every pose method on written point files with a known pose: exact pixels of a distortion-free
+// pinhole, so each method returns the true T_camera_target (ippe on a plane, the others on points
+// in a volume); the covariance exactly for the refined methods; the list of methods and their
+// names (an unknown name has no method); the point options checked before any file is read.
 #include "hecal/jobs/pose_from_points.h"
 
 #include <gtest/gtest.h>
 
 #include <iomanip>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -55,10 +56,16 @@ TEST(PoseMethods, ListsThePoseLayersMethodsThenOpenCvs) {
   for (const PoseMethodEntry& entry : PoseMethods()) {
     names.emplace_back(entry.name);
     EXPECT_FALSE(entry.help.empty()) << entry.name;
+    EXPECT_EQ(ParsePoseMethod(entry.name), std::optional<AnyPoseMethod>(entry.method));
   }
   EXPECT_EQ(names, (std::vector<std::string>{"linear", "linear-raw", "dlt", "ippe", "sqpnp", "epnp",
                                              "iterative"}));
+  EXPECT_EQ(PoseMethods()[1].method, AnyPoseMethod(pose::PoseMethod::kLinearRaw));
+  EXPECT_EQ(PoseMethods()[4].method, AnyPoseMethod(vision::PnpMethod::kSqpnp));
   EXPECT_EQ(PoseMethodNames(), "linear, linear-raw, dlt, ippe, sqpnp, epnp, iterative");
+  EXPECT_FALSE(ParsePoseMethod("p3p"));
+  EXPECT_FALSE(ParsePoseMethod("IPPE"));
+  EXPECT_FALSE(ParsePoseMethod(" dlt"));
 }
 
 TEST_F(PoseFromPoints, EveryMethodRecoversTheTruePose) {
@@ -72,7 +79,7 @@ TEST_F(PoseFromPoints, EveryMethodRecoversTheTruePose) {
         rng, 20, name == "ippe" ? testing::PointShape::kPlane : testing::PointShape::kVolume,
         Pinhole());
     PoseFromFilesOptions options = Files(scene);
-    options.method = name;
+    options.method = entry.method;
     const report::PointPoseResult result = EstimatePoseFromFiles(options);
     EXPECT_EQ(result.estimate.method, name);
     EXPECT_EQ(result.points, 20u);
@@ -94,32 +101,25 @@ TEST_F(PoseFromPoints, TheMethodReplacesWhatThePointOptionsHeld) {
                              const pose::PoseOptions&) -> pose::PoseEstimate {
     throw std::logic_error("not the method asked for");
   };
-  options.method = "dlt";
+  options.method = pose::PoseMethod::kDlt;
   EXPECT_EQ(EstimatePoseFromFiles(options).estimate.method, "dlt");
 }
 
-TEST_F(PoseFromPoints, AnUnknownMethodIsRefusedBeforeAnyFileIsRead) {
+TEST_F(PoseFromPoints, ThePointOptionsAreCheckedBeforeAnyFileIsRead) {
   PoseFromFilesOptions options;
   options.points.points = "missing-object.csv";
   options.points.image_points = "missing-image.csv";
-  options.points.focal = 1000.0;
-  options.method = "p3p";
+  options.points.focal = -1.0;
+  options.method = vision::PnpMethod::kEpnp;
   std::string why;
   EXPECT_FALSE(options.IsValid(&why));
-  EXPECT_EQ(why,
-            "PoseFromFilesOptions.method: unknown method 'p3p' (fix: use one of linear, "
-            "linear-raw, dlt, ippe, sqpnp, epnp, iterative)");
+  EXPECT_EQ(why.rfind("PointPoseOptions.focal: expected a positive number", 0), 0u) << why;
   try {
     EstimatePoseFromFiles(options);
-    ADD_FAILURE() << "accepted an unknown method";
+    ADD_FAILURE() << "accepted a negative focal length";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "PoseFromFilesOptions.method");
+    EXPECT_EQ(e.source(), "PointPoseOptions.focal");
   }
-  // A known method: the point options' own checks come next.
-  options.method = "epnp";
-  options.points.focal = -1.0;
-  EXPECT_FALSE(options.IsValid(&why));
-  EXPECT_EQ(why.rfind("PointPoseOptions.focal: ", 0), 0u) << why;
 }
 
 }  // namespace
