@@ -5,6 +5,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/io/delimited_text.h"
+#include "hecal/study/simulate.h"
 
 namespace hecal::cli {
 
@@ -48,16 +49,12 @@ std::vector<estimation::Method> ParseMethodList(const std::string& flag, const s
   std::vector<estimation::Method> methods;
   for (const std::string& item : SplitList(flag, text)) {
     if (item == "all") {
-      for (const estimation::MethodInfo& info : estimation::AllMethods())
-        methods.push_back(info.method);
+      const std::vector<estimation::Method> all = study::EveryMethod();
+      methods.insert(methods.end(), all.begin(), all.end());
       continue;
     }
-    const std::optional<estimation::Method> method = estimation::ParseMethod(item);
-    if (!method) {
-      throw InputError(flag, 0, "unknown method '" + item + "'",
-                       "use all or one or more of " + MethodNames());
-    }
-    methods.push_back(*method);
+    methods.push_back(ParseChoice(flag, item, estimation::ParseMethod, "method",
+                                  "all or one or more of " + MethodNames()));
   }
   // Keep the first occurrence of each method.
   std::vector<estimation::Method> unique;
