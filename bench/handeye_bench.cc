@@ -14,7 +14,8 @@
 //
 // The protocol is `hecal bench`'s (study/bench.h): the same data sets (MakeBenchDataSets, seed
 // 1), the same solvers — strobl and ml solve only (no covariance, no model check), told the true
-// sigmas — and the same accuracy (MeasureAccuracy); Google Benchmark does the timing.
+// sigmas — the same OpenCV peer (jobs/opencv_bench_peer.h) and the same accuracy
+// (MeasureAccuracy); Google Benchmark does the timing.
 // hecal/ml-good-start/<n> times ml re-solved from a good start the way the model check's
 // jackknife and the covariance propagation re-solve (study::GoodStartMlSolver: estimation::Resolve
 // from the calibration's result with X and Z replaced by the truth); compare with hecal/ml/<n>,
@@ -25,7 +26,6 @@
 #include <benchmark/benchmark.h>
 
 #include <limits>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,7 +34,7 @@
 #include "hecal/geometry/angle_units.h"
 #include "hecal/study/bench.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
-#include "hecal/peers/opencv_handeye.h"
+#include "hecal/jobs/opencv_bench_peer.h"
 #endif
 
 namespace {
@@ -99,19 +99,13 @@ void RegisterAll() {
             ->Unit(benchmark::kMicrosecond);
       }
 #ifdef HECAL_HAVE_OPENCV_PEERS
-      const std::optional<handeye::ClosedForm> form = info.closed_form;
-      if (form && hecal::peers::HasOpenCvPeer(*form)) {
-        benchmark::RegisterBenchmark(("opencv/" + suffix).c_str(), [form = *form,
+      if (hecal::jobs::HasOpenCvBenchPeer(method)) {
+        benchmark::RegisterBenchmark(("opencv/" + suffix).c_str(), [method,
                                                                     n](benchmark::State& state) {
           // Inputs converted once, outside the timing.
-          auto inputs = std::make_shared<std::vector<hecal::peers::OpenCvInput>>();
-          for (const study::BenchDataSet& set : DataSets(n)) {
-            inputs->push_back(hecal::peers::PrepareOpenCvInput(set.problem));
-          }
-          const study::BenchSolver solve = [form, inputs](size_t i) {
-            return hecal::peers::SolveWithOpenCv(form, (*inputs)[i], /*estimate_z=*/false).X;
-          };
-          RunSolver(state, solve, n, /*judge=*/false);
+          const std::optional<study::BenchSolver> solve =
+              hecal::jobs::OpenCvBenchPeer().prepare(method, DataSets(n));
+          RunSolver(state, *solve, n, /*judge=*/false);
         })->Unit(benchmark::kMicrosecond);
       }
 #endif

@@ -1,56 +1,24 @@
 // `hecal bench` (docs/cli.md#hecal-bench, docs/bench.md): binds the flags into
 // study::BenchOptions, runs study::RunBench (study/bench.h) with OpenCV's hand-eye functions
-// (peers/opencv_handeye.h) as its peer when vision is built, and prints the table
+// (jobs/opencv_bench_peer.h) as its peer when vision is built, and prints the table
 // (report/study_text.h) or the JSON (report/bench_file.h).
 #include "hecal/study/bench.h"
 
 #include <CLI/CLI.hpp>
-#include <cstdint>
-#include <cstdio>
-#include <limits>
 #include <memory>
-#include <optional>
 
 #include "bounds.h"
 #include "cli.h"
-#include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/report/bench_file.h"
 #include "hecal/report/study_text.h"
 #include "list_flags.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
-#include "hecal/peers/opencv_handeye.h"
+#include "hecal/jobs/opencv_bench_peer.h"
 #endif
 
 namespace hecal::cli {
 namespace {
-
-#ifdef HECAL_HAVE_OPENCV_PEERS
-// OpenCV's hand-eye functions on inputs converted once per data set (outside the timing),
-// without computing Z for calibrateHandEye.
-std::optional<study::BenchPeer> OpenCvPeer() {
-  study::BenchPeer peer;
-  peer.name = "opencv";
-  peer.prepare =
-      [](estimation::Method method,
-         const std::vector<study::BenchDataSet>& sets) -> std::optional<study::BenchSolver> {
-    const std::optional<handeye::ClosedForm> form = estimation::Info(method).closed_form;
-    if (!form || !peers::HasOpenCvPeer(*form)) return std::nullopt;
-    auto inputs = std::make_shared<std::vector<peers::OpenCvInput>>();
-    for (const study::BenchDataSet& set : sets) {
-      inputs->push_back(peers::PrepareOpenCvInput(set.problem));
-    }
-    return [form = *form, inputs](std::size_t i) {
-      return peers::SolveWithOpenCv(form, (*inputs)[i], /*estimate_z=*/false).X;
-    };
-  };
-  return peer;
-}
-#else
-std::optional<study::BenchPeer> OpenCvPeer() {
-  return std::nullopt;
-}
-#endif
 
 struct BenchCommand {
   study::BenchOptions options;
@@ -60,7 +28,11 @@ struct BenchCommand {
 void RunBench(const BenchCommand& command, const Io& io) {
   std::string why;
   if (!command.options.IsValid(&why)) throw OptionsError(why);
-  const study::BenchResult result = study::RunBench(command.options, OpenCvPeer());
+#ifdef HECAL_HAVE_OPENCV_PEERS
+  const study::BenchResult result = study::RunBench(command.options, jobs::OpenCvBenchPeer());
+#else
+  const study::BenchResult result = study::RunBench(command.options);
+#endif
   if (command.json) {
     io.out << report::BenchJson(result);
   } else {
@@ -84,12 +56,8 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
       ->add_option_function<std::string>(
           "--setup",
           [&o](const std::string& text) {
-            const std::optional<handeye::Setup> setup = handeye::ParseSetup(text);
-            if (!setup) {
-              throw InputError("--setup", 0, "unknown setup '" + text + "'",
-                               "use eye-in-hand or eye-to-hand");
-            }
-            o.setup = *setup;
+            o.setup = ParseChoice("--setup", text, handeye::ParseSetup, "setup",
+                                  "eye-in-hand or eye-to-hand");
           },
           "eye-in-hand | eye-to-hand")
       ->default_str("eye-in-hand");

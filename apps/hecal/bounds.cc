@@ -68,6 +68,9 @@ CLI::Option* AddWholeNumberList(CLI::App& command, const std::string& flag,
 
 std::vector<double> ParseNumberList(const std::string& flag, const std::string& text,
                                     std::size_t count, const std::string& what) {
+  const std::string give = "give " +
+                           (count == kAnyCount ? std::string() : std::to_string(count) + " ") +
+                           "comma-separated numbers " + what;
   std::vector<double> values;
   std::size_t start = 0;
   while (true) {
@@ -76,18 +79,17 @@ std::vector<double> ParseNumberList(const std::string& flag, const std::string& 
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     double value = 0.0;
     if (!io::ParseDouble(io::Trim(part), &value) || !std::isfinite(value)) {
-      throw InputError(flag, 0, "'" + part + "' is not a finite number (in '" + text + "')",
-                       "give " + std::to_string(count) + " comma-separated numbers " + what);
+      throw InputError(flag, 0, "'" + part + "' is not a finite number (in '" + text + "')", give);
     }
     values.push_back(value);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  if (values.size() != count) {
+  if (count != kAnyCount && values.size() != count) {
     throw InputError(flag, 0,
                      "expected " + std::to_string(count) + " numbers, got " +
                          std::to_string(values.size()) + " ('" + text + "')",
-                     "give " + std::to_string(count) + " comma-separated numbers " + what);
+                     give);
   }
   return values;
 }

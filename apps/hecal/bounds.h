@@ -31,8 +31,10 @@ CLI::Option* AddSeedFlag(CLI::App& command, std::uint64_t& seed);
 CLI::Option* AddWholeNumberList(CLI::App& command, const std::string& flag,
                                 std::vector<int>& values, const std::string& help);
 
-// `count` comma-separated finite numbers from flag `flag` (InputError naming the flag
-// otherwise). `what` describes them for the fix, e.g. "TX,TY,TZ,RX,RY,RZ".
+// `count` comma-separated finite numbers from flag `flag`, or with count kAnyCount one or more
+// (InputError naming the flag otherwise). `what` describes them for the fix, e.g.
+// "TX,TY,TZ,RX,RY,RZ".
+constexpr std::size_t kAnyCount = 0;
 std::vector<double> ParseNumberList(const std::string& flag, const std::string& text,
                                     std::size_t count, const std::string& what);
 

@@ -1,7 +1,8 @@
 // The command line's own syntax rules (bounds.h), driven through `hecal`: a whole number is
 // decimal digits (CLI11 alone would read "010" as octal and "-1" as 2^64 − 1 for a seed), a
 // whole-number list has no empty item, a noise level is two numbers (or one where a single level
-// is allowed). A bad value exits 2 with one line naming the flag and the text, before any work.
+// is allowed), a sweep of finite numbers takes any count of them. A bad value exits 2 with one
+// line naming the flag and the text, before any work.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,6 +82,19 @@ TEST_F(Bounds, NoiseLevelsAreTwoNumbers) {
                 "expected two numbers MM/DEG or one number N, got 'nan'");
   // A negative level is a number; its range is the options' (study::SimulateOptions::IsValid).
   ExpectRefused(Simulate({"--sigma", "-1"}), "--sigma", "noise levels must be 0 to 1000 mm");
+}
+
+TEST_F(Bounds, NumberSweepsTakeAnyCountOfFiniteNumbers) {
+  // Items are trimmed; one setting per value, in the given order.
+  const Outcome run = Hecal(Simulate({"--stations", "3", "--sigma", "0.1", "--robot-scale",
+                                      " 1, 2.5", "--summary", Path("summary.csv")}));
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(run.out.find("robot noise 1x"), std::string::npos) << run.out;  // the plain setting
+  EXPECT_NE(run.out.find("1 trials, robot noise 2.5x"), std::string::npos) << run.out;
+  ExpectRefused(Simulate({"--robot-scale", "1,,2"}), "--robot-scale",
+                "'' is not a finite number (in '1,,2')");
+  ExpectRefused(Simulate({"--robot-scale", "0x1"}), "--robot-scale",
+                "'0x1' is not a finite number (in '0x1')");
 }
 
 }  // namespace

@@ -1,30 +1,21 @@
 #include "list_flags.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 #include "hecal/core/error.h"
+#include "hecal/io/delimited_text.h"
+#include "hecal/study/simulate.h"
 
 namespace hecal::cli {
-namespace {
-
-std::string Trim(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return "";
-  const size_t last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
-}
-
-}  // namespace
 
 std::vector<std::string> SplitList(const std::string& flag, const std::string& text) {
   std::vector<std::string> items;
   size_t start = 0;
   while (true) {
     const size_t comma = text.find(',', start);
-    const std::string item =
-        Trim(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    const std::string item(io::Trim(std::string_view(text).substr(
+        start, comma == std::string::npos ? std::string::npos : comma - start)));
     if (item.empty()) {
       throw InputError(flag, 0, "empty item in the list '" + text + "'",
                        "separate values with single commas, e.g. " + flag + " a,b");
@@ -58,16 +49,12 @@ std::vector<estimation::Method> ParseMethodList(const std::string& flag, const s
   std::vector<estimation::Method> methods;
   for (const std::string& item : SplitList(flag, text)) {
     if (item == "all") {
-      for (const estimation::MethodInfo& info : estimation::AllMethods())
-        methods.push_back(info.method);
+      const std::vector<estimation::Method> all = study::EveryMethod();
+      methods.insert(methods.end(), all.begin(), all.end());
       continue;
     }
-    const std::optional<estimation::Method> method = estimation::ParseMethod(item);
-    if (!method) {
-      throw InputError(flag, 0, "unknown method '" + item + "'",
-                       "use all or one or more of " + MethodNames());
-    }
-    methods.push_back(*method);
+    methods.push_back(ParseChoice(flag, item, estimation::ParseMethod, "method",
+                                  "all or one or more of " + MethodNames()));
   }
   // Keep the first occurrence of each method.
   std::vector<estimation::Method> unique;
@@ -85,10 +72,7 @@ study::NoiseLevel ParseNoiseLevel(const std::string& flag, const std::string& te
   bool ok = two || single;
   const std::string parts[2] = {text.substr(0, split), two ? text.substr(split + 1) : ""};
   for (int k = 0; ok && k < (two ? 2 : 1); ++k) {
-    const std::string item = Trim(parts[k]);
-    const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), values[k]);
-    ok = !item.empty() && error == std::errc() && end == item.data() + item.size() &&
-         std::isfinite(values[k]);
+    ok = io::ParseDouble(io::Trim(parts[k]), &values[k]) && std::isfinite(values[k]);
   }
   if (!ok) {
     const std::string pair = std::string("MM") + separator + "DEG";
@@ -99,6 +83,14 @@ study::NoiseLevel ParseNoiseLevel(const std::string& flag, const std::string& te
         "write e.g. " + flag + " 0.5" + separator + "0.1 for 0.5 mm and 0.1 degree per axis");
   }
   return {values[0], two ? values[1] : values[0]};
+}
+
+std::vector<study::NoiseLevel> ParseNoiseLevels(const std::string& flag, const std::string& text) {
+  std::vector<study::NoiseLevel> levels;
+  for (const std::string& item : SplitList(flag, text)) {
+    levels.push_back(ParseNoiseLevel(flag, item, '/', /*single=*/true));
+  }
+  return levels;
 }
 
 }  // namespace hecal::cli

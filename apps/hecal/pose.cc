@@ -1,107 +1,116 @@
 // `hecal pose` (docs/cli.md#hecal-pose, docs/pose-from-points.md): binds the flags into
-// report::PointPoseOptions (report/point_pose.h; its IsValid names fields, shown as flags by
-// field_flags.h), runs the job, prints the pose and writes its JSON (report/pose_file.h).
+// jobs::PoseFromFilesOptions (jobs/pose_from_points.h: every method, by name; its IsValid names
+// fields, shown as flags by field_flags.h), runs the job, prints the pose and writes its JSON
+// (report/pose_file.h). Built without the vision layer, the command runs report's job
+// (report/point_pose.h) with the pose layer's methods and refuses OpenCV's by name.
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <array>
-#include <charconv>
-#include <cmath>
 #include <memory>
 #include <optional>
-#include <string_view>
+#include <string>
 #include <vector>
 
+#include "bounds.h"
 #include "cli.h"
-#include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/units.h"
-#include "hecal/pose/pose_method.h"
 #include "hecal/report/point_pose.h"
 #include "hecal/report/pose_file.h"
 #include "hecal/report/pose_text.h"
+#include "list_flags.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "hecal/vision/opencv_pnp.h"
+#include "hecal/jobs/pose_from_points.h"
+#else
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+#include "hecal/core/error.h"
+#include "hecal/pose/pose_method.h"
 #endif
 
 namespace hecal::cli {
 namespace {
 
-// --principal-point CX,CY (px).
-Eigen::Vector2d ParsePrincipalPoint(const std::string& text) {
-  const std::size_t comma = text.find(',');
-  double c[2] = {0.0, 0.0};
-  bool ok = comma != std::string::npos;
-  for (int k = 0; ok && k < 2; ++k) {
-    const std::string part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
-    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), c[k]);
-    ok = error == std::errc() && end == part.data() + part.size() && std::isfinite(c[k]);
-  }
-  if (!ok) {
-    throw InputError("--principal-point", 0, "expected two numbers CX,CY, got '" + text + "'",
-                     "write e.g. --principal-point 640,480 (pixels)");
-  }
-  return {c[0], c[1]};
+#if defined(HECAL_HAVE_OPENCV_PEERS)
+using PoseOptions = jobs::PoseFromFilesOptions;
+
+report::PointPoseOptions& PointOptions(PoseOptions& options) {
+  return options.points;
 }
 
-// ---- methods -----------------------------------------------------------------------------------
+std::vector<std::pair<std::string, std::string>> MethodHelp() {
+  std::vector<std::pair<std::string, std::string>> lines;
+  for (const jobs::PoseMethodEntry& entry : jobs::PoseMethods()) {
+    lines.emplace_back(entry.name, entry.help);
+  }
+  return lines;
+}
+
+std::string MethodList() {
+  return jobs::PoseMethodNames();
+}
+
+void SetMethod(const std::string& method, PoseOptions& options) {
+  options.method =
+      ParseChoice("--method", method, jobs::ParsePoseMethod, "method", "one of " + MethodList());
+}
+
+report::PointPoseResult EstimatePose(const PoseOptions& options) {
+  return jobs::EstimatePoseFromFiles(options);
+}
+#else
+// Without the vision layer: the pose layer's methods; OpenCV's are refused by name.
+using PoseOptions = report::PointPoseOptions;
+
+report::PointPoseOptions& PointOptions(PoseOptions& options) {
+  return options;
+}
+
+std::vector<std::pair<std::string, std::string>> MethodHelp() {
+  std::vector<std::pair<std::string, std::string>> lines;
+  for (const pose::PoseMethodInfo& info : pose::PoseMethods()) {
+    lines.emplace_back(info.name, info.summary);
+  }
+  return lines;
+}
 
 std::string MethodList() {
   std::string names;
-  for (const pose::PoseMethodInfo& info : pose::PoseMethods()) {
-    names += (names.empty() ? "" : ", ") + std::string(info.name);
-  }
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-  for (const vision::PnpMethodInfo& info : vision::OpenCvPnpMethods()) {
-    names += ", " + std::string(info.name);
-  }
-#endif
+  for (const auto& [name, help] : MethodHelp()) names += (names.empty() ? "" : ", ") + name;
   return names;
 }
 
-// --method NAME into the options: one of the pose layer's methods, or (with the vision layer)
-// OpenCV's PnP finished by pose::FinishPose.
-void SetMethod(const std::string& method, report::PointPoseOptions& options) {
+void SetMethod(const std::string& method, PoseOptions& options) {
   if (const std::optional<pose::PoseMethod> core = pose::ParsePoseMethod(method)) {
     options.method = *core;
-    options.solver = nullptr;
     return;
   }
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-  if (const std::optional<vision::PnpMethod> peer = vision::ParsePnpMethod(method)) {
-    options.solver = [method, peer = *peer](const std::vector<Eigen::Vector3d>& object,
-                                            const std::vector<Eigen::Vector2d>& pixels,
-                                            const pose::CameraModel& camera,
-                                            const pose::PoseOptions& pose_options) {
-      const Pose T = vision::SolvePnPOpenCv(peer, object, pixels, camera);
-      return pose::FinishPose(method, T, peer == vision::PnpMethod::kIterative, object, pixels,
-                              camera, pose_options.refinement);
-    };
-    return;
-  }
-#else
   constexpr std::array<std::string_view, 4> kVisionMethods = {"ippe", "sqpnp", "epnp", "iterative"};
   if (std::find(kVisionMethods.begin(), kVisionMethods.end(), method) != kVisionMethods.end()) {
     throw InputError("--method", 0, "--method " + method + " needs the vision layer (OpenCV)",
                      "rebuild with -DHECAL_BUILD_VISION=ON, or use one of " + MethodList());
   }
-#endif
   throw InputError("--method", 0, "unknown method '" + method + "'", "use one of " + MethodList());
 }
 
+report::PointPoseResult EstimatePose(const PoseOptions& options) {
+  return report::EstimatePoseFromFiles(options);
+}
+#endif
+
 struct PoseCommand {
-  report::PointPoseOptions options;
+  PoseOptions options;
   std::string output;
 };
 
-void RunPose(const PoseCommand& command, const Io& io) {
-  const report::PointPoseOptions& options = command.options;
-  std::string why;
-  if (!options.IsValid(&why)) throw OptionsError(why);
-  io::CheckOutputs({{"--output", command.output}}, {{"--points", options.points},
-                                                    {"--image-points", options.image_points},
-                                                    {"--intrinsics", options.intrinsics}});
-  const report::PointPoseResult result = report::EstimatePoseFromFiles(options);
+void RunPose(PoseCommand& command, const Io& io) {
+  RequireValid(command.options);
+  const report::PointPoseOptions& points = PointOptions(command.options);
+  io::CheckOutputs({{"--output", command.output}}, {{"--points", points.points},
+                                                    {"--image-points", points.image_points},
+                                                    {"--intrinsics", points.intrinsics}});
+  const report::PointPoseResult result = EstimatePose(command.options);
   for (const std::string& note : result.camera_notes) io.out << "note: " << note << "\n";
   for (const std::string& warning : result.estimate.warnings) {
     io.err << "hecal: warning: " << warning << "\n";
@@ -118,7 +127,8 @@ void RunPose(const PoseCommand& command, const Io& io) {
 
 void RegisterPoseCommand(CLI::App& app, const Io& io) {
   auto pose_command = std::make_shared<PoseCommand>();
-  report::PointPoseOptions& o = pose_command->options;
+  PoseOptions& options = pose_command->options;
+  report::PointPoseOptions& o = PointOptions(options);
   CLI::App* command = app.add_subcommand(
       "pose", "Camera pose T_camera_target from known object points and their pixels");
   command->add_option("--points", o.points, "Object points: CSV id,x,y,z (target frame)")
@@ -130,14 +140,17 @@ void RegisterPoseCommand(CLI::App& app, const Io& io) {
       "Focal length F (px) of a distortion-free pinhole (docs/pose-from-points.md)");
   command->add_option_function<std::string>(
       "--principal-point",
-      [&o](const std::string& text) { o.principal_point = ParsePrincipalPoint(text); },
+      [&o](const std::string& text) {
+        const std::vector<double> c = ParseNumberList("--principal-point", text, 2, "CX,CY (px)");
+        o.principal_point = Eigen::Vector2d(c[0], c[1]);
+      },
       "CX,CY (px) with --focal (default 0,0)");
   command->add_option(
       "--intrinsics", o.intrinsics,
       "camera.yaml (hecal, OpenCV or ROS layout; plumb_bob distortion) or ViSP camera "
       "XML");
   command->add_option_function<std::string>(
-      "--method", [&o](const std::string& text) { SetMethod(text, o); },
+      "--method", [&options](const std::string& text) { SetMethod(text, options); },
       "Method (default linear): " + MethodList());
   command->add_option_function<double>(
       "--pixel-sigma", [&o](double sigma) { o.pixel_sigma = sigma; },
@@ -145,24 +158,12 @@ void RegisterPoseCommand(CLI::App& app, const Io& io) {
   command->add_option_function<std::string>(
       "--units",
       [&o](const std::string& text) {
-        const std::optional<io::LengthUnit> unit = io::ParseLengthUnit(text);
-        if (!unit) throw InputError("--units", 0, "unknown unit '" + text + "'", "use m or mm");
-        o.units = *unit;
+        o.units = ParseChoice("--units", text, io::ParseLengthUnit, "unit", "m or mm");
       },
       "Length unit of object columns without a suffix: m (default) or mm");
   command->add_option("--output", pose_command->output, "Result JSON (written atomically)");
   std::string footer = "Methods:\n";
-  for (const pose::PoseMethodInfo& info : pose::PoseMethods()) {
-    footer += "  " + std::string(info.name) + ": " + std::string(info.summary) + "\n";
-  }
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-  for (const vision::PnpMethodInfo& info : vision::OpenCvPnpMethods()) {
-    footer +=
-        "  " + std::string(info.name) + ": " + std::string(info.summary) +
-        (info.method == vision::PnpMethod::kIterative ? " (+ hecal refinement for the covariance)\n"
-                                                      : " (no covariance)\n");
-  }
-#endif
+  for (const auto& [name, help] : MethodHelp()) footer += "  " + name + ": " + help + "\n";
   footer +=
       "Pairing: by id when both files have an id column, else by order.\n"
       "Output: R, t (object file's unit), rotation vector, 1σ per component (refined methods:\n"

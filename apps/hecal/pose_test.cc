@@ -248,7 +248,7 @@ TEST_F(PoseCommand, BadInputExitsTwoWithFileAndLineAndWritesNothing) {
       {"# only a comment\n", intrinsics, "no object points in the file"},
       {good_object, {}, "--focal: give exactly one of focal and intrinsics"},
       {good_object, {"--focal", "-3"}, "--focal: expected a positive number"},
-      {good_object, {"--focal", "1000", "--principal-point", "3"}, "expected two numbers"},
+      {good_object, {"--focal", "1000", "--principal-point", "3"}, "expected 2 numbers, got 1"},
       {good_object,
        {"--intrinsics", Path("camera.yaml"), "--method", "nope"},
        "unknown method 'nope'"},

@@ -5,7 +5,6 @@
 #include "hecal/study/simulate.h"
 
 #include <CLI/CLI.hpp>
-#include <cstdlib>
 #include <memory>
 #include <optional>
 
@@ -40,40 +39,6 @@ Bound: first-order (Cramer-Rao-type) RMSE of the ml estimate at the truth, RMS o
   calibrate's outlier rejection; the table adds the fraction of gross outliers found, of good
   stations rejected, and the RMSE over the clean reference's RMSE.
 Same --seed, same CSV files whatever --threads.)";
-
-std::vector<study::NoiseLevel> ParseSigmaLevels(const std::string& text) {
-  std::vector<study::NoiseLevel> levels;
-  for (const std::string& item : SplitList("--sigma", text)) {
-    levels.push_back(ParseNoiseLevel("--sigma", item, '/', /*single=*/true));
-  }
-  return levels;
-}
-
-// One item of --setup, --noise-on, --noise: `parse` or an InputError listing `choices`.
-template <typename T, typename Parse>
-std::vector<T> ParseNames(const std::string& flag, const std::string& text, Parse parse,
-                          const std::string& what, const std::string& choices) {
-  std::vector<T> values;
-  for (const std::string& item : SplitList(flag, text)) {
-    const std::optional<T> value = parse(item);
-    if (!value) throw InputError(flag, 0, "unknown " + what + " '" + item + "'", "use " + choices);
-    values.push_back(*value);
-  }
-  return values;
-}
-
-std::vector<double> ParseNumbers(const std::string& flag, const std::string& text) {
-  std::vector<double> values;
-  for (const std::string& item : SplitList(flag, text)) {
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    if (end == item.c_str() || *end != '\0') {
-      throw InputError(flag, 0, "'" + item + "' is not a number", "e.g. " + flag + " 1,5");
-    }
-    values.push_back(value);
-  }
-  return values;
-}
 
 struct SimulateCommand {
   study::SimulateOptions options;
@@ -114,9 +79,8 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->add_option_function<std::string>(
           "--setup",
           [&o](const std::string& text) {
-            o.setups = ParseNames<handeye::Setup>("--setup", text, handeye::ParseSetup, "setup",
-                                                  "eye-in-hand or eye-to-hand (or both, comma "
-                                                  "separated)");
+            o.setups = ParseChoiceList("--setup", text, handeye::ParseSetup, "setup",
+                                       "eye-in-hand or eye-to-hand (or both, comma separated)");
           },
           "eye-in-hand | eye-to-hand (list sweeps)")
       ->default_str("eye-in-hand");
@@ -129,8 +93,8 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->add_option_function<std::string>(
           "--noise-on",
           [&o](const std::string& text) {
-            o.noise_on = ParseNames<study::NoiseOn>("--noise-on", text, study::ParseNoiseOn,
-                                                    "value", "robot, camera or both");
+            o.noise_on = ParseChoiceList("--noise-on", text, study::ParseNoiseOn, "value",
+                                         "robot, camera or both");
           },
           "robot | camera | both (list sweeps)")
       ->default_str("both");
@@ -138,15 +102,15 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->add_option_function<std::string>(
           "--noise",
           [&o](const std::string& text) {
-            o.noise = ParseNames<sim::NoiseModel::Kind>(
-                "--noise", text, sim::ParseNoiseKind, "noise kind",
-                "gaussian, uniform, systematic, student-t3 or pnp");
+            o.noise = ParseChoiceList("--noise", text, sim::ParseNoiseKind, "noise kind",
+                                      "gaussian, uniform, systematic, student-t3 or pnp");
           },
           "gaussian | uniform | systematic | student-t3 | pnp (camera) (list sweeps)")
       ->default_str("gaussian");
   simulate
       ->add_option_function<std::string>(
-          "--sigma", [&o](const std::string& text) { o.sigmas = ParseSigmaLevels(text); },
+          "--sigma",
+          [&o](const std::string& text) { o.sigmas = ParseNoiseLevels("--sigma", text); },
           "Noise levels: n (= n mm and n deg per component) or MM/DEG (list sweeps)")
       ->default_str("0,0.3,1");
   AddMethodListFlag(*simulate, o.methods);
@@ -157,15 +121,15 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
       ->add_option_function<std::string>(
           "--covariance",
           [&o](const std::string& text) {
-            if (text == "default") {
-              o.covariance = std::nullopt;
-              return;
-            }
-            o.covariance = estimation::ParseCovarianceMethod(text);
-            if (!o.covariance) {
-              throw InputError("--covariance", 0, "unknown covariance method '" + text + "'",
-                               "use none, default, linear, unscented or montecarlo");
-            }
+            using Choice = std::optional<estimation::CovarianceMethod>;
+            o.covariance = ParseChoice(
+                "--covariance", text,
+                [](const std::string& name) -> std::optional<Choice> {
+                  if (name == "default") return Choice();  // each method's own
+                  const Choice method = estimation::ParseCovarianceMethod(name);
+                  return method ? std::optional<Choice>(method) : std::nullopt;
+                },
+                "covariance method", "none, default, linear, unscented or montecarlo");
           },
           "Predict X's covariance per trial and report its consistency: none | default "
           "(each method's own) | linear | unscented | montecarlo")
@@ -182,7 +146,10 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
   simulate
       ->add_option_function<std::string>(
           "--robot-scale",
-          [&o](const std::string& text) { o.robot_scales = ParseNumbers("--robot-scale", text); },
+          [&o](const std::string& text) {
+            o.robot_scales = ParseNumberList("--robot-scale", text, kAnyCount,
+                                             "(robot noise over the level, e.g. 1,5)");
+          },
           "Robot noise = this times the level, camera noise = the level (list sweeps)")
       ->default_str("1");
   simulate->add_flag("--estimate-noise", o.estimate_noise,

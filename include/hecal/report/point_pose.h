@@ -11,7 +11,8 @@
 //   Camera: `intrinsics` (io/camera_file.h), or the distortion-free pinhole X = F x/z of `focal`
 //   (px) with the principal point `principal_point` (default 0,0) — exactly one of the two.
 // Method: pose::EstimatePose's `method` (pose/pose_method.h), or `solver` when set (the vision
-// layer's OpenCV PnP methods, vision/opencv_pnp.h, which this layer cannot see).
+// layer's OpenCV PnP methods, vision/opencv_pnp.h, which this layer cannot see; every method by
+// name: jobs/pose_from_points.h).
 // Bounds (IsValid): exactly one of focal and intrinsics; focal positive and finite; a principal
 // point only with focal, finite; pixel_sigma above 0 and at most 100 px. A bad value names the
 // field ("PointPoseOptions.focal", core/options_check.h).

@@ -1,5 +1,5 @@
 // The benchmark protocol of `hecal bench` and bench/handeye_bench.cc (docs/bench.md): every hecal
-// solver, and a peer implementation's where it has one (OpenCV 4.6, peers/opencv_handeye.h,
+// solver, and a peer implementation's where it has one (OpenCV 4.6, jobs/opencv_bench_peer.h,
 // supplied by the caller so this layer stays free of OpenCV), timed and scored on IDENTICAL
 // generated data.
 //
