@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "bounds.h"
+#include "choice_flags.h"
 #include "cli.h"
 #include "hecal/core/options_check.h"
 #include "hecal/report/bench_file.h"
@@ -52,15 +53,7 @@ void RegisterBenchCommand(CLI::App& app, const Io& io) {
       ->default_str("10,20,50");
   bench->add_flag("--json", command->json, "Print one JSON array (docs/bench.md)");
   AddMethodListFlag(*bench, o.methods);
-  bench
-      ->add_option_function<std::string>(
-          "--setup",
-          [&o](const std::string& text) {
-            o.setup = ParseChoice("--setup", text, handeye::ParseSetup, "setup",
-                                  "eye-in-hand or eye-to-hand");
-          },
-          "eye-in-hand | eye-to-hand")
-      ->default_str("eye-in-hand");
+  AddSetupFlag(*bench, o.setup, "eye-in-hand | eye-to-hand")->default_str("eye-in-hand");
   AddWholeNumber(*bench, "--datasets", o.datasets, "Data sets per station count (1 to 10000)")
       ->capture_default_str();
   bench

@@ -27,37 +27,44 @@
 #include "hecal/geometry/euler.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/io/units.h"
+#include "list_flags.h"
 
 namespace hecal::cli {
 
-// Binds `flag` to `target` (a T, or anything a T assigns to, such as std::optional<T>): `parse`
-// reads the text, nullopt meaning "unknown WHAT 'TEXT'" with `fix`.
+// Binds `flag` to `target` (a T, or anything a T assigns to, such as std::optional<T>): the text
+// is read by ParseChoice (list_flags.h) with `parse`, an unknown one is "unknown WHAT 'TEXT'"
+// with the fix "use CHOICES".
 template <class T, class Target>
 CLI::Option* AddChoice(CLI::App& command, const std::string& flag, Target& target,
                        std::function<std::optional<T>(std::string_view)> parse,
-                       const std::string& what, const std::string& fix, const std::string& help) {
+                       const std::string& what, const std::string& choices,
+                       const std::string& help) {
   return command.add_option_function<std::string>(
       flag,
-      [&target, flag, parse, what, fix](const std::string& text) {
-        const std::optional<T> value = parse(text);
-        if (!value) throw InputError(flag, 0, "unknown " + what + " '" + text + "'", fix);
-        target = *value;
+      [&target, flag, parse, what, choices](const std::string& text) {
+        target = ParseChoice(flag, text, parse, what, choices);
       },
       help);
 }
 
-// Whether `auto` (nullopt: the convention check picks the setup) is one of the choices.
-enum class SetupChoices { kGiven, kGivenOrAuto };
+// --setup: eye-in-hand (camera on the robot) | eye-to-hand (camera fixed), into a handeye::Setup
+// or a std::optional of one.
+template <class Target>
+CLI::Option* AddSetupFlag(CLI::App& command, Target& setup, const std::string& help) {
+  return AddChoice<handeye::Setup>(
+      command, "--setup", setup, handeye::ParseSetup, "setup",
+      "eye-in-hand (camera on the robot) or eye-to-hand (camera fixed)", help);
+}
 
-// --setup: eye-in-hand (camera on the robot) | eye-to-hand (camera fixed) [| auto].
-CLI::Option* AddSetupFlag(CLI::App& command, std::optional<handeye::Setup>& setup,
-                          SetupChoices choices, const std::string& help);
+// --setup with `auto` as a third choice: nullopt (the convention check picks the setup).
+CLI::Option* AddSetupOrAutoFlag(CLI::App& command, std::optional<handeye::Setup>& setup,
+                                const std::string& help);
 
 // A length unit m | mm ("unknown unit"; io::ParseLengthUnit).
 template <class Target>
 CLI::Option* AddLengthUnitFlag(CLI::App& command, const std::string& flag, Target& unit,
                                const std::string& help) {
-  return AddChoice<io::LengthUnit>(command, flag, unit, io::ParseLengthUnit, "unit", "use m or mm",
+  return AddChoice<io::LengthUnit>(command, flag, unit, io::ParseLengthUnit, "unit", "m or mm",
                                    help);
 }
 

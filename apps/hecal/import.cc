@@ -75,7 +75,7 @@ void RegisterImportCommand(CLI::App& app, const Io& io) {
   auto options = std::make_shared<io::ImportJobOptions>();
   auto setup = std::make_shared<std::optional<handeye::Setup>>();
   AddChoice<io::ImportFormat>(*command, "--format", options->format, io::ParseImportFormat,
-                              "import format", "use one of " + io::ImportFormatList(),
+                              "import format", "one of " + io::ImportFormatList(),
                               io::ImportFormatList())
       ->required();
   command->add_option("inputs", options->inputs, "INPUT... (see below)")->required();
@@ -84,8 +84,7 @@ void RegisterImportCommand(CLI::App& app, const Io& io) {
   command->add_option("--camera", options->camera, "output: camera poses T_camera_target (CSV)");
   AddLengthUnitFlag(*command, "--units", options->read.units,
                     "m|mm: length unit of matrix16 and opencv-yaml inputs (default m)");
-  AddSetupFlag(*command, *setup, SetupChoices::kGiven,
-               "eye-in-hand|eye-to-hand: for easy_handeye files that do not say");
+  AddSetupFlag(*command, *setup, "eye-in-hand|eye-to-hand: for easy_handeye files that do not say");
   command->add_flag("--robot-inverse", options->read.robot_inverse,
                     "the robot file holds the inverse of the format's convention; invert it");
   command->add_flag("--camera-inverse", options->read.camera_inverse,

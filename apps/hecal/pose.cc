@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bounds.h"
+#include "choice_flags.h"
 #include "cli.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
@@ -155,12 +156,8 @@ void RegisterPoseCommand(CLI::App& app, const Io& io) {
   command->add_option_function<double>(
       "--pixel-sigma", [&o](double sigma) { o.pixel_sigma = sigma; },
       "Pixel noise σ (px) for the covariance (default: from the residuals)");
-  command->add_option_function<std::string>(
-      "--units",
-      [&o](const std::string& text) {
-        o.units = ParseChoice("--units", text, io::ParseLengthUnit, "unit", "m or mm");
-      },
-      "Length unit of object columns without a suffix: m (default) or mm");
+  AddLengthUnitFlag(*command, "--units", o.units,
+                    "Length unit of object columns without a suffix: m (default) or mm");
   command->add_option("--output", pose_command->output, "Result JSON (written atomically)");
   std::string footer = "Methods:\n";
   for (const auto& [name, help] : MethodHelp()) footer += "  " + name + ": " + help + "\n";

@@ -59,7 +59,7 @@ void RegisterPosesCommand(CLI::App& app, const Io& io) {
   convert->add_option("--output", *output, "Output CSV (written atomically)")->required();
   AddChoice<io::RotationFormat>(
       *convert, "--to", options->to, io::ParseRotationFormat, "rotation format",
-      "use one of " + std::string(io::RotationFormatSpellings()),
+      "one of " + std::string(io::RotationFormatSpellings()),
       "Rotation form: quaternion | rotvec | matrix | euler:SEQ (e.g. euler:ZYX, euler:xyz; "
       "lowercase = extrinsic, uppercase = intrinsic) | rpy | kuka | fanuc | abb | ur")
       ->required();
