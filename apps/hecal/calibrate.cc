@@ -5,9 +5,11 @@
 #include <charconv>
 #include <cmath>
 #include <memory>
+#include <string_view>
 #include <utility>
 
 #include "bounds.h"
+#include "choice_flags.h"
 #include "conventions.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
@@ -37,21 +39,9 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
   return value;
 }
 
-io::LengthUnit ParseUnitsFlag(const std::string& text) {
-  const std::optional<io::LengthUnit> unit = io::ParseLengthUnit(text);
-  if (!unit) throw InputError("--units", 0, "unknown unit '" + text + "'", "use m or mm");
-  return *unit;
-}
-
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   CalibrateSettings settings;
-  const auto setup = handeye::ParseSetup(flags.setup);
-  if (!setup && flags.setup != "auto") {
-    throw InputError("--setup", 0, "unknown setup '" + flags.setup + "'",
-                     "use eye-in-hand (camera on the robot), eye-to-hand (camera fixed) or auto "
-                     "(the one the data fit)");
-  }
-  settings.setup = setup;
+  settings.setup = flags.setup;
   settings.all = flags.method == "all";
   const auto method = estimation::ParseMethod(flags.method);
   if (!settings.all && !method) {
@@ -60,46 +50,24 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
     throw InputError("--method", 0, "unknown method '" + flags.method + "'",
                      "use one of: " + names + "all");
   }
-  const io::LengthUnit units = ParseUnitsFlag(flags.units);
   if (method) settings.options.method = *method;
   io::PoseReadOptions& read = settings.read;
-  read.units = units;
+  read.units = flags.units;
   read.degrees = flags.degrees;
-  if (!flags.euler.empty()) {
-    read.euler = EulerSequence::Parse(flags.euler);
-    if (!read.euler) {
-      throw InputError("--euler", 0, "unknown Euler sequence '" + flags.euler + "'",
-                       "use three axis letters, lowercase extrinsic (xyz) or uppercase intrinsic "
-                       "(ZYX)");
-    }
-  }
+  read.euler = flags.euler;
   estimation::CalibrateOptions& options = settings.options;
   if (!flags.robot_sigma.empty())
     options.robot_sigma = ParseSigma("--robot-sigma", flags.robot_sigma);
   if (!flags.camera_sigma.empty()) {
     options.camera_sigma = ParseSigma("--camera-sigma", flags.camera_sigma);
   }
-  if (!flags.covariance.empty()) {
-    const auto covariance = estimation::ParseCovarianceMethod(flags.covariance);
-    if (!covariance || *covariance == estimation::CovarianceMethod::kNone) {
-      throw InputError("--covariance", 0, "unknown covariance method '" + flags.covariance + "'",
-                       "use linear, unscented, montecarlo or information (or leave it out for "
-                       "the method's default: linear for ml, unscented for the others up to "
-                       "100 stations, information above)");
-    }
-    options.covariance.method = *covariance;
-  }
+  if (flags.covariance) options.covariance.method = *flags.covariance;
   options.covariance.samples = flags.covariance_samples;
   options.covariance.seed = flags.seed;
   options.consensus.seed = options.covariance.seed;
   options.reject_outliers = !flags.keep_outliers;
   options.covariance.threads = flags.threads;
-  const std::optional<estimation::RobustLoss> robust = estimation::ParseRobustLoss(flags.robust);
-  if (!robust) {
-    throw InputError("--robust", 0, "unknown loss '" + flags.robust + "'",
-                     "use none, huber or cauchy");
-  }
-  options.robust_loss = *robust;
+  options.robust_loss = flags.robust;
   // Once, before any file is read: the job checks the same again (core/options_check.h).
   RequireValid(options);
   if (flags.images.empty() == flags.camera.empty()) {
@@ -197,10 +165,9 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                  "core)");
   command->add_flag("--refine-intrinsics", flags->refine_intrinsics,
                     "With --images: refine the intrinsics with X and Z in the joint refinement");
-  command
-      ->add_option("--setup", flags->setup,
-                   "eye-in-hand (camera on the robot) | eye-to-hand (camera fixed) | auto (the "
-                   "setup the data fit, with the evidence)")
+  AddSetupOrAutoFlag(*command, flags->setup,
+                     "eye-in-hand (camera on the robot) | eye-to-hand (camera fixed) | auto (the "
+                     "setup the data fit, with the evidence)")
       ->required();
   command->add_option("--method", flags->method,
                       "Method name, or all (default ml), or global (target-free, certified)");
@@ -235,11 +202,11 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command->add_option("--camera-sigma", flags->camera_sigma,
                       "Camera pose noise per axis, MM,DEG (estimated when absent)");
   command->add_option("--output", flags->output, "Result file (.json, or .yaml/.yml)");
-  command->add_option("--units", flags->units,
-                      "Length unit of input columns without a suffix: m (default) or mm; "
-                      "results use the robot file's unit");
+  AddLengthUnitFlag(*command, "--units", flags->units,
+                    "Length unit of input columns without a suffix: m (default) or mm; "
+                    "results use the robot file's unit");
   command->add_flag("--degrees", flags->degrees, "Angles without a suffix are in degrees");
-  command->add_option("--euler", flags->euler, "Euler sequence of a1,a2,a3 columns (e.g. ZYX)");
+  AddEulerFlag(*command, "--euler", flags->euler, "Euler sequence of a1,a2,a3 columns (e.g. ZYX)");
   command->add_flag("--robot-inverse", flags->robot_inverse,
                     "The robot file holds T_gripper_base: invert every pose");
   command->add_flag("--camera-inverse", flags->camera_inverse,
@@ -247,11 +214,21 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command->add_flag("--keep-outliers", flags->keep_outliers,
                     "Use every station: no outlier rejection (by default gross outliers are "
                     "rejected by consensus and a 3-sigma test, and listed)");
-  command->add_option("--robust", flags->robust, "Robust loss for ml: none|huber|cauchy");
-  command->add_option("--covariance", flags->covariance,
-                      "Covariance of X and Z: linear | unscented | montecarlo | information "
-                      "(default: linear for ml; unscented for the other methods up to 100 "
-                      "stations, information above)");
+  AddChoice<estimation::RobustLoss>(*command, "--robust", flags->robust,
+                                    estimation::ParseRobustLoss, "loss", "none, huber or cauchy",
+                                    "Robust loss for ml: none|huber|cauchy");
+  AddChoice<estimation::CovarianceMethod>(
+      *command, "--covariance", flags->covariance,
+      [](std::string_view text) -> std::optional<estimation::CovarianceMethod> {
+        const auto method = estimation::ParseCovarianceMethod(text);
+        if (method == estimation::CovarianceMethod::kNone) return std::nullopt;
+        return method;
+      },
+      "covariance method",
+      "linear, unscented, montecarlo or information (or leave it out for the method's default: "
+      "linear for ml, unscented for the others up to 100 stations, information above)",
+      "Covariance of X and Z: linear | unscented | montecarlo | information (default: linear "
+      "for ml; unscented for the other methods up to 100 stations, information above)");
   AddWholeNumber(*command, "--covariance-samples", flags->covariance_samples,
                  "Monte Carlo samples for --covariance montecarlo (2 to 100000)")
       ->capture_default_str();

@@ -29,21 +29,21 @@ struct CalibrateFlags {
   std::string intrinsics;   // --intrinsics camera.yaml (with --images; estimated when absent)
   std::string pixel_sigma;  // --pixel-sigma PX (with --images; estimated when absent)
   int threads = 0;          // --threads (detection, covariance solves; 0 = every core)
-  bool refine_intrinsics = false;  // --refine-intrinsics (with --images)
-  std::string setup;
+  bool refine_intrinsics = false;       // --refine-intrinsics (with --images)
+  std::optional<handeye::Setup> setup;  // --setup (nullopt: auto)
   std::string method{estimation::Info(estimation::CalibrateOptions().method).name};  // the default
   std::string robot_sigma;
   std::string camera_sigma;
   std::string output;
-  std::string units = "m";
+  io::LengthUnit units = io::LengthUnit::kMetre;
   bool degrees = false;
-  std::string euler;
+  std::optional<EulerSequence> euler;
   bool robot_inverse = false;
   bool camera_inverse = false;
   bool keep_outliers = false;  // --keep-outliers: no outlier rejection
-  std::string robust = "none";
-  std::string covariance;         // --covariance (empty: the method's default)
-  int covariance_samples = 5000;  // --covariance-samples (montecarlo)
+  estimation::RobustLoss robust = estimation::RobustLoss::kNone;
+  std::optional<estimation::CovarianceMethod> covariance;  // --covariance (the method's default)
+  int covariance_samples = 5000;                           // --covariance-samples (montecarlo)
   std::uint64_t seed = 1;         // --seed (montecarlo, and the outlier consensus)
   std::string correspondences;    // --correspondences FILE (--method global)
   double epsilon = 2e-4;          // --epsilon RAD: the certificate's requested gap (global)
@@ -72,9 +72,6 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 // noise is then estimated, for --method global the default applies); the range is the options'
 // IsValid's.
 std::optional<double> ParsePixelSigma(const std::string& text);
-
-// --units: m or mm (InputError naming the flag otherwise).
-io::LengthUnit ParseUnitsFlag(const std::string& text);
 
 // "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
 // `flag` when it is not two numbers (the range is the options' IsValid's).

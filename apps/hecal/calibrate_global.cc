@@ -74,13 +74,12 @@ report::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseRea
 }  // namespace
 
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
-  const auto setup = handeye::ParseSetup(flags.setup);
-  if (!setup) {
-    throw InputError("--setup", 0, "--method global needs the setup, got '" + flags.setup + "'",
+  if (!flags.setup) {
+    throw InputError("--setup", 0, "--method global needs the setup, got 'auto'",
                      "give --setup eye-in-hand or --setup eye-to-hand");
   }
   report::GlobalCalibrationOptions options;
-  options.setup = *setup;
+  options.setup = *flags.setup;
   options.epsilon = flags.epsilon;
   options.relative_gap = flags.relative_gap;
   options.reach = flags.reach;
@@ -97,7 +96,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
                      "give --features sift or --features orb");
   }
   options.seed = flags.seed;
-  const io::LengthUnit units = ParseUnitsFlag(flags.units);
+  const io::LengthUnit units = flags.units;
   io::PoseReadOptions read;
   read.units = units;
   read.degrees = flags.degrees;

@@ -68,11 +68,13 @@ TEST_F(PoseBenchOptions, ChoicesNameTheFlagAndTheChoices) {
   ExpectRefused(Pose({"--focal", "800", "--units", "ft"}),
                 "--units: unknown unit 'ft' (fix: use m or mm)", "pose.json");
   ExpectRefused({"bench", "--setup", "eye-on-hand"},
-                "--setup: unknown setup 'eye-on-hand' (fix: use eye-in-hand or eye-to-hand)",
+                "--setup: unknown setup 'eye-on-hand' (fix: use eye-in-hand (camera on the robot) "
+                "or eye-to-hand (camera fixed))",
                 "none");
   // A choice is taken as given; in a list, items are trimmed and each one is checked.
   ExpectRefused({"bench", "--setup", " eye-in-hand"},
-                "--setup: unknown setup ' eye-in-hand' (fix: use eye-in-hand or eye-to-hand)",
+                "--setup: unknown setup ' eye-in-hand' (fix: use eye-in-hand (camera on the robot) "
+                "or eye-to-hand (camera fixed))",
                 "none");
   ExpectRefused(
       {"simulate", "--setup", "eye-in-hand, eye-to-hand,sideways", "--output", Path("trials.csv")},
