@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -48,6 +49,32 @@ class CliTest : public ::testing::Test {
     return Path(name);
   }
   std::string Read(const std::string& name) const { return io::ReadFile(Path(name)); }
+
+  // The input-error contract (docs/cli.md#exit-codes-and-errors) of a run refused at `flag`:
+  // exit 2, one line on stderr, "hecal: FLAG: ..." holding `problem` and naming the flag, not the
+  // options field ("Options."), nothing on stdout, and `output` (a name in the test folder) not
+  // written.
+  void ExpectRefused(const std::vector<std::string>& args, const std::string& flag,
+                     const std::string& problem, const std::string& output) const {
+    const Outcome run = Hecal(args);
+    EXPECT_EQ(run.code, 2) << run.err;
+    EXPECT_EQ(run.err.rfind("hecal: " + flag + ": ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(problem), std::string::npos) << run.err;
+    EXPECT_EQ(run.err.find("Options."), std::string::npos) << run.err;  // a flag, not a field
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_FALSE(std::filesystem::exists(Path(output))) << output;
+  }
+
+  // The same contract with the whole line: stderr is exactly "hecal: " + line + "\n".
+  void ExpectRefusedLine(const std::vector<std::string>& args, const std::string& line,
+                         const std::string& output) const {
+    const Outcome run = Hecal(args);
+    EXPECT_EQ(run.code, 2) << run.err;
+    EXPECT_EQ(run.err, "hecal: " + line + "\n");
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_FALSE(std::filesystem::exists(Path(output))) << output;
+  }
 
   std::filesystem::path dir_;
 };

@@ -16,24 +16,7 @@
 namespace hecal::cli {
 namespace {
 
-using cli_test::Hecal;
-using cli_test::Outcome;
-
-class ContourOptions : public cli_test::CliTest {
- protected:
-  // Exit 2, one line starting with `flag`, holding `problem`; no stdout, no `output`.
-  void ExpectRefused(const std::vector<std::string>& args, const std::string& flag,
-                     const std::string& problem, const std::string& output) const {
-    const Outcome run = Hecal(args);
-    EXPECT_EQ(run.code, 2) << run.err;
-    EXPECT_EQ(run.err.rfind("hecal: " + flag + ": ", 0), 0u) << run.err;
-    EXPECT_NE(run.err.find(problem), std::string::npos) << run.err;
-    EXPECT_EQ(run.err.find("Options."), std::string::npos) << run.err;  // a flag, not a field
-    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
-    EXPECT_TRUE(run.out.empty()) << run.out;
-    EXPECT_FALSE(std::filesystem::exists(Path(output))) << output;
-  }
-};
+using ContourOptions = cli_test::CliTest;
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 

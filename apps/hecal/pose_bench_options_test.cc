@@ -17,21 +17,8 @@
 namespace hecal::cli {
 namespace {
 
-using cli_test::Hecal;
-using cli_test::Outcome;
-
 class PoseBenchOptions : public cli_test::CliTest {
  protected:
-  // Exit 2 and the one line `hecal: <flag>: <problem> (fix: <fix>)`; no stdout, no `output`.
-  void ExpectRefused(const std::vector<std::string>& args, const std::string& line,
-                     const std::string& output) const {
-    const Outcome run = Hecal(args);
-    EXPECT_EQ(run.code, 2) << run.err;
-    EXPECT_EQ(run.err, "hecal: " + line + "\n");
-    EXPECT_TRUE(run.out.empty()) << run.out;
-    EXPECT_FALSE(std::filesystem::exists(Path(output))) << output;
-  }
-
   std::vector<std::string> Pose(std::vector<std::string> extra) const {
     std::vector<std::string> args = {"pose",           "--points",        Path("object.csv"),
                                      "--image-points", Path("image.csv"), "--output",
@@ -46,68 +33,73 @@ constexpr const char* kPoseMethods = "linear, linear-raw, dlt, ippe, sqpnp, epnp
 // --method is read as the flag is read: first, whatever else is missing (here the camera, the
 // files, even the required --points).
 TEST_F(PoseBenchOptions, AnUnknownPoseMethodNamesTheFlagBeforeAnythingElse) {
-  ExpectRefused(
+  ExpectRefusedLine(
       {"pose", "--method", "p3p"},
       std::string("--method: unknown method 'p3p' (fix: use one of ") + kPoseMethods + ")",
       "pose.json");
-  ExpectRefused(
+  ExpectRefusedLine(
       Pose({"--method", "p3p"}),
       std::string("--method: unknown method 'p3p' (fix: use one of ") + kPoseMethods + ")",
       "pose.json");
-  ExpectRefused(
+  ExpectRefusedLine(
       Pose({"--method", "IPPE", "--focal", "800"}),
       std::string("--method: unknown method 'IPPE' (fix: use one of ") + kPoseMethods + ")",
       "pose.json");
   // A known method: PoseFromFilesOptions::IsValid (the point options) comes next.
-  ExpectRefused(Pose({"--method", "sqpnp", "--focal", "0"}),
-                "--focal: expected a positive number, got '0' (fix: give the focal length in px)",
-                "pose.json");
+  ExpectRefusedLine(
+      Pose({"--method", "sqpnp", "--focal", "0"}),
+      "--focal: expected a positive number, got '0' (fix: give the focal length in px)",
+      "pose.json");
 }
 
 TEST_F(PoseBenchOptions, ChoicesNameTheFlagAndTheChoices) {
-  ExpectRefused(Pose({"--focal", "800", "--units", "ft"}),
-                "--units: unknown unit 'ft' (fix: use m or mm)", "pose.json");
-  ExpectRefused({"bench", "--setup", "eye-on-hand"},
-                "--setup: unknown setup 'eye-on-hand' (fix: use eye-in-hand (camera on the robot) "
-                "or eye-to-hand (camera fixed))",
-                "none");
+  ExpectRefusedLine(Pose({"--focal", "800", "--units", "ft"}),
+                    "--units: unknown unit 'ft' (fix: use m or mm)", "pose.json");
+  ExpectRefusedLine(
+      {"bench", "--setup", "eye-on-hand"},
+      "--setup: unknown setup 'eye-on-hand' (fix: use eye-in-hand (camera on the robot) "
+      "or eye-to-hand (camera fixed))",
+      "none");
   // A choice is taken as given; in a list, items are trimmed and each one is checked.
-  ExpectRefused({"bench", "--setup", " eye-in-hand"},
-                "--setup: unknown setup ' eye-in-hand' (fix: use eye-in-hand (camera on the robot) "
-                "or eye-to-hand (camera fixed))",
-                "none");
-  ExpectRefused(
+  ExpectRefusedLine(
+      {"bench", "--setup", " eye-in-hand"},
+      "--setup: unknown setup ' eye-in-hand' (fix: use eye-in-hand (camera on the robot) "
+      "or eye-to-hand (camera fixed))",
+      "none");
+  ExpectRefusedLine(
       {"simulate", "--setup", "eye-in-hand, eye-to-hand,sideways", "--output", Path("trials.csv")},
       "--setup: unknown setup 'sideways' (fix: use eye-in-hand or eye-to-hand (or both, "
       "comma separated))",
       "trials.csv");
-  ExpectRefused({"simulate", "--noise", "gaussian,laplace"},
-                "--noise: unknown noise kind 'laplace' (fix: use gaussian, uniform, systematic, "
-                "student-t3 or pnp)",
-                "none");
-  ExpectRefused({"simulate", "--covariance", "sampled"},
-                "--covariance: unknown covariance method 'sampled' (fix: use none, default, "
-                "linear, unscented or montecarlo)",
-                "none");
+  ExpectRefusedLine(
+      {"simulate", "--noise", "gaussian,laplace"},
+      "--noise: unknown noise kind 'laplace' (fix: use gaussian, uniform, systematic, "
+      "student-t3 or pnp)",
+      "none");
+  ExpectRefusedLine({"simulate", "--covariance", "sampled"},
+                    "--covariance: unknown covariance method 'sampled' (fix: use none, default, "
+                    "linear, unscented or montecarlo)",
+                    "none");
 }
 
 TEST_F(PoseBenchOptions, NumberListsNameTheFlagAndTheItem) {
-  ExpectRefused(Pose({"--focal", "800", "--principal-point", "640"}),
-                "--principal-point: expected 2 numbers, got 1 ('640') (fix: give 2 "
-                "comma-separated numbers CX,CY (px))",
-                "pose.json");
-  ExpectRefused(Pose({"--focal", "800", "--principal-point", "640,nan"}),
-                "--principal-point: 'nan' is not a finite number (in '640,nan') (fix: give 2 "
-                "comma-separated numbers CX,CY (px))",
-                "pose.json");
-  ExpectRefused({"simulate", "--robot-scale", "1,x"},
-                "--robot-scale: 'x' is not a finite number (in '1,x') (fix: give comma-separated "
-                "numbers (robot noise over the level, e.g. 1,5))",
-                "none");
-  ExpectRefused({"simulate", "--robot-scale", "1,inf"},
-                "--robot-scale: 'inf' is not a finite number (in '1,inf') (fix: give "
-                "comma-separated numbers (robot noise over the level, e.g. 1,5))",
-                "none");
+  ExpectRefusedLine(Pose({"--focal", "800", "--principal-point", "640"}),
+                    "--principal-point: expected 2 numbers, got 1 ('640') (fix: give 2 "
+                    "comma-separated numbers CX,CY (px))",
+                    "pose.json");
+  ExpectRefusedLine(Pose({"--focal", "800", "--principal-point", "640,nan"}),
+                    "--principal-point: 'nan' is not a finite number (in '640,nan') (fix: give 2 "
+                    "comma-separated numbers CX,CY (px))",
+                    "pose.json");
+  ExpectRefusedLine(
+      {"simulate", "--robot-scale", "1,x"},
+      "--robot-scale: 'x' is not a finite number (in '1,x') (fix: give comma-separated "
+      "numbers (robot noise over the level, e.g. 1,5))",
+      "none");
+  ExpectRefusedLine({"simulate", "--robot-scale", "1,inf"},
+                    "--robot-scale: 'inf' is not a finite number (in '1,inf') (fix: give "
+                    "comma-separated numbers (robot noise over the level, e.g. 1,5))",
+                    "none");
 }
 
 }  // namespace
