@@ -12,9 +12,10 @@
 //   --units, ...       m | mm                               io::LengthUnit (io/units.h)
 //   --euler            three axis letters, lowercase = extrinsic, uppercase = intrinsic
 //                      (geometry/euler.h)
-// Used by `hecal import` (--format, --units, --setup) and `hecal poses convert` (--to, --units,
-// --input-units, --euler); `hecal calibrate` (--setup with auto, --units, --euler), `hecal pose`
-// (--units), `hecal bench` and `hecal simulate` (--setup) read the same choices.
+// Used by `hecal calibrate` (--setup with auto, --units, --euler, --robust, --covariance),
+// `hecal import` (--format, --units, --setup), `hecal poses convert` (--to, --units,
+// --input-units, --euler), `hecal pose` (--units) and `hecal bench` (--setup); `hecal simulate`
+// reads its lists of choices with ParseChoiceList (list_flags.h), the same reading per item.
 #pragma once
 
 #include <CLI/CLI.hpp>
