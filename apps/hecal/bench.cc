@@ -10,7 +10,6 @@
 #include "bounds.h"
 #include "choice_flags.h"
 #include "cli.h"
-#include "hecal/core/options_check.h"
 #include "hecal/report/bench_file.h"
 #include "hecal/report/study_text.h"
 #include "list_flags.h"
@@ -27,8 +26,6 @@ struct BenchCommand {
 };
 
 void RunBench(const BenchCommand& command, const Io& io) {
-  std::string why;
-  if (!command.options.IsValid(&why)) throw OptionsError(why);
 #ifdef HECAL_HAVE_OPENCV_PEERS
   const study::BenchResult result = study::RunBench(command.options, jobs::OpenCvBenchPeer());
 #else

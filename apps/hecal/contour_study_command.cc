@@ -30,8 +30,7 @@ void RunStudy(StudyCommand command, const Io& io) {
   contour::ContourStudyOptions& o = command.options;
   if (!command.contour.empty()) o.target = io::ReadContourFile(command.contour);
   if (!command.covariance_plot.empty()) o.keep_samples = 1000;
-  std::string why;
-  if (!o.IsValid(&why)) throw OptionsError(why);
+  RequireValid(o);
   std::string plot = command.plot;
   if (plot.empty() && !command.output.empty()) {
     plot = std::filesystem::path(command.output).replace_extension(".svg").string();

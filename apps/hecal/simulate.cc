@@ -47,8 +47,7 @@ struct SimulateCommand {
 };
 
 void RunSimulate(const SimulateCommand& command, const Io& io) {
-  std::string why;
-  if (!command.options.IsValid(&why)) throw OptionsError(why);
+  RequireValid(command.options);  // before the output paths are checked
   io::CheckOutputs({{"--output", command.output}, {"--summary", command.summary}}, {});
   const study::StudyResult result = study::Simulate(command.options);
   std::vector<io::OutputFile> outputs;

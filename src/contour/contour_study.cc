@@ -172,8 +172,7 @@ void StudyMotionPose(StudyMotion motion, double value, Eigen::Matrix3d* rotation
 }
 
 std::vector<StudyStep> RunContourStudy(const ContourStudyOptions& options) {
-  std::string why;
-  if (!options.IsValid(&why)) throw OptionsError(why);
+  RequireValid(options);
   const ShapeSpace check(options.target);  // throws DegenerateError for collinear control points
   const ContourCamera camera = StudyCamera(options);
   constexpr RotationForm kForm = RotationForm::kZyx;

@@ -104,8 +104,7 @@ bool PointPoseOptions::IsValid(std::string* why) const {
 }
 
 PointPoseResult EstimatePoseFromFiles(const PointPoseOptions& options) {
-  std::string why;
-  if (!options.IsValid(&why)) throw OptionsError(why);
+  RequireValid(options);
   PointPoseResult result;
   pose::CameraModel camera;
   if (!options.intrinsics.empty()) {

@@ -208,8 +208,7 @@ BenchAccuracy MeasureAccuracy(const std::vector<BenchDataSet>& sets, const Bench
 }
 
 BenchResult RunBench(const BenchOptions& options, const std::optional<BenchPeer>& peer) {
-  std::string why;
-  if (!options.IsValid(&why)) throw OptionsError(why);
+  RequireValid(options);
   BenchResult result;
   result.options = options;
   for (int n : options.stations) {

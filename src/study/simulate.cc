@@ -164,8 +164,7 @@ StudyOptions MakeStudyOptions(const SimulateOptions& options) {
 }
 
 StudyResult Simulate(const SimulateOptions& options) {
-  std::string why;
-  if (!options.IsValid(&why)) throw OptionsError(why);
+  RequireValid(options);
   return RunStudy(MakeStudyOptions(options));
 }
 
