@@ -6,7 +6,6 @@
 // all or none (io/atomic_file.h, StagedFolder). Without the vision layer both refuse to run.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -19,6 +18,7 @@
 #include "hecal/contour/sequence.h"
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/io/delimited_text.h"
 #include "hecal/report/contour_track_file.h"
 #include "hecal/report/contour_track_text.h"
 // The jobs' options are plain structs, bound in every build; the jobs run with the vision layer.
@@ -44,8 +44,7 @@ enum class OutputKind { kNone, kCsv, kJson };
 
 OutputKind ParseOutputKind(const std::string& output) {
   if (output.empty()) return OutputKind::kNone;
-  std::string extension = fs::path(output).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = io::Lowercase(fs::path(output).extension().string());
   if (extension == ".csv") return OutputKind::kCsv;
   if (extension == ".json") return OutputKind::kJson;
   throw InputError("--output", 0, "unknown output format '" + output + "'",

@@ -1,20 +1,12 @@
 #include "closest_name.h"
 
 #include <algorithm>
-#include <cctype>
 #include <vector>
 
+#include "hecal/io/delimited_text.h"
+
 namespace hecal::io::internal {
-namespace {
-
-std::string Lowercase(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 size_t EditDistance(std::string_view a, std::string_view b) {
   std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);

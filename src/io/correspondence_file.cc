@@ -16,12 +16,6 @@ namespace {
 const std::vector<std::string> kPixelColumns = {"u1", "v1", "u2", "v2"};
 const std::vector<std::string> kBearingColumns = {"x1", "y1", "z1", "x2", "y2", "z2"};
 
-std::string Lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 }  // namespace
 
 CorrespondenceFile ParseCorrespondenceFile(std::string_view text, const std::string& source) {
@@ -38,7 +32,7 @@ CorrespondenceFile ParseCorrespondenceFile(std::string_view text, const std::str
       throw InputError(source, header_line, error, "write the header as plain CSV names");
     }
     for (std::size_t i = 0; i < fields.size(); ++i) {
-      const std::string name = Lower(Trim(FieldValue(fields[i])));
+      const std::string name = Lowercase(Trim(FieldValue(fields[i])));
       const bool known = name == "first" || name == "second" || name == "id" ||
                          std::count(kPixelColumns.begin(), kPixelColumns.end(), name) ||
                          std::count(kBearingColumns.begin(), kBearingColumns.end(), name);

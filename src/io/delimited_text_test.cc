@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -51,6 +52,22 @@ TEST(LineClassificationTest, BlankAndComment) {
   EXPECT_TRUE(IsComment("   #"));
   EXPECT_FALSE(IsComment("x # y"));
   EXPECT_EQ(CommentText("  #  euler: ZYX  "), "euler: ZYX");
+}
+
+// Every byte against the C library's tolower in the "C" locale (ASCII letters only); bytes
+// outside ASCII (UTF-8 of "É") are left as they are.
+TEST(LowercaseTest, LowersAsciiLettersOnly) {
+  std::string every;
+  for (int c = 1; c < 256; ++c) every += static_cast<char>(c);
+  const std::string lower = Lowercase(every);
+  ASSERT_EQ(lower.size(), every.size());
+  for (size_t i = 0; i < every.size(); ++i) {
+    const auto c = static_cast<unsigned char>(every[i]);
+    const int expected = c < 128 ? std::tolower(c) : c;
+    EXPECT_EQ(static_cast<unsigned char>(lower[i]), expected) << i;
+  }
+  EXPECT_EQ(Lowercase("X_MM.PNG \xc3\x89"), "x_mm.png \xc3\x89");
+  EXPECT_EQ(Lowercase(""), "");
 }
 
 TEST(SplitFieldsTest, CommaSeparatedFieldsAreTrimmed) {

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "hecal/core/error.h"
+#include "hecal/io/delimited_text.h"
 
 namespace hecal::io {
 
@@ -70,9 +71,7 @@ std::string Names(const std::vector<fs::path>& paths) {
 bool IsImageFile(const fs::path& path) {
   constexpr std::array<std::string_view, 6> kExtensions = {".png", ".jpg", ".jpeg",
                                                            ".bmp", ".tif", ".tiff"};
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = Lowercase(path.extension().string());
   return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
 }
 

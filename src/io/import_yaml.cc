@@ -4,6 +4,8 @@
 #include <cctype>
 #include <limits>
 
+#include "hecal/io/delimited_text.h"
+
 namespace hecal::io::import_internal {
 namespace {
 
@@ -69,9 +71,7 @@ Number ScalarNumber(const YAML::Node& node, const std::string& source, const std
          "write a plain number");
   }
   const std::string text = TrimCopy(node.Scalar());
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string lower = Lowercase(text);
   if (lower == ".nan") return Number{std::numeric_limits<double>::quiet_NaN(), 0.0};
   if (lower == ".inf" || lower == "+.inf") {
     return Number{std::numeric_limits<double>::infinity(), 0.0};

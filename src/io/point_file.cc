@@ -1,7 +1,6 @@
 // Point files: see point_file.h.
 #include "hecal/io/point_file.h"
 
-#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -12,16 +11,7 @@
 
 namespace hecal::io {
 
-namespace {
-
-std::string Lower(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 PointFile ReadPointFile(const std::string& path, std::span<const std::string_view> names,
                         bool lengths, LengthUnit unit, std::string_view what) {
@@ -55,7 +45,7 @@ PointFile ReadPointFile(const std::string& path, std::span<const std::string_vie
     if (column_count == 0) {  // the header
       std::optional<std::string> suffix;
       for (std::size_t c = 0; c < fields.size(); ++c) {
-        const std::string name = Lower(Trim(FieldValue(fields[c])));
+        const std::string name = Lowercase(Trim(FieldValue(fields[c])));
         int* slot = nullptr;
         std::string column_suffix;
         if (name == "id") {

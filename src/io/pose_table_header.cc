@@ -7,6 +7,7 @@
 
 #include "closest_name.h"
 #include "hecal/core/error.h"
+#include "hecal/io/delimited_text.h"
 
 namespace hecal::io::pose_table_internal {
 namespace {
@@ -93,13 +94,6 @@ std::string GroupColumnsText(Group group) {
     }
   }
   return text;
-}
-
-std::string Lowercase(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower;
 }
 
 // A likely intended column for an unknown name, or "".

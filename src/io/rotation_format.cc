@@ -1,17 +1,9 @@
 #include "hecal/io/rotation_format.h"
 
-#include <algorithm>
-#include <cctype>
+#include "hecal/io/delimited_text.h"
 
 namespace hecal::io {
 namespace {
-
-std::string Lowercase(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower;
-}
 
 RotationFormat EulerFormat(std::string_view sequence, std::string preset, bool degrees) {
   RotationFormat format;

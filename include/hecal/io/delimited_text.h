@@ -43,6 +43,8 @@ bool IsComment(std::string_view line);
 std::string_view CommentText(std::string_view line);
 
 std::string_view Trim(std::string_view text);
+// ASCII letters lowered; every other byte as it is (column names, keys, file extensions).
+std::string Lowercase(std::string_view text);
 
 enum class Separator { kComma, kWhitespace, kAny };
 // Comma when `first_line` contains a comma, else whitespace.
