@@ -6,10 +6,10 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "bounds.h"
+#include "choice_flags.h"
 #include "hecal/contour/pose_uncertainty.h"
 #include "hecal/contour/shape_pose.h"
 #include "hecal/core/error.h"
@@ -65,13 +65,11 @@ CLI::Option* AddNumber(CLI::App& command, const std::string& flag, double& value
 
 }  // namespace
 
-contour::RotationForm ParseRotationFlag(const std::string& text) {
-  const std::optional<contour::RotationForm> form = contour::ParseRotationForm(text);
-  if (!form) {
-    throw InputError("--rotation", 0, "unknown rotation form '" + text + "'",
-                     "use zyx (roll–pitch–yaw, the contour paper's choice) or zxz");
-  }
-  return *form;
+CLI::Option* AddRotationFlag(CLI::App& command, contour::RotationForm& form) {
+  return AddChoice<contour::RotationForm>(command, "--rotation", form, contour::ParseRotationForm,
+                                          "rotation form",
+                                          "zyx (roll–pitch–yaw, the contour paper's choice) or zxz",
+                                          "zyx (default; roll–pitch–yaw) or zxz");
 }
 
 void RegisterContourCommand(CLI::App& app, const Io& io) {
@@ -99,9 +97,7 @@ void RegisterContourCommand(CLI::App& app, const Io& io) {
   AddNumber(*pose, "--focal", o.camera.focal, "the focal length",
             "Focal length F (the unit of tx, ty)")
       ->required();
-  pose->add_option_function<std::string>(
-      "--rotation", [&o](const std::string& text) { o.form = ParseRotationFlag(text); },
-      "zyx (default; roll–pitch–yaw) or zxz");
+  AddRotationFlag(*pose, o.form);
   pose->add_flag("--json", command->json, "Print JSON");
   pose->add_option_function<std::string>(
       "--covariance",

@@ -6,6 +6,7 @@
 // jobs/contour_rendering.h).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
 
 #include "cli.h"
@@ -13,8 +14,8 @@
 
 namespace hecal::cli {
 
-// --rotation of `contour pose` and `contour track`: zyx or zxz (InputError naming the flag).
-contour::RotationForm ParseRotationFlag(const std::string& text);
+// --rotation of `contour pose` and `contour track`: zyx or zxz, a choice (choice_flags.h).
+CLI::Option* AddRotationFlag(CLI::App& command, contour::RotationForm& form);
 
 // Subcommands of `contour` defined in their own files.
 void AddContourStudyCommand(CLI::App& contour, const Io& io);

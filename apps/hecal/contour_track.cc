@@ -11,9 +11,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bounds.h"
+#include "choice_flags.h"
 #include "contour.h"
 #include "hecal/contour/sequence.h"
 #include "hecal/core/error.h"
@@ -136,18 +138,15 @@ void AddContourTrackCommand(CLI::App& contour, const Io& io) {
   track->add_option("--focal", o.camera.focal, "Focal length F (px)")->required();
   track->add_option("--z0", o.camera.z0, "Initial distance Z0 (the unit of the translation)")
       ->required();
-  track->add_option_function<std::string>(
-      "--pose-model",
-      [&track_options](const std::string& text) {
-        if (text == "auto") {
-          track_options.perspective.reset();
-        } else if (text == "weak" || text == "perspective") {
-          track_options.perspective = text == "perspective";
-        } else {
-          throw InputError("--pose-model", 0, "unknown pose model '" + text + "'",
-                           "use auto, weak or perspective");
-        }
+  AddChoice<std::optional<bool>>(
+      *track, "--pose-model", track_options.perspective,
+      [](std::string_view text) -> std::optional<std::optional<bool>> {
+        std::optional<std::optional<bool>> model;  // nullopt: no pose model of that name
+        if (text == "auto") model.emplace(std::nullopt);
+        if (text == "weak" || text == "perspective") model.emplace(text != "weak");
+        return model;
       },
+      "pose model", "auto, weak or perspective",
       "auto (default: perspective with --principal-point, else weak), weak (the "
       "contour paper's weak perspective) or perspective (its bias removed)");
   track->add_option_function<std::string>(
@@ -157,31 +156,19 @@ void AddContourTrackCommand(CLI::App& contour, const Io& io) {
         track_options.principal = Eigen::Vector2d(p[0], p[1]);
       },
       "CX,CY (px; default: centroid of the init control points)");
-  track->add_option_function<std::string>(
-      "--init-points",
-      [&track_options](const std::string& text) {
-        if (text != "control" && text != "curve") {
-          throw InputError(
-              "--init-points", 0, "unknown kind '" + text + "'",
-              "use control (B-spline control points) or curve (points on the contour)");
-        }
-        track_options.init_on_curve = text == "curve";
+  AddChoice<bool>(
+      *track, "--init-points", track_options.init_on_curve,
+      [](std::string_view text) -> std::optional<bool> {
+        if (text == "control" || text == "curve") return text == "curve";
+        return std::nullopt;
       },
+      "kind", "control (B-spline control points) or curve (points on the contour)",
       "control (default: B-spline control points) or curve (points on it)");
-  track->add_option_function<std::string>(
-      "--subspace",
-      [&o](const std::string& text) {
-        const std::optional<contour::ShapeSubspace> subspace = contour::ParseShapeSubspace(text);
-        if (!subspace) {
-          throw InputError("--subspace", 0, "unknown shape subspace '" + text + "'",
-                           "use full, similarity, translation-scale, planar-robot or translation");
-        }
-        o.tracker.subspace = *subspace;
-      },
+  AddChoice<contour::ShapeSubspace>(
+      *track, "--subspace", o.tracker.subspace, contour::ParseShapeSubspace, "shape subspace",
+      "full, similarity, translation-scale, planar-robot or translation",
       "full (default), similarity, translation-scale, planar-robot, translation");
-  track->add_option_function<std::string>(
-      "--rotation", [&o](const std::string& text) { o.form = ParseRotationFlag(text); },
-      "zyx (default; roll–pitch–yaw) or zxz");
+  AddRotationFlag(*track, o.form);
   track->add_option_function<double>(
       "--measurement-sigma", [&o](double sigma) { o.tracker.measurement_sigma = sigma; },
       "Edge-location σ (px; default: estimated per frame)");
