@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "bounds.h"
+#include "choice_flags.h"
 #include "contour.h"
 #include "hecal/contour/contour_study.h"
-#include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/contour_file.h"
@@ -67,18 +67,8 @@ void AddContourStudyCommand(CLI::App& contour, const Io& io) {
   CLI::App* study = contour.add_subcommand("study",
                                            "The contour paper's experiments: UT vs Monte Carlo "
                                            "along one motion (docs/contour.md#the-experiments)");
-  study
-      ->add_option_function<std::string>(
-          "--motion",
-          [&o](const std::string& text) {
-            const std::optional<contour::StudyMotion> motion = contour::ParseStudyMotion(text);
-            if (!motion) {
-              throw InputError("--motion", 0, "unknown motion '" + text + "'",
-                               "use one of tx, ty, tz, rx, ry, rz");
-            }
-            o.motion = *motion;
-          },
-          "tx|ty|tz|rx|ry|rz")
+  AddChoice<contour::StudyMotion>(*study, "--motion", o.motion, contour::ParseStudyMotion, "motion",
+                                  "one of tx, ty, tz, rx, ry, rz", "tx|ty|tz|rx|ry|rz")
       ->required();
   study->add_option("--from", o.from, "First value (mm or degrees)")->required();
   study->add_option("--to", o.to, "Last value (mm or degrees)")->required();
