@@ -10,6 +10,7 @@
 
 #include "cli_test_util.h"
 #include "testing/epipolar_scenes.h"
+#include "testing/pose_csv.h"
 
 namespace hecal::cli {
 namespace {
@@ -30,17 +31,7 @@ class CalibrateGlobal : public CliTest {
   // The scene as robot.csv, bearings.csv, pixels.csv and camera.yaml.
   void WriteScene(const testing::EpipolarScene& scene) {
     scene_ = scene;
-    std::ostringstream robot;
-    robot.precision(17);
-    robot << "id,x,y,z,qw,qx,qy,qz\n";
-    for (std::size_t i = 0; i < scene_.T_base_gripper.size(); ++i) {
-      const Pose& T = scene_.T_base_gripper[i];
-      const Eigen::Quaterniond q(T.linear());
-      robot << "s" << i << "," << T.translation().x() << "," << T.translation().y() << ","
-            << T.translation().z() << "," << q.w() << "," << q.x() << "," << q.y() << "," << q.z()
-            << "\n";
-    }
-    Write("robot.csv", robot.str());
+    Write("robot.csv", testing::PoseCsv(scene_.T_base_gripper));
     std::ostringstream bearings, pixels;
     bearings.precision(17);
     pixels.precision(17);

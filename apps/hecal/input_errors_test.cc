@@ -4,16 +4,15 @@
 // the options field, field_flags.h maps it) or the file, and writes no output file.
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <filesystem>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli_test_util.h"
 #include "field_flags.h"
+#include "testing/pose_csv.h"
 #include "testing/scene.h"
 
 namespace hecal::cli {
@@ -24,20 +23,6 @@ using cli_test::Outcome;
 
 const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
 
-// id, x_mm, y_mm, z_mm, then the Hamilton quaternion (README "Pose files").
-std::string PoseCsv(const std::vector<Pose>& poses) {
-  std::ostringstream csv;
-  csv.precision(17);
-  csv << "id,x_mm,y_mm,z_mm,qw,qx,qy,qz\n";
-  for (size_t i = 0; i < poses.size(); ++i) {
-    const Eigen::Quaterniond q(poses[i].linear());
-    const Eigen::Vector3d t = 1e3 * poses[i].translation();
-    csv << "s" << i << "," << t.x() << "," << t.y() << "," << t.z() << "," << q.w() << "," << q.x()
-        << "," << q.y() << "," << q.z() << "\n";
-  }
-  return csv.str();
-}
-
 class InputErrors : public cli_test::CliTest {
  protected:
   // Noise-free stations written as robot.csv / camera.csv.
@@ -46,8 +31,8 @@ class InputErrors : public cli_test::CliTest {
     testing::SceneOptions options;
     options.stations = stations;
     const testing::Scene scene = testing::MakeScene(options, rng);
-    Write("robot.csv", PoseCsv(scene.T_base_gripper));
-    Write("camera.csv", PoseCsv(scene.T_camera_target));
+    Write("robot.csv", testing::PoseCsv(scene.T_base_gripper, 1e3, "_mm"));
+    Write("camera.csv", testing::PoseCsv(scene.T_camera_target, 1e3, "_mm"));
   }
 
   std::vector<std::string> Calibrate(const std::vector<std::string>& extra) const {
