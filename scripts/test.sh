@@ -27,9 +27,9 @@
 # Before: 27.7 min wall on a clean clone, load ≈ 2. After: 22.6 min wall on a clean clone with
 # nothing else running (2,476 s user + 198 s system; the two builds about 18 min, then the unit
 # suite and the sanitized corpus side by side 4.4 min — the corpus takes 259 s there, sharing the
-# cores). Last measured: 22.8 min wall (2,496 s user + 202 s system) with 205 unit tests, the
-# test phase 4.2 min (the corpus 252 s; the slowest unit tests 44–51 s each: kuka2 real data,
-# image calibration, epipolar robot noise, the study).
+# cores). Last measured: 22.8 and 23.5 min wall in two runs (2,496 + 202 s and 2,563 + 210 s
+# user + system CPU) with 205 unit tests, the test phase 4.2 min (the corpus 250 s; the slowest
+# unit tests 44–51 s each: kuka2 real data, image calibration, epipolar robot noise, the study).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
