@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/image_monte_carlo.h"
+#include "hecal/estimation/model_check.h"
 
 namespace hecal::estimation {
 namespace {
@@ -63,31 +65,54 @@ std::vector<int> Indices(const std::vector<bool>& flags) {
   return indices;
 }
 
+// The robot noise's effect at the scene, √(σ_t² + (σ_r L)²) (header, step 4).
+double SceneEffect(const PoseSigma& sigma, double length_scale) {
+  return std::hypot(sigma.translation, sigma.rotation * length_scale);
+}
+
+// The largest |log(s_joint / s_pose)| their sampling error allows on `stations` stations,
+// 2/√(3n − 6); infinite when there are no degrees of freedom.
+double AgreementLimit(size_t stations) {
+  const double dof = 3.0 * static_cast<double>(stations) - 6.0;
+  return dof > 0.0 ? 2.0 / std::sqrt(dof) : std::numeric_limits<double>::infinity();
+}
+
+std::string Sigma(const PoseSigma& sigma) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g deg, %.3g mm", sigma.rotation * 180.0 / std::numbers::pi,
+                sigma.translation * 1e3);
+  return text;
+}
+
 }  // namespace
+
+bool CovarianceTakesPoseLevelRobotNoise(const PoseSigma& joint, const PoseSigma& pose_level,
+                                        size_t stations, double length_scale) {
+  const double a = SceneEffect(joint, length_scale), b = SceneEffect(pose_level, length_scale);
+  if (!(b > a)) return false;
+  return stations < kModelCheckMinStations || !(a > 0.0) ||
+         std::log(b / a) > AgreementLimit(stations);
+}
 
 std::string RobotNoiseAgreementWarning(const PoseSigma& joint, const PoseSigma& pose_level,
                                        size_t stations, double length_scale,
                                        const std::string& largest, double largest_deg) {
-  const double dof = 3.0 * static_cast<double>(stations) - 6.0;
-  if (dof <= 0.0) return {};
-  const double limit = 2.0 / std::sqrt(dof);
-  auto effect = [&](const PoseSigma& sigma) {
-    return std::hypot(sigma.translation, sigma.rotation * length_scale);
-  };
-  const double a = effect(joint), b = effect(pose_level);
+  const double limit = AgreementLimit(stations);
+  const double a = SceneEffect(joint, length_scale), b = SceneEffect(pose_level, length_scale);
   if (!(a > 0.0 && b > 0.0) || std::abs(std::log(a / b)) <= limit) return {};
   const double deg = 180.0 / std::numbers::pi;
-  char text[720];
+  char text[760];
   std::snprintf(
       text, sizeof text,
       "the robot noise estimated from the images (%.3g deg, %.3g mm: %.3g mm at %.3g m) "
       "disagrees with what the pose-level residuals imply (%.3g deg, %.3g mm: %.3g mm) by a "
       "factor %.2f, beyond their sampling error (%.2f with %zu stations); the covariance of X "
-      "rests on the image estimate. Likely cause: %s; the largest pose-level residual is station "
+      "rests on the larger, %s estimate. Likely cause: %s; the largest pose-level residual is "
+      "station "
       "%s (%.3g deg) (fix: check that station's robot pose and image, or give --robot-sigma)",
       joint.rotation * deg, joint.translation * 1e3, a * 1e3, length_scale,
       pose_level.rotation * deg, pose_level.translation * 1e3, b * 1e3, std::max(a / b, b / a),
-      std::exp(limit), stations,
+      std::exp(limit), stations, a < b ? "pose-level" : "image",
       a < b ? "a few stations dominate the pose-level residuals (a robot pose off by more than "
               "the noise is absorbed into that station's free robot pose, and the estimate "
               "collapses toward zero with the covariance)"
@@ -184,13 +209,38 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
     used_points.push_back(stations[static_cast<size_t>(i)].points);
   }
   const handeye::Problem used_problem = handeye::SubProblem(problem, used);
+  const double length_scale = handeye::LengthScale(used_problem);
+
+  // Step 5 (header): the robot noise the covariance rests on.
+  ReprojectionResult for_covariance = out.reprojection;
+  const PoseSigma& joint = out.reprojection.robot_sigma_covariance;
+  const PoseSigma& pose_level = out.pose_level.robot_sigma;
+  const PoseSigma larger{std::max(pose_level.rotation, joint.rotation),
+                         std::max(pose_level.translation, joint.translation)};
+  const bool take_pose_level =
+      out.reprojection.robot_sigma_estimated &&
+      CovarianceTakesPoseLevelRobotNoise(out.reprojection.robot_sigma, pose_level,
+                                         used_robot.size(), length_scale) &&
+      (larger.rotation > joint.rotation || larger.translation > joint.translation);
+  if (take_pose_level) {
+    ReprojectionOptions fixed = reprojection;
+    fixed.robot_sigma = larger;
+    fixed.estimate_robot_sigma = false;
+    fixed.pixel_sigma = out.reprojection.pixel_sigma;
+    if (options.refine_intrinsics) fixed.camera = out.reprojection.camera;
+    for_covariance.covariance =
+        RefineReprojection(used_robot, used_points, out.reprojection.X, out.reprojection.Z, fixed)
+            .covariance;
+    for_covariance.robot_sigma = fixed.robot_sigma;
+    for_covariance.robot_sigma_covariance = fixed.robot_sigma;
+  }
 
   CalibrationResult& result = out.result;
   result = out.pose_level;
   result.X = out.reprojection.X;
   result.Z = out.reprojection.Z;
   if (options.calibrate.covariance.method == CovarianceMethod::kMonteCarlo) {
-    result.covariance = ImageMonteCarloCovariance(used_robot, used_points, out.reprojection,
+    result.covariance = ImageMonteCarloCovariance(used_robot, used_points, for_covariance,
                                                   reprojection, options.calibrate.covariance);
     result.seed = options.calibrate.covariance.seed;
     if (std::string warning = FailedSamplesWarning(*result.covariance); !warning.empty()) {
@@ -198,7 +248,7 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
     }
   } else {
     CalibrationCovariance covariance;  // the reprojection problem's Gauss–Newton information
-    covariance.covariance = out.reprojection.covariance;
+    covariance.covariance = for_covariance.covariance;
     result.covariance = covariance;
   }
   if (out.reprojection.robot_sigma_estimated) {
@@ -207,17 +257,27 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
     std::erase_if(result.warnings, [](const std::string& warning) {
       return warning.starts_with("robot noise not given");
     });
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "robot noise not given (--robot-sigma): estimated with the pixel noise from the "
-                  "reprojection residuals as %.3g deg, %.3g mm per component",
-                  result.robot_sigma.rotation * 180.0 / std::numbers::pi,
-                  result.robot_sigma.translation * 1e3);
-    result.warnings.insert(result.warnings.begin(), text);
+    result.warnings.insert(result.warnings.begin(),
+                           "robot noise not given (--robot-sigma): estimated with the pixel noise "
+                           "from the reprojection residuals as " +
+                               Sigma(result.robot_sigma) + " per component");
+  }
+  if (take_pose_level) {
+    result.robot_sigma = for_covariance.robot_sigma;
+    if (used_robot.size() < kModelCheckMinStations) {
+      result.warnings.push_back(
+          "with " + std::to_string(used_robot.size()) +
+          " stations no check of the noise model is possible (it needs at least " +
+          std::to_string(kModelCheckMinStations) +
+          "): the covariance of X takes the larger of the two robot-noise estimates, " +
+          Sigma(result.robot_sigma) + " per component (from the images " +
+          Sigma(out.reprojection.robot_sigma) + ", from the pose-level residuals " +
+          Sigma(out.pose_level.robot_sigma) + ") (fix: add stations, or give --robot-sigma)");
+    }
   }
   const NoiseSpec known = NoiseSpec::FromSigmas(result.robot_sigma, result.camera_sigma);
-  const NoiseEstimate noise = EstimateNoise(LinearizeStations(used_problem, result.X, result.Z),
-                                            known, handeye::LengthScale(used_problem));
+  const NoiseEstimate noise =
+      EstimateNoise(LinearizeStations(used_problem, result.X, result.Z), known, length_scale);
   SetStationResiduals(used_problem, noise, &result);
   if (out.reprojection.robot_sigma_estimated) {
     const std::vector<int> used_index = Indices(used);
@@ -226,8 +286,8 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
       if (result.residuals[k].rotation > result.residuals[largest].rotation) largest = k;
     if (!result.residuals.empty()) {
       if (std::string warning = RobotNoiseAgreementWarning(
-              result.robot_sigma, out.pose_level.robot_sigma, used_index.size(),
-              handeye::LengthScale(used_problem),
+              out.reprojection.robot_sigma, out.pose_level.robot_sigma, used_index.size(),
+              length_scale,
               StationName(options.calibrate, static_cast<size_t>(used_index[largest])),
               result.residuals[largest].rotation * 180.0 / std::numbers::pi);
           !warning.empty()) {

@@ -1,8 +1,8 @@
 #include "hecal/estimation/station_covariance.h"
 
 #include <Eigen/Cholesky>
-#include <stdexcept>
 
+#include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
 
 namespace hecal::estimation {
@@ -74,9 +74,10 @@ Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, c
 Matrix6d WhiteningMatrix(const Matrix6d& covariance) {
   const Eigen::LLT<Matrix6d> llt(covariance);
   if (llt.info() != Eigen::Success || !(llt.matrixLLT().diagonal().array() > 0.0).all()) {
-    throw std::invalid_argument(
-        "station covariance is not positive definite: the noise model needs a non-zero rotation "
-        "and translation sigma");
+    throw DegenerateError(
+        "a station's noise: its covariance is not positive definite (a rotation or translation "
+        "sigma of zero, or one so far below the other that the two cannot be weighed together)",
+        "give --robot-sigma and --camera-sigma with a non-zero rotation and translation each");
   }
   return llt.matrixL().solve(Matrix6d::Identity());
 }

@@ -6,6 +6,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "hecal/core/error.h"
 #include "hecal/estimation/loop_residual.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/sim/noise.h"
@@ -141,8 +142,8 @@ TEST(WhiteningMatrix, InvertsTheCovarianceAndRejectsSingularOnes) {
   const Matrix6d W = WhiteningMatrix(sigma);
   EXPECT_LT((W.transpose() * W - sigma.inverse()).norm(), 1e-9 * sigma.inverse().norm());
   EXPECT_LT((W * sigma * W.transpose() - Matrix6d::Identity()).norm(), 1e-12);
-  EXPECT_THROW(WhiteningMatrix(Matrix6d::Zero()), std::invalid_argument);
-  EXPECT_THROW(WhiteningMatrix(PoseCovariance({0.01, 0.0})), std::invalid_argument);
+  EXPECT_THROW(WhiteningMatrix(Matrix6d::Zero()), DegenerateError);
+  EXPECT_THROW(WhiteningMatrix(PoseCovariance({0.01, 0.0})), DegenerateError);
 }
 
 }  // namespace

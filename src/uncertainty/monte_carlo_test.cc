@@ -101,7 +101,7 @@ TEST(MonteCarloTransform, RejectsBadArguments) {
   };
   EXPECT_THROW((MonteCarloTransform<VectorXd, VectorXd>(always_fails, VectorXd::Zero(2),
                                                         MatrixXd::Identity(2, 2), options)),
-               std::runtime_error);
+               DegenerateError);
 }
 
 TEST(StandardNormalSample, IsDeterministicPerSeedAndIndex) {

@@ -47,6 +47,18 @@
 //      model (isotropic PnP summary) being wrong; and the fix: check that station, or give
 //      --robot-sigma. Measured on real data: 8 chessboard images whose pose-level residuals are
 //      0.7° RMS (one station at 1.9°) gave a joint estimate of 0.026°.
+//   5. The robot noise the covariance rests on. The joint estimate is the better one when it can
+//      be trusted (it sees each image's pose uncertainty), but a collapsed joint estimate makes
+//      the covariance of X far too small. So the covariance takes the larger of the two — each
+//      component the larger of the pose-level sigma and the joint posterior-mean sigma — when the
+//      pose-level effect is the larger and either (a) the two disagree (step 4), or (b) fewer than
+//      kModelCheckMinStations stations are used, where no check of the noise model is possible
+//      (model_check.h) and a low joint estimate cannot be told from a collapsed one — and a
+//      pose-level component exceeds the joint posterior mean's (else nothing changes). The
+//      covariance is then the Gauss–Newton one of a re-solve with that robot sigma given (and
+//      the pixel sigma fixed at step 2's; its Monte Carlo likewise), X and Z stay step 2's, the
+//      result's robot_sigma is the one the covariance used, and a warning says so. When the joint
+//      estimate is the larger, it is kept.
 #pragma once
 
 #include <string>
@@ -94,6 +106,11 @@ struct ImageCalibrationResult {
 std::string RobotNoiseAgreementWarning(const PoseSigma& joint, const PoseSigma& pose_level,
                                        size_t stations, double length_scale,
                                        const std::string& largest, double largest_deg);
+
+// Step 5 above: whether the covariance takes the pose-level robot noise (the larger) instead of
+// the joint estimate `joint`, on `stations` used stations at length scale L (metres).
+bool CovarianceTakesPoseLevelRobotNoise(const PoseSigma& joint, const PoseSigma& pose_level,
+                                        size_t stations, double length_scale);
 
 // Throws InputError when !options.IsValid, and what Calibrate and RefineReprojection throw
 // (DegenerateError, InputError).

@@ -21,7 +21,7 @@
 namespace hecal::estimation {
 
 // `estimate`: RefineReprojection(T_base_gripper, images, ..., options)'s result. Uses
-// covariance.samples, .seed and .threads. Throws std::runtime_error when fewer than 2 samples
+// covariance.samples, .seed and .threads. Throws DegenerateError when fewer than 2 samples
 // succeed.
 CalibrationCovariance ImageMonteCarloCovariance(const std::vector<Pose>& T_base_gripper,
                                                 const std::vector<ImagePoints>& images,

@@ -83,7 +83,8 @@ Matrix6d StationCovariance(handeye::Setup setup, const Pose& A, const Pose& B, c
                            const PoseSigma& robot, const PoseSigma& camera);
 
 // W = L⁻¹ with Σ = L Lᵀ (Cholesky), so |W r|² = rᵀ Σ⁻¹ r and W r has unit covariance.
-// Throws std::invalid_argument when Σ is not positive definite (e.g. every σ zero).
+// Throws DegenerateError when Σ is not positive definite (e.g. a σ of zero): the noise model the
+// data would be weighed with.
 Matrix6d WhiteningMatrix(const Matrix6d& covariance);
 
 }  // namespace hecal::estimation

@@ -64,8 +64,8 @@ void SampleStatistics(const Eigen::MatrixXd& deviations, Eigen::MatrixXd* covari
 // own inputs (e.g. a diagonal noise model too large for a dense covariance): sample(k) should
 // use StandardNormalSample(options.seed, k, n) so that the result does not depend on the number
 // of threads. `reference` (the unperturbed output) starts the mean and screens non-finite
-// results. Throws hecal::InputError when !options.IsValid, std::runtime_error when fewer than 2
-// samples succeed.
+// results. Throws hecal::InputError when !options.IsValid, hecal::DegenerateError when fewer than
+// 2 samples succeed.
 template <class Out, class Sample>
 MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& reference,
                                          const MonteCarloOptions& options) {
@@ -100,8 +100,12 @@ MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& refere
   }
   moments.samples = static_cast<int>(good.size());
   if (moments.samples < 2) {
-    throw std::runtime_error("Monte Carlo: fewer than 2 samples succeeded (" +
-                             moments.first_failure + ")");
+    throw DegenerateError("the spread of the estimate by Monte Carlo: " +
+                              std::to_string(moments.samples) + " of " + std::to_string(count) +
+                              " samples could be solved (first failure: " +
+                              moments.first_failure + ")",
+                          "lower the noise the samples are drawn with, or use a linear or "
+                          "unscented covariance");
   }
   const std::vector<double> weights(good.size(), 1.0 / static_cast<double>(good.size()));
   moments.mean = WeightedMean<Out>(good, weights, reference);
@@ -114,7 +118,7 @@ MonteCarloMoments<Out> MonteCarloSamples(const Sample& sample, const Out& refere
 }
 
 // Throws hecal::InputError for samples < 2, std::invalid_argument for a covariance of the wrong
-// size, and std::runtime_error when fewer than 2 samples succeed or f(x̄) itself fails.
+// size, DegenerateError when fewer than 2 samples succeed, and what f(x̄) itself throws.
 template <class In, class Out, class F>
 MonteCarloMoments<Out> MonteCarloTransform(const F& f, const In& mean,
                                            const Eigen::MatrixXd& covariance,
