@@ -89,6 +89,34 @@ TEST_F(CliTest, ContourRenderThenTrackRecoversTheMotion) {
   EXPECT_NE(tracked.out.find("tracked"), std::string::npos);
 }
 
+// A contour with sharp corners — each corner's control point given three times, the B-spline's
+// way to a cusp, where the curve has no normal — renders and tracks: the corners give no edge
+// search, the sides do, and the motion is recovered as with a smooth contour.
+TEST_F(CliTest, ContourWithCornersTracks) {
+  Write("corners.csv",
+        "x,y\n-150,-100\n-150,-100\n-150,-100\n150,-100\n150,-100\n150,-100\n"
+        "150,100\n150,100\n150,100\n-150,100\n-150,100\n-150,100\n");
+  const Outcome rendered =
+      Hecal({"contour", "render", "--output", Path("seq"), "--frames", "4",
+             "--to=" + std::string(kSmallMotion), "--focal", "3000", "--z0", "5000", "--size",
+             "320,240", "--noise", "3", "--contour", Path("corners.csv")});
+  ASSERT_EQ(rendered.code, 0) << rendered.err;
+  const Outcome tracked =
+      Hecal({"contour", "track", "--images", Path("seq"), "--init", Path("seq/init.csv"), "--focal",
+             "3000", "--z0", "5000", "--output", Path("track.csv")});
+  ASSERT_EQ(tracked.code, 0) << tracked.err;
+  const csv_test::Csv truth = csv_test::ReadCsv(Path("seq/truth.csv"));
+  const csv_test::Csv track = csv_test::ReadCsv(Path("track.csv"));
+  ASSERT_EQ(track.rows.size(), 4u);
+  for (std::size_t t = 0; t < 4; ++t) {
+    EXPECT_EQ(track.Text(t, "status"), "tracked") << t;
+    EXPECT_NEAR(track.Number(t, "tx"), truth.Number(t, "tx"), 4 * track.Number(t, "sd_tx") + 0.5)
+        << t;
+    EXPECT_NEAR(track.Number(t, "ty"), truth.Number(t, "ty"), 4 * track.Number(t, "sd_ty") + 0.5)
+        << t;
+  }
+}
+
 // With the principal point (the render's image centre) the pose model is perspective
 // (perspective_pose.h): the weak-perspective bias is gone, and every pose component is within
 // 3.5 of its own UT σ of the true motion (Rx, Ry and Tz, which the paper shows is correlated with

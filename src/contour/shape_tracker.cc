@@ -120,6 +120,7 @@ ShapeTracker::Pass ShapeTracker::Measure(const GrayImage& image, const Eigen::Ve
   for (Eigen::Index j = 0; j < parameters.size(); ++j) {
     const double s = parameters(j);
     const Eigen::Vector2d normal = curve.Normal(s);
+    if (normal.isZero()) continue;  // a cusp (a corner of tripled control points): no normal
     ++pass.searched;
     const std::optional<EdgeHit> hit = SearchEdge(image, curve.Point(s), normal, search_);
     if (!hit) continue;
