@@ -184,6 +184,15 @@ inline constexpr double kStableFlagsFraction = 1e-3;
 inline constexpr double kThreeSigmaFalseAlarm = 1.0 - 0.99730020393673979;
 // The richer models above: fewest stations.
 inline constexpr size_t kAnisotropicMinStations = 8;
+// Model choice at scale: above this many stations the isotropic and the richer models are
+// fitted and compared (above) on this many stations evenly spread over the recording order
+// (station ⌊j n / 2000⌋, j = 0 … 1999: the whole trajectory), and only the chosen model is
+// fitted on all stations, started from the subsample's REML point; likelihood_ratio is then
+// the subsample's. 2000 stations give the test 11988 residual degrees of freedom (a σ error of
+// ≈ 1% per variance), and the choice costs the same at any n above it, so the noise estimate
+// is one O(n) fit instead of four. Every fit costs O(n · groups²) with per station only
+// fixed-size 6×6 and 6×12 products (noise_estimation.cc, VarianceStep).
+inline constexpr size_t kModelChoiceStations = 2000;
 
 // One station linearised at (X, Z).
 struct StationLinearization {
