@@ -116,7 +116,13 @@
 // richer model was chosen; robot() and camera() then report the separate rotation sigmas,
 // camera_excess() the excess. Not used when the camera noise is given (--camera-sigma). Cost: up to
 // three more REML fits per estimate (`hecal simulate --stations 2000 --trials 2 --method ml
-// --estimate-noise`: 4.3 s before, 7.2 s with them, one thread).
+// --estimate-noise`: 4.3 s before, 7.2 s with them, one thread), on at most
+// kModelChoiceStations stations (below).
+// Infeasible variances: trial steps and grid points whose variances leave a station's Σ_i not
+// positive definite (numerically) count as ℓ_R = −∞; a richer model whose REML point is such a
+// point is not a candidate, a posterior mean that is one is replaced by the REML point, and
+// when the chosen model's own estimate is one EstimateNoise throws DegenerateError naming the
+// station noise model (the data do not determine a variance, e.g. poses of a wrong target).
 //
 // Heavy tails (student_t.h; fitted by ml, ml.h, on top of the model chosen here). The models
 // above are Gaussian. Heavy-tailed noise (Student-t(3) per pose component: README "Uncertainty",
