@@ -8,6 +8,9 @@
 # sanitizers is: cmake -S . -B build-asan -DHECAL_SANITIZE=ON && cmake --build build-asan -j2 &&
 # ctest --test-dir build-asan -L unit
 # Slow studies carry the label "slow" and run with: ctest --test-dir build -L slow
+# Before a merge that touches a solver or the noise estimation also run the slow scale check
+# (apps/hecal/scale_slow_test.cc; CPU limits at 10⁴ and 10⁵ stations, ~10 min for every method):
+# ctest --test-dir build -L slow -R cli_scale_slow_test (needs the hecal target built).
 # Installs the Debian packages it needs first (scripts/install-deps.sh, apt-get only).
 #
 # Where the time goes (2 cores, no compiler cache; CPU = user + sys, which the machine's other

@@ -45,12 +45,32 @@ bool IsRotation(int k) {
 // Weighted linear re-fit over the included stations: N⁻¹, δ = N⁻¹ Σ Jᵀ Σ⁻¹ r, and the
 // restricted (REML) log-likelihood of the variances,
 //   ℓ_R(θ) = −½ (Σ_i log det Σ_i + log det N + Σ_i r_iᵀ Σ_i⁻¹ r_i − bᵀ N⁻¹ b),  b = Σ Jᵀ Σ⁻¹ r.
+// Variances θ that leave some station's Σ_i not positive definite (numerically) are outside the
+// parameter space: `feasible` is false and ℓ_R = −∞, so a grid point or a trial step there loses.
 struct Refit {
+  bool feasible = true;
   std::vector<Matrix6d> inverse_covariance;
   Matrix12d N_inverse;
   Vector12d delta;
   double log_likelihood = 0.0;
 };
+
+// Σ⁻¹ = L⁻ᵀ L⁻¹ from Σ = L Lᵀ, L⁻¹ by forward substitution: coefficient loops of fixed size
+// (a solve against the identity takes Eigen's blocked triangular-matrix path, the costliest part
+// of a re-fit at 6×6).
+template <typename Lower>
+Matrix6d InverseFromCholesky(const Lower& L) {
+  Matrix6d L_inverse = Matrix6d::Zero();
+  for (int c = 0; c < 6; ++c) {
+    L_inverse(c, c) = 1.0 / L(c, c);
+    for (int r = c + 1; r < 6; ++r) {
+      double sum = 0.0;
+      for (int k = c; k < r; ++k) sum += L(r, k) * L_inverse(k, c);
+      L_inverse(r, c) = -sum / L(r, r);
+    }
+  }
+  return L_inverse.transpose().lazyProduct(L_inverse);
+}
 
 Refit LinearRefit(const std::vector<StationLinearization>& stations,
                   const std::vector<bool>& included, const NoiseVariances& theta) {
@@ -62,15 +82,15 @@ Refit LinearRefit(const std::vector<StationLinearization>& stations,
   for (size_t i = 0; i < stations.size(); ++i) {
     const Eigen::LLT<Matrix6d> llt(CombineComponents(stations[i].components, theta));
     if (llt.info() != Eigen::Success) {
-      throw std::invalid_argument(
-          "station covariance is not positive definite: the noise model needs a non-zero "
-          "rotation and translation sigma");
+      refit.feasible = false;
+      refit.log_likelihood = -std::numeric_limits<double>::infinity();
+      return refit;
     }
-    refit.inverse_covariance.push_back(llt.solve(Matrix6d::Identity()));
+    refit.inverse_covariance.push_back(InverseFromCholesky(llt.matrixL()));
     if (!included[i]) continue;
     const Matrix6d& W = refit.inverse_covariance[i];
-    const Eigen::Matrix<double, 12, 6> JtW = stations[i].jacobian.transpose() * W;
-    N.noalias() += JtW * stations[i].jacobian;
+    const Eigen::Matrix<double, 12, 6> JtW = stations[i].jacobian.transpose().lazyProduct(W);
+    N.noalias() += JtW.lazyProduct(stations[i].jacobian);
     b.noalias() += JtW * stations[i].residual;
     log_det_sigma += 2.0 * llt.matrixLLT().diagonal().array().log().sum();
     quadratic += stations[i].residual.dot(W * stations[i].residual);
@@ -85,6 +105,21 @@ Refit LinearRefit(const std::vector<StationLinearization>& stations,
     refit.N_inverse = N.completeOrthogonalDecomposition().pseudoInverse();
     refit.delta = refit.N_inverse * b;
     refit.log_likelihood = -std::numeric_limits<double>::infinity();
+  }
+  return refit;
+}
+
+// LinearRefit where the variances must be feasible: variances estimated from the data that
+// still leave a station's covariance singular mean the data cannot support the noise model.
+Refit FeasibleRefit(const std::vector<StationLinearization>& stations,
+                    const std::vector<bool>& included, const NoiseVariances& theta) {
+  Refit refit = LinearRefit(stations, included, theta);
+  if (!refit.feasible) {
+    throw DegenerateError(
+        "the station noise model: the rotation and translation variances leave a station's "
+        "6×6 pose-loop covariance singular (a variance the residuals do not determine)",
+        "give the robot and camera sigmas (--robot-sigma, --camera-sigma) instead of "
+        "estimating them, or check that the poses belong to this target and robot");
   }
   return refit;
 }
@@ -142,49 +177,56 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
                             const NoiseVariances& theta, double length_scale,
                             std::array<double, kMaxGroups>* dof = nullptr) {
   const int G = spec.NumGroups();
-  const Refit refit = LinearRefit(stations, included, theta);
+  const Refit refit = FeasibleRefit(stations, included, theta);
   const Matrix12d& Ni = refit.N_inverse;
   // Index G is the known part Q_0 = Σ_{known k} θ_k Q_k.
   const int M = G + 1;
   double q[kMaxGroups + 1] = {};
   double trace_WQ[kMaxGroups + 1] = {};
   double trace_WQWQ[kMaxGroups + 1][kMaxGroups + 1] = {};
+  double trace_NiCross[kMaxGroups + 1][kMaxGroups + 1] = {};
   Matrix12d H[kMaxGroups + 1];
-  Matrix12d cross[kMaxGroups + 1][kMaxGroups + 1];
-  for (int g = 0; g < M; ++g) {
-    H[g].setZero();
-    for (int h = 0; h < M; ++h) cross[g][h].setZero();
-  }
+  for (int g = 0; g < M; ++g) H[g].setZero();
+  // Per station only 6×6 and 6×12 products of fixed size (lazyProduct: Eigen's coefficient-based
+  // kernel, not the general GEMM path), O(M²) 6×6 work and O(M) 12×12 outer products:
+  //   tr(N⁻¹ JᵀWQ_gWQ_hWJ) = tr(WQ_gWQ_h · WJN⁻¹Jᵀ), so the cross term needs no 12×12 sum.
   for (size_t i = 0; i < stations.size(); ++i) {
     if (!included[i]) continue;
     const StationLinearization& s = stations[i];
     const Matrix6d& W = refit.inverse_covariance[i];
     const Vector6d r_hat = s.residual - s.jacobian * refit.delta;
-    Matrix6d WQ[kMaxGroups + 1];
-    for (int g = 0; g < M; ++g) {
-      Matrix6d Q = Matrix6d::Zero();
-      for (int k = 0; k < kNumNoiseComponents; ++k) {
-        if (g < G && spec.group[k] == g) Q += s.components[k];
-        if (g == G && spec.group[k] < 0) Q += theta[k] * s.components[k];
-      }
-      WQ[g] = W * Q;
+    const Eigen::Matrix<double, 6, 12> WJ = W.lazyProduct(s.jacobian);
+    const Eigen::Matrix<double, 6, 12> WJNi = WJ.lazyProduct(Ni);
+    const Matrix6d leverage = WJNi.lazyProduct(s.jacobian.transpose());  // W J N⁻¹ Jᵀ
+    const Vector6d Wr = W * r_hat;
+    Matrix6d Q[kMaxGroups + 1], WQ[kMaxGroups + 1];
+    for (int g = 0; g < M; ++g) Q[g].setZero();
+    for (int k = 0; k < kNumNoiseComponents; ++k) {
+      if (spec.group[k] >= 0)
+        Q[spec.group[k]] += s.components[k];
+      else
+        Q[G] += theta[k] * s.components[k];
     }
-    const Eigen::Matrix<double, 6, 12> WJ = W * s.jacobian;
+    for (int g = 0; g < M; ++g) WQ[g] = W.lazyProduct(Q[g]);
     for (int g = 0; g < M; ++g) {
-      const Matrix6d WQW = WQ[g] * W;
-      q[g] += r_hat.dot(WQW * r_hat);
+      q[g] += Wr.dot(Q[g] * Wr);
       trace_WQ[g] += WQ[g].trace();
-      H[g].noalias() += s.jacobian.transpose() * WQW * s.jacobian;
+      const Eigen::Matrix<double, 6, 12> QWJ = Q[g].lazyProduct(WJ);
+      H[g].noalias() += WJ.transpose().lazyProduct(QWJ);
       for (int h = g; h < M; ++h) {
-        trace_WQWQ[g][h] += (WQ[g] * WQ[h]).trace();
-        cross[g][h].noalias() += s.jacobian.transpose() * (WQ[g] * WQ[h]) * WJ;
+        const Matrix6d WQWQ = WQ[g].lazyProduct(WQ[h]);
+        trace_WQWQ[g][h] += WQWQ.trace();
+        trace_NiCross[g][h] += WQWQ.cwiseProduct(leverage.transpose()).sum();
       }
     }
   }
   // tr(P Q_g P Q_h) = tr(WQ_gWQ_h) − 2 tr(N⁻¹ JᵀWQ_gWQ_hWJ) + tr(N⁻¹H_g N⁻¹H_h).
+  Matrix12d NiH[kMaxGroups + 1];
+  for (int g = 0; g < M; ++g) NiH[g] = Ni * H[g];
   auto trace_PQPQ = [&](int g, int h) {
     const int a = std::min(g, h), b = std::max(g, h);
-    return trace_WQWQ[a][b] - 2.0 * (Ni * cross[a][b]).trace() + (Ni * H[g] * Ni * H[h]).trace();
+    return trace_WQWQ[a][b] - 2.0 * trace_NiCross[a][b] +
+           NiH[g].cwiseProduct(NiH[h].transpose()).sum();
   };
   using GroupMatrix = Eigen::Matrix<double, kMaxGroups, kMaxGroups>;
   using GroupVector = Eigen::Matrix<double, kMaxGroups, 1>;
@@ -216,7 +258,7 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
     double value = solution(g);
     if (!std::isfinite(value)) {
       // Förstner's ratio update: positive whenever the residual energy is.
-      const double redundancy = trace_WQ[g] - (Ni * H[g]).trace();
+      const double redundancy = trace_WQ[g] - NiH[g].trace();
       value = redundancy > 0.0 ? theta[first] * q[g] / redundancy : theta[first];
     }
     // A non-positive solution means the maximum is on the boundary θ_g = 0: approach it by at
@@ -265,11 +307,8 @@ GridIntegral IntegrateOnGrid(const std::vector<StationLinearization>& stations,
       for (int k = 0; k < kNumNoiseComponents; ++k)
         if (spec.group[k] == g) theta[k] = value;
     }
-    try {
-      log_weight[p] = LinearRefit(stations, included, theta).log_likelihood + log_measure;
-    } catch (const std::invalid_argument&) {  // a grid corner too ill-conditioned to whiten
-      log_weight[p] = -std::numeric_limits<double>::infinity();
-    }
+    // −∞ at a grid corner too ill-conditioned to whiten (LinearRefit).
+    log_weight[p] = LinearRefit(stations, included, theta).log_likelihood + log_measure;
     if (std::isfinite(log_weight[p])) max_log_weight = std::max(max_log_weight, log_weight[p]);
   }
   GridIntegral integral;
@@ -382,7 +421,7 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
                                       const NoiseVariances& theta,
                                       const StationTestOptions& options) {
   RequireValid(options);
-  const Refit refit = LinearRefit(stations, included, theta);
+  const Refit refit = FeasibleRefit(stations, included, theta);
   std::vector<StationTest> tests(stations.size());
   std::vector<Vector6d> r_hat(stations.size());
   double energy = 0.0;  // Ω (header)
@@ -443,10 +482,15 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
 
 std::vector<StationLinearization> LinearizeStations(const handeye::Problem& problem, const Pose& X,
                                                     const Pose& Z) {
-  std::vector<StationLinearization> stations(problem.A.size());
+  // Appended, not sized up front: a sized vector value-initialises (zeroes) its 2.3 kB per
+  // station first, a memset that was 16% of `calibrate --method ml` at 10⁵ stations (perf).
+  std::vector<StationLinearization> stations;
+  stations.reserve(problem.A.size());
   for (size_t i = 0; i < problem.A.size(); ++i) {
-    stations[i].residual = LoopResidual(problem.A[i], problem.B[i], X, Z, &stations[i].jacobian);
-    stations[i].components = StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], X);
+    Matrix6x12d jacobian;
+    const Vector6d residual = LoopResidual(problem.A[i], problem.B[i], X, Z, &jacobian);
+    stations.push_back(
+        {residual, jacobian, StationNoiseComponents(problem.setup, problem.A[i], problem.B[i], X)});
   }
   return stations;
 }
@@ -563,7 +607,11 @@ NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations
       if (dof != nullptr)
         VarianceStep(stations, included, spec, estimate.variances, length_scale, dof);
       if (spec.posterior_mean && n <= kPosteriorMaxStations) {
-        estimate.variances = PosteriorMean(stations, included, spec, estimate.reml_variances);
+        // The grid's mean σ per group need not be a feasible point itself (each group's mean
+        // lies within its grid, the combination not necessarily): keep the REML point then.
+        const NoiseVariances posterior =
+            PosteriorMean(stations, included, spec, estimate.reml_variances);
+        if (LinearRefit(stations, included, posterior).feasible) estimate.variances = posterior;
       }
     }
     estimate.stations = TestStations(stations, included, estimate.variances);
@@ -582,39 +630,17 @@ NoiseEstimate EstimateOneModel(const std::vector<StationLinearization>& stations
   return estimate;
 }
 
-}  // namespace
+// The isotropic model and the richer ones (header, "Richer noise models") fitted on `stations`,
+// and the one the likelihood-ratio test and Akaike's score choose, with its spec.
+struct ModelChoice {
+  NoiseEstimate estimate;
+  NoiseSpec spec;
+};
 
-NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
-                            const NoiseSpec& spec, double length_scale) {
-  const size_t n = stations.size();
-  if (n < 3) {
-    throw DegenerateError("the noise model from fewer than 3 stations",
-                          "record at least 3 stations");
-  }
-  if (spec.NumGroups() > kMaxGroups) {
-    throw std::invalid_argument("EstimateNoise supports at most four variance groups");
-  }
-  NoiseSpec isotropic = spec;
-  isotropic.richer = false;
-  if (spec.richer) {
-    for (int k : {kCameraTiltExcess, kCameraDepthExcess}) {
-      isotropic.group[k] = -1;
-      isotropic.variances[k] = 0.0;
-    }
-  }
-  // A starting value from a richer model (ml alternates noise and pose estimates) may differ
-  // within a group; start each group at its first member's value.
-  for (int g = 0; g < isotropic.NumGroups(); ++g) {
-    int first = -1;
-    for (int k = 0; k < kNumNoiseComponents; ++k) {
-      if (isotropic.group[k] != g) continue;
-      if (first < 0) first = k;
-      isotropic.variances[k] = isotropic.variances[first];
-    }
-  }
+ModelChoice ChooseModel(const std::vector<StationLinearization>& stations,
+                        const NoiseSpec& isotropic, double length_scale) {
   std::vector<bool> included;
   NoiseEstimate estimate = EstimateOneModel(stations, isotropic, length_scale, &included);
-  if (!spec.richer || n < kAnisotropicMinStations) return estimate;
   // The richer models (header), started from the isotropic REML point: the camera's tilt and
   // depth excess; with both sides estimated also the robot's rotation variance apart from the
   // camera's, alone and with the excess.
@@ -647,12 +673,17 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
   const double isotropic_likelihood =
       LinearRefit(stations, included, estimate.reml_variances).log_likelihood;
   NoiseEstimate best = estimate;
+  NoiseSpec best_spec = isotropic;
   double best_score = isotropic_likelihood;
   for (const Candidate& candidate : candidates) {
     std::vector<bool> rich_included;
     std::array<double, kMaxGroups> dof{};
-    NoiseEstimate fit =
-        EstimateOneModel(stations, candidate.spec, length_scale, &rich_included, &dof);
+    NoiseEstimate fit;
+    try {
+      fit = EstimateOneModel(stations, candidate.spec, length_scale, &rich_included, &dof);
+    } catch (const DegenerateError&) {
+      continue;  // the data cannot support this model's variances: not a candidate
+    }
     // Groups 0 … G − 1 are the isotropic model's: none may be left undetermined (header).
     if (!std::all_of(dof.begin(), dof.begin() + G, [](double v) { return v > kMinGroupDof; }))
       continue;
@@ -667,10 +698,64 @@ NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
       best.likelihood_ratio = ratio;
       best.iterations += estimate.iterations;
       best_score = score;
+      best_spec = candidate.spec;
     }
   }
   if (!best.richer) best.likelihood_ratio = estimate.likelihood_ratio;
-  return best;
+  return {best, best_spec};
+}
+
+}  // namespace
+
+NoiseEstimate EstimateNoise(const std::vector<StationLinearization>& stations,
+                            const NoiseSpec& spec, double length_scale) {
+  const size_t n = stations.size();
+  if (n < 3) {
+    throw DegenerateError("the noise model from fewer than 3 stations",
+                          "record at least 3 stations");
+  }
+  if (spec.NumGroups() > kMaxGroups) {
+    throw std::invalid_argument("EstimateNoise supports at most four variance groups");
+  }
+  NoiseSpec isotropic = spec;
+  isotropic.richer = false;
+  if (spec.richer) {
+    for (int k : {kCameraTiltExcess, kCameraDepthExcess}) {
+      isotropic.group[k] = -1;
+      isotropic.variances[k] = 0.0;
+    }
+  }
+  // A starting value from a richer model (ml alternates noise and pose estimates) may differ
+  // within a group; start each group at its first member's value.
+  for (int g = 0; g < isotropic.NumGroups(); ++g) {
+    int first = -1;
+    for (int k = 0; k < kNumNoiseComponents; ++k) {
+      if (isotropic.group[k] != g) continue;
+      if (first < 0) first = k;
+      isotropic.variances[k] = isotropic.variances[first];
+    }
+  }
+  if (!spec.richer || n < kAnisotropicMinStations) {
+    std::vector<bool> included;
+    return EstimateOneModel(stations, isotropic, length_scale, &included);
+  }
+  if (n <= kModelChoiceStations) return ChooseModel(stations, isotropic, length_scale).estimate;
+  // The model chosen on kModelChoiceStations stations evenly spread over the recording (the
+  // whole trajectory, header "Model choice at scale"), fitted on all from the subsample's REML
+  // point: one fit of O(n) instead of four.
+  std::vector<StationLinearization> subsample;
+  subsample.reserve(kModelChoiceStations);
+  for (size_t j = 0; j < kModelChoiceStations; ++j)
+    subsample.push_back(stations[j * n / kModelChoiceStations]);
+  const ModelChoice choice = ChooseModel(subsample, isotropic, length_scale);
+  NoiseSpec chosen = choice.spec;
+  chosen.variances = choice.estimate.reml_variances;
+  std::vector<bool> included;
+  NoiseEstimate estimate = EstimateOneModel(stations, chosen, length_scale, &included);
+  estimate.richer = choice.estimate.richer;
+  estimate.likelihood_ratio = choice.estimate.likelihood_ratio;
+  estimate.iterations += choice.estimate.iterations;
+  return estimate;
 }
 
 }  // namespace hecal::estimation

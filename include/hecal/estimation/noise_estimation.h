@@ -116,7 +116,13 @@
 // richer model was chosen; robot() and camera() then report the separate rotation sigmas,
 // camera_excess() the excess. Not used when the camera noise is given (--camera-sigma). Cost: up to
 // three more REML fits per estimate (`hecal simulate --stations 2000 --trials 2 --method ml
-// --estimate-noise`: 4.3 s before, 7.2 s with them, one thread).
+// --estimate-noise`: 4.3 s before, 7.2 s with them, one thread), on at most
+// kModelChoiceStations stations (below).
+// Infeasible variances: trial steps and grid points whose variances leave a station's Σ_i not
+// positive definite (numerically) count as ℓ_R = −∞; a richer model whose REML point is such a
+// point is not a candidate, a posterior mean that is one is replaced by the REML point, and
+// when the chosen model's own estimate is one EstimateNoise throws DegenerateError naming the
+// station noise model (the data do not determine a variance, e.g. poses of a wrong target).
 //
 // Heavy tails (student_t.h; fitted by ml, ml.h, on top of the model chosen here). The models
 // above are Gaussian. Heavy-tailed noise (Student-t(3) per pose component: README "Uncertainty",
@@ -184,6 +190,15 @@ inline constexpr double kStableFlagsFraction = 1e-3;
 inline constexpr double kThreeSigmaFalseAlarm = 1.0 - 0.99730020393673979;
 // The richer models above: fewest stations.
 inline constexpr size_t kAnisotropicMinStations = 8;
+// Model choice at scale: above this many stations the isotropic and the richer models are
+// fitted and compared (above) on this many stations evenly spread over the recording order
+// (station ⌊j n / 2000⌋, j = 0 … 1999: the whole trajectory), and only the chosen model is
+// fitted on all stations, started from the subsample's REML point; likelihood_ratio is then
+// the subsample's. 2000 stations give the test 11988 residual degrees of freedom (a σ error of
+// ≈ 1% per variance), and the choice costs the same at any n above it, so the noise estimate
+// is one O(n) fit instead of four. Every fit costs O(n · groups²) with per station only
+// fixed-size 6×6 and 6×12 products (noise_estimation.cc, VarianceStep).
+inline constexpr size_t kModelChoiceStations = 2000;
 
 // One station linearised at (X, Z).
 struct StationLinearization {
