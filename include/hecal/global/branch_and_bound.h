@@ -20,11 +20,14 @@
 // levels bisect between `lower` and it (proofs there still raise `lower`). It stops when
 // upper − lower ≤ max(options.epsilon, options.relative_gap · upper) (the certificate), or when
 // a budget runs out (cubes, or time: options.time_budget, checked before every batch of cubes
-// on options.clock, so a test can drive it); when only undecided
-// levels are left (ceiling − lower ≤ half that gap) the ceiling is lifted and they are tried
-// again with the allowance the search has grown to. When a budget runs out `certified` is false
-// and the bounds are what was proved. The incumbent comes from options.start (SolveGlobalRobust
-// passes the local start, local_start.h). Results do not depend on the thread count.
+// on options.clock, so a test can drive it); when only undecided levels are left (ceiling −
+// lower ≤ half that gap) the ceiling is lifted and they are tried again with the allowance the
+// search has grown to. When a budget runs out `certified` is false and the bounds are what was
+// proved; Certificate::stopped_by says which end was met. While it runs, options.progress
+// receives the bounds at most every options.progress_interval seconds. The incumbent comes from
+// options.start (SolveGlobalRobust passes the local start, local_start.h). Results do not depend on
+// the thread count (nor on the machine, unless the time budget ends the search: then on how far it
+// got).
 //
 // The relative gap is for noisy data: there the optimum is of the order of the ray noise, and
 // closing an absolute gap far below it needs cubes far smaller than the noise (their number
