@@ -190,6 +190,11 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                  "proved so far")
       ->capture_default_str();
   command
+      ->add_option("--time-budget", flags->time_budget,
+                   "With --method global: stop the search after this many seconds with the "
+                   "bounds proved so far")
+      ->capture_default_str();
+  command
       ->add_option("--features", flags->features,
                    "With --method global --target none: sift or orb image features")
       ->capture_default_str();

@@ -51,6 +51,7 @@ struct CalibrateFlags {
   int matches_per_motion = 40;    // --matches-per-motion: target corners used per motion (global)
   double reach = 2.0;             // --reach M: |t| of X is searched up to this (global)
   long max_cubes = 20'000'000;    // --max-cubes: the search's budget of cube tests (global)
+  double time_budget = 120.0;     // --time-budget SECONDS: the search's time (global)
   std::string features = "sift";  // --features sift|orb (global with --target none)
 };
 

@@ -2,6 +2,12 @@
 // report::GlobalCalibrationOptions, checks which source of matches the flags name, reads them
 // (report::ReadGlobalMatches from a correspondence file, jobs::GlobalMatchesFromImages from
 // images), runs report::CalibrateGlobal and prints.
+#include <chrono>
+#include <functional>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
 #include "bounds.h"
 #include "calibrate.h"
 #include "hecal/core/error.h"
@@ -71,6 +77,24 @@ report::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseRea
   return report::ReadGlobalMatches(flags.robot, read, flags.correspondences, flags.intrinsics);
 }
 
+// The search's bounds on standard error while it runs, one line each time the search hands
+// them out (every 5 s): the time since the search began against its budget, so a long search
+// shows how far the gap has closed and when it will end.
+std::function<void(const global::SearchProgress&)> SearchProgressPrinter(const Io& io,
+                                                                         double budget) {
+  const auto begin = std::chrono::steady_clock::now();
+  return [&io, begin, budget](const global::SearchProgress& p) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    std::ostringstream line;
+    line << std::setprecision(3) << "hecal: global search: solve " << p.round
+         << ", max ray error in [" << p.lower << ", " << p.upper << "] rad (gap "
+         << p.upper - p.lower << "), " << p.cubes << " cubes, " << std::fixed
+         << std::setprecision(0) << seconds << " s of " << budget << " s\n";
+    io.err << line.str() << std::flush;
+  };
+}
+
 }  // namespace
 
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
@@ -84,6 +108,7 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   options.relative_gap = flags.relative_gap;
   options.reach = flags.reach;
   options.max_cubes = flags.max_cubes;
+  options.time_budget = flags.time_budget;
   options.matches_per_motion = flags.matches_per_motion;
   options.threads = flags.threads;
   if (const std::optional<double> sigma = ParsePixelSigma(flags.pixel_sigma))
@@ -103,8 +128,11 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   read.invert = flags.robot_inverse;
 
   const report::GlobalMatches matches = ReadMatches(flags, read, options, io);
-  const report::GlobalCalibrationResult result = report::CalibrateGlobal(matches, options);
+  const report::GlobalCalibrationResult result =
+      report::CalibrateGlobal(matches, options, SearchProgressPrinter(io, options.time_budget));
   report::PrintGlobalSummary(io.out, result, units);
+  for (const std::string& warning : result.warnings)
+    io.err << "hecal: warning: " << warning << "\n";
   if (flags.output.empty()) return;
   report::WriteGlobalResult(flags.output, result);
   io.out << "wrote " << flags.output << "\n";

@@ -85,6 +85,7 @@ constexpr auto kFieldFlags = std::to_array<std::pair<std::string_view, std::stri
     {"GlobalCalibrationOptions.relative_gap", "--relative-gap"},
     {"GlobalCalibrationOptions.reach", "--reach"},
     {"GlobalCalibrationOptions.max_cubes", "--max-cubes"},
+    {"GlobalCalibrationOptions.time_budget", "--time-budget"},
     {"GlobalCalibrationOptions.matches_per_motion", "--matches-per-motion"},
     {"GlobalCalibrationOptions.threads", "--threads"},
     {"GlobalCalibrationOptions.pixel_sigma", "--pixel-sigma"},

@@ -83,6 +83,10 @@ TEST_F(JobOptions, GlobalCalibrationOptionsNameTheFlag) {
   ExpectRefused(global({"--relative-gap", "1"}), "--relative-gap", "at least 0 and below 1", out);
   ExpectRefused(global({"--reach", "0"}), "--reach", "above 0 and at most 1000 m", out);
   ExpectRefused(global({"--max-cubes", "0"}), "--max-cubes", "at least 1", out);
+  for (const char* budget : {"0", "-5", "nan", "inf", "1e8"}) {
+    ExpectRefused(global({"--time-budget", budget}), "--time-budget", "above 0 and at most 1e7 s",
+                  out);
+  }
   ExpectRefused(global({"--matches-per-motion", "7"}), "--matches-per-motion",
                 "at least 8 and at most 100000", out);
   ExpectRefused(global({"--threads", "300"}), "--threads", "from 0 to 256, got 300", out);

@@ -34,11 +34,37 @@ bool SearchOptions::IsValid(std::string* why) const {
     return Invalid(why, "SearchOptions.min_half_width", "must be above 0 and finite",
                    "give the smallest cube in radians, e.g. 1e-9");
   }
+  if (!(time_budget > 0.0)) {
+    return Invalid(why, "SearchOptions.time_budget", "must be above 0",
+                   "give the search's time in seconds, e.g. 120 (infinity: no limit)");
+  }
+  if (!(progress_interval > 0.0) || !std::isfinite(progress_interval)) {
+    return Invalid(why, "SearchOptions.progress_interval", "must be above 0 and finite",
+                   "give the seconds between progress calls, e.g. 5");
+  }
   if (max_cubes < 1) {
     return Invalid(why, "SearchOptions.max_cubes", "must be at least 1",
                    "give the search's budget of cube tests, e.g. 1000000");
   }
   return ThreadCountValid(threads, "SearchOptions.threads", why);
+}
+
+std::string_view StopReasonName(StopReason reason) {
+  switch (reason) {
+    case StopReason::kGapReached:
+      return "gap reached";
+    case StopReason::kBelowThreshold:
+      return "below threshold";
+    case StopReason::kMaxCubes:
+      return "max cubes";
+    case StopReason::kTimeBudget:
+      return "time budget";
+  }
+  return "gap reached";
+}
+
+double SteadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 namespace {
@@ -68,7 +94,11 @@ struct Outcome {
 class Search {
  public:
   Search(const EpipolarProblem& problem, const SearchOptions& options)
-      : problem_(problem), options_(options) {
+      : problem_(problem),
+        options_(options),
+        clock_(options.clock ? options.clock : SteadySeconds),
+        begin_(clock_()),
+        last_progress_(begin_) {
     threads_ = options.threads > 0 ? options.threads
                                    : std::max(1, int(std::thread::hardware_concurrency()));
     leaves_.push_back({Eigen::Vector3d::Zero(), M_PI, -1.0, 0.0, Eigen::Vector3d::Zero()});
@@ -76,14 +106,13 @@ class Search {
   }
 
   GlobalSolution Run() {
-    const auto begin = std::chrono::steady_clock::now();
-    double lower = 0.0;
+    double& lower = lower_;
     // A level just below the optimum needs cubes as small as its distance to the optimum, far
     // more than its neighbours: one left undecided after its budget becomes a ceiling, and the
     // next levels bisect below it (each proof still raises `lower`).
     double ceiling = std::numeric_limits<double>::infinity();
     while (best_error_ - lower > Gap() && best_error_ > options_.stop_below &&
-           cubes_ < options_.max_cubes) {
+           cubes_ < options_.max_cubes && !OutOfTime()) {
       const double top = std::min(best_error_, ceiling);
       if (top - lower <= 0.5 * Gap()) {
         // Only undecided levels are left: retry them (the allowance has grown with the search).
@@ -109,13 +138,31 @@ class Search {
     solution.certificate.cubes = cubes_;
     solution.certificate.lps = lps_;
     solution.certificate.certified = best_error_ - lower <= Gap();
-    solution.certificate.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    solution.certificate.stopped_by = solution.certificate.certified ? StopReason::kGapReached
+                                      : best_error_ <= options_.stop_below
+                                          ? StopReason::kBelowThreshold
+                                      : out_of_time_ ? StopReason::kTimeBudget
+                                                     : StopReason::kMaxCubes;
+    solution.certificate.seconds = clock_() - begin_;
     return solution;
   }
 
  private:
   enum class Answer { kYes, kNo, kUnknown };
+
+  // Whether the time budget has run out (once out, it stays out); hands out the bounds to
+  // options_.progress when progress_interval has passed since the last time.
+  bool OutOfTime() {
+    if (out_of_time_) return true;
+    const double now = clock_();
+    if (options_.progress && now - last_progress_ >= options_.progress_interval) {
+      last_progress_ = now;
+      options_.progress(
+          {std::min(lower_, best_error_), best_error_, cubes_, now - begin_, options_.round});
+    }
+    out_of_time_ = now - begin_ >= options_.time_budget;
+    return out_of_time_;
+  }
 
   // The requested gap at the current upper bound.
   double Gap() const {
@@ -181,7 +228,7 @@ class Search {
         budget = std::min(options_.max_cubes, budget + allowance);
         error_at_budget = best_error_;
       }
-      if (cubes_ >= budget) {
+      if (cubes_ >= budget || OutOfTime()) {
         unresolved = true;
         break;
       }
@@ -240,6 +287,11 @@ class Search {
 
   const EpipolarProblem& problem_;
   const SearchOptions& options_;
+  std::function<double()> clock_;
+  double begin_ = 0.0;  // clock_() at the start
+  double last_progress_ = 0.0;
+  bool out_of_time_ = false;
+  double lower_ = 0.0;  // proved so far
   int threads_ = 1;
   std::vector<Cube> leaves_;
   Pose best_ = Pose::Identity();

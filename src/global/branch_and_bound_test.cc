@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "hecal/core/error.h"
 #include "testing/epipolar_scenes.h"
@@ -26,6 +28,7 @@ TEST(SolveGlobal, RecoversXFromNoiseFreeScenesWithAClosedCertificate) {
     const GlobalSolution solution = SolveGlobal(scene.problem, options);
     const Certificate& c = solution.certificate;
     EXPECT_TRUE(c.certified);
+    EXPECT_EQ(c.stopped_by, StopReason::kGapReached);
     EXPECT_GE(c.lower, 0.0);
     EXPECT_LE(c.upper - c.lower, options.epsilon);
     EXPECT_LE(c.upper, options.epsilon);  // the truth has error 0
@@ -36,6 +39,76 @@ TEST(SolveGlobal, RecoversXFromNoiseFreeScenesWithAClosedCertificate) {
     EXPECT_LT(testing::RotationError(solution.X, scene.X), 2e-5);
     EXPECT_LT((solution.X.translation() - scene.X.translation()).norm(), 2e-5);
   }
+}
+
+// A clock that moves one second per reading: the budget runs out after a known number of checks,
+// whatever the machine's load.
+struct SteppingClock {
+  double now = 0.0;
+  double operator()() { return now += 1.0; }
+};
+
+// Asserts what every stopped search must hand back: bounds in order, `upper` the max E of X.
+void ExpectValidUncertified(const EpipolarProblem& problem, const GlobalSolution& solution) {
+  const Certificate& c = solution.certificate;
+  EXPECT_FALSE(c.certified);
+  EXPECT_GE(c.lower, 0.0);
+  EXPECT_LE(c.lower, c.upper);
+  EXPECT_TRUE(std::isfinite(c.upper));
+  EXPECT_NEAR(c.upper, MaxRayError(problem, solution.X), 1e-12);
+}
+
+TEST(SolveGlobal, StopsWhenTheTimeBudgetRunsOutWithTheBoundsProved) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 5;
+  spec.pairs = 20;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 21);
+  SearchOptions options;
+  options.epsilon = 1e-6;
+  options.translation_bound = 1.0;
+  auto clock = std::make_shared<SteppingClock>();
+  options.clock = [clock] { return (*clock)(); };
+  options.time_budget = 4.0;  // the start and three checks: three batches of cubes at most
+  std::vector<SearchProgress> reports;
+  options.progress = [&reports](const SearchProgress& p) { reports.push_back(p); };
+  options.progress_interval = 1.0;  // every check
+  options.round = 7;
+  const GlobalSolution solution = SolveGlobal(scene.problem, options);
+  const Certificate& c = solution.certificate;
+  ExpectValidUncertified(scene.problem, solution);
+  EXPECT_EQ(c.stopped_by, StopReason::kTimeBudget);
+  EXPECT_EQ(StopReasonName(c.stopped_by), "time budget");
+  EXPECT_GT(c.cubes, 0);
+  EXPECT_LE(c.cubes, 3 * 128);
+  EXPECT_GE(c.seconds, options.time_budget);
+  ASSERT_FALSE(reports.empty());
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    EXPECT_LE(reports[i].lower, reports[i].upper);
+    EXPECT_EQ(reports[i].round, 7);
+    if (i > 0) {  // the bounds only close
+      EXPECT_GE(reports[i].lower, reports[i - 1].lower);
+      EXPECT_LE(reports[i].upper, reports[i - 1].upper);
+      EXPECT_GE(reports[i].cubes, reports[i - 1].cubes);
+    }
+  }
+  EXPECT_GE(reports.back().upper, c.upper);
+}
+
+TEST(SolveGlobal, StopsWhenTheCubeBudgetRunsOut) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 5;
+  spec.pairs = 20;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 21);
+  SearchOptions options;
+  options.epsilon = 1e-6;
+  options.translation_bound = 1.0;
+  options.max_cubes = 200;
+  const GlobalSolution solution = SolveGlobal(scene.problem, options);
+  ExpectValidUncertified(scene.problem, solution);
+  EXPECT_EQ(solution.certificate.stopped_by, StopReason::kMaxCubes);
+  EXPECT_EQ(StopReasonName(solution.certificate.stopped_by), "max cubes");
+  EXPECT_GE(solution.certificate.cubes, options.max_cubes);
+  EXPECT_LT(solution.certificate.cubes, options.max_cubes + 128);
 }
 
 TEST(SearchOptions, IsValidNamesTheBadField) {
@@ -56,6 +129,12 @@ TEST(SearchOptions, IsValidNamesTheBadField) {
   EXPECT_NE(bad([](SearchOptions& o) { o.min_half_width = 0.0; }).find("min_half_width"),
             std::string::npos);
   EXPECT_NE(bad([](SearchOptions& o) { o.max_cubes = 0; }).find("max_cubes"), std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.time_budget = 0.0; }).find("time_budget"),
+            std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.time_budget = NAN; }).find("time_budget"),
+            std::string::npos);
+  EXPECT_NE(bad([](SearchOptions& o) { o.progress_interval = 0.0; }).find("progress_interval"),
+            std::string::npos);
   EXPECT_NE(bad([](SearchOptions& o) { o.threads = -1; }).find("threads"), std::string::npos);
   EXPECT_EQ(bad([](SearchOptions& o) { o.threads = 257; }).rfind("SearchOptions.threads: ", 0), 0u);
   SearchOptions invalid;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include "hecal/core/options_check.h"
@@ -75,6 +76,11 @@ RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const Sea
                                        const OutlierOptions& options) {
   RequireValid(search);
   RequireValid(options);
+  // The time budget is for every solve together: each L∞ round may take half of what is left,
+  // the last solve all of it (a round that runs out leaves the rest to the next).
+  const std::function<double()> clock = search.clock ? search.clock : SteadySeconds;
+  const double begin = clock();
+  const auto remaining = [&] { return search.time_budget - (clock() - begin); };
   RobustGlobalSolution result;
   result.inliers = PrefilterPairs(problem, options, &result.removed);
   // The rounds only need to tell whether the optimum exceeds the threshold: they stop at an X
@@ -98,11 +104,17 @@ RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const Sea
   round_options.epsilon = std::max(search.epsilon, 0.25 * result.threshold);
   round_options.stop_below = result.threshold;
   while (true) {
+    round_options.time_budget = std::max(0.5 * remaining(), 1e-9);
+    round_options.round = result.rounds + 1;
     result.solution = SolveGlobal(result.inliers, round_options);
     ++result.rounds;
     const double optimum = result.solution.certificate.upper;
     if (optimum <= result.threshold || result.solution.certificate.lower <= result.threshold ||
         result.rounds >= options.max_rounds) {
+      break;
+    }
+    if (!(remaining() > 0.0)) {
+      result.solution.certificate.stopped_by = StopReason::kTimeBudget;
       break;
     }
     // The support set: the pairs at the optimum's error.
@@ -122,13 +134,24 @@ RobustGlobalSolution SolveGlobalRobust(const EpipolarProblem& problem, const Sea
     }
     round_options.start = result.solution.X;
   }
-  const Certificate& last = result.solution.certificate;
+  Certificate& last = result.solution.certificate;
   if (last.upper - last.lower > std::max(search.epsilon, search.relative_gap * last.upper)) {
     SearchOptions final_options = search;
     final_options.start = result.solution.X;
-    result.solution = SolveGlobal(result.inliers, final_options);
-    ++result.rounds;
+    final_options.time_budget = remaining();
+    final_options.round = result.rounds + 1;
+    if (final_options.time_budget > 0.0) {
+      // The last round solved the same pairs: its lower bound holds for this solve too.
+      const double proved = last.lower;
+      result.solution = SolveGlobal(result.inliers, final_options);
+      ++result.rounds;
+      Certificate& c = result.solution.certificate;
+      c.lower = std::min(c.upper, std::max(c.lower, proved));
+    } else {
+      last.stopped_by = StopReason::kTimeBudget;  // the last round's bounds stand
+    }
   }
+  result.seconds = clock() - begin;
   return result;
 }
 

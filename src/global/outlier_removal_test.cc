@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <random>
 #include <set>
 #include <string>
@@ -16,6 +17,44 @@
 
 namespace hecal::global {
 namespace {
+
+// The time budget is for all the solves together: on a clock that moves one second per reading
+// the rounds and the last solve stop within it, and the result is a valid, uncertified X.
+TEST(SolveGlobalRobust, StopsWhenTheTimeBudgetRunsOut) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 3;
+  spec.pairs = 40;
+  spec.pixel_sigma = 0.5;
+  spec.wrong_fraction = 0.1;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 31);
+  SearchOptions search;
+  search.epsilon = 1e-7;  // far below the noise: no solve can close it in a few batches
+  search.translation_bound = 1.0;
+  search.time_budget = 8.0;
+  auto now = std::make_shared<double>(0.0);
+  search.clock = [now] { return *now += 1.0; };
+  int reports = 0;
+  search.progress = [&reports](const SearchProgress& p) {
+    ++reports;
+    EXPECT_LE(p.lower, p.upper);
+    EXPECT_GE(p.round, 1);
+  };
+  search.progress_interval = 1.0;
+  OutlierOptions options;
+  options.threshold = 4.0 * 0.5 / spec.focal * std::sqrt(2.0);
+  const RobustGlobalSolution robust = SolveGlobalRobust(scene.problem, search, options);
+  const Certificate& c = robust.solution.certificate;
+  EXPECT_FALSE(c.certified);
+  EXPECT_EQ(c.stopped_by, StopReason::kTimeBudget);
+  EXPECT_GE(c.lower, 0.0);
+  EXPECT_LE(c.lower, c.upper);
+  EXPECT_NEAR(c.upper, MaxRayError(robust.inliers, robust.solution.X), 1e-12);
+  EXPECT_GE(robust.rounds, 1);
+  EXPECT_GT(reports, 0);
+  // Every solve checks its budget before a batch: the whole run overshoots by a few readings.
+  EXPECT_GE(robust.seconds, search.time_budget);
+  EXPECT_LE(robust.seconds, search.time_budget + 4.0 * robust.rounds);
+}
 
 TEST(SolveGlobalRobust, RemovesWrongMatchesWithHighPrecisionAndRecall) {
   testing::EpipolarSceneSpec spec;

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "hecal/core/error.h"
@@ -27,6 +29,27 @@ constexpr const char* kOptions = "GlobalCalibrationOptions.";
 
 std::string Field(const char* name) {
   return std::string(kOptions) + name;
+}
+
+// A search that a budget stopped, in one sentence each (none when the gap closed).
+std::vector<std::string> SearchWarnings(const global::Certificate& c,
+                                        const GlobalCalibrationOptions& options) {
+  if (c.stopped_by != global::StopReason::kTimeBudget &&
+      c.stopped_by != global::StopReason::kMaxCubes) {
+    return {};
+  }
+  const bool time = c.stopped_by == global::StopReason::kTimeBudget;
+  std::ostringstream text;
+  text << std::setprecision(3) << "the global search stopped at its ";
+  if (time) {
+    text << "time budget (" << options.time_budget << " s)";
+  } else {
+    text << "cube budget (" << options.max_cubes << " cubes)";
+  }
+  text << " without closing the gap: max ray error in [" << c.lower << ", " << c.upper
+       << "] rad, not certified; X is the polish from the best candidate found (give "
+       << (time ? "--time-budget" : "--max-cubes") << " more to narrow the gap)";
+  return {text.str()};
 }
 
 }  // namespace
@@ -52,6 +75,10 @@ bool GlobalCalibrationOptions::IsValid(std::string* why) const {
   if (!(max_cubes >= 1)) {
     return Invalid(why, Field("max_cubes"), "must be at least 1",
                    "give the search's budget of cube tests, e.g. 1000000");
+  }
+  if (!(time_budget > 0.0 && time_budget <= 1e7)) {
+    return Invalid(why, Field("time_budget"), "must be above 0 and at most 1e7 s",
+                   "give the search's time in seconds, e.g. 120");
   }
   if (!ThreadCountValid(threads, Field("threads"), why)) return false;
   if (!estimation::PixelSigmaIsValid(pixel_sigma, Field("pixel_sigma"), why)) return false;
@@ -110,8 +137,9 @@ GlobalMatches ReadGlobalMatches(const std::string& robot_file, const io::PoseRea
   return out;
 }
 
-GlobalCalibrationResult CalibrateGlobal(const GlobalMatches& matches,
-                                        const GlobalCalibrationOptions& options) {
+GlobalCalibrationResult CalibrateGlobal(
+    const GlobalMatches& matches, const GlobalCalibrationOptions& options,
+    const std::function<void(const global::SearchProgress&)>& progress) {
   RequireValid(options);
   global::EpipolarProblem problem;
   problem.setup = options.setup;
@@ -140,6 +168,8 @@ GlobalCalibrationResult CalibrateGlobal(const GlobalMatches& matches,
   search.relative_gap = options.relative_gap;
   search.translation_bound = options.reach;
   search.max_cubes = options.max_cubes;
+  search.time_budget = options.time_budget;
+  search.progress = progress;
   search.threads = options.threads;
   global::OutlierOptions outliers;
   outliers.threshold = 4.0 * std::sqrt(2.0) * options.pixel_sigma / matches.focal;
@@ -179,6 +209,8 @@ GlobalCalibrationResult CalibrateGlobal(const GlobalMatches& matches,
   result.threshold = robust.threshold;
   result.pixel_threshold = outliers.threshold;
   result.error_scale = robust.error_scale;
+  result.search_seconds = robust.seconds;
+  result.warnings = SearchWarnings(result.certificate, options);
   // The stage that removed each pair the re-check leaves out (pairs it re-admits are not listed).
   std::map<std::pair<int, int>, std::string> stage;
   for (const global::RemovedPair& r : robust.removed) {
@@ -212,6 +244,10 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
                         {"lps", c.lps},
                         {"seconds", c.seconds},
                         {"certified", c.certified},
+                        {"stopped_by", std::string(global::StopReasonName(c.stopped_by))},
+                        {"time_budget_s", options.time_budget},
+                        {"max_cubes", options.max_cubes},
+                        {"search_seconds", result.search_seconds},
                         {"epsilon", options.epsilon},
                         {"relative_gap", options.relative_gap},
                         {"error", "max cheiral ray error, radians"},
@@ -240,6 +276,7 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
     removed.push_back({{"first", r.first}, {"second", r.second}, {"id", r.id}, {"by", r.by}});
   }
   doc["matches"]["removed"] = removed;
+  doc["warnings"] = result.warnings;
   return doc.dump(2) + "\n";
 }
 

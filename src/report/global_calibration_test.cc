@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "hecal/core/error.h"
@@ -116,6 +117,34 @@ TEST(CalibrateGlobal, WritesTheTranslationSigmaAlongTheHandAxes) {
   EXPECT_GT((expected - own_axes).cwiseAbs().maxCoeff(), 0.05 * expected.maxCoeff());
 }
 
+// A search stopped by its budget still returns X, with the bounds proved, why it stopped, and a
+// warning that says so.
+TEST(CalibrateGlobal, SaysWhyTheSearchStoppedAndWarnsWhenABudgetEndedIt) {
+  testing::EpipolarSceneSpec spec = SmallSpec(handeye::Setup::kEyeInHand);
+  spec.pixel_sigma = 0.5;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
+  GlobalCalibrationOptions options;
+  options.reach = 1.0;
+  options.epsilon = 1e-7;
+  options.relative_gap = 0.0;
+  options.max_cubes = 1;
+  const GlobalCalibrationResult result = CalibrateGlobal(MatchesOf(scene, spec.focal), options);
+  const nlohmann::json doc = nlohmann::json::parse(GlobalResultJson(result));
+  const nlohmann::json& c = doc["certificate"];
+  EXPECT_EQ(c["stopped_by"], "max cubes");
+  EXPECT_FALSE(c["certified"].get<bool>());
+  EXPECT_LE(c["lower"].get<double>(), c["upper"].get<double>());
+  EXPECT_EQ(c["max_cubes"], 1);
+  EXPECT_EQ(c["time_budget_s"], 120.0);
+  ASSERT_EQ(doc["warnings"].size(), 1u);
+  EXPECT_NE(doc["warnings"][0].get<std::string>().find("--max-cubes"), std::string::npos);
+  // The polish does not need a certified start: X is within 5σ of the truth per axis.
+  const estimation::EpipolarPolish& polish = result.robot_noise.polish;
+  const Vector6d error = se3::Log(polish.X.inverse() * scene.X);
+  for (int k = 0; k < 6; ++k)
+    EXPECT_LT(std::abs(error[k]), 5.0 * std::sqrt(polish.covariance(k, k)));
+}
+
 TEST(CalibrateGlobal, RefusesAMotionNamingNoStation) {
   const testing::EpipolarScene scene =
       testing::MakeEpipolarScene(SmallSpec(handeye::Setup::kEyeInHand), 12);
@@ -138,6 +167,10 @@ TEST(GlobalCalibrationOptions, NameTheBadField) {
                                      [](O& o) { o.reach = 0.0; }));
   EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.max_cubes",
                                      [](O& o) { o.max_cubes = 0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.time_budget",
+                                     [](O& o) { o.time_budget = 0.0; }));
+  EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.time_budget",
+                                     [](O& o) { o.time_budget = INFINITY; }));
   EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.matches_per_motion",
                                      [](O& o) { o.matches_per_motion = 7; }));
   EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.threads",

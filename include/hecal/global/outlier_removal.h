@@ -19,10 +19,14 @@
 //     them at least is an outlier) — and solve again, warm-started at the previous X. A round
 //     stops at the first X within the threshold (then every pair left is consistent with it) or
 //     when the gap is a quarter of the threshold; a last solve closes the requested gap.
+//     SearchOptions::time_budget is for all the solves together: each round may take half of
+//     the time left, the last solve the rest; with none left the rounds stop and the last
+//     solve is skipped (the bounds of the last round stand, stopped by the time budget).
 // Pairs are named by (motion index, BearingPair::id). Deterministic for a given seed.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,6 +62,7 @@ struct RobustGlobalSolution {
   int rounds = 0;            // global solves
   double error_scale = 0.0;  // s (radians; 0 without a local start)
   double threshold = 0.0;    // the L∞ rounds' threshold (radians)
+  double seconds = 0.0;      // of every solve, on SearchOptions::clock
 };
 
 // The problem without the pairs the pre-filter rejects (step 1); appends them to `removed`.

@@ -20,9 +20,10 @@
 // global/epipolar_problem.h); metres and radians; covariance in the right perturbation
 // (ω, v) of X.
 // Result file (WriteGlobalResult, JSON, docs/global.md "Command"): method, setup, X,
-// certificate, l_infinity_X, covariance (with the noise levels, `robot_sigma`: "given" or
-// "estimated", and the independent-pairs covariance), polish, matches (inliers, thresholds, removed
-// pairs with the stage that removed them).
+// certificate (with `stopped_by`: "gap reached", "below threshold", "max cubes" or
+// "time budget", and the budgets), l_infinity_X, covariance (with the noise levels, `robot_sigma`:
+// "given" or "estimated", and the independent-pairs covariance), polish, matches (inliers,
+// thresholds, removed pairs with the stage that removed them), warnings.
 //
 // Errors: InputError naming the options field (GlobalCalibrationOptions::IsValid), the files
 // with line (ReadGlobalMatches: a station the robot file does not have, pixels without
@@ -32,6 +33,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +51,10 @@ struct GlobalCalibrationOptions {
   double relative_gap = 0.1;    // or this fraction of the optimum, in [0, 1)
   double reach = 2.0;           // metres: |t| of X is searched up to this, in (0, 1000]
   long max_cubes = 20'000'000;  // the search's budget of cube tests, ≥ 1
+  // Seconds (wall clock) for the whole search — the L∞ rounds and the last solve together
+  // (global/outlier_removal.h splits it) — in (0, 1e7]: past it the result is the best X found,
+  // with the bounds proved, not certified. Matching and polish come on top (docs/global.md).
+  double time_budget = 120.0;
   int matches_per_motion = 40;  // the most matches per motion taken from images, 8 … 100000
   int threads = 0;              // 0: every core (core/limits.h)
   std::uint64_t seed = 1;       // of the outlier consensus
@@ -103,11 +109,17 @@ struct GlobalCalibrationResult {
   double pixel_threshold = 0.0;          // radians: 4√2 · pixel_sigma / focal
   double error_scale = 0.0;              // radians: the data's error scale
   std::vector<RemovedMatch> removed;     // in motion order, then pair order
+  double search_seconds = 0.0;           // every global solve together
+  // What the reader should know: a search stopped by a budget, weak evidence for the
+  // covariance (in the result file's `warnings`; the CLI prints them as `hecal: warning:`).
+  std::vector<std::string> warnings;
 };
 
-// Runs the job; RequireValid(options) first.
-GlobalCalibrationResult CalibrateGlobal(const GlobalMatches& matches,
-                                        const GlobalCalibrationOptions& options);
+// Runs the job; RequireValid(options) first. `progress` (may be empty) receives the search's
+// bounds while it runs, at most every 5 s (global::SearchOptions::progress).
+GlobalCalibrationResult CalibrateGlobal(
+    const GlobalMatches& matches, const GlobalCalibrationOptions& options,
+    const std::function<void(const global::SearchProgress&)>& progress = {});
 
 // The result file (above), as text, and written atomically.
 std::string GlobalResultJson(const GlobalCalibrationResult& result);
