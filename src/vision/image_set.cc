@@ -15,6 +15,7 @@
 #include "hecal/io/target_file.h"
 #include "hecal/vision/image_read.h"
 #include "hecal/vision/intrinsics_fit.h"
+#include "hecal/vision/intrinsics_plausibility.h"
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
 
@@ -254,9 +255,12 @@ std::vector<vision::CalibrationView> UsedViews(const std::vector<ImageRecord>& i
   return views;
 }
 
+// The intrinsics estimated from the used images; refused when the target is nearly parallel in
+// all of them, or when the estimate is no camera (intrinsics_plausibility.h: the points are not
+// those of the described target, so the refusal names the target file).
 vision::IntrinsicsResult EstimateIntrinsics(const std::vector<ImageRecord>& images,
                                             const std::vector<pose::ObjectPoint>& board,
-                                            cv::Size size) {
+                                            cv::Size size, const std::string& target_file) {
   const std::vector<vision::CalibrationView> views = UsedViews(images, board);
   vision::IntrinsicsResult result;
   try {
@@ -279,6 +283,20 @@ vision::IntrinsicsResult EstimateIntrinsics(const std::vector<ImageRecord>& imag
                          " deg), so focal length and distance are confounded",
                      "give --intrinsics camera.yaml, or add images with the target tilted by "
                      "20-45 deg in different directions");
+  }
+  const vision::IntrinsicsPlausibility plausibility = vision::CheckIntrinsicsPlausible(result);
+  if (!plausibility.plausible()) {
+    std::string problems;
+    for (const std::string& problem : plausibility.problems) {
+      problems += (problems.empty() ? "" : "; ") + problem;
+    }
+    throw InputError(target_file, 0,
+                     "the detected points do not fit one camera: the intrinsics estimated from "
+                     "the " +
+                         std::to_string(views.size()) + " usable images give " + problems,
+                     "check cols, rows and square against the print: the board in these images "
+                     "may be larger than described (cols/rows count INNER corners: a board of "
+                     "25x18 squares has 24x17)");
   }
   return result;
 }
@@ -460,7 +478,7 @@ ImageSet DetectImageSet(const ImageSetOptions& options, const ImageSetProgress& 
     set.camera = given->camera;
     set.camera_notes = given->notes;
   } else {
-    set.estimated = EstimateIntrinsics(set.images, set.board, set.size);
+    set.estimated = EstimateIntrinsics(set.images, set.board, set.size, options.target);
     set.camera = set.estimated->camera;
   }
   report(progress.intrinsics, set);
