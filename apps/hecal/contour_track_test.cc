@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "cli_test_util.h"
 #include "hecal/contour/affine_pose.h"
@@ -26,9 +28,19 @@ using cli_test::Outcome;
 // image; 10 frames approaching 500 mm, moving (30, −20) mm, tilting to Rx 15°, Ry 10°, Rz 20°.
 // Short sequences (tests of flags and files) get a proportionally smaller motion.
 Outcome Render(const std::string& dir, const std::string& frames = "10",
-               const std::string& to = "30,-20,-500,15,10,20") {
-  return Hecal({"contour", "render", "--output", dir, "--frames", frames, "--to=" + to, "--focal",
-                "3000", "--z0", "5000", "--size", "320,240", "--noise", "3"});
+               const std::string& to = "30,-20,-500,15,10,20",
+               const std::vector<std::string>& more = {}) {
+  std::vector<std::string> args = {"contour", "render",     "--output", dir,       "--frames",
+                                   frames,    "--to=" + to, "--focal",  "3000",    "--z0",
+                                   "5000",    "--size",     "320,240",  "--noise", "3"};
+  args.insert(args.end(), more.begin(), more.end());
+  return Hecal(args);
+}
+
+// `hecal contour track` on a rendered folder with its first view's control points, as rendered.
+Outcome Track(const std::string& dir, const std::string& output) {
+  return Hecal({"contour", "track", "--images", dir, "--init", dir + "/init.csv", "--focal", "3000",
+                "--z0", "5000", "--output", output});
 }
 const char kSmallMotion[] = "6,-4,-100,3,2,4";
 
@@ -39,9 +51,7 @@ TEST_F(CliTest, ContourRenderThenTrackRecoversTheMotion) {
   for (int t = 0; t < 10; ++t) {
     EXPECT_TRUE(std::filesystem::exists(Path("seq/frame_000" + std::to_string(t) + ".png")));
   }
-  const Outcome tracked =
-      Hecal({"contour", "track", "--images", Path("seq"), "--init", Path("seq/init.csv"), "--focal",
-             "3000", "--z0", "5000", "--output", Path("track.csv")});
+  const Outcome tracked = Track(Path("seq"), Path("track.csv"));
   ASSERT_EQ(tracked.code, 0) << tracked.err;
 
   const csv_test::Csv truth = csv_test::ReadCsv(Path("seq/truth.csv"));
@@ -97,13 +107,9 @@ TEST_F(CliTest, ContourWithCornersTracks) {
         "x,y\n-150,-100\n-150,-100\n-150,-100\n150,-100\n150,-100\n150,-100\n"
         "150,100\n150,100\n150,100\n-150,100\n-150,100\n-150,100\n");
   const Outcome rendered =
-      Hecal({"contour", "render", "--output", Path("seq"), "--frames", "4",
-             "--to=" + std::string(kSmallMotion), "--focal", "3000", "--z0", "5000", "--size",
-             "320,240", "--noise", "3", "--contour", Path("corners.csv")});
+      Render(Path("seq"), "4", kSmallMotion, {"--contour", Path("corners.csv")});
   ASSERT_EQ(rendered.code, 0) << rendered.err;
-  const Outcome tracked =
-      Hecal({"contour", "track", "--images", Path("seq"), "--init", Path("seq/init.csv"), "--focal",
-             "3000", "--z0", "5000", "--output", Path("track.csv")});
+  const Outcome tracked = Track(Path("seq"), Path("track.csv"));
   ASSERT_EQ(tracked.code, 0) << tracked.err;
   const csv_test::Csv truth = csv_test::ReadCsv(Path("seq/truth.csv"));
   const csv_test::Csv track = csv_test::ReadCsv(Path("track.csv"));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hecal/core/error.h"
 #include "hecal/estimation/station_covariance.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
@@ -130,7 +131,7 @@ TEST(FirstOrderBound, PerStationCovariancesWeightTheirStations) {
 TEST(FirstOrderBound, RejectsAZeroNoiseModel) {
   const testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 5, 33);
   EXPECT_THROW(FirstOrderBound(data.MeasuredProblem(), data.X, data.Z, PoseSigma{}, PoseSigma{}),
-               std::invalid_argument);
+               DegenerateError);
 }
 
 }  // namespace

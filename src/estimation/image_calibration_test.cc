@@ -31,6 +31,15 @@ std::vector<ImageStation> Stations(const testing::ImageScene& s) {
   return stations;
 }
 
+// Stations(s) with station `slipped`'s robot pose a further 2° off about its x axis.
+std::vector<ImageStation> StationsWithASlip(const testing::ImageScene& s, size_t slipped) {
+  std::vector<ImageStation> stations = Stations(s);
+  Vector6d slip;
+  slip << 2.0 * kRadiansPerDegree, 0.0, 0.0, 0.0, 0.0, 0.0;
+  stations[slipped].T_base_gripper = stations[slipped].T_base_gripper * se3::Exp(slip);
+  return stations;
+}
+
 ImageCalibrationOptions Options(handeye::Setup setup) {
   ImageCalibrationOptions options;
   options.setup = setup;
@@ -235,10 +244,7 @@ TEST(CalibrateFromImages, RobotNoiseAgreesWithThePoseLevelOrSaysWhyNot) {
   for (int set = 0; set < 5; ++set) {
     const testing::ImageScene s = testing::MakeImageScene(
         testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 8, 40 + set, robot, 0.2));
-    std::vector<ImageStation> stations = Stations(s);
-    Vector6d slip;
-    slip << 2.0 * kRadiansPerDegree, 0.0, 0.0, 0.0, 0.0, 0.0;
-    stations[5].T_base_gripper = stations[5].T_base_gripper * se3::Exp(slip);
+    const std::vector<ImageStation> stations = StationsWithASlip(s, 5);
     const ImageCalibrationResult result =
         CalibrateFromImages(stations, Options(handeye::Setup::kEyeInHand));
     ASSERT_TRUE(result.reprojection.robot_sigma_estimated);
@@ -294,10 +300,7 @@ TEST(CalibrateFromImages, FewStationsTakeTheLargerRobotNoise) {
   for (int set = 0; set < 5; ++set) {
     const testing::ImageScene s = testing::MakeImageScene(
         testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 6, 70 + set, robot, 0.2));
-    std::vector<ImageStation> stations = Stations(s);
-    Vector6d slip;
-    slip << 2.0 * kRadiansPerDegree, 0.0, 0.0, 0.0, 0.0, 0.0;
-    stations[3].T_base_gripper = stations[3].T_base_gripper * se3::Exp(slip);
+    const std::vector<ImageStation> stations = StationsWithASlip(s, 3);
     ImageCalibrationOptions options = Options(handeye::Setup::kEyeInHand);
     options.calibrate.reject_outliers = false;  // six stations stay six
     const ImageCalibrationResult result = CalibrateFromImages(stations, options);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <stdexcept>
 
+#include "hecal/core/error.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::estimation::internal {
@@ -48,7 +48,11 @@ MultiStartResult RunMultiStart(const std::vector<handeye::Solution>& starts, dou
     });
     if (!known) optima.push_back(optimum);
   }
-  if (optima.empty()) throw std::runtime_error("refinement failed from every starting point");
+  if (optima.empty()) {
+    throw DegenerateError(
+        "X and Z: the refinement failed (a non-finite cost) from every starting point",
+        "check the data for poses far outside the robot's reach or lengths in the wrong unit");
+  }
   result.distinct_minima = static_cast<int>(optima.size());
   result.best =
       *std::min_element(optima.begin(), optima.end(),

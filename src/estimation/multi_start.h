@@ -34,7 +34,7 @@ bool NearSolution(const handeye::Solution& a, const handeye::Solution& b, double
 
 // `evaluate(start)` gives a start's initial objective; `refine(start)` runs the local solver.
 // Requires a non-empty `starts`; optima with a non-finite objective are dropped, and
-// std::runtime_error is thrown if none is left.
+// DegenerateError is thrown if none is left.
 MultiStartResult RunMultiStart(const std::vector<handeye::Solution>& starts, double length_scale,
                                const std::function<double(const handeye::Solution&)>& evaluate,
                                const std::function<Optimum(const handeye::Solution&)>& refine);

@@ -39,8 +39,8 @@ struct AccuracyBound {
 // the measurements); X, Z: the true unknowns; robot[i], camera[i]: station i's covariances of
 // T_base_gripper_i and T_camera_target_i (right perturbations), mapped to Σ_i by
 // station_covariance.h. Throws std::invalid_argument when there is not one robot and one camera
-// covariance per station or a station covariance is singular (e.g. every sigma zero),
-// hecal::DegenerateError when the information is singular (degenerate data).
+// covariance per station, hecal::DegenerateError when a station covariance is singular (e.g.
+// every sigma zero: WhiteningMatrix) or the information is (degenerate data).
 AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
                               const std::vector<Matrix6d>& robot,
                               const std::vector<Matrix6d>& camera);
