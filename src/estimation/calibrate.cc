@@ -222,7 +222,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   } else {
     handeye::Solution solution;
     if (options.method == Method::kStrobl) {
-      const StroblResult strobl = RefineStrobl(problem, StartingSolutions(problem));
+      const StroblResult strobl = RefineStrobl(problem, ClosedFormStarts(problem));
       solution = {strobl.X, strobl.Z};
     } else {
       solution = handeye::SolveClosedForm(*Info(options.method).closed_form, problem);

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "hecal/core/error.h"
+#include "hecal/handeye/shah.h"
 #include "hecal/handeye/station_consensus.h"
 
 namespace hecal::estimation {
@@ -47,7 +48,7 @@ std::vector<handeye::Solution> Solutions(const std::vector<InitialSolution>& ini
   return solutions;
 }
 
-std::vector<handeye::Solution> StartingSolutions(const handeye::Problem& problem) {
+std::vector<handeye::Solution> ClosedFormStarts(const handeye::Problem& problem) {
   std::vector<handeye::Solution> starts = Solutions(InitialSolutions(problem));
   if (starts.empty()) {
     throw DegenerateError("X and Z (no closed-form solver found a starting point)",
@@ -55,6 +56,16 @@ std::vector<handeye::Solution> StartingSolutions(const handeye::Problem& problem
                           "and use stations with large, varied rotations");
   }
   return starts;
+}
+
+std::vector<handeye::Solution> StartingSolutions(const handeye::Problem& problem) {
+  try {
+    const handeye::Solution shah = handeye::SolveShah(StartStations(problem));
+    if (IsFinite(shah.X) && IsFinite(shah.Z)) return {shah};
+  } catch (const std::exception&) {
+    // Shah cannot handle these data: every closed form below.
+  }
+  return ClosedFormStarts(problem);
 }
 
 }  // namespace hecal::estimation

@@ -8,8 +8,10 @@
 
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
+#include "hecal/estimation/initialization.h"
 #include "hecal/estimation/station_covariance.h"
 #include "hecal/estimation/student_t.h"
+#include "hecal/uncertainty/consistency.h"
 #include "loop_solver.h"
 #include "multi_start.h"
 
@@ -22,6 +24,7 @@ constexpr double kRefreshRotation = 1e-3;     // rad: re-evaluate Σ_i when X mo
 constexpr double kRefreshTranslation = 1e-3;  // × L
 constexpr int kMaxRefreshes = 5;
 constexpr double kNoiseTolerance = 1e-3;  // relative change of the variances
+constexpr double kFitLevel = 0.999;       // χ² point of the fit test of "Starts on demand"
 
 struct Evaluation {
   double cost = 0.0;  // Σ ρ(r_iᵀ Σ_i⁻¹ r_i)
@@ -37,6 +40,7 @@ class MlSolver {
         station_scale_(options.station_scale) {}
 
   double length_scale() const { return length_scale_; }
+  size_t stations() const { return problem_.A.size(); }
   int solves() const { return solves_; }
   // Per-station multipliers of Σ_i (empty: 1).
   void set_station_scale(std::vector<double> scale) { station_scale_ = std::move(scale); }
@@ -150,6 +154,24 @@ handeye::Solution RefineStarts(MlSolver& solver, const std::vector<handeye::Solu
   return solver.Solve(multi.best.solution, theta);
 }
 
+// "Starts on demand" (header): the optimum `best` reached from `starts` is trusted when some start
+// lies within the basin distance of multi_start.h of it and, with both sigmas given and no robust
+// loss, its Gaussian cost is within the χ²(6n − 12) 99.9% point.
+bool MayBeWrongMinimum(const MlSolver& solver, const std::vector<handeye::Solution>& starts,
+                       const handeye::Solution& best, const NoiseVariances& theta,
+                       const NoiseSpec& spec, const MlOptions& options) {
+  const double L = solver.length_scale();
+  const bool near_a_start =
+      std::any_of(starts.begin(), starts.end(), [&](const handeye::Solution& start) {
+        return internal::NearSolution(start, best, internal::kBasinRotation,
+                                      internal::kBasinTranslation * L);
+      });
+  if (!near_a_start) return true;
+  if (spec.AnyEstimated() || options.robust_loss != RobustLoss::kNone) return false;
+  const double dof = 6.0 * static_cast<double>(solver.stations()) - 12.0;
+  return !(uncertainty::ChiSquareCdf(solver.Evaluate(best, theta).cost, dof) <= kFitLevel);
+}
+
 void CheckStations(const handeye::Problem& problem, const MlOptions& options) {
   if (problem.A.size() != problem.B.size()) {
     throw std::invalid_argument("RefineMl: one camera pose per robot pose");
@@ -230,6 +252,12 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
 
   MlResult result;
   handeye::Solution best = RefineStarts(solver, starts, theta, &result);
+  if (options.starts_on_demand && MayBeWrongMinimum(solver, starts, best, theta, spec, options)) {
+    std::vector<handeye::Solution> more = starts;
+    for (const handeye::Solution& start : Solutions(InitialSolutions(problem)))
+      more.push_back(start);
+    best = RefineStarts(solver, more, theta, &result);
+  }
 
   // Alternate the noise estimate and the pose estimate.
   NoiseSpec current = spec;

@@ -163,14 +163,14 @@ TEST_P(MlTest, AttainsTheFirstOrderBoundShortStudy) {
 // (~10% of trials for a Park–Martin start; here the start is made deliberately bad —
 // X rotated by 150° — which does so in ~40% of trials). From that bad start together with all
 // closed-form starts, ml must always reach the global minimum, checked against a refinement
-// started at the truth.
+// started at the truth; and from the bad start alone with starts on demand (ml.h) too.
 TEST_P(MlTest, MultiStartNeverEndsInAWrongMinimum) {
   const handeye::Setup setup = GetParam();
   const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
   MlOptions options;
   options.robot_sigma = sigma;
   options.camera_sigma = sigma;
-  int wrong_multi = 0, wrong_single = 0;
+  int wrong_multi = 0, wrong_single = 0, wrong_on_demand = 0;
   for (int trial = 0; trial < 40; ++trial) {
     const testing::Scene data =
         testing::ThesisCase(setup, 5, 5000 + trial, sigma.rotation, sigma.translation);
@@ -184,7 +184,11 @@ TEST_P(MlTest, MultiStartNeverEndsInAWrongMinimum) {
     initial.push_back({handeye::ClosedForm::kTsaiLenz, bad});  // the label is irrelevant here
     const std::vector<handeye::Solution> starts = Solutions(initial);
     const MlResult multi = RefineMl(problem, starts, options);
-    const MlResult single = RefineMl(problem, {bad}, options);
+    MlOptions one_start = options;
+    one_start.starts_on_demand = false;
+    const MlResult single = RefineMl(problem, {bad}, one_start);
+    // Starts on demand: from the bad start alone, ml notices and adds the closed forms.
+    const MlResult on_demand = RefineMl(problem, {bad}, options);
     const MlResult from_truth = RefineMl(problem, {{data.X, data.Z}}, options);
     // Different minima are ≥ 9° apart here; the same minimum reached along different paths
     // agrees to ~1e-5 rad (Σ_i is refreshed to 1e-3 rad).
@@ -194,11 +198,13 @@ TEST_P(MlTest, MultiStartNeverEndsInAWrongMinimum) {
     };
     wrong_multi += wrong(multi) ? 1 : 0;
     wrong_single += wrong(single) ? 1 : 0;
+    wrong_on_demand += wrong(on_demand) ? 1 : 0;
   }
   std::printf("n=5 σ=1, 40 trials: wrong minima from the bad start alone %d, multi-start %d\n",
               wrong_single, wrong_multi);
   EXPECT_GT(wrong_single, 4);  // the landscape does have wrong minima for the check to find
   EXPECT_EQ(wrong_multi, 0);
+  EXPECT_EQ(wrong_on_demand, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSetups, MlTest,

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
+#include "hecal/handeye/minimal_solution.h"
 #include "hecal/handeye/observability.h"
 #include "hecal/handeye/shah.h"
 
@@ -15,6 +17,9 @@ namespace {
 
 constexpr double kInlierFactor = 3.0;  // κ: consensus set e_i ≤ κ · median(e)
 constexpr int kMaxRefitRounds = 10;
+// e below this (radians, or translation / L) is the rounding of the pose products, not a residual:
+// the consensus set's threshold is at least its square (header, "Local refit").
+constexpr double kRoundingError = 1e-12;
 constexpr int kMinCleanTriples = 5;        // the floor on clean hypotheses (header)
 constexpr double kMissProbability = 1e-9;  // δ (header)
 
@@ -106,12 +111,20 @@ double ChordalSquaredError(const Problem& problem, int i, const Solution& soluti
          t.squaredNorm() / (length_scale * length_scale);
 }
 
-double MedianSquaredError(const Problem& problem, const std::vector<int>& stations,
-                          const Solution& solution, double length_scale,
-                          std::vector<double>* scratch) {
+// The median of the chordal e² over `stations`, or +∞ as soon as that median is certain to be
+// at least `bound` (so many stations have e² ≥ bound that the lower middle value is one of them):
+// a hypothesis that cannot beat the best one so far is dropped after about half the stations.
+double MedianSquaredErrorBelow(const Problem& problem, const std::vector<int>& stations,
+                               const Solution& solution, double length_scale, double bound,
+                               std::vector<double>* scratch) {
+  const size_t enough = stations.size() - (stations.size() - 1) / 2;
+  size_t at_or_above = 0;
   scratch->clear();
-  for (int i : stations)
-    scratch->push_back(ChordalSquaredError(problem, i, solution, length_scale));
+  for (int i : stations) {
+    const double e2 = ChordalSquaredError(problem, i, solution, length_scale);
+    if (e2 >= bound && ++at_or_above >= enough) return std::numeric_limits<double>::infinity();
+    scratch->push_back(e2);
+  }
   return Median(*scratch);
 }
 
@@ -173,21 +186,13 @@ StationConsensus FindStationConsensus(const Problem& problem, const ConsensusOpt
   StationConsensus consensus;
   double best = std::numeric_limits<double>::infinity();
   for (const Triple& t : Triples(n, options)) {
-    Problem minimal;
-    minimal.setup = problem.setup;
-    minimal.A = {problem.A[t.a], problem.A[t.b], problem.A[t.c]};
-    minimal.B = {problem.B[t.a], problem.B[t.b], problem.B[t.c]};
-    Solution solution;
-    try {
-      solution = SolveShah(minimal);
-    } catch (const DegenerateError&) {
-      continue;  // these three stations do not fix X
-    }
+    const std::optional<Solution> solution = SolveMinimal(problem, t.a, t.b, t.c);
+    if (!solution) continue;  // these three stations do not fix X
     ++consensus.hypotheses;
-    const double score = MedianSquaredError(problem, scored, solution, L, &scratch);
+    const double score = MedianSquaredErrorBelow(problem, scored, *solution, L, best, &scratch);
     if (score < best) {
       best = score;
-      consensus.solution = solution;
+      consensus.solution = *solution;
     }
   }
   if (consensus.hypotheses == 0) CheckObservability(problem);  // throws: nothing fixes X
@@ -208,7 +213,8 @@ StationConsensus FindStationConsensus(const Problem& problem, const ConsensusOpt
     scratch.assign(e2.begin(), e2.end());
     double threshold = kInlierFactor * kInlierFactor * Median(scratch);
     std::nth_element(scratch.begin(), scratch.begin() + (min_count - 1), scratch.end());
-    threshold = std::max(threshold, scratch[static_cast<size_t>(min_count - 1)]);
+    threshold = std::max(
+        {threshold, scratch[static_cast<size_t>(min_count - 1)], kRoundingError * kRoundingError});
     std::vector<bool> inlier(n);
     for (int i = 0; i < n; ++i) inlier[i] = e2[i] <= threshold;
     if (inlier == consensus.inlier && round > 0) break;

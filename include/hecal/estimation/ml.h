@@ -32,6 +32,17 @@
 // already found, for both X and Z, is skipped: it lies in that optimum's basin (wrong minima
 // of these problems are ≥ 9° away in the n = 5, σ = 1 study), and skipping keeps the typical
 // cost at a few solves.
+// Starts on demand: the caller's starts may be few — StartingSolutions (initialization.h) gives
+// one, Shah's closed form on every station, and the outlier rejection's later rounds the last
+// fit. The optimum reached from them is trusted when a start lies within the basin distance above
+// (2°, 0.035·L) of it — a start that far from a wrong minimum would be a closed form tens of
+// degrees off — and, with both sigmas given and no robust loss, its cost Σ r_iᵀΣ_i⁻¹r_i is
+// within the 99.9% point of χ²(6n − 12), the cost's distribution at the optimum under the noise
+// model (a wrong minimum's residuals are not noise). Otherwise every closed-form start of
+// initialization.h joins the multi-start above, as all of them did for every solve before (at
+// n = 50 the closed forms were 2.4 ms of the 6.3 ms default `ml` path; docs/bench.md). With the
+// sigmas estimated the cost says nothing (the noise is fitted to it), so only the distance test
+// applies. A false alarm costs time, not accuracy: the multi-start keeps the lowest optimum.
 // Good start (RefineMlFromGoodStart): re-solving perturbed or reduced data from a calibration's
 // own estimate (the model check's jackknife, covariance propagation, resampling) needs neither
 // the closed-form starts nor the noise estimate, station tests and covariance; it runs the same
@@ -80,6 +91,9 @@ struct MlOptions {
   // Per-station multipliers of Σ_i (a Student-t fit's κ_ν / w_i, NoiseEstimate::station_scale),
   // to refit at a result's noise model; empty: 1 everywhere.
   std::vector<double> station_scale;
+  // "Starts on demand" above: when the optimum from `starts` may be a wrong minimum, refine from
+  // every closed-form start too. Off: `starts` only (e.g. to study one start's basin).
+  bool starts_on_demand = true;
 
   // core/options_check.h: false naming MlOptions.robot_sigma / .camera_sigma (negative or not
   // finite; no upper bound: the estimate of one refinement seeds the next), .robust_scale (not

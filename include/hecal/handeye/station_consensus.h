@@ -4,9 +4,10 @@
 // (convention_diagnosis.h).
 //
 // Hypotheses (Fischler and Bolles, "Random sample consensus", CACM 24(6), 1981): minimal sets of
-// 3 stations — two motions with non-parallel rotation axes fix X and Z — each solved by Shah's
-// closed form on absolute poses (shah.h, microseconds). A triple whose rotations do not fix X
-// (Shah reports it degenerate) is skipped.
+// 3 stations — two motions with non-parallel rotation axes fix X and Z — each solved in closed
+// form from its two motions (minimal_solution.h: a few hundred operations, where Shah's solver on
+// the triple, used before, spends most of its time on a 9 × 9 eigendecomposition). A
+// triple whose rotations do not fix X (minimal_solution.h returns none) is skipped.
 // How many (RequiredHypotheses): the breakdown point to support is the rejection limit of
 // estimation/station_selection.h, m = ⌊(n − 3)/2⌋ arbitrary stations. A uniformly drawn triple
 // of distinct stations is then clean with probability p = C(n − m, 3) / C(n, 3) (→ 1/8 for large
@@ -30,7 +31,9 @@
 // 1.35 ms): it is monotone in a_i and equal to a_i² to a relative 1 − a_i²/12 (0.25% at 10°),
 // and the median station of a hypothesis that can win is an inlier at the noise level, so the
 // ranking is that of e² to well below the noise.
-// The local refit and every reported residual use the angle itself.
+// The local refit and every reported residual use the angle itself. A hypothesis is dropped as
+// soon as so many stations have e² at or above the best median so far that its own median cannot
+// be lower (exact: the same hypothesis wins; most lose after about half the stations).
 // Scores are computed on at most `max_scored_stations` stations (a fixed random subset for
 // larger n), so the cost is O(hypotheses · min(n, max_scored_stations)).
 //
@@ -38,7 +41,8 @@
 // is {i : e_i ≤ κ · median(e)}, κ = 3 — for Gaussian noise e² ~ σ²·χ² with 3 to 6 degrees of
 // freedom, and P(e > 3 · median) is 9e-5 (3) to 1e-8 (6) — widened to at least the
 // n − ⌊(n − 3)/2⌋ stations of smallest e (with few stations three of them would otherwise be
-// interpolated exactly and their median say nothing), and Shah is solved again on it, until the
+// interpolated exactly and their median say nothing) and to e ≤ 1e-12 (rounding of the pose
+// products, so that noise-free data are one set), and Shah is solved again on it, until the
 // set stops changing (at most 10 rounds). The set is a candidate: the statistical test
 // at the estimated noise (estimation/station_selection.h) has the last word.
 //
