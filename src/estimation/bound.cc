@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fixed_size_kernels.h"
 #include "hecal/core/error.h"
 #include "hecal/estimation/loop_residual.h"
 #include "hecal/estimation/station_covariance.h"
@@ -23,8 +24,7 @@ AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, cons
     LoopResidual(truth.A[i], truth.B[i], X, Z, &J);
     const Matrix6d W = WhiteningMatrix(
         StationCovariance(truth.setup, truth.A[i], truth.B[i], X, robot[i], camera[i]));
-    const Matrix6x12d WJ = W * J;
-    information.noalias() += WJ.transpose() * WJ;
+    internal::AddWeightedGram(W.lazyProduct(J), 1.0, &information);
   }
   const Eigen::LDLT<Matrix12d> ldlt(information);
   const double smallest = ldlt.vectorD().minCoeff();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fixed_size_kernels.h"
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/geometry/se3.h"
 
@@ -48,14 +49,13 @@ LoopNormalEquations LinearizeLoopCost(const handeye::Problem& problem,
     const Vector6d r = LoopResidual(problem.A[i], problem.B[i], solution.X, solution.Z, &J);
     const Matrix6d& W = whitening[i];
     const Vector6d whitened = W * r;
-    const Matrix6x12d WJ = W * J;
+    const Matrix6x12d WJ = W.lazyProduct(J);
     const double s = whitened.squaredNorm();
     const double weight = LossWeight(loss, s);
     equations.cost += LossValue(loss, s);
-    equations.hessian.selfadjointView<Eigen::Upper>().rankUpdate(WJ.transpose(), weight);
+    AddWeightedGram(WJ, weight, &equations.hessian);
     equations.gradient.noalias() += weight * WJ.transpose() * whitened;
   }
-  equations.hessian.triangularView<Eigen::StrictlyLower>() = equations.hessian.transpose();
   return equations;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "fixed_size_kernels.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/uncertainty/consistency.h"
@@ -55,20 +56,10 @@ struct Refit {
   double log_likelihood = 0.0;
 };
 
-// Σ⁻¹ = L⁻ᵀ L⁻¹ from Σ = L Lᵀ, L⁻¹ by forward substitution: coefficient loops of fixed size
-// (a solve against the identity takes Eigen's blocked triangular-matrix path, the costliest part
-// of a re-fit at 6×6).
-template <typename Lower>
-Matrix6d InverseFromCholesky(const Lower& L) {
-  Matrix6d L_inverse = Matrix6d::Zero();
-  for (int c = 0; c < 6; ++c) {
-    L_inverse(c, c) = 1.0 / L(c, c);
-    for (int r = c + 1; r < 6; ++r) {
-      double sum = 0.0;
-      for (int k = c; k < r; ++k) sum += L(r, k) * L_inverse(k, c);
-      L_inverse(r, c) = -sum / L(r, r);
-    }
-  }
+// Σ⁻¹ = L⁻ᵀ L⁻¹ from Σ = L Lᵀ (fixed_size_kernels.h: a solve against the identity takes Eigen's
+// blocked triangular-matrix path, the costliest part of a re-fit at 6×6).
+Matrix6d InverseFromCholesky(const Matrix6d& lower) {
+  const Matrix6d L_inverse = internal::LowerTriangularInverse(lower);
   return L_inverse.transpose().lazyProduct(L_inverse);
 }
 
@@ -86,7 +77,7 @@ Refit LinearRefit(const std::vector<StationLinearization>& stations,
       refit.log_likelihood = -std::numeric_limits<double>::infinity();
       return refit;
     }
-    refit.inverse_covariance.push_back(InverseFromCholesky(llt.matrixL()));
+    refit.inverse_covariance.push_back(InverseFromCholesky(llt.matrixLLT()));
     if (!included[i]) continue;
     const Matrix6d& W = refit.inverse_covariance[i];
     const Eigen::Matrix<double, 12, 6> JtW = stations[i].jacobian.transpose().lazyProduct(W);
@@ -408,6 +399,35 @@ double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
   return change;
 }
 
+// r_wᵀ C_w⁺ r_w over the eigen-directions of C_w with eigenvalue above kRankFloor, and their
+// count. Almost always C_w has full rank: then its Cholesky factor C_w = K Kᵀ gives the statistic
+// ‖K⁻¹ r_w‖² directly, and ‖K⁻¹‖²_F < 1 / kRankFloor proves every eigenvalue above the floor
+// (λ_min(C_w)⁻¹ = ‖K⁻¹‖²_2 ≤ ‖K⁻¹‖²_F), so the eigendecomposition — the costliest step of a test
+// — is needed only near rank deficiency, with the same result.
+struct Statistic {
+  double value = 0.0;
+  int dof = 0;
+};
+constexpr double kRankFloor = 1e-9;
+
+Statistic WhitenedStatistic(const Matrix6d& C_white, const Vector6d& r_white) {
+  const Eigen::LLT<Matrix6d> llt(C_white);
+  if (llt.info() == Eigen::Success && (llt.matrixLLT().diagonal().array() > 0.0).all()) {
+    const Matrix6d K_inverse = internal::LowerTriangularInverse(llt.matrixLLT());
+    if (K_inverse.squaredNorm() < 1.0 / kRankFloor) return {(K_inverse * r_white).squaredNorm(), 6};
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(C_white);
+  Statistic statistic;
+  for (int k = 0; k < 6; ++k) {
+    const double lambda = eigen.eigenvalues()(k);
+    if (lambda <= kRankFloor) continue;
+    const double projection = eigen.eigenvectors().col(k).dot(r_white);
+    statistic.value += projection * projection / lambda;
+    ++statistic.dof;
+  }
+  return statistic;
+}
+
 }  // namespace
 
 bool StationTestOptions::IsValid(std::string* why) const {
@@ -453,25 +473,17 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
     const Matrix6d& W = refit.inverse_covariance[i];
     StationTest& test = tests[i];
     test.chi2 = s.residual.dot(W * s.residual);
-    const Matrix6d leverage = s.jacobian * refit.N_inverse * s.jacobian.transpose();
+    const Matrix6d leverage =
+        (s.jacobian.lazyProduct(refit.N_inverse)).lazyProduct(s.jacobian.transpose());
     const Matrix6d sigma = CombineComponents(s.components, theta);
     const Matrix6d C = included[i] ? Matrix6d(sigma - leverage) : Matrix6d(sigma + leverage);
     // Pseudo-inverse in the metric of Σ: whiten with Σ = L Lᵀ first, so the rank decision is
     // scale-free.
     const Eigen::LLT<Matrix6d> llt(sigma);
-    const Matrix6d L_inverse = llt.matrixL().solve(Matrix6d::Identity());
+    const Matrix6d L_inverse = internal::LowerTriangularInverse(llt.matrixLLT());
     const Matrix6d C_white = L_inverse * C * L_inverse.transpose();
     const Vector6d r_white = L_inverse * r_hat[i];
-    const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(0.5 * (C_white + C_white.transpose()));
-    double statistic = 0.0;
-    int dof = 0;
-    for (int k = 0; k < 6; ++k) {
-      const double lambda = eigen.eigenvalues()(k);
-      if (lambda <= 1e-9) continue;
-      const double projection = eigen.eigenvectors().col(k).dot(r_white);
-      statistic += projection * projection / lambda;
-      ++dof;
-    }
+    const auto [statistic, dof] = WhitenedStatistic(0.5 * (C_white + C_white.transpose()), r_white);
     test.statistic = statistic;
     test.dof = dof;
     test.threshold = threshold[dof][included[i] ? 0 : 1];

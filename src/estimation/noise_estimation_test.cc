@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -344,6 +347,68 @@ TEST(EstimateNoise, NearSingularTrialVariancesAreNotAnInternalError) {
       EXPECT_GT(estimate.robot().translation, 0.0);
     } catch (const DegenerateError&) {
       SUCCEED() << "reported as degenerate data";
+    }
+  }
+}
+
+// T_i against its definition (header, "Outlier test"), computed here with general dense algebra:
+// r̂_i = r_i − J_i δ with δ = N⁻¹ Σ J_jᵀ Σ_j⁻¹ r_j over the included stations, C_i = Σ_i ∓ J_i N⁻¹
+// J_iᵀ (− included, + left out), T_i = r̂_iᵀ C_i⁺ r̂_i with the pseudo-inverse taken in the metric of
+// Σ_i (eigenvalues ≤ 1e-9 of the whitened C_i dropped; their count is T_i's degrees of freedom).
+// At n = 4 the 12 unknowns leave the included stations' C_i singular (fewer than 6 degrees of
+// freedom); at n = 20 it has full rank. One station is left out in each.
+TEST(TestStations, StatisticIsTheWhitenedPseudoInverseForm) {
+  const PoseSigma sigma{1.0 * kRadiansPerDegree, 1e-3};
+  for (int n : {4, 20}) {
+    const sim::SimulatedData data = Simulate(handeye::Setup::kEyeInHand, n, sigma, sigma, 77);
+    const std::vector<StationLinearization> stations =
+        LinearizeStations(data.MeasuredProblem(), data.X, data.Z);
+    std::vector<bool> included(n, true);
+    included[1] = false;
+    const NoiseVariances theta = NoiseSpec::FromSigmas(sigma, sigma).variances;
+    const std::vector<StationTest> tests = TestStations(stations, included, theta);
+
+    Eigen::MatrixXd N = Eigen::MatrixXd::Zero(12, 12);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(12);
+    for (int i = 0; i < n; ++i) {
+      if (!included[i]) continue;
+      const Eigen::MatrixXd J = stations[i].jacobian;
+      const Eigen::MatrixXd W = CombineComponents(stations[i].components, theta).inverse();
+      N += J.transpose() * W * J;
+      b += J.transpose() * W * stations[i].residual;
+    }
+    const Eigen::MatrixXd N_inverse = N.inverse();
+    const Eigen::VectorXd delta = N_inverse * b;
+    int fewer_dof = 0;
+    for (int i = 0; i < n; ++i) {
+      const Eigen::MatrixXd J = stations[i].jacobian;
+      const Eigen::MatrixXd S = CombineComponents(stations[i].components, theta);
+      const Eigen::MatrixXd C = included[i] ? Eigen::MatrixXd(S - J * N_inverse * J.transpose())
+                                            : Eigen::MatrixXd(S + J * N_inverse * J.transpose());
+      const Eigen::VectorXd r_hat = stations[i].residual - J * delta;
+      const Eigen::MatrixXd L = Eigen::LLT<Eigen::MatrixXd>(S).matrixL();
+      const Eigen::MatrixXd C_white = L.triangularView<Eigen::Lower>().solve(
+          L.triangularView<Eigen::Lower>().solve(C).transpose());
+      const Eigen::VectorXd r_white = L.triangularView<Eigen::Lower>().solve(r_hat);
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(0.5 *
+                                                                 (C_white + C_white.transpose()));
+      double statistic = 0.0;
+      int dof = 0;
+      for (int k = 0; k < 6; ++k) {
+        if (eigen.eigenvalues()(k) <= 1e-9) continue;
+        const double projection = eigen.eigenvectors().col(k).dot(r_white);
+        statistic += projection * projection / eigen.eigenvalues()(k);
+        ++dof;
+      }
+      EXPECT_EQ(tests[i].dof, dof) << "n " << n << ", station " << i;
+      EXPECT_NEAR(tests[i].statistic, statistic, 1e-6 * (1.0 + statistic))
+          << "n " << n << ", station " << i;
+      if (dof < 6) ++fewer_dof;
+    }
+    if (n == 4) {
+      EXPECT_GT(fewer_dof, 0) << "the singular case was not exercised";
+    } else {
+      EXPECT_EQ(fewer_dof, 0);
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "fixed_size_kernels.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
 
@@ -79,7 +80,7 @@ Matrix6d WhiteningMatrix(const Matrix6d& covariance) {
         "sigma of zero, or one so far below the other that the two cannot be weighed together)",
         "give --robot-sigma and --camera-sigma with a non-zero rotation and translation each");
   }
-  return llt.matrixL().solve(Matrix6d::Identity());
+  return internal::LowerTriangularInverse(llt.matrixLLT());
 }
 
 }  // namespace hecal::estimation

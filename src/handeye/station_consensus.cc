@@ -104,9 +104,9 @@ double ChordalSquaredError(const Problem& problem, int i, const Solution& soluti
   const Eigen::Matrix3d& R_Z = solution.Z.linear();
   const Eigen::Matrix3d& R_A = problem.A[i].linear();
   const Eigen::Matrix3d predicted = R_A * (R_X * problem.B[i].linear());  // R_Z · R_E
-  const Eigen::Vector3d t =
-      R_Z.transpose() * (R_A * (R_X * problem.B[i].translation() + solution.X.translation()) +
-                         problem.A[i].translation() - solution.Z.translation());
+  // d = |R_Zᵀ t| = |t|: the rotation into Z's frame does not change the length.
+  const Eigen::Vector3d t = R_A * (R_X * problem.B[i].translation() + solution.X.translation()) +
+                            problem.A[i].translation() - solution.Z.translation();
   return (3.0 - R_Z.cwiseProduct(predicted).sum()) +
          t.squaredNorm() / (length_scale * length_scale);
 }
