@@ -90,15 +90,15 @@ handeye::Solution CeresMinimum(const Case& c, const ceres::LossFunction* loss,
   return {PoseFromParameters(x), PoseFromParameters(z)};
 }
 
-void ExpectSamePose(const Pose& a, const Pose& b, const std::string& what) {
-  EXPECT_LT(so3::Distance(a.linear(), b.linear()), 1e-9) << what;
-  EXPECT_LT((a.translation() - b.translation()).norm(), 1e-9 * (1.0 + b.translation().norm()))
+void ExpectSamePose(const Pose& a, const Pose& b, double tolerance, const std::string& what) {
+  EXPECT_LT(so3::Distance(a.linear(), b.linear()), tolerance) << what;
+  EXPECT_LT((a.translation() - b.translation()).norm(), tolerance * (1.0 + b.translation().norm()))
       << what;
 }
 
 // From 3° / 3 cm off the truth, with and without a robust loss (and a gross outlier for the robust
-// ones): the optimum Ceres finds, to 1e-9 rad and 1e-9 relative in translation, and the inverse
-// normal equations there (ml's covariance) to 1e-9 relative.
+// ones): the optimum Ceres finds, to 1e-9 rad and 1e-9 relative in translation (1e-8 with a
+// robust loss), and the inverse normal equations there (ml's covariance) to 1e-9 relative.
 TEST(MinimizeLoopCost, ReachesTheOptimumCeresReaches) {
   Vector6d offset;
   offset << 3.0 * kRadiansPerDegree, -2.0 * kRadiansPerDegree, 1.0 * kRadiansPerDegree, 0.03, -0.02,
@@ -110,8 +110,12 @@ TEST(MinimizeLoopCost, ReachesTheOptimumCeresReaches) {
       const handeye::Solution start{c.truth.X * se3::Exp(offset), c.truth.Z * se3::Exp(-offset)};
       const handeye::Solution ours = MinimizeLoopCost(c.problem, c.whitening, loss.get(), start);
       const handeye::Solution reference = CeresMinimum(c, loss.get(), start);
-      ExpectSamePose(ours.X, reference.X, what + ": X");
-      ExpectSamePose(ours.Z, reference.Z, what + ": Z");
+      // Both stop when a step gains less than 1e-14 of the cost; with a robust loss the cost is
+      // flatter about the optimum (down-weighted stations), which that leaves fixed only to a few
+      // 1e-9 rad (the two differ by up to 2e-9 rad there, by rounding of the path).
+      const double tolerance = kind == RobustLoss::kNone ? 1e-9 : 1e-8;
+      ExpectSamePose(ours.X, reference.X, tolerance, what + ": X");
+      ExpectSamePose(ours.Z, reference.Z, tolerance, what + ": Z");
       if (kind != RobustLoss::kNone) continue;  // robust weights move with the pose
       const Matrix12d ours_covariance =
           LinearizeLoopCost(c.problem, c.whitening, nullptr, ours).hessian.inverse();
@@ -176,8 +180,8 @@ TEST(MinimizeLoopCost, NoiseFreeRecoversTheTruth) {
     offset << 0.05, -0.06, 0.04, 0.05, -0.03, 0.02;
     const handeye::Solution result = MinimizeLoopCost(
         problem, identity, nullptr, {data.X * se3::Exp(offset), data.Z * se3::Exp(-offset)});
-    ExpectSamePose(result.X, data.X, "X");
-    ExpectSamePose(result.Z, data.Z, "Z");
+    ExpectSamePose(result.X, data.X, 1e-9, "X");
+    ExpectSamePose(result.Z, data.Z, 1e-9, "Z");
   }
 }
 

@@ -206,31 +206,44 @@ TEST(EstimateNoise, NoiseFreeDataGiveTinyPositiveSigmas) {
   EXPECT_LT(estimate.robot().translation, 1e-9);
 }
 
+// The estimate on `stations` stations of PnP-shaped camera noise (robot noise 0.05° / 0.05 mm,
+// given; camera σ 1° / 1 mm shaped as sim::NoiseModel::Kind::kPnp), and its check against the
+// truth's parts (below) to a relative `tolerance` (the isotropic rotation, the spin, to
+// `spin_tolerance`: it rests on fewer degrees of freedom).
+NoiseEstimate EstimatePnpShapedCameraNoise(int stations, uint64_t seed) {
+  const PoseSigma robot{0.05 * kRadiansPerDegree, 0.05e-3};
+  std::mt19937_64 rng(seed);
+  sim::ProtocolOptions options;
+  options.setup = handeye::Setup::kEyeInHand;
+  options.stations = stations;
+  const sim::SimulatedData data = sim::SimulateThesisProtocol(
+      options, {sim::NoiseModel::Kind::kGaussian, robot.rotation, robot.translation},
+      {sim::NoiseModel::Kind::kPnp, 1.0 * kRadiansPerDegree, 1e-3}, rng);
+  const handeye::Problem problem = data.MeasuredProblem();
+  return EstimateNoise(LinearizeStations(problem, data.X, data.Z),
+                       NoiseSpec::FromSigmas(robot, std::nullopt), handeye::LengthScale(problem));
+}
+
+void ExpectPnpShapedCameraParts(const NoiseEstimate& estimate, double spin_tolerance,
+                                double tolerance) {
+  EXPECT_TRUE(estimate.richer);
+  EXPECT_NEAR(estimate.camera().rotation / (0.1 * kRadiansPerDegree), 1.0, spin_tolerance);
+  EXPECT_NEAR(estimate.camera().translation / 0.5e-3, 1.0, tolerance);
+  EXPECT_NEAR(estimate.camera_excess().rotation / (std::sqrt(4.0 - 0.01) * kRadiansPerDegree), 1.0,
+              tolerance);
+  EXPECT_NEAR(estimate.camera_excess().translation / (std::sqrt(25.0 - 0.25) * 1e-3), 1.0,
+              tolerance);
+}
+
 // PnP-shaped camera noise (sim/noise.h: tilt 2σ, spin 0.1σ, lateral 0.5σ, depth 5σ in the camera
 // frame) with the robot noise given: the isotropic model cannot take that shape, the likelihood
 // ratio chooses the anisotropic one, and its parts are the truth's: isotropic rotation = the spin
 // (0.1°), isotropic translation = the lateral σ (0.5 mm), tilt excess √(2² − 0.1²)° and depth
 // excess √(5² − 0.5²) mm. n = 300: each σ to a few percent (≥ 150 degrees of freedom each).
 TEST(EstimateNoise, ChoosesTheAnisotropicCameraModelForPnpShapedNoise) {
-  const PoseSigma robot{0.05 * kRadiansPerDegree, 0.05e-3};
-  std::mt19937_64 rng(25);
-  sim::ProtocolOptions options;
-  options.setup = handeye::Setup::kEyeInHand;
-  options.stations = 300;
-  const sim::SimulatedData data = sim::SimulateThesisProtocol(
-      options, {sim::NoiseModel::Kind::kGaussian, robot.rotation, robot.translation},
-      {sim::NoiseModel::Kind::kPnp, 1.0 * kRadiansPerDegree, 1e-3}, rng);
-  const handeye::Problem problem = data.MeasuredProblem();
-  const NoiseEstimate estimate =
-      EstimateNoise(LinearizeStations(problem, data.X, data.Z),
-                    NoiseSpec::FromSigmas(robot, std::nullopt), handeye::LengthScale(problem));
-  EXPECT_TRUE(estimate.richer);
+  const NoiseEstimate estimate = EstimatePnpShapedCameraNoise(300, 25);
   EXPECT_GT(estimate.likelihood_ratio, 5.991);
-  EXPECT_NEAR(estimate.camera().rotation / (0.1 * kRadiansPerDegree), 1.0, 0.15);
-  EXPECT_NEAR(estimate.camera().translation / 0.5e-3, 1.0, 0.1);
-  EXPECT_NEAR(estimate.camera_excess().rotation / (std::sqrt(4.0 - 0.01) * kRadiansPerDegree), 1.0,
-              0.1);
-  EXPECT_NEAR(estimate.camera_excess().translation / (std::sqrt(25.0 - 0.25) * 1e-3), 1.0, 0.1);
+  ExpectPnpShapedCameraParts(estimate, 0.15, 0.1);
 }
 
 // Isotropic noise: the richer model gains little likelihood and is not chosen (the test's level
@@ -278,26 +291,10 @@ TEST(EstimateNoise, TellsUnequalRobotAndCameraRotationNoiseApart) {
 // all stations: PnP-shaped camera noise (as above) on 3000 stations still gets the anisotropic
 // model, with each part within a few percent of the truth (≥ 1500 degrees of freedom each).
 TEST(EstimateNoise, ChoosesTheModelOnASubsampleAboveTheChoiceSize) {
-  const PoseSigma robot{0.05 * kRadiansPerDegree, 0.05e-3};
-  std::mt19937_64 rng(28);
-  sim::ProtocolOptions options;
-  options.setup = handeye::Setup::kEyeInHand;
-  options.stations = 3000;
-  ASSERT_GT(static_cast<size_t>(options.stations), kModelChoiceStations);
-  const sim::SimulatedData data = sim::SimulateThesisProtocol(
-      options, {sim::NoiseModel::Kind::kGaussian, robot.rotation, robot.translation},
-      {sim::NoiseModel::Kind::kPnp, 1.0 * kRadiansPerDegree, 1e-3}, rng);
-  const handeye::Problem problem = data.MeasuredProblem();
-  const NoiseEstimate estimate =
-      EstimateNoise(LinearizeStations(problem, data.X, data.Z),
-                    NoiseSpec::FromSigmas(robot, std::nullopt), handeye::LengthScale(problem));
-  EXPECT_TRUE(estimate.richer);
+  ASSERT_GT(size_t{3000}, kModelChoiceStations);
+  const NoiseEstimate estimate = EstimatePnpShapedCameraNoise(3000, 28);
   EXPECT_TRUE(estimate.converged);
-  EXPECT_NEAR(estimate.camera().rotation / (0.1 * kRadiansPerDegree), 1.0, 0.05);
-  EXPECT_NEAR(estimate.camera().translation / 0.5e-3, 1.0, 0.05);
-  EXPECT_NEAR(estimate.camera_excess().rotation / (std::sqrt(4.0 - 0.01) * kRadiansPerDegree), 1.0,
-              0.05);
-  EXPECT_NEAR(estimate.camera_excess().translation / (std::sqrt(25.0 - 0.25) * 1e-3), 1.0, 0.05);
+  ExpectPnpShapedCameraParts(estimate, 0.05, 0.05);
 }
 
 // A noise model whose variances cannot make the station covariances positive definite (here no

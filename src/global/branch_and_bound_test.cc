@@ -15,16 +15,27 @@
 namespace hecal::global {
 namespace {
 
+// The noise-free scene of these tests (5 motions of 20 ray pairs, seed 21) and search options
+// that close the certificate to 1e-6 rad on it.
+testing::EpipolarScene FiveMotionScene(handeye::Setup setup = handeye::Setup::kEyeInHand) {
+  testing::EpipolarSceneSpec spec;
+  spec.motions = 5;
+  spec.pairs = 20;
+  spec.setup = setup;
+  return testing::MakeEpipolarScene(spec, 21);
+}
+
+SearchOptions TightOptions() {
+  SearchOptions options;
+  options.epsilon = 1e-6;
+  options.translation_bound = 1.0;
+  return options;
+}
+
 TEST(SolveGlobal, RecoversXFromNoiseFreeScenesWithAClosedCertificate) {
   for (const auto setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
-    testing::EpipolarSceneSpec spec;
-    spec.motions = 5;
-    spec.pairs = 20;
-    spec.setup = setup;
-    const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 21);
-    SearchOptions options;
-    options.epsilon = 1e-6;
-    options.translation_bound = 1.0;
+    const testing::EpipolarScene scene = FiveMotionScene(setup);
+    const SearchOptions options = TightOptions();
     const GlobalSolution solution = SolveGlobal(scene.problem, options);
     const Certificate& c = solution.certificate;
     EXPECT_TRUE(c.certified);
@@ -59,13 +70,8 @@ void ExpectValidUncertified(const EpipolarProblem& problem, const GlobalSolution
 }
 
 TEST(SolveGlobal, StopsWhenTheTimeBudgetRunsOutWithTheBoundsProved) {
-  testing::EpipolarSceneSpec spec;
-  spec.motions = 5;
-  spec.pairs = 20;
-  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 21);
-  SearchOptions options;
-  options.epsilon = 1e-6;
-  options.translation_bound = 1.0;
+  const testing::EpipolarScene scene = FiveMotionScene();
+  SearchOptions options = TightOptions();
   auto clock = std::make_shared<SteppingClock>();
   options.clock = [clock] { return (*clock)(); };
   options.time_budget = 4.0;  // the start and three checks: three batches of cubes at most
@@ -95,13 +101,8 @@ TEST(SolveGlobal, StopsWhenTheTimeBudgetRunsOutWithTheBoundsProved) {
 }
 
 TEST(SolveGlobal, StopsWhenTheCubeBudgetRunsOut) {
-  testing::EpipolarSceneSpec spec;
-  spec.motions = 5;
-  spec.pairs = 20;
-  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 21);
-  SearchOptions options;
-  options.epsilon = 1e-6;
-  options.translation_bound = 1.0;
+  const testing::EpipolarScene scene = FiveMotionScene();
+  SearchOptions options = TightOptions();
   options.max_cubes = 200;
   const GlobalSolution solution = SolveGlobal(scene.problem, options);
   ExpectValidUncertified(scene.problem, solution);

@@ -18,14 +18,20 @@
 namespace hecal::global {
 namespace {
 
-// The time budget is for all the solves together: on a clock that moves one second per reading
-// the rounds and the last solve stop within it, and the result is a valid, uncertified X.
-TEST(SolveGlobalRobust, StopsWhenTheTimeBudgetRunsOut) {
+// 3 motions of 40 ray pairs, 0.5 px noise, 10% wrong matches.
+testing::EpipolarSceneSpec NoisySpec() {
   testing::EpipolarSceneSpec spec;
   spec.motions = 3;
   spec.pairs = 40;
   spec.pixel_sigma = 0.5;
   spec.wrong_fraction = 0.1;
+  return spec;
+}
+
+// The time budget is for all the solves together: on a clock that moves one second per reading
+// the rounds and the last solve stop within it, and the result is a valid, uncertified X.
+TEST(SolveGlobalRobust, StopsWhenTheTimeBudgetRunsOut) {
+  const testing::EpipolarSceneSpec spec = NoisySpec();
   const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 31);
   SearchOptions search;
   search.epsilon = 1e-7;  // far below the noise: no solve can close it in a few batches
@@ -57,11 +63,7 @@ TEST(SolveGlobalRobust, StopsWhenTheTimeBudgetRunsOut) {
 }
 
 TEST(SolveGlobalRobust, RemovesWrongMatchesWithHighPrecisionAndRecall) {
-  testing::EpipolarSceneSpec spec;
-  spec.motions = 3;
-  spec.pairs = 40;
-  spec.pixel_sigma = 0.5;
-  spec.wrong_fraction = 0.1;
+  const testing::EpipolarSceneSpec spec = NoisySpec();
   const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 31);
   SearchOptions search;
   search.epsilon = 3e-3;  // the decision rounds only: closing a noisy gap is slow
