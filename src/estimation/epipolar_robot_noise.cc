@@ -59,14 +59,24 @@ std::map<int, int> StationIndex(const global::EpipolarProblem& problem) {
   return index;
 }
 
-Linearisation Linearise(const global::EpipolarProblem& problem, const Pose& X) {
+// The residuals r̂ at X and their Jacobians J (in δ) and G (in every station's η), one row per
+// pair in the order of the motions.
+struct Jacobians {
+  Eigen::MatrixXd J, G;
+  Eigen::VectorXd r;
+};
+
+Jacobians Differentiate(const global::EpipolarProblem& problem, const Pose& X) {
   const std::map<int, int> station = StationIndex(problem);
   const int p = 6 * int(station.size());
-  Linearisation lin;
-  lin.n = CheckedPairCount(problem);
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(lin.n, p);
-  Eigen::MatrixXd J(lin.n, 6);
-  Eigen::VectorXd r(lin.n);
+  const int n = CheckedPairCount(problem);
+  Jacobians out;
+  out.G = Eigen::MatrixXd::Zero(n, p);
+  out.J.resize(n, 6);
+  out.r.resize(n);
+  Eigen::MatrixXd& G = out.G;
+  Eigen::MatrixXd& J = out.J;
+  Eigen::VectorXd& r = out.r;
   const double zero[6] = {0, 0, 0, 0, 0, 0};
   const double* parameters[3] = {zero, zero, zero};
   int row = 0;
@@ -87,6 +97,16 @@ Linearisation Linearise(const global::EpipolarProblem& problem, const Pose& X) {
       ++row;
     }
   }
+  return out;
+}
+
+Linearisation Linearise(const global::EpipolarProblem& problem, const Pose& X) {
+  const Jacobians d = Differentiate(problem, X);
+  const Eigen::MatrixXd& G = d.G;
+  const Eigen::MatrixXd& J = d.J;
+  const Eigen::VectorXd& r = d.r;
+  Linearisation lin;
+  lin.n = int(r.size());
   lin.rr = r.squaredNorm();
   lin.JJ = J.transpose() * J;
   lin.Jr = J.transpose() * r;
@@ -241,6 +261,66 @@ RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& pr
         "add motions in which the robot also translates, by a few centimetres or more");
   }
   return result;
+}
+
+EpipolarJackknife ExpectedEpipolarJackknife(const global::EpipolarProblem& problem, const Pose& X,
+                                            const EpipolarNoise& noise,
+                                            const std::vector<std::vector<bool>>& kept) {
+  const Jacobians d = Differentiate(problem, X);
+  const int n = int(d.r.size());
+  const int p = int(d.G.cols());
+  const int groups = int(kept.size());
+  Eigen::VectorXd D(p);  // the nuisances' variances
+  for (int k = 0; k < p; ++k) {
+    const double s = k % 6 < 3 ? noise.robot_rotation_sigma : noise.robot_translation_sigma;
+    D[k] = s * s;
+  }
+  const double s2 = noise.ray_sigma * noise.ray_sigma;
+  const auto apply_V = [&](const Eigen::MatrixXd& Y) {  // V Y, Y n × k
+    return Eigen::MatrixXd(s2 * Y + d.G * (D.asDiagonal() * (d.G.transpose() * Y)));
+  };
+  // M on the pairs with rows[i] (zero elsewhere), 6 × n: V_S⁻¹ by Woodbury in the nuisances.
+  const auto estimator = [&](const std::vector<bool>& rows) {
+    Eigen::MatrixXd GS = d.G, JS = d.J;
+    for (int i = 0; i < n; ++i) {
+      if (!rows[std::size_t(i)]) GS.row(i).setZero(), JS.row(i).setZero();
+    }
+    const Eigen::VectorXd root = D.cwiseSqrt();
+    const Eigen::MatrixXd F = GS * root.asDiagonal();  // n × p
+    const Eigen::MatrixXd K = Eigen::MatrixXd::Identity(p, p) + F.transpose() * F / s2;
+    const Eigen::MatrixXd W =
+        (JS - F * Eigen::LLT<Eigen::MatrixXd>(K).solve(F.transpose() * JS) / s2) / s2;  // V_S⁻¹ J_S
+    const Matrix6d C = (JS.transpose() * W).inverse();
+    return Eigen::MatrixXd(C * W.transpose());
+  };
+  std::vector<int> motion_of;  // per pair
+  for (int m = 0; m < int(problem.motions.size()); ++m) {
+    motion_of.insert(motion_of.end(), problem.motions[std::size_t(m)].pairs.size(), m);
+  }
+  const Eigen::MatrixXd M = estimator(std::vector<bool>(std::size_t(n), true));
+  std::vector<Eigen::MatrixXd> L;
+  Eigen::MatrixXd mean = Eigen::MatrixXd::Zero(6, n);
+  for (const std::vector<bool>& motions : kept) {
+    std::vector<bool> rows(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      rows[std::size_t(i)] = motions[std::size_t(motion_of[std::size_t(i)])];
+    L.push_back(estimator(rows) - M);
+    mean += L.back() / groups;
+  }
+  EpipolarJackknife out;
+  const double factor = (groups - 1.0) / groups;
+  for (Eigen::MatrixXd& l : L) {
+    l -= mean;
+    out.covariance += factor * l * apply_V(l.transpose());
+  }
+  for (int k = 0; k < 6; ++k) {
+    Eigen::MatrixXd A(groups, n);
+    for (int g = 0; g < groups; ++g) A.row(g) = L[std::size_t(g)].row(k);
+    const Eigen::MatrixXd S = A * apply_V(A.transpose());
+    const double trace = S.trace();
+    out.relative_error[k] = trace > 0.0 ? std::sqrt(2.0 * S.squaredNorm()) / trace : 0.0;
+  }
+  return out;
 }
 
 }  // namespace hecal::estimation

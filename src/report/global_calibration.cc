@@ -52,6 +52,38 @@ std::vector<std::string> SearchWarnings(const global::Certificate& c,
   return {text.str()};
 }
 
+// covariance.model_check: the fields of the other methods' model check (result_file.cc) where
+// they mean the same, for X only and in radians and metres, and the model's own covariance.
+nlohmann::json ModelCheckJson(const GlobalCovarianceCheck& checked) {
+  const estimation::ModelCheck& check = checked.check;
+  if (!check.possible) {
+    return {{"method", "jackknife"}, {"possible", false}, {"reason", check.reason}};
+  }
+  const auto per_axis = [](const Vector6d& v) {
+    return nlohmann::json{{"rotation", {v(0), v(1), v(2)}}, {"translation", {v(3), v(4), v(5)}}};
+  };
+  const auto sigma = [](const Vector6d& v) {
+    return nlohmann::json{{"rotation_rad", {v(0), v(1), v(2)}},
+                          {"translation_m", {v(3), v(4), v(5)}}};
+  };
+  static const char* const kNames[6] = {"rx", "ry", "rz", "tx", "ty", "tz"};
+  nlohmann::json flagged = nlohmann::json::array();
+  for (int k = 0; k < 6; ++k) {
+    if (check.flagged[std::size_t(k)]) flagged.push_back(std::string("X.") + kNames[k]);
+  }
+  return {{"method", "jackknife"},
+          {"possible", true},
+          {"groups", check.groups},
+          {"sigma_model", {{"X", sigma(check.sigma_model.head<6>())}}},
+          {"sigma_check", {{"X", sigma(check.sigma_check.head<6>())}}},
+          {"ratio", {{"X", per_axis(check.Ratio().head<6>())}}},
+          {"relative_error", {{"X", per_axis(check.relative_error.head<6>())}}},
+          {"inflation", {{"X", per_axis(check.Inflation().head<6>())}}},
+          {"flagged", flagged},
+          {"used", check.used},
+          {"model_X", JsonRows(Matrix6d(check.model_covariance.topLeftCorner<6, 6>()))}};
+}
+
 }  // namespace
 
 bool GlobalCalibrationOptions::IsValid(std::string* why) const {
@@ -197,6 +229,8 @@ GlobalCalibrationResult CalibrateGlobal(
   }
   result.robot_noise = estimation::PolishWithEstimatedRobotNoise(
       rechecked.inliers, rechecked.polish.X, options.reach, hand_sigma);
+  result.covariance_check = CheckGlobalCovariance(rechecked.inliers, result.robot_noise);
+  result.robot_noise.polish.covariance = result.covariance_check.covariance;
   result.noise = result.robot_noise.noise;
   if (options.robot_sigma) {
     result.noise.robot_rotation_sigma = options.robot_sigma->rotation;
@@ -211,6 +245,9 @@ GlobalCalibrationResult CalibrateGlobal(
   result.error_scale = robust.error_scale;
   result.search_seconds = robust.seconds;
   result.warnings = SearchWarnings(result.certificate, options);
+  if (!result.covariance_check.warning.empty()) {
+    result.warnings.push_back(result.covariance_check.warning);
+  }
   // The stage that removed each pair the re-check leaves out (pairs it re-admits are not listed).
   std::map<std::pair<int, int>, std::string> stage;
   for (const global::RemovedPair& r : robust.removed) {
@@ -230,6 +267,7 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
   const estimation::EpipolarPolish& polish = result.robot_noise.polish;
   const estimation::EpipolarNoise& noise = result.noise;
   const global::Certificate& c = result.certificate;
+  const estimation::ModelCheck& check = result.covariance_check.check;
   nlohmann::json doc;
   doc["method"] = "global";
   doc["setup"] = std::string(handeye::SetupName(options.setup));
@@ -255,7 +293,8 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
   doc["l_infinity_X"] = {{"rotation", JsonRows(result.l_infinity_X.linear())},
                          {"translation_m", JsonVector(result.l_infinity_X.translation())}};
   doc["covariance"] = {
-      {"method", "linear, robot pose error marginalised"},
+      {"method", check.used ? "linear, robot pose error marginalised, inflated by the model check"
+                            : "linear, robot pose error marginalised"},
       {"X", JsonRows(polish.covariance)},
       {"convention", "right perturbation (rx, ry, rz, tx, ty, tz), rad and m"},
       {"ray_sigma_rad", noise.ray_sigma},
@@ -263,6 +302,7 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
       {"robot_translation_sigma_m", noise.robot_translation_sigma},
       {"robot_sigma", result.robot_noise.robot_given ? "given" : "estimated"},
       {"independent_pairs_X", JsonRows(result.independent_covariance)},
+      {"model_check", ModelCheckJson(result.covariance_check)},
       {"translation_in_parent", TranslationSigmaInParentJson(handeye::XFrameName(options.setup),
                                                              polish.X, polish.covariance, 1.0)}};
   doc["polish"] = {{"rms_rad", polish.rms}, {"pairs", polish.pairs}};

@@ -136,13 +136,50 @@ TEST(CalibrateGlobal, SaysWhyTheSearchStoppedAndWarnsWhenABudgetEndedIt) {
   EXPECT_LE(c["lower"].get<double>(), c["upper"].get<double>());
   EXPECT_EQ(c["max_cubes"], 1);
   EXPECT_EQ(c["time_budget_s"], 120.0);
-  ASSERT_EQ(doc["warnings"].size(), 1u);
+  ASSERT_GE(doc["warnings"].size(), 1u);  // the search's first (the model check's may follow)
   EXPECT_NE(doc["warnings"][0].get<std::string>().find("--max-cubes"), std::string::npos);
   // The polish does not need a certified start: X is within 5σ of the truth per axis.
   const estimation::EpipolarPolish& polish = result.robot_noise.polish;
   const Vector6d error = se3::Log(polish.X.inverse() * scene.X);
   for (int k = 0; k < 6; ++k)
     EXPECT_LT(std::abs(error[k]), 5.0 * std::sqrt(polish.covariance(k, k)));
+}
+
+// covariance.model_check (global_calibration_check.h): the jackknife's fields, and the covariance
+// written is the model's scaled by the inflation factors (the model's own when nothing is used).
+TEST(CalibrateGlobal, WritesTheModelCheckUnderTheCovariance) {
+  testing::EpipolarSceneSpec spec = SmallSpec(handeye::Setup::kEyeInHand);
+  spec.pixel_sigma = 0.5;
+  const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
+  GlobalCalibrationOptions options;
+  options.reach = 1.0;
+  const GlobalCalibrationResult result = CalibrateGlobal(MatchesOf(scene, spec.focal), options);
+  const nlohmann::json doc = nlohmann::json::parse(GlobalResultJson(result));
+  const nlohmann::json& check = doc["covariance"]["model_check"];
+  EXPECT_EQ(check["method"], "jackknife");
+  ASSERT_TRUE(check["possible"].get<bool>()) << check.dump();
+  EXPECT_EQ(check["groups"].get<int>(), 8);  // 4 motions, 8 stations, one group each
+  Vector6d inflation;
+  Matrix6d model, written;
+  for (int k = 0; k < 3; ++k) {
+    inflation[k] = check["inflation"]["X"]["rotation"][k].get<double>();
+    inflation[k + 3] = check["inflation"]["X"]["translation"][k].get<double>();
+  }
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 6; ++c) {
+      model(r, c) = check["model_X"][r][c].get<double>();
+      written(r, c) = doc["covariance"]["X"][r][c].get<double>();
+    }
+  }
+  const bool used = check["used"].get<bool>();
+  EXPECT_EQ(used, !check["flagged"].empty());
+  if (!used) inflation.setOnes();
+  const Matrix6d expected = inflation.asDiagonal() * model * inflation.asDiagonal();
+  EXPECT_LT((written - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  bool warned = false;
+  for (const std::string& warning : result.warnings)
+    warned = warned || warning.find("jackknife") != std::string::npos;
+  EXPECT_EQ(warned, used);
 }
 
 TEST(CalibrateGlobal, RefusesAMotionNamingNoStation) {

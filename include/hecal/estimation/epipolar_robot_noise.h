@@ -44,6 +44,7 @@
 
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "hecal/estimation/epipolar_polish.h"
 #include "hecal/estimation/pose_sigma.h"
@@ -91,5 +92,26 @@ RobotNoisePolish PolishWithEstimatedRobotNoise(
     const global::EpipolarProblem& problem, const Pose& start,
     double reach = std::numeric_limits<double>::infinity(),
     const std::optional<PoseSigma>& robot = std::nullopt);
+
+// What the noise model predicts for a delete-group jackknife of the GLS polish
+// (report/global_calibration_check.h): without group g only the motions m with kept[g][m] are
+// polished (noise held), d_g = Log(X̂⁻¹ X_(−g)). In the problem linearised at X, d_g = L_g r with
+// L_g = M_g − M, M = (Jᵀ V⁻¹ J)⁻¹ Jᵀ V⁻¹ and M_g the same on the kept pairs (zero on the others),
+// and Cov(r) = V. So the jackknife covariance C_jk = (G − 1)/G Σ_g (d_g − d̄)(d_g − d̄)ᵀ has the
+// mean  E_jk = (G − 1)/G (Σ_g L_g V L_gᵀ − 1/G (Σ_g L_g) V (Σ_g L_g)ᵀ), which accounts for
+// groups that overlap (a motion dropped with either of its stations) or repeat (a motion whose
+// two stations are in different groups). And per axis k, C_jk,kk = (G − 1)/G Σ_g y_g² with
+// y = A_k r Gaussian, A_k's rows those of L_g − L̄ for axis k: its relative standard deviation is
+// √(2 tr(S²))/tr(S), S = A_k V A_kᵀ — the Gaussian sampling error of the check, which
+// √(2/(G − 1)) overstates the information of when groups overlap.
+struct EpipolarJackknife {
+  Matrix6d covariance = Matrix6d::Zero();      // E_jk
+  Vector6d relative_error = Vector6d::Zero();  // of each C_jk,kk (a variance)
+};
+
+// Precondition: every kept set leaves at least 7 pairs; kept[g] has one entry per motion.
+EpipolarJackknife ExpectedEpipolarJackknife(const global::EpipolarProblem& problem, const Pose& X,
+                                            const EpipolarNoise& noise,
+                                            const std::vector<std::vector<bool>>& kept);
 
 }  // namespace hecal::estimation

@@ -3,7 +3,8 @@
 // two stations (unit rays), global::SolveGlobalRobust removes wrong matches and certifies the
 // L∞ optimum (global/outlier_removal.h, global/branch_and_bound.h); estimation::PolishAndRecheck
 // polishes it in L2 and re-checks the removed pairs at the polished X; the final X and its
-// covariance come from the polish with the robot's pose error marginalised
+// covariance come from the polish with the robot's pose error marginalised, the covariance
+// checked against the data's own spread (global_calibration_check.h)
 // (estimation/epipolar_robot_noise.h: the three noise levels estimated, or the robot's held at
 // `robot_sigma` when given — eye-to-hand widened by the lever arm of the gripper positions,
 // estimation::HandPoseSigma — and only the ray noise estimated).
@@ -21,8 +22,9 @@
 // (ω, v) of X.
 // Result file (WriteGlobalResult, JSON, docs/global.md "Command"): method, setup, X,
 // certificate (with `stopped_by`: "gap reached", "below threshold", "max cubes" or
-// "time budget", and the budgets), l_infinity_X, covariance (with the noise levels, `robot_sigma`:
-// "given" or "estimated", and the independent-pairs covariance), polish, matches (inliers,
+// "time budget", and the budgets), l_infinity_X, covariance (with the model check, the noise
+// levels, `robot_sigma`: "given" or "estimated", and the independent-pairs covariance), polish,
+// matches (inliers,
 // thresholds, removed pairs with the stage that removed them), warnings.
 //
 // Errors: InputError naming the options field (GlobalCalibrationOptions::IsValid), the files
@@ -42,6 +44,7 @@
 #include "hecal/global/branch_and_bound.h"
 #include "hecal/global/epipolar_problem.h"
 #include "hecal/io/pose_table.h"
+#include "hecal/report/global_calibration_check.h"
 
 namespace hecal::report {
 
@@ -96,7 +99,10 @@ struct RemovedMatch {
 
 struct GlobalCalibrationResult {
   GlobalCalibrationOptions options;
-  estimation::RobotNoisePolish robot_noise;  // the final X, covariance and the model's noise
+  // The final X, covariance (the model check's: inflated where the data spread more than the
+  // noise model says) and the model's noise.
+  estimation::RobotNoisePolish robot_noise;
+  GlobalCovarianceCheck covariance_check;  // with the model's own covariance in check
   // As reported: the ray σ estimated; the robot's σ_r, σ_t as given (robot_sigma), else as
   // estimated (those of the hand pose H, estimation/epipolar_robot_noise.h).
   estimation::EpipolarNoise noise;
