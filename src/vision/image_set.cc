@@ -2,6 +2,7 @@
 #include "hecal/vision/image_set.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <opencv2/core/utility.hpp>
@@ -13,6 +14,7 @@
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/image_files.h"
 #include "hecal/io/target_file.h"
+#include "hecal/vision/chessboard_extent.h"
 #include "hecal/vision/image_read.h"
 #include "hecal/vision/intrinsics_fit.h"
 #include "hecal/vision/intrinsics_plausibility.h"
@@ -78,17 +80,38 @@ class OpenCvThreads {
   int previous_;
 };
 
+// What the walk of vision/chessboard_extent.h found beyond a `cols` × `rows` detection.
+std::string LargerText(const ChessboardExtent& extent, int cols, int rows) {
+  const std::string described = std::to_string(cols) + "x" + std::to_string(rows);
+  if (extent.not_neighbours) {
+    return "the " + described +
+           " corners found are not neighbouring corners of one chessboard (the squares between "
+           "them do not alternate dark and bright): they are corners of a larger board, several "
+           "squares apart";
+  }
+  return "the chessboard continues beyond the " + described + " inner corners described: it has " +
+         (extent.out_of_view ? "at least " : "") +
+         std::to_string(cols + extent.before_x + extent.after_x) + "x" +
+         std::to_string(rows + extent.before_y + extent.after_y);
+}
+
 // Reads and detects every image, in parallel over images, with the given intrinsics when they
 // are for the image's size (the intrinsics of another size are reported after the loop, by
-// CheckIntrinsicsSize). Errors are raised after the loop, for the first image in file-name
-// order, so the message does not depend on the scheduling.
+// CheckIntrinsicsSize). A chessboard whose checker pattern continues beyond the described
+// corners (vision/chessboard_extent.h) is refused at once: the images after the first such one
+// are not detected (those before it are, so that the error does not depend on the scheduling).
+// Errors are raised after the loop, for the first image in file-name order.
 void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                const std::optional<pose::CameraModel>& camera, std::vector<ImageRecord>* images) {
   std::vector<std::exception_ptr> errors(images->size());
+  std::vector<ChessboardExtent> extents(images->size());
+  const int none = static_cast<int>(images->size());
+  std::atomic<int> first_larger = none;
   cv::parallel_for_(
       cv::Range(0, static_cast<int>(images->size())),
       [&](const cv::Range& range) {
         for (int i = range.start; i < range.end; ++i) {
+          if (i > first_larger.load()) continue;
           ImageRecord& image = (*images)[static_cast<std::size_t>(i)];
           try {
             const cv::Mat pixels = ReadGrayImage(image.path.string(), kMinDetectionSide);
@@ -97,16 +120,35 @@ void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                                                                  camera->height == pixels.rows));
             image.detection = vision::DetectTarget(
                 pixels, target, {}, sized ? camera : std::optional<pose::CameraModel>());
+            if (target.type != pose::TargetType::kChessboard ||
+                image.detection.num_points() != image.detection.total_points) {
+              continue;
+            }
+            ChessboardExtent& extent = extents[static_cast<std::size_t>(i)];
+            extent = MeasureChessboardExtent(pixels, target.cols, target.rows,
+                                             PixelsOf(image.detection));
+            for (int seen = first_larger.load(); extent.larger() && i < seen;) {
+              if (first_larger.compare_exchange_weak(seen, i)) break;
+            }
           } catch (...) {
             errors[static_cast<std::size_t>(i)] = std::current_exception();
           }
         }
       },
       static_cast<double>(images->size()));
-  for (const std::exception_ptr& error : errors) {
-    if (!error) continue;
+  for (std::size_t i = 0; i < images->size(); ++i) {
+    if (static_cast<int>(i) == first_larger.load()) {
+      const ImageRecord& image = (*images)[i];
+      throw InputError(target_file, 0,
+                       "in " + image.name + ", " + LargerText(extents[i], target.cols, target.rows),
+                       "set cols and rows to the INNER corners of the whole printed board (a "
+                       "board of 25x18 squares has 24x17): the detector finds the described " +
+                           std::to_string(target.cols) + "x" + std::to_string(target.rows) +
+                           " corners at a different place on the larger board in each image");
+    }
+    if (!errors[i]) continue;
     try {
-      std::rethrow_exception(error);
+      std::rethrow_exception(errors[i]);
     } catch (const InputError& e) {
       // DetectTarget's complaints about the target spec name "target": point at the file.
       if (e.source() == "target") throw InputError(target_file, 0, e.problem(), e.fix());
