@@ -15,6 +15,7 @@
 #include "hecal/io/image_files.h"
 #include "hecal/io/target_file.h"
 #include "hecal/vision/chessboard_extent.h"
+#include "hecal/vision/chessboard_size_probe.h"
 #include "hecal/vision/image_read.h"
 #include "hecal/vision/intrinsics_fit.h"
 #include "hecal/vision/intrinsics_plausibility.h"
@@ -80,38 +81,70 @@ class OpenCvThreads {
   int previous_;
 };
 
-// What the walk of vision/chessboard_extent.h found beyond a `cols` × `rows` detection.
-std::string LargerText(const ChessboardExtent& extent, int cols, int rows) {
-  const std::string described = std::to_string(cols) + "x" + std::to_string(rows);
-  if (extent.not_neighbours) {
-    return "the " + described +
-           " corners found are not neighbouring corners of one chessboard (the squares between "
-           "them do not alternate dark and bright): they are corners of a larger board, several "
-           "squares apart";
+// A chessboard description the image shows to be wrong (problem and fix, empty when the image
+// shows nothing wrong): the checker pattern continues beyond the corners found
+// (vision/chessboard_extent.h), or the described board is not found but one a corner off is
+// (vision/chessboard_size_probe.h).
+struct WrongBoard {
+  std::string problem, fix;
+};
+
+std::string SizeText(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+WrongBoard CheckChessboard(const cv::Mat& gray, const pose::TargetSpec& target,
+                           const Detection& detection) {
+  const std::string described = SizeText(target.cols, target.rows);
+  if (detection.status == DetectionStatus::kNotFound) {
+    const std::optional<cv::Size> size = ProbeChessboardSize(gray, target.cols, target.rows);
+    if (!size) return {};
+    const std::string shown = SizeText(size->width, size->height);
+    return {"no " + described + " chessboard found, but a whole " + shown +
+                " one: the images show a " + shown + " chessboard, the file says " + described,
+            "set cols: " + std::to_string(size->width) +
+                " and rows: " + std::to_string(size->height) +
+                " (cols/rows count INNER corners: a board of 25x18 squares has 24x17)"};
   }
-  return "the chessboard continues beyond the " + described + " inner corners described: it has " +
-         (extent.out_of_view ? "at least " : "") +
-         std::to_string(cols + extent.before_x + extent.after_x) + "x" +
-         std::to_string(rows + extent.before_y + extent.after_y);
+  if (detection.num_points() != detection.total_points) return {};
+  const ChessboardExtent extent =
+      MeasureChessboardExtent(gray, target.cols, target.rows, PixelsOf(detection));
+  if (!extent.larger()) return {};
+  const std::string fix =
+      "set cols and rows to the INNER corners of the whole printed board (a board of 25x18 "
+      "squares has 24x17): the detector finds the described " +
+      described + " corners at a different place on the larger board in each image";
+  if (extent.not_neighbours) {
+    return {"the " + described +
+                " corners found are not neighbouring corners of one chessboard (the squares "
+                "between them do not alternate dark and bright): they are corners of a larger "
+                "board, several squares apart",
+            fix};
+  }
+  return {"the chessboard continues beyond the " + described + " inner corners described: it has " +
+              (extent.out_of_view ? "at least " : "") +
+              SizeText(target.cols + extent.before_x + extent.after_x,
+                       target.rows + extent.before_y + extent.after_y),
+          fix};
 }
 
 // Reads and detects every image, in parallel over images, with the given intrinsics when they
 // are for the image's size (the intrinsics of another size are reported after the loop, by
-// CheckIntrinsicsSize). A chessboard whose checker pattern continues beyond the described
-// corners (vision/chessboard_extent.h) is refused at once: the images after the first such one
-// are not detected (those before it are, so that the error does not depend on the scheduling).
-// Errors are raised after the loop, for the first image in file-name order.
+// CheckIntrinsicsSize). A chessboard description that an image shows to be wrong (CheckChessboard)
+// is refused at once: the images after the first such one are not detected (those before it are,
+// so that the error does not depend on the scheduling). Errors are raised after the loop, for
+// the first image in file-name order.
 void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                const std::optional<pose::CameraModel>& camera, std::vector<ImageRecord>* images) {
   std::vector<std::exception_ptr> errors(images->size());
-  std::vector<ChessboardExtent> extents(images->size());
+  std::vector<WrongBoard> wrong(images->size());
   const int none = static_cast<int>(images->size());
-  std::atomic<int> first_larger = none;
+  std::atomic<int> first_wrong = none;
   cv::parallel_for_(
       cv::Range(0, static_cast<int>(images->size())),
       [&](const cv::Range& range) {
         for (int i = range.start; i < range.end; ++i) {
-          if (i > first_larger.load()) continue;
+          if (i > first_wrong.load()) continue;
           ImageRecord& image = (*images)[static_cast<std::size_t>(i)];
           try {
             const cv::Mat pixels = ReadGrayImage(image.path.string(), kMinDetectionSide);
@@ -120,15 +153,11 @@ void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                                                                  camera->height == pixels.rows));
             image.detection = vision::DetectTarget(
                 pixels, target, {}, sized ? camera : std::optional<pose::CameraModel>());
-            if (target.type != pose::TargetType::kChessboard ||
-                image.detection.num_points() != image.detection.total_points) {
-              continue;
-            }
-            ChessboardExtent& extent = extents[static_cast<std::size_t>(i)];
-            extent = MeasureChessboardExtent(pixels, target.cols, target.rows,
-                                             PixelsOf(image.detection));
-            for (int seen = first_larger.load(); extent.larger() && i < seen;) {
-              if (first_larger.compare_exchange_weak(seen, i)) break;
+            if (target.type != pose::TargetType::kChessboard) continue;
+            WrongBoard& board = wrong[static_cast<std::size_t>(i)];
+            board = CheckChessboard(pixels, target, image.detection);
+            for (int seen = first_wrong.load(); !board.problem.empty() && i < seen;) {
+              if (first_wrong.compare_exchange_weak(seen, i)) break;
             }
           } catch (...) {
             errors[static_cast<std::size_t>(i)] = std::current_exception();
@@ -137,14 +166,9 @@ void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
       },
       static_cast<double>(images->size()));
   for (std::size_t i = 0; i < images->size(); ++i) {
-    if (static_cast<int>(i) == first_larger.load()) {
-      const ImageRecord& image = (*images)[i];
-      throw InputError(target_file, 0,
-                       "in " + image.name + ", " + LargerText(extents[i], target.cols, target.rows),
-                       "set cols and rows to the INNER corners of the whole printed board (a "
-                       "board of 25x18 squares has 24x17): the detector finds the described " +
-                           std::to_string(target.cols) + "x" + std::to_string(target.rows) +
-                           " corners at a different place on the larger board in each image");
+    if (static_cast<int>(i) == first_wrong.load()) {
+      throw InputError(target_file, 0, "in " + (*images)[i].name + ", " + wrong[i].problem,
+                       wrong[i].fix);
     }
     if (!errors[i]) continue;
     try {
@@ -222,10 +246,6 @@ void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::Target
                ? "the tag's id and family/dictionary in " + options.target
                : "cols/rows in " + options.target +
                      " (a board of the wrong size may be found in part of some images)"));
-}
-
-std::string SizeText(int width, int height) {
-  return std::to_string(width) + "x" + std::to_string(height);
 }
 
 // The camera file's width × height against the images': equal, or an error naming both. Two
