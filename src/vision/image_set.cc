@@ -14,13 +14,12 @@
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/image_files.h"
 #include "hecal/io/target_file.h"
-#include "hecal/vision/chessboard_extent.h"
-#include "hecal/vision/chessboard_size_probe.h"
 #include "hecal/vision/image_read.h"
 #include "hecal/vision/intrinsics_fit.h"
 #include "hecal/vision/intrinsics_plausibility.h"
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
+#include "hecal/vision/target_mismatch.h"
 
 namespace hecal::vision {
 namespace {
@@ -81,63 +80,16 @@ class OpenCvThreads {
   int previous_;
 };
 
-// A chessboard description the image shows to be wrong (problem and fix, empty when the image
-// shows nothing wrong): the checker pattern continues beyond the corners found
-// (vision/chessboard_extent.h), or the described board is not found but one a corner off is
-// (vision/chessboard_size_probe.h).
-struct WrongBoard {
-  std::string problem, fix;
-};
-
-std::string SizeText(int width, int height) {
-  return std::to_string(width) + "x" + std::to_string(height);
-}
-
-WrongBoard CheckChessboard(const cv::Mat& gray, const pose::TargetSpec& target,
-                           const Detection& detection) {
-  const std::string described = SizeText(target.cols, target.rows);
-  if (detection.status == DetectionStatus::kNotFound) {
-    const std::optional<cv::Size> size = ProbeChessboardSize(gray, target.cols, target.rows);
-    if (!size) return {};
-    const std::string shown = SizeText(size->width, size->height);
-    return {"no " + described + " chessboard found, but a whole " + shown +
-                " one: the images show a " + shown + " chessboard, the file says " + described,
-            "set cols: " + std::to_string(size->width) +
-                " and rows: " + std::to_string(size->height) +
-                " (cols/rows count INNER corners: a board of 25x18 squares has 24x17)"};
-  }
-  if (detection.num_points() != detection.total_points) return {};
-  const ChessboardExtent extent =
-      MeasureChessboardExtent(gray, target.cols, target.rows, PixelsOf(detection));
-  if (!extent.larger()) return {};
-  const std::string fix =
-      "set cols and rows to the INNER corners of the whole printed board (a board of 25x18 "
-      "squares has 24x17): the detector finds the described " +
-      described + " corners at a different place on the larger board in each image";
-  if (extent.not_neighbours) {
-    return {"the " + described +
-                " corners found are not neighbouring corners of one chessboard (the squares "
-                "between them do not alternate dark and bright): they are corners of a larger "
-                "board, several squares apart",
-            fix};
-  }
-  return {"the chessboard continues beyond the " + described + " inner corners described: it has " +
-              (extent.out_of_view ? "at least " : "") +
-              SizeText(target.cols + extent.before_x + extent.after_x,
-                       target.rows + extent.before_y + extent.after_y),
-          fix};
-}
-
 // Reads and detects every image, in parallel over images, with the given intrinsics when they
 // are for the image's size (the intrinsics of another size are reported after the loop, by
-// CheckIntrinsicsSize). A chessboard description that an image shows to be wrong (CheckChessboard)
-// is refused at once: the images after the first such one are not detected (those before it are,
-// so that the error does not depend on the scheduling). Errors are raised after the loop, for
-// the first image in file-name order.
+// CheckIntrinsicsSize). A target description that an image shows to be wrong
+// (vision/target_mismatch.h) is refused at once: the images after the first such one are not
+// detected (those before it are, so that the error does not depend on the scheduling). Errors are
+// raised after the loop, for the first image in file-name order.
 void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                const std::optional<pose::CameraModel>& camera, std::vector<ImageRecord>* images) {
   std::vector<std::exception_ptr> errors(images->size());
-  std::vector<WrongBoard> wrong(images->size());
+  std::vector<TargetMismatch> wrong(images->size());
   const int none = static_cast<int>(images->size());
   std::atomic<int> first_wrong = none;
   cv::parallel_for_(
@@ -153,10 +105,9 @@ void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                                                                  camera->height == pixels.rows));
             image.detection = vision::DetectTarget(
                 pixels, target, {}, sized ? camera : std::optional<pose::CameraModel>());
-            if (target.type != pose::TargetType::kChessboard) continue;
-            WrongBoard& board = wrong[static_cast<std::size_t>(i)];
-            board = CheckChessboard(pixels, target, image.detection);
-            for (int seen = first_wrong.load(); !board.problem.empty() && i < seen;) {
+            TargetMismatch& mismatch = wrong[static_cast<std::size_t>(i)];
+            mismatch = FindTargetMismatch(pixels, target, image.detection);
+            for (int seen = first_wrong.load(); mismatch.found() && i < seen;) {
               if (first_wrong.compare_exchange_weak(seen, i)) break;
             }
           } catch (...) {
@@ -246,6 +197,10 @@ void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::Target
                ? "the tag's id and family/dictionary in " + options.target
                : "cols/rows in " + options.target +
                      " (a board of the wrong size may be found in part of some images)"));
+}
+
+std::string SizeText(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
 }
 
 // The camera file's width × height against the images': equal, or an error naming both. Two
