@@ -36,9 +36,8 @@ bool WellInside(const cv::Mat& gray, const std::vector<cv::Point2f>& corners, cv
 }  // namespace
 
 std::optional<cv::Size> ProbeChessboardSize(const cv::Mat& gray, int cols, int rows) {
-  const cv::Size sizes[] = {{cols - 1, rows},     {cols + 1, rows},     {cols, rows - 1},
-                            {cols, rows + 1},     {cols - 1, rows - 1}, {cols + 1, rows + 1},
-                            {cols - 1, rows + 1}, {cols + 1, rows - 1}};
+  const cv::Size sizes[] = {{cols - 1, rows}, {cols + 1, rows},     {cols, rows - 1},
+                            {cols, rows + 1}, {cols - 1, rows - 1}, {cols + 1, rows + 1}};
   const double scale = std::min(1.0, kProbeSide / std::max(gray.cols, gray.rows));
   cv::Mat small = gray;
   if (scale < 1.0) cv::resize(gray, small, cv::Size(), scale, scale, cv::INTER_AREA);
