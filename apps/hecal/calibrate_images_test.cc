@@ -364,11 +364,13 @@ TEST_F(CalibrateImagesTest, BadInputIsRefusedAndNothingIsWritten) {
   no_target.erase(no_target.begin() + 3, no_target.begin() + 5);
   refuses(no_target, "--images needs --target");
   // The image front end's errors (vision/image_set.h): a wrong board size (8 × 6 corners on a 9 × 6
-  // board: the SB detector finds it in one image, in part of the board), a missing intrinsics
-  // file.
+  // board: the SB detector finds 8 × 6 of it in the first image, and the checker pattern goes on
+  // beyond them, vision/chessboard_extent.h), a missing intrinsics file.
   std::vector<std::string> wrong_board = args;
   wrong_board[4] = Write("wrong.yaml", "type: chessboard\ncols: 8\nrows: 6\nsquare: 0.025\n");
-  refuses(wrong_board, "check cols/rows in " + wrong_board[4]);
+  refuses(wrong_board, wrong_board[4] + ": in " + ViewName(0) +
+                           ".png, the chessboard continues beyond the 8x6 inner corners "
+                           "described: it has 9x6");
   std::vector<std::string> no_intrinsics = args;
   no_intrinsics[6] = Path("missing.yaml");
   refuses(no_intrinsics, "missing.yaml");

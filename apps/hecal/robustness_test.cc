@@ -12,11 +12,16 @@
 // FIFO); folder/, frames/init.csv/, det.points.csv/, est.camera.yaml/ (folders where files would
 // go); keep.txt; p.json (data/moveit-calibration/pose_samples.json); robot16.txt (3 rows of 16
 // numbers); colmajor.txt (a 4×4 written by columns); contour.csv; object.csv, image.csv;
-// target.yaml (the rwhe-kuka2 chessboard); k1.yaml (intrinsics with k1 = 1e6); images3/ (3
-// rwhe-kuka2 images); kuka_mm.txt (the rwhe-kuka2 robot poses with their translations × 1000);
-// one_pixel/ (1×1 PNGs), huge/ (PNG headers of 12000×12000), truncated_jpeg/ (JPEGs cut in half),
-// corrupt_jpeg/ (a JPEG with a stray marker in its scan), not_image/ (text named .png), cut_png/ (a
-// PNG cut inside its header).
+// target.yaml (the rwhe-kuka2 chessboard); board9x6.yaml, board25x18.yaml, square_m.yaml,
+// grid1.yaml (wrong descriptions of it: a 9 × 6 board, its squares counted instead of its inner
+// corners, the square in mm read as m, a grid of one marker); grid_photo/
+// (data/moveit-calibration's photo of a 3 × 4 DICT_4X4_250 ArUco grid), grid4x3.yaml and
+// grid_dict.yaml (wrong descriptions of it: the layout its upstream test declares, and the
+// dictionary DICT_5X5_250); k1.yaml (intrinsics with k1 = 1e6); images3/ (3 rwhe-kuka2 images);
+// kuka_mm.txt (the rwhe-kuka2 robot poses with their translations × 1000); one_pixel/ (1×1 PNGs),
+// huge/ (PNG headers of 12000×12000), truncated_jpeg/ (JPEGs cut in half), corrupt_jpeg/ (a JPEG
+// with a stray marker in its scan), not_image/ (text named .png), cut_png/ (a PNG cut inside its
+// header).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -155,6 +160,18 @@ class RobustnessCorpus : public cli_test::CliTest {
     Write("object.csv", "id,x,y,z\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,1,1,0\n");
     Write("image.csv", "id,u,v\n1,0,0\n2,10,0\n3,0,10\n4,10,10\n");
     Copy(kSource + "/data/rwhe-kuka2/target.yaml", "target.yaml");
+    // Plausible but wrong descriptions of the rwhe-kuka2 board (24 x 17 inner corners, 15 mm).
+    Write("board9x6.yaml", "type: chessboard\ncols: 9\nrows: 6\nsquare: 15\nunits: mm\n");
+    Write("board25x18.yaml", "type: chessboard\ncols: 25\nrows: 18\nsquare: 15\nunits: mm\n");
+    Write("square_m.yaml", "type: chessboard\ncols: 24\nrows: 17\nsquare: 15\n");
+    Write("grid1.yaml",
+          "type: aruco_grid\ncols: 1\nrows: 1\nmarker: 0.05\nspacing: 0.01\n"
+          "dictionary: DICT_4X4_50\n");
+    Copy(kSource + "/data/moveit-calibration/test_aruco_marker_detection.png",
+         "grid_photo/test_aruco_marker_detection.png");
+    const std::string grid = "type: aruco_grid\nmarker: 0.0256\nspacing: 0.0066\n";
+    Write("grid4x3.yaml", grid + "cols: 4\nrows: 3\ndictionary: DICT_4X4_250\n");
+    Write("grid_dict.yaml", grid + "cols: 3\nrows: 4\ndictionary: DICT_5X5_250\n");
     Write("k1.yaml",
           "fx: 1000\nfy: 1000\ncx: 639.5\ncy: 479.5\ndistortion:\n  model: plumb_bob\n"
           "  coefficients: [1000000, 0, 0, 0, 0]\n");

@@ -121,6 +121,10 @@ const char* CountedThing(TargetType type) {
   return "points";
 }
 
+bool IsMarkerGrid(TargetType type) {
+  return type == TargetType::kArucoGrid || type == TargetType::kAprilTagGrid;
+}
+
 std::optional<TargetProblem> CheckCount(const TargetSpec& target, TargetField field, int value) {
   const int minimum = target.type == TargetType::kCharuco ? 3 : 2;
   if (value >= minimum && value <= kMaxCount) return std::nullopt;
@@ -134,6 +138,13 @@ std::optional<TargetProblem> CheckCount(const TargetSpec& target, TargetField fi
       target.type == TargetType::kCharuco
           ? "count the squares, not the inner corners (with fewer than 3 squares the corners "
             "lie on one line)"
+      : IsMarkerGrid(target.type) && value == 1
+          ? std::string("for one marker use type: ") +
+                (target.type == TargetType::kArucoGrid ? "aruco with dictionary"
+                                                       : "apriltag with family") +
+                ", id and size (docs/targets.md, single tags); for a grid, count the markers "
+                "along " +
+                (field == TargetField::kCols ? "x" : "y")
           : "count the " + thing + " along " + (field == TargetField::kCols ? "x" : "y")};
 }
 

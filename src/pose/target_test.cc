@@ -16,6 +16,7 @@ namespace {
 
 using hecal::testing::Chessboard;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 TargetSpec Charuco(int cols, int rows, double square, double marker) {
   TargetSpec spec = Chessboard(cols, rows, square);
@@ -230,6 +231,28 @@ void ExpectProblem(const TargetSpec& spec, TargetField field, const std::string&
   EXPECT_THAT(problem->problem, HasSubstr(text));
   EXPECT_FALSE(problem->fix.empty());
   EXPECT_THROW(ObjectPoints(spec), InputError);
+}
+
+// A marker grid of one column or one row is one marker per line: the fix names the single-tag
+// type of the same family (aruco for aruco_grid, apriltag for apriltag_grid); other counts and
+// other types keep the plain "count the ..." fix.
+TEST(Target, AGridOfOneMarkerPointsAtTheSingleTagType) {
+  const auto fix = [](const TargetSpec& spec) {
+    const std::optional<TargetProblem> problem = CheckTarget(spec);
+    return problem ? problem->fix : std::string("(accepted)");
+  };
+  TargetSpec aruco = ArucoGrid(1, 3, 0.05, 0.01);
+  EXPECT_THAT(fix(aruco), HasSubstr("for one marker use type: aruco with dictionary, id and size"));
+  EXPECT_THAT(fix(aruco), HasSubstr("count the markers along x"));
+  ExpectProblem(aruco, TargetField::kCols, "cols is 1");
+  TargetSpec april = ArucoGrid(3, 1, 0.05, 0.01);
+  april.type = TargetType::kAprilTagGrid;
+  april.dictionary.clear();
+  april.family = "tag36h11";
+  EXPECT_THAT(fix(april), HasSubstr("for one marker use type: apriltag with family, id and size"));
+  EXPECT_THAT(fix(april), HasSubstr("count the markers along y"));
+  EXPECT_THAT(fix(ArucoGrid(0, 3, 0.05, 0.01)), Not(HasSubstr("for one marker")));
+  EXPECT_THAT(fix(Chessboard(1, 6, 0.02)), Not(HasSubstr("for one marker")));
 }
 
 TEST(Target, CheckRejectsUnusableSpecs) {

@@ -2,6 +2,7 @@
 #include "hecal/vision/image_set.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <opencv2/core/utility.hpp>
@@ -18,6 +19,7 @@
 #include "hecal/vision/intrinsics_plausibility.h"
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
+#include "hecal/vision/target_mismatch.h"
 
 namespace hecal::vision {
 namespace {
@@ -80,15 +82,21 @@ class OpenCvThreads {
 
 // Reads and detects every image, in parallel over images, with the given intrinsics when they
 // are for the image's size (the intrinsics of another size are reported after the loop, by
-// CheckIntrinsicsSize). Errors are raised after the loop, for the first image in file-name
-// order, so the message does not depend on the scheduling.
+// CheckIntrinsicsSize). A target description that an image shows to be wrong
+// (vision/target_mismatch.h) is refused at once: the images after the first such one are not
+// detected (those before it are, so that the error does not depend on the scheduling). Errors are
+// raised after the loop, for the first image in file-name order.
 void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                const std::optional<pose::CameraModel>& camera, std::vector<ImageRecord>* images) {
   std::vector<std::exception_ptr> errors(images->size());
+  std::vector<TargetMismatch> wrong(images->size());
+  const int none = static_cast<int>(images->size());
+  std::atomic<int> first_wrong = none;
   cv::parallel_for_(
       cv::Range(0, static_cast<int>(images->size())),
       [&](const cv::Range& range) {
         for (int i = range.start; i < range.end; ++i) {
+          if (i > first_wrong.load()) continue;
           ImageRecord& image = (*images)[static_cast<std::size_t>(i)];
           try {
             const cv::Mat pixels = ReadGrayImage(image.path.string(), kMinDetectionSide);
@@ -97,16 +105,25 @@ void DetectAll(const pose::TargetSpec& target, const std::string& target_file,
                                                                  camera->height == pixels.rows));
             image.detection = vision::DetectTarget(
                 pixels, target, {}, sized ? camera : std::optional<pose::CameraModel>());
+            TargetMismatch& mismatch = wrong[static_cast<std::size_t>(i)];
+            mismatch = FindTargetMismatch(pixels, target, image.detection);
+            for (int seen = first_wrong.load(); mismatch.found() && i < seen;) {
+              if (first_wrong.compare_exchange_weak(seen, i)) break;
+            }
           } catch (...) {
             errors[static_cast<std::size_t>(i)] = std::current_exception();
           }
         }
       },
       static_cast<double>(images->size()));
-  for (const std::exception_ptr& error : errors) {
-    if (!error) continue;
+  for (std::size_t i = 0; i < images->size(); ++i) {
+    if (static_cast<int>(i) == first_wrong.load()) {
+      throw InputError(target_file, 0, "in " + (*images)[i].name + ", " + wrong[i].problem,
+                       wrong[i].fix);
+    }
+    if (!errors[i]) continue;
     try {
-      std::rethrow_exception(error);
+      std::rethrow_exception(errors[i]);
     } catch (const InputError& e) {
       // DetectTarget's complaints about the target spec name "target": point at the file.
       if (e.source() == "target") throw InputError(target_file, 0, e.problem(), e.fix());

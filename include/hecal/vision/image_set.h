@@ -21,7 +21,10 @@
 //      such bias (chessboard, ChArUco); single tags require the intrinsics anyway. Chessboards
 //      and symmetric circle grids whose order is fixed only up to a half turn are made
 //      consistent across the images by vision::ResolveOrder (image rule); those still ambiguous
-//      are skipped.
+//      are skipped. Each image is checked against the description (vision/target_mismatch.h: a
+//      chessboard inside a larger board or one corner off, a marker grid laid out the other way,
+//      the wrong dictionary or family); the first image that contradicts it refuses the set at
+//      once, naming the target file, and the images after it are not detected.
 //   3. Intrinsics: the given camera.yaml (io/camera_file.h), whose width × height, when it has
 //      them, must be the images' size; or, without it, estimated from the usable images by
 //      vision::CalibrateIntrinsics (cv::calibrateCamera, plumb_bob with k3), with their 1σ, RMS
@@ -48,7 +51,8 @@
 // sub-folder without an image or with several (names it); an unreadable image (names it); images
 // of different sizes; intrinsics for another image size (both sizes named; when the images are
 // the camera's size scaled by one factor, the message says so and gives the scaled fx, fy, cx,
-// cy); given intrinsics that do not fit the images (step 6); a target found in no image (for a
+// cy); given intrinsics that do not fit the images (step 6); a description an image contradicts
+// (step 2, names the image, what it shows and the fix); a target found in no image (for a
 // chessboard: "cols/rows are INNER corners"); fewer usable
 // images than the use needs; intrinsics that cannot be estimated from the images (then
 // --intrinsics is needed); a single-tag target without --intrinsics; options that are not valid
