@@ -29,10 +29,18 @@ inline Eigen::Matrix<double, 6, 6> LowerTriangularInverse(
   return inverse;
 }
 
-// H += w · Mᵀ M for a 6 × 12 M (the Gauss–Newton information of one whitened station).
+// H += w · Mᵀ M for a 6 × 12 M (the Gauss–Newton information of one whitened station): the 78
+// column products of the upper triangle, each written to both halves (exactly symmetric).
 inline void AddWeightedGram(const Eigen::Matrix<double, 6, 12>& M, double w,
                             Eigen::Matrix<double, 12, 12>* H) {
-  H->noalias() += w * M.transpose().lazyProduct(M);
+  for (int j = 0; j < 12; ++j) {
+    for (int i = 0; i < j; ++i) {
+      const double value = w * M.col(i).dot(M.col(j));
+      (*H)(i, j) += value;
+      (*H)(j, i) += value;
+    }
+    (*H)(j, j) += w * M.col(j).squaredNorm();
+  }
 }
 
 }  // namespace hecal::estimation::internal

@@ -51,9 +51,7 @@ class MlSolver {
     for (size_t i = 0; i < W.size(); ++i) {
       const double scale = station_scale_.empty() ? 1.0 : station_scale_[i];
       W[i] = WhiteningMatrix(
-          scale *
-          CombineComponents(StationNoiseComponents(problem_.setup, problem_.A[i], problem_.B[i], X),
-                            theta));
+          scale * StationCovarianceOf(problem_.setup, problem_.A[i], problem_.B[i], X, theta));
     }
     return W;
   }

@@ -5,6 +5,7 @@
 #include "fixed_size_kernels.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
+#include "hecal/geometry/skew.h"
 
 namespace hecal::estimation {
 namespace {
@@ -47,7 +48,34 @@ NoiseComponents StationNoiseComponents(handeye::Setup setup, const Pose& A, cons
 
 Matrix6d CombineComponents(const NoiseComponents& components, const NoiseVariances& variances) {
   Matrix6d sigma = Matrix6d::Zero();
-  for (int k = 0; k < kNumNoiseComponents; ++k) sigma += variances[k] * components[k];
+  // A variance of zero (the camera excess of the isotropic model) adds nothing: skipped.
+  for (int k = 0; k < kNumNoiseComponents; ++k)
+    if (variances[k] != 0.0) sigma += variances[k] * components[k];
+  return sigma;
+}
+
+Matrix6d StationCovarianceOf(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
+                             const NoiseVariances& variances) {
+  const Pose T = setup == handeye::Setup::kEyeInHand ? Pose(X * B) : Pose(A * X * B);
+  const Eigen::Vector3d u = T.inverse().translation();
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  const double robot_rotation = variances[kRobotRotation];
+  Matrix6d sigma;
+  sigma.topLeftCorner<3, 3>() = (robot_rotation + variances[kCameraRotation]) * identity;
+  sigma.topRightCorner<3, 3>() = -robot_rotation * Skew(u);
+  sigma.bottomLeftCorner<3, 3>() = robot_rotation * Skew(u);
+  sigma.bottomRightCorner<3, 3>() =
+      robot_rotation * (u.squaredNorm() * identity - u * u.transpose()) +
+      (variances[kRobotTranslation] + variances[kCameraTranslation]) * identity;
+  const Eigen::Matrix3d R = B.linear();
+  if (variances[kCameraTiltExcess] != 0.0) {
+    sigma.topLeftCorner<3, 3>() += variances[kCameraTiltExcess] * R.transpose() *
+                                   Eigen::Vector3d(1.0, 1.0, 0.0).asDiagonal() * R;
+  }
+  if (variances[kCameraDepthExcess] != 0.0) {
+    sigma.bottomRightCorner<3, 3>() +=
+        variances[kCameraDepthExcess] * R.row(2).transpose() * R.row(2);
+  }
   return sigma;
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include "hecal/core/error.h"
 #include "hecal/estimation/loop_residual.h"
 #include "hecal/geometry/angle_units.h"
+#include "hecal/geometry/types.h"
 #include "hecal/sim/noise.h"
 #include "testing/handeye_cases.h"
 
@@ -144,6 +146,32 @@ TEST(WhiteningMatrix, InvertsTheCovarianceAndRejectsSingularOnes) {
   EXPECT_LT((W * sigma * W.transpose() - Matrix6d::Identity()).norm(), 1e-12);
   EXPECT_THROW(WhiteningMatrix(Matrix6d::Zero()), DegenerateError);
   EXPECT_THROW(WhiteningMatrix(PoseCovariance({0.01, 0.0})), DegenerateError);
+}
+
+// The closed form of Σ_i equals the sum of its components, both setups, near-identity and
+// half-turn poses, with and without the camera's excess variances.
+TEST(StationCovarianceOf, EqualsTheCombinedComponents) {
+  std::mt19937_64 rng(41);
+  std::normal_distribution<double> normal;
+  const auto random_pose = [&](double angle) {
+    const Eigen::Vector3d axis =
+        Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    return MakePose(Eigen::AngleAxisd(angle, axis).toRotationMatrix(),
+                    Eigen::Vector3d(normal(rng), normal(rng), normal(rng)));
+  };
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    for (double angle : {1e-9, 0.7, 3.14159}) {
+      const Pose A = random_pose(angle), B = random_pose(2.0), X = random_pose(angle);
+      for (const NoiseVariances& variances : {NoiseVariances{1e-4, 1e-6, 4e-4, 9e-6, 0.0, 0.0},
+                                              NoiseVariances{3e-5, 2e-7, 1e-6, 1e-8, 5e-4, 2e-5}}) {
+        const Matrix6d expected =
+            CombineComponents(StationNoiseComponents(setup, A, B, X), variances);
+        EXPECT_LT((StationCovarianceOf(setup, A, B, X, variances) - expected).norm(),
+                  1e-13 * expected.norm())
+            << handeye::SetupName(setup) << " angle " << angle;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -67,6 +67,17 @@ NoiseComponents StationNoiseComponents(handeye::Setup setup, const Pose& A, cons
 // Σ_i = Σ_k variances[k] · components[k].
 Matrix6d CombineComponents(const NoiseComponents& components, const NoiseVariances& variances);
 
+// CombineComponents(StationNoiseComponents(setup, A, B, X), variances) in closed form, for the
+// ml solver's whitening at every re-weighting. With the robot-noise Jacobian ±Ad(T⁻¹), T = X B
+// (eye-in-hand) or A X B (eye-to-hand), and u the translation of T⁻¹, its rotation and
+// translation columns give J_r J_rᵀ = [[I, −u^], [u^, −u^ u^]] and J_t J_tᵀ = [[0, 0], [0, I]]
+// (the rotation of T⁻¹ cancels), so
+//   Σ_i = [[(θ_rr + θ_cr) I + θ_tilt Q_tilt, −θ_rr u^], [θ_rr u^, θ_rr (|u|² I − u uᵀ) +
+//          (θ_rt + θ_ct) I + θ_depth Q_depth]]
+// with Q_tilt, Q_depth the 3 × 3 blocks of the camera's excess components above.
+Matrix6d StationCovarianceOf(handeye::Setup setup, const Pose& A, const Pose& B, const Pose& X,
+                             const NoiseVariances& variances);
+
 // The variances of robot and camera noise and the camera's tilt / depth excess (rotation /
 // translation fields; zero: the isotropic model).
 NoiseVariances Variances(const PoseSigma& robot, const PoseSigma& camera,

@@ -30,7 +30,9 @@
 // (no atan2, no square root: half the scoring cost, the consensus at n = 50 from 1.7 to
 // 1.35 ms): it is monotone in a_i and equal to a_i² to a relative 1 − a_i²/12 (0.25% at 10°),
 // and the median station of a hypothesis that can win is an inlier at the noise level, so the
-// ranking is that of e² to well below the noise.
+// ranking is that of e² to well below the noise. It is evaluated as 4 (1 − w_i²), w_i = cos(a_i/2)
+// a bilinear form in the station's quaternions with a 4 × 4 matrix per hypothesis (20
+// multiplications per station instead of 70 for the rotation matrices).
 // The local refit and every reported residual use the angle itself. A hypothesis is dropped as
 // soon as so many stations have e² at or above the best median so far that its own median cannot
 // be lower (exact: the same hypothesis wins; most lose after about half the stations).
