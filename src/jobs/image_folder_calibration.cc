@@ -7,7 +7,7 @@
 #include "hecal/core/options_check.h"
 #include "hecal/io/quaternion_columns.h"
 #include "hecal/jobs/image_front_end.h"
-#include "hecal/report/image_calibration.h"
+#include "hecal/jobs/image_calibration.h"
 
 namespace hecal::jobs {
 
@@ -30,7 +30,7 @@ ImageFolderCalibration CalibrateFromImageFolder(const ImageFolderCalibrationOpti
   const std::vector<Pose> robot_poses =
       RobotPosePerImage(robot, set, options.images.images, callbacks);
 
-  report::ImageCalibrationInput input;
+  ImageCalibrationInput input;
   input.unit = robot.unit;
   input.robot_unit_named = robot.unit_named;
   handeye::PoseData data;
@@ -69,7 +69,7 @@ ImageFolderCalibration CalibrateFromImageFolder(const ImageFolderCalibrationOpti
   estimation::ImageCalibrationOptions calibration = options.calibration;
   calibration.setup = check.setup;
   calibration.camera = set.camera;
-  return {report::CalibrateFromImages(input, calibration), set.camera};
+  return {CalibrateFromImages(input, calibration), set.camera};
 }
 
 }  // namespace hecal::jobs

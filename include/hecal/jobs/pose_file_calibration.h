@@ -15,7 +15,8 @@
 //      inverted file, millimetres read as metres, quaternion columns one place off), or picks the
 //      setup when options.setup is empty; its notes and then each table's warnings become the
 //      document's first warnings.
-//   5. report::CalibrateFromPoses (report/pose_calibration.h): the method of options.calibrate,
+//   5. CalibratePairedPoses (pose_calibration.h), which runs steps 3 (the same poses in both
+//      tables) and 4 in its own terms, then the method of options.calibrate,
 //      or every method of estimation::AllMethods() when options.all_methods, with covariance,
 //      outlier rejection and the plausibility checks.
 // Frames and units: X and Z as handeye/problem.h defines them for the setup; lengths in the

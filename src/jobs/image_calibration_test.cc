@@ -1,7 +1,7 @@
-// report::CalibrateFromImages on simulated image stations (testing/image_scene.h): the
+// CalibrateFromImages (image_calibration.h) on simulated image stations (testing/image_scene.h): the
 // document's stations, rejections and reasons against the images that were skipped, blurred or
 // paired with a wrong robot pose, and X against the known truth.
-#include "hecal/report/image_calibration.h"
+#include "hecal/jobs/image_calibration.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "hecal/geometry/se3.h"
 #include "testing/image_scene.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 namespace {
 
 // 13 images im0 … im12: im1 was skipped by the front end; the other twelve are stations, with
@@ -56,13 +56,13 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   options.setup = handeye::Setup::kEyeInHand;
   options.camera = testing::DefaultCamera();
 
-  const ResultDocument document = CalibrateFromImages(input, options);
+  const report::ResultDocument document = CalibrateFromImages(input, options);
   EXPECT_EQ(document.setup, handeye::Setup::kEyeInHand);
   EXPECT_EQ(document.unit, io::LengthUnit::kMillimetre);
   EXPECT_EQ(document.station_ids, input.image_ids);
   EXPECT_EQ(document.rejected, (std::vector<int>{1, 4, 9}));  // image indices, in order
   ASSERT_TRUE(document.images);
-  const ImageReport& report = *document.images;
+  const report::ImageReport& report = *document.images;
   ASSERT_EQ(report.skipped_reasons.size(), 3u);
   EXPECT_EQ(report.skipped_reasons[0], "no target found");
   EXPECT_EQ(report.skipped_reasons[1].rfind("outlier: reprojection RMS ", 0), 0u);
@@ -93,4 +93,4 @@ TEST(ImageCalibration, StationsMustMatchTheUsedImages) {
 }
 
 }  // namespace
-}  // namespace hecal::report
+}  // namespace hecal::jobs

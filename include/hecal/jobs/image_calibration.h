@@ -31,7 +31,7 @@
 #include "hecal/io/units.h"
 #include "hecal/report/result_file.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 
 struct ImageCalibrationInput {
   io::LengthUnit unit = io::LengthUnit::kMetre;    // the document's output unit (the robot file's)
@@ -45,7 +45,7 @@ struct ImageCalibrationInput {
 };
 
 // Runs the job above; options.calibrate.station_ids is set to the used images' ids.
-ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
+report::ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
                                    estimation::ImageCalibrationOptions options);
 
-}  // namespace hecal::report
+}  // namespace hecal::jobs

@@ -1,5 +1,5 @@
 // Calibration from target images as one job: see image_calibration.h.
-#include "hecal/report/image_calibration.h"
+#include "hecal/jobs/image_calibration.h"
 
 #include <algorithm>
 #include <array>
@@ -11,9 +11,9 @@
 
 #include "hecal/core/error.h"
 #include "hecal/estimation/plausibility.h"
-#include "hecal/report/pose_calibration.h"
+#include "hecal/jobs/pose_calibration.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 namespace {
 
 // Why station `k` (an index into the used stations) was rejected by the calibration.
@@ -37,7 +37,7 @@ std::string OutlierReason(const estimation::ImageCalibrationResult& result, size
 
 }  // namespace
 
-ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
+report::ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
                                    estimation::ImageCalibrationOptions options) {
   const size_t used_count =
       static_cast<size_t>(std::count_if(input.skipped.begin(), input.skipped.end(),
@@ -51,7 +51,7 @@ ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
                      "give one skip reason per image (empty when used) and one station per "
                      "used image");
   }
-  ResultDocument document;
+  report::ResultDocument document;
   document.unit = input.unit;
   document.setup = options.setup;
   document.station_ids = input.image_ids;
@@ -74,7 +74,7 @@ ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
     rejected[station_image[static_cast<size_t>(result.result.rejected[k])]] =
         OutlierReason(result, k);
   }
-  ImageReport report;
+  report::ImageReport report;
   for (const auto& [image, reason] : rejected) {
     document.rejected.push_back(static_cast<int>(image));
     report.skipped_reasons.push_back(reason);
@@ -115,4 +115,4 @@ ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
   return document;
 }
 
-}  // namespace hecal::report
+}  // namespace hecal::jobs

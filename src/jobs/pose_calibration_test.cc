@@ -2,7 +2,7 @@
 // chosen X and Z): one method recovers them; every method is accounted for as a result or a
 // failure; the caller's notes come first in every result's warnings; a non-finite result is
 // refused.
-#include "hecal/report/pose_calibration.h"
+#include "hecal/jobs/pose_calibration.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "hecal/estimation/methods.h"
 #include "testing/random_poses.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 namespace {
 
 // Eye-in-hand stations with T_base_gripper_i · X · T_camera_target_i = Z exactly.
@@ -40,7 +40,7 @@ TEST(CalibrateFromPosesTest, OneMethodRecoversXAndZ) {
   const Pose Z = testing::RandomPose(rng, 1.0);
   estimation::CalibrateOptions options;
   options.method = estimation::Method::kTsaiLenz;
-  const ResultDocument document = CalibrateFromPoses(ExactInput(X, Z, 8), options, false);
+  const report::ResultDocument document = CalibrateFromPoses(ExactInput(X, Z, 8), options, false);
   ASSERT_EQ(document.results.size(), 1u);
   EXPECT_FALSE(document.all_methods);
   EXPECT_EQ(document.station_ids.size(), 8u);
@@ -56,7 +56,7 @@ TEST(CalibrateFromPosesTest, EveryMethodIsAResultOrAFailure) {
   std::mt19937_64 rng(6);
   const Pose X = testing::RandomPose(rng, 0.1);
   const Pose Z = testing::RandomPose(rng, 1.0);
-  const ResultDocument document = CalibrateFromPoses(ExactInput(X, Z, 8), {}, true);
+  const report::ResultDocument document = CalibrateFromPoses(ExactInput(X, Z, 8), {}, true);
   EXPECT_TRUE(document.all_methods);
   EXPECT_EQ(document.results.size() + document.failures.size(), estimation::AllMethods().size());
   for (const estimation::CalibrationResult& result : document.results) {
@@ -73,4 +73,4 @@ TEST(CheckFiniteResultTest, RefusesANonFiniteSolution) {
 }
 
 }  // namespace
-}  // namespace hecal::report
+}  // namespace hecal::jobs
