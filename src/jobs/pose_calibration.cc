@@ -23,13 +23,14 @@ void CheckPoseList(const std::vector<Pose>& poses, const std::string& source) {
       throw InputError(source, 0, pose + " is not finite (NaN or infinity)",
                        "remove the station or give its measured pose");
     }
-    const double orthogonality = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    const double orthogonality =
+        (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
     if (orthogonality > 1e-6 || R.determinant() <= 0.0) {
-      throw InputError(source, 0,
-                       pose + " has no proper rotation (|R^T R - I| = " +
-                           std::to_string(orthogonality) + ", det R = " +
-                           std::to_string(R.determinant()) + ")",
-                       "give 4x4 homogeneous transforms whose upper-left 3x3 is a rotation");
+      throw InputError(
+          source, 0,
+          pose + " has no proper rotation (|R^T R - I| = " + std::to_string(orthogonality) +
+              ", det R = " + std::to_string(R.determinant()) + ")",
+          "give 4x4 homogeneous transforms whose upper-left 3x3 is a rotation");
     }
   }
 }
@@ -44,11 +45,13 @@ void RefuseSamePoses(const PairedPoses& poses) {
   }
   if (!same) return;
   throw InputError(poses.check.camera_source, 0,
-                   "holds the same poses as " + poses.robot_words + " " +
-                       poses.check.robot_source + " (or their inverses)",
+                   "holds the same poses as " + poses.robot_words + " " + poses.check.robot_source +
+                       " (or their inverses)",
                    "give the robot poses (T_base_gripper, from the controller) with " +
-                       poses.robot_words + " and the camera poses (T_camera_target, from PnP or "
-                       "hecal detect) with " + poses.camera_words);
+                       poses.robot_words +
+                       " and the camera poses (T_camera_target, from PnP or "
+                       "hecal detect) with " +
+                       poses.camera_words);
 }
 
 }  // namespace
@@ -138,7 +141,7 @@ void CheckFiniteResult(const estimation::CalibrationResult& result) {
 }
 
 report::ResultDocument CalibrateFromPoses(const PoseCalibrationInput& input,
-                                  estimation::CalibrateOptions options, bool all_methods) {
+                                          estimation::CalibrateOptions options, bool all_methods) {
   report::ResultDocument document;
   document.setup = input.problem.setup;
   document.unit = input.unit;

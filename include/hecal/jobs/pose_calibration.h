@@ -56,7 +56,7 @@ struct PoseCalibrationOptions {
   estimation::CalibrateOptions calibrate;
   bool all_methods = false;              // every method of estimation::AllMethods(), compared
   std::vector<std::string> station_ids;  // one per station; empty: "1", "2", ...
-  std::string robot_source = "T_base_gripper";    // the lists' names in errors
+  std::string robot_source = "T_base_gripper";  // the lists' names in errors
   std::string camera_source = "T_camera_target";
   handeye::ConventionWords words;  // the convention check's texts in the caller's words
 
@@ -76,8 +76,8 @@ PoseCalibration CalibratePoses(const std::vector<Pose>& T_base_gripper,
 
 // What a source of paired poses knows of them, for CalibratePairedPoses.
 struct PairedPoses {
-  handeye::PoseData data;                // the poses (metres) and what the source left open
-  handeye::ConventionCheckOptions check;  // setup, sources, inversions, words
+  handeye::PoseData data;                        // the poses (metres) and what the source left open
+  handeye::ConventionCheckOptions check;         // setup, sources, inversions, words
   io::LengthUnit unit = io::LengthUnit::kMetre;  // the document's unit
   std::vector<std::string> station_ids;          // one per station
   std::vector<std::string> notes;  // after the convention check's notes (e.g. a file's warnings)
@@ -89,8 +89,7 @@ struct PairedPoses {
 
 // CalibratePairedPoses steps 1–3 above.
 PoseCalibration CalibratePairedPoses(const PairedPoses& poses,
-                                     const estimation::CalibrateOptions& options,
-                                     bool all_methods);
+                                     const estimation::CalibrateOptions& options, bool all_methods);
 
 struct PoseCalibrationInput {
   handeye::Problem problem;
@@ -102,7 +101,7 @@ struct PoseCalibrationInput {
 
 // Runs the job above; `all_methods` runs every method of estimation::AllMethods().
 report::ResultDocument CalibrateFromPoses(const PoseCalibrationInput& input,
-                                  estimation::CalibrateOptions options, bool all_methods);
+                                          estimation::CalibrateOptions options, bool all_methods);
 
 // A result about to be printed and written: X, Z, the residual RMS and the covariance must be
 // finite (README "Reliability"); DegenerateError otherwise.
