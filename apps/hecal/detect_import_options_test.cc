@@ -1,4 +1,4 @@
-// The options of `hecal import` (io::ImportJobOptions, io::ImportOptions) and `hecal detect`
+// The options of `hecal import` (jobs::ImportJobOptions, io::ImportOptions) and `hecal detect`
 // (jobs::PoseDetectionOptions with vision::ImageSetOptions), and the choices of choice_flags.h,
 // driven through `hecal`: a bad value exits 2 with exactly the one line
 // `hecal: --flag: problem (fix: ...)` naming the flag that set the field (field_flags.h), prints
@@ -41,7 +41,7 @@ class DetectImportOptions : public cli_test::CliTest {
   }
 };
 
-// io::ImportJobOptions::IsValid and io::ImportOptions::IsValid, field by field.
+// jobs::ImportJobOptions::IsValid and io::ImportOptions::IsValid, field by field.
 TEST_F(DetectImportOptions, ImportOptionsNameTheFlag) {
   ExpectRefused(
       {"import", "--format", "moveit", kMoveit, "--robot", "", "--camera", Path("camera.csv")},

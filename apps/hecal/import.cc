@@ -7,7 +7,7 @@
 
 #include "choice_flags.h"
 #include "hecal/io/atomic_file.h"
-#include "hecal/io/import_job.h"
+#include "hecal/jobs/import.h"
 #include "hecal/io/units.h"
 
 namespace hecal::cli {
@@ -40,8 +40,8 @@ Errors: one line on stderr, exit code 2, and no output file is written or change
 
 }  // namespace
 
-void RunImport(const io::ImportJobOptions& options, const Io& io) {
-  const io::ImportJob job = io::ImportSamples(options);
+void RunImport(const jobs::ImportJobOptions& options, const Io& io) {
+  const jobs::ImportJob job = jobs::ImportSamples(options);
   std::vector<io::OutputFile> outputs = {{"--robot", options.robot, job.texts.robot}};
   if (job.texts.camera) outputs.push_back({"--camera", options.camera, *job.texts.camera});
   if (!options.intrinsics.empty()) {
@@ -72,7 +72,7 @@ void RunImport(const io::ImportJobOptions& options, const Io& io) {
 void RegisterImportCommand(CLI::App& app, const Io& io) {
   CLI::App* command = app.add_subcommand(
       "import", "Convert another tool's calibration samples into robot.csv and camera.csv");
-  auto options = std::make_shared<io::ImportJobOptions>();
+  auto options = std::make_shared<jobs::ImportJobOptions>();
   auto setup = std::make_shared<std::optional<handeye::Setup>>();
   AddChoice<io::ImportFormat>(*command, "--format", options->format, io::ParseImportFormat,
                               "import format", "one of " + io::ImportFormatList(),

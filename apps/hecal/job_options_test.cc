@@ -93,7 +93,7 @@ TEST_F(JobOptions, GlobalCalibrationOptionsNameTheFlag) {
   ExpectRefused(global({"--pixel-sigma", "0"}), "--pixel-sigma", "above 0 to 100 px, got 0", out);
 }
 
-// report::PointPoseOptions::IsValid (hecal pose), field by field; checked before any file is read.
+// jobs::PointPoseOptions::IsValid (hecal pose), field by field; checked before any file is read.
 TEST_F(JobOptions, PointPoseOptionsNameTheFlag) {
   const auto pose = [&](std::vector<std::string> extra) {
     std::vector<std::string> args = {"pose",           "--points",        Path("object.csv"),

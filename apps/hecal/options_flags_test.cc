@@ -107,7 +107,7 @@ TEST_F(OptionsFlags, CalibrateOptions) {
   for (const Case& c : cases) ExpectRefused(calibrate, c);
 }
 
-// io::PoseConversionOptions, through `hecal poses convert`.
+// jobs::PoseConversionOptions, through `hecal poses convert`.
 TEST_F(OptionsFlags, PoseConversionOptions) {
   ExpectRefused({"poses", "convert", "--to", "quaternion", "--output", Path("out/poses.csv")},
                 {{"--input", ""}, "--input", "PoseConversionOptions.input", "no input pose table"});

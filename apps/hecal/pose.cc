@@ -15,7 +15,7 @@
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/units.h"
-#include "hecal/report/point_pose.h"
+#include "hecal/jobs/point_pose.h"
 #include "hecal/report/pose_file.h"
 #include "hecal/report/pose_text.h"
 #include "list_flags.h"
@@ -36,7 +36,7 @@ namespace {
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 using PoseOptions = jobs::PoseFromFilesOptions;
 
-report::PointPoseOptions& PointOptions(PoseOptions& options) {
+jobs::PointPoseOptions& PointOptions(PoseOptions& options) {
   return options.points;
 }
 
@@ -57,14 +57,14 @@ void SetMethod(const std::string& method, PoseOptions& options) {
       ParseChoice("--method", method, jobs::ParsePoseMethod, "method", "one of " + MethodList());
 }
 
-report::PointPoseResult EstimatePose(const PoseOptions& options) {
+jobs::PointPoseResult EstimatePose(const PoseOptions& options) {
   return jobs::EstimatePoseFromFiles(options);
 }
 #else
 // Without the vision layer: the pose layer's methods; OpenCV's are refused by name.
-using PoseOptions = report::PointPoseOptions;
+using PoseOptions = jobs::PointPoseOptions;
 
-report::PointPoseOptions& PointOptions(PoseOptions& options) {
+jobs::PointPoseOptions& PointOptions(PoseOptions& options) {
   return options;
 }
 
@@ -95,8 +95,8 @@ void SetMethod(const std::string& method, PoseOptions& options) {
   throw InputError("--method", 0, "unknown method '" + method + "'", "use one of " + MethodList());
 }
 
-report::PointPoseResult EstimatePose(const PoseOptions& options) {
-  return report::EstimatePoseFromFiles(options);
+jobs::PointPoseResult EstimatePose(const PoseOptions& options) {
+  return jobs::EstimatePoseFromFiles(options);
 }
 #endif
 
@@ -107,11 +107,11 @@ struct PoseCommand {
 
 void RunPose(PoseCommand& command, const Io& io) {
   RequireValid(command.options);
-  const report::PointPoseOptions& points = PointOptions(command.options);
+  const jobs::PointPoseOptions& points = PointOptions(command.options);
   io::CheckOutputs({{"--output", command.output}}, {{"--points", points.points},
                                                     {"--image-points", points.image_points},
                                                     {"--intrinsics", points.intrinsics}});
-  const report::PointPoseResult result = EstimatePose(command.options);
+  const jobs::PointPoseResult result = EstimatePose(command.options);
   for (const std::string& note : result.camera_notes) io.out << "note: " << note << "\n";
   for (const std::string& warning : result.estimate.warnings) {
     io.err << "hecal: warning: " << warning << "\n";
@@ -129,7 +129,7 @@ void RunPose(PoseCommand& command, const Io& io) {
 void RegisterPoseCommand(CLI::App& app, const Io& io) {
   auto pose_command = std::make_shared<PoseCommand>();
   PoseOptions& options = pose_command->options;
-  report::PointPoseOptions& o = PointOptions(options);
+  jobs::PointPoseOptions& o = PointOptions(options);
   CLI::App* command = app.add_subcommand(
       "pose", "Camera pose T_camera_target from known object points and their pixels");
   command->add_option("--points", o.points, "Object points: CSV id,x,y,z (target frame)")

@@ -27,10 +27,10 @@ Errors: one line on stderr, exit code 2, and no output file.)";
 
 }  // namespace
 
-void RunPosesConvert(const io::PoseConversionOptions& options, const std::string& output,
+void RunPosesConvert(const jobs::PoseConversionOptions& options, const std::string& output,
                      const Io& io) {
   io::CheckOutputs({{"--output", output}}, {{"--input", options.input}});
-  const io::PoseConversion result = io::ConvertPoseTable(options);
+  const jobs::PoseConversion result = jobs::ConvertPoseTable(options);
   for (const std::string& warning : result.table.warnings) {
     io.err << "hecal: warning: " << warning << "\n";
   }
@@ -50,7 +50,7 @@ void RegisterPosesCommand(CLI::App& app, const Io& io) {
   CLI::App* poses = app.add_subcommand("poses", "Pose files: convert rotation forms and units");
   poses->require_subcommand(1);
 
-  auto options = std::make_shared<io::PoseConversionOptions>();
+  auto options = std::make_shared<jobs::PoseConversionOptions>();
   auto output = std::make_shared<std::string>();
   CLI::App* convert =
       poses->add_subcommand("convert", "Convert a pose table to another rotation form and/or unit");

@@ -1,18 +1,18 @@
 // `hecal poses convert` (docs/cli.md#hecal-poses-convert): the flags fill
-// io::PoseConversionOptions (choices through choice_flags.h); the job is io::ConvertPoseTable
+// jobs::PoseConversionOptions (choices through choice_flags.h); the job is jobs::ConvertPoseTable
 // (io/pose_conversion.h); this file writes its result atomically and prints the summary.
 #pragma once
 
 #include <string>
 
 #include "cli.h"
-#include "hecal/io/pose_conversion.h"
+#include "hecal/jobs/pose_conversion.h"
 
 namespace hecal::cli {
 
 // Checks the output path, runs the conversion and writes `output`; throws hecal::InputError for
 // bad flags or input.
-void RunPosesConvert(const io::PoseConversionOptions& options, const std::string& output,
+void RunPosesConvert(const jobs::PoseConversionOptions& options, const std::string& output,
                      const Io& io);
 
 }  // namespace hecal::cli

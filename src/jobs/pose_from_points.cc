@@ -7,7 +7,7 @@ namespace hecal::jobs {
 namespace {
 
 // OpenCV's `method`, its pose finished by pose::FinishPose (refined for iterative only).
-report::PointPoseSolver OpenCvSolver(vision::PnpMethod method) {
+jobs::PointPoseSolver OpenCvSolver(vision::PnpMethod method) {
   return [method](const std::vector<Eigen::Vector3d>& object,
                   const std::vector<Eigen::Vector2d>& pixels, const pose::CameraModel& camera,
                   const pose::PoseOptions& pose_options) {
@@ -19,7 +19,7 @@ report::PointPoseSolver OpenCvSolver(vision::PnpMethod method) {
 }
 
 // `options` solving with `method`.
-report::PointPoseOptions WithMethod(report::PointPoseOptions options, const AnyPoseMethod& method) {
+PointPoseOptions WithMethod(PointPoseOptions options, const AnyPoseMethod& method) {
   if (const pose::PoseMethod* core = std::get_if<pose::PoseMethod>(&method)) {
     options.method = *core;
     options.solver = nullptr;
@@ -64,9 +64,9 @@ bool PoseFromFilesOptions::IsValid(std::string* why) const {
   return points.IsValid(why);
 }
 
-report::PointPoseResult EstimatePoseFromFiles(const PoseFromFilesOptions& options) {
+jobs::PointPoseResult EstimatePoseFromFiles(const PoseFromFilesOptions& options) {
   RequireValid(options);
-  return report::EstimatePoseFromFiles(WithMethod(options.points, options.method));
+  return EstimatePoseFromFiles(WithMethod(options.points, options.method));
 }
 
 }  // namespace hecal::jobs

@@ -80,7 +80,7 @@ TEST_F(PoseFromPoints, EveryMethodRecoversTheTruePose) {
         Pinhole());
     PoseFromFilesOptions options = Files(scene);
     options.method = entry.method;
-    const report::PointPoseResult result = EstimatePoseFromFiles(options);
+    const jobs::PointPoseResult result = EstimatePoseFromFiles(options);
     EXPECT_EQ(result.estimate.method, name);
     EXPECT_EQ(result.points, 20u);
     const Pose& T = result.estimate.T_camera_target;

@@ -9,15 +9,15 @@
 //   has a covariance), the closed forms are not (their residuals and RMS only, no covariance).
 //
 // Steps (EstimatePoseFromFiles)
-//   1. The options checked (IsValid: the files, camera and σ of report::PointPoseOptions::IsValid,
+//   1. The options checked (IsValid: the files, camera and σ of PointPoseOptions::IsValid,
 //      report/point_pose.h) before any file is read.
 //   2. The method's solver put into a copy of `points` (its `method`, or its `solver` for
 //      OpenCV's methods; whatever `points` held there is replaced).
-//   3. report::EstimatePoseFromFiles: both point files read and paired, the camera read, solved.
+//   3. EstimatePoseFromFiles: both point files read and paired, the camera read, solved.
 // Frames and units: T_camera_target (x_camera = T · P), the object file's length unit; pixels
 // with the origin at the centre of the top-left pixel (report/point_pose.h).
 //
-// Errors (hecal::InputError): the fields of report::PointPoseOptions ("PointPoseOptions.focal",
+// Errors (hecal::InputError): the fields of PointPoseOptions ("PointPoseOptions.focal",
 // ...), bad files; OpenCV's preconditions (source "PnpMethod NAME", vision/opencv_pnp.h);
 // DegenerateError when the method cannot determine the pose from these points. Nothing is
 // written. A name that is no method is the caller's to refuse (ParsePoseMethod returns nullopt;
@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "hecal/pose/pose_method.h"
-#include "hecal/report/point_pose.h"
+#include "hecal/jobs/point_pose.h"
 #include "hecal/vision/opencv_pnp.h"
 
 namespace hecal::jobs {
@@ -56,7 +56,7 @@ std::optional<AnyPoseMethod> ParsePoseMethod(std::string_view name);
 
 struct PoseFromFilesOptions {
   // Files, camera, σ and units; its `method` and `solver` are set by the job from `method`.
-  report::PointPoseOptions points;
+  PointPoseOptions points;
   AnyPoseMethod method = pose::PoseMethod::kLinear;
 
   // core/options_check.h: false naming the first bad field of PointPoseOptions::IsValid (every
@@ -65,6 +65,6 @@ struct PoseFromFilesOptions {
 };
 
 // Steps 1–3 above.
-report::PointPoseResult EstimatePoseFromFiles(const PoseFromFilesOptions& options);
+jobs::PointPoseResult EstimatePoseFromFiles(const PoseFromFilesOptions& options);
 
 }  // namespace hecal::jobs

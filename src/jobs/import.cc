@@ -1,17 +1,17 @@
 // The import job: see import_job.h.
-#include "hecal/io/import_job.h"
+#include "hecal/jobs/import.h"
 
 #include "hecal/core/options_check.h"
 #include "hecal/version.h"
 
-namespace hecal::io {
+namespace hecal::jobs {
 
 bool ImportJobOptions::RobotOnly() const {
-  return format == ImportFormat::kMatrix16 && inputs.size() == 1;
+  return format == io::ImportFormat::kMatrix16 && inputs.size() == 1;
 }
 
 bool ImportJobOptions::IsValid(std::string* why) const {
-  const std::string name(ImportFormatName(format));
+  const std::string name(io::ImportFormatName(format));
   if (robot.empty()) {
     return Invalid(why, "ImportJobOptions.robot", "is empty",
                    "give the path of the robot table (T_base_gripper)");
@@ -26,7 +26,7 @@ bool ImportJobOptions::IsValid(std::string* why) const {
                    "pass the camera matrix file after the robot file, or leave the camera table "
                    "out");
   }
-  if (!intrinsics.empty() && format != ImportFormat::kTabb) {
+  if (!intrinsics.empty() && format != io::ImportFormat::kTabb) {
     return Invalid(why, "ImportJobOptions.intrinsics",
                    "only tabb sources hold intrinsics (cali.txt), not " + name,
                    "leave the intrinsics file out");
@@ -37,10 +37,10 @@ bool ImportJobOptions::IsValid(std::string* why) const {
 ImportJob ImportSamples(const ImportJobOptions& options) {
   RequireValid(options);
   ImportJob job;
-  job.imported = ImportFiles(options.format, options.inputs, options.read);
-  job.texts = FormatImportedPoses(job.imported, "written by hecal " + std::string(kVersion) +
-                                                    " import --format " +
-                                                    std::string(ImportFormatName(options.format)));
+  job.imported = io::ImportFiles(options.format, options.inputs, options.read);
+  job.texts = io::FormatImportedPoses(
+      job.imported, "written by hecal " + std::string(kVersion) + " import --format " +
+                        std::string(io::ImportFormatName(options.format)));
   if (!options.intrinsics.empty() && !job.texts.intrinsics) {
     throw InputError(options.inputs.back(), 0,
                      "the images do not share one camera model (intrinsics differ between "
@@ -55,4 +55,4 @@ ImportJob ImportSamples(const ImportJobOptions& options) {
   return job;
 }
 
-}  // namespace hecal::io
+}  // namespace hecal::jobs

@@ -1,4 +1,4 @@
-#include "hecal/report/point_pose.h"
+#include "hecal/jobs/point_pose.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "testing/pose_scenes.h"
 #include "testing/scratch_folder.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 namespace {
 
 void ExpectInvalid(const std::function<void(PointPoseOptions&)>& spoil, const std::string& field,
@@ -133,4 +133,4 @@ TEST_F(PointPoseFiles, AnImageIdThatIsNoObjectPointNamesItsLine) {
 }
 
 }  // namespace
-}  // namespace hecal::report
+}  // namespace hecal::jobs

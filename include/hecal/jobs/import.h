@@ -5,7 +5,7 @@
 //
 // Steps (ImportSamples)
 //   1. The options checked (IsValid) before any file is read: which outputs the format can fill.
-//   2. The inputs read in `format` (import.h: ImportFiles, with `read`'s units, setup and
+//   2. The inputs read in `format` (import.h: io::ImportFiles, with `read`'s units, setup and
 //      inversions).
 //   3. The texts formatted (import_output.h), their first '#' line naming hecal, its version and
 //      the format.
@@ -13,9 +13,9 @@
 // the source's unit.
 //
 // Errors (hecal::InputError): invalid options (source the field: ImportJobOptions.robot, .camera,
-// .intrinsics, or ImportOptions.* from ImportOptions::IsValid); those of the reader pass through;
-// an intrinsics file asked of a tabb source whose lines hold different camera models (source: the
-// camera file).
+// .intrinsics, or io::ImportOptions.* from io::ImportOptions::IsValid); those of the reader pass
+// through; an intrinsics file asked of a tabb source whose lines hold different camera models
+// (source: the camera file).
 #pragma once
 
 #include <string>
@@ -24,12 +24,12 @@
 #include "hecal/io/import.h"
 #include "hecal/io/import_output.h"
 
-namespace hecal::io {
+namespace hecal::jobs {
 
 struct ImportJobOptions {
-  ImportFormat format = ImportFormat::kMoveit;
+  io::ImportFormat format = io::ImportFormat::kMoveit;
   std::vector<std::string> inputs;  // the source files (import.h: how many for each format)
-  ImportOptions read;               // units, setup, inversions
+  io::ImportOptions read;           // units, setup, inversions
   // The outputs the caller will write: robot.csv (required); camera.csv (required, except for a
   // robot-only matrix16 import, where it must be empty); camera.yaml ("" = none; tabb only).
   std::string robot;
@@ -41,13 +41,13 @@ struct ImportJobOptions {
 
   // core/options_check.h: false naming the first bad field, in the order robot (empty), camera
   // (empty, or given for a robot-only import), intrinsics (given for a format other than tabb),
-  // then ImportOptions::IsValid for the format.
+  // then io::ImportOptions::IsValid for the format.
   bool IsValid(std::string* why) const;
 };
 
 struct ImportJob {
-  ImportedPoses imported;  // the tables read, their sources and notes
-  ImportTexts texts;       // what to write to robot, camera and intrinsics
+  io::ImportedPoses imported;  // the tables read, their sources and notes
+  io::ImportTexts texts;       // what to write to robot, camera and intrinsics
   // The readers' warnings, robot's then camera's (rotations projected onto SO(3) or normalised);
   // also in the texts as '# note:' lines.
   std::vector<std::string> warnings;
@@ -56,4 +56,4 @@ struct ImportJob {
 // Steps 1–3 above.
 ImportJob ImportSamples(const ImportJobOptions& options);
 
-}  // namespace hecal::io
+}  // namespace hecal::jobs

@@ -1,7 +1,7 @@
 // ImportSamples on the bundled Tabb data set (data/tabb-rwhe-dataset1), checked against the poses
 // and intrinsics read by the test's own parser (testing/tabb_dataset.h) and the values printed in
 // cali.txt; and its options refused field by field before any file is read.
-#include "hecal/io/import_job.h"
+#include "hecal/jobs/import.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 #include "testing/tabb_dataset.h"
 #include "testing/thrown.h"
 
-namespace hecal::io {
+namespace hecal::jobs {
 namespace {
 
 using ::testing::HasSubstr;
@@ -24,7 +24,7 @@ const std::string kTabb = std::string(HECAL_SOURCE_DIR) + "/data/tabb-rwhe-datas
 
 ImportJobOptions TabbOptions() {
   ImportJobOptions options;
-  options.format = ImportFormat::kTabb;
+  options.format = io::ImportFormat::kTabb;
   options.inputs = {kTabb};
   options.robot = "robot.csv";
   options.camera = "camera.csv";
@@ -37,12 +37,12 @@ ImportJobOptions TabbOptions() {
 TEST(ImportJob, TabbTextsMatchTheSourceFiles) {
   const ImportJob job = ImportSamples(TabbOptions());
   const testing::TabbDataset truth = testing::LoadTabbDataset();
-  const PoseTable robot = ParsePoseTable(job.texts.robot, "robot.csv", {});
+  const io::PoseTable robot = io::ParsePoseTable(job.texts.robot, "robot.csv", {});
   ASSERT_TRUE(job.texts.camera.has_value());
-  const PoseTable camera = ParsePoseTable(*job.texts.camera, "camera.csv", {});
+  const io::PoseTable camera = io::ParsePoseTable(*job.texts.camera, "camera.csv", {});
   ASSERT_EQ(robot.rows.size(), truth.T_base_gripper.size());
   ASSERT_EQ(camera.rows.size(), truth.T_camera_target.size());
-  EXPECT_EQ(robot.unit, LengthUnit::kMillimetre);
+  EXPECT_EQ(robot.unit, io::LengthUnit::kMillimetre);
   for (size_t i = 0; i < robot.rows.size(); ++i) {
     const Pose& G = truth.T_base_gripper[i];
     EXPECT_LT((robot.rows[i].pose.translation() - G.translation()).norm(), 1e-9) << i;
@@ -69,7 +69,7 @@ TEST(ImportJob, RefusesOptionsByField) {
   EXPECT_EQ(field_of(options), "ImportJobOptions.robot");
 
   options = TabbOptions();
-  options.format = ImportFormat::kMoveit;
+  options.format = io::ImportFormat::kMoveit;
   options.inputs = {"no/such.json"};
   options.intrinsics.clear();
   options.camera.clear();
@@ -78,14 +78,14 @@ TEST(ImportJob, RefusesOptionsByField) {
   options.intrinsics = "camera.yaml";
   EXPECT_EQ(field_of(options), "ImportJobOptions.intrinsics");
   options.intrinsics.clear();
-  options.read.units = LengthUnit::kMillimetre;
+  options.read.units = io::LengthUnit::kMillimetre;
   EXPECT_EQ(field_of(options), "ImportOptions.units");
   options.read.units.reset();
   EXPECT_EQ(field_of(options), "no/such.json");  // valid: the reader fails on the file
 
   // matrix16 with one file has robot poses only: no camera table, and then it is valid.
   options = {};
-  options.format = ImportFormat::kMatrix16;
+  options.format = io::ImportFormat::kMatrix16;
   options.inputs = {"no/such.txt"};
   options.robot = "robot.csv";
   options.camera = "camera.csv";
@@ -121,4 +121,4 @@ TEST_F(ImportJobFiles, RefusesIntrinsicsThatDifferBetweenLines) {
 }
 
 }  // namespace
-}  // namespace hecal::io
+}  // namespace hecal::jobs

@@ -31,7 +31,7 @@
 #include "hecal/pose/camera_model.h"
 #include "hecal/pose/pose_method.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 
 // A pose solver outside the pose layer: object points (metres, target frame), their pixels, the
 // camera and the options (refinement σ) → the estimate.
@@ -68,4 +68,4 @@ struct PointPoseResult {
 // !options.IsValid or for bad files, DegenerateError when the pose is undetermined.
 PointPoseResult EstimatePoseFromFiles(const PointPoseOptions& options);
 
-}  // namespace hecal::report
+}  // namespace hecal::jobs

@@ -1,5 +1,5 @@
 // The job of `hecal pose`: see point_pose.h.
-#include "hecal/report/point_pose.h"
+#include "hecal/jobs/point_pose.h"
 
 #include <array>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "hecal/io/delimited_text.h"
 #include "hecal/io/point_file.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 namespace {
 
 struct Correspondences {
@@ -139,4 +139,4 @@ PointPoseResult EstimatePoseFromFiles(const PointPoseOptions& options) {
   return result;
 }
 
-}  // namespace hecal::report
+}  // namespace hecal::jobs

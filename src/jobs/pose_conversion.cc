@@ -1,9 +1,9 @@
 // The pose-table conversion job: see pose_conversion.h.
-#include "hecal/io/pose_conversion.h"
+#include "hecal/jobs/pose_conversion.h"
 
 #include "hecal/core/options_check.h"
 
-namespace hecal::io {
+namespace hecal::jobs {
 
 bool PoseConversionOptions::IsValid(std::string* why) const {
   if (!input.empty()) return true;
@@ -14,11 +14,11 @@ bool PoseConversionOptions::IsValid(std::string* why) const {
 PoseConversion ConvertPoseTable(const PoseConversionOptions& options) {
   RequireValid(options);
   PoseConversion result;
-  result.table = ReadPoseTable(options.input, options.read);
+  result.table = io::ReadPoseTable(options.input, options.read);
   result.write.rotation = options.to;
   result.write.units = options.units.value_or(result.table.unit);
   result.write.degrees = options.degrees;
   return result;
 }
 
-}  // namespace hecal::io
+}  // namespace hecal::jobs
