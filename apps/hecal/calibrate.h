@@ -3,7 +3,7 @@
 // (ParseCalibrateFlags), then the form, each a library job with its options bound from the flags:
 // from pose tables (calibrate.cc: jobs::CalibrateFromPoseFiles), from images (calibrate_images.cc:
 // jobs::CalibrateFromImageFolder) or target-free (calibrate_global.cc: the matches from
-// report::ReadGlobalMatches or jobs::GlobalMatchesFromImages, then report::CalibrateGlobal). These
+// jobs::ReadGlobalMatches or jobs::GlobalMatchesFromImages, then jobs::CalibrateGlobal). These
 // files hold the flags, the form dispatch, the checks of flag combinations and the printing only.
 #pragma once
 
@@ -89,9 +89,9 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
 // `hecal calibrate --method global` (docs/global.md): the flags become
 // report::GlobalCalibrationOptions (report/global_calibration.h; its IsValid holds the ranges);
 // the flags must name one source of matches (--correspondences, or --images with --target and
-// --intrinsics; not --camera), read by report::ReadGlobalMatches or jobs::GlobalMatchesFromImages
+// --intrinsics; not --camera), read by jobs::ReadGlobalMatches or jobs::GlobalMatchesFromImages
 // (jobs/global_matches.h; --target none and --features choose its MatchSource);
-// report::CalibrateGlobal runs the job, report::WriteGlobalResult writes the result file.
+// jobs::CalibrateGlobal runs the job, report::WriteGlobalResult writes the result file.
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io);
 
 }  // namespace hecal::cli

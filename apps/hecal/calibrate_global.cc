@@ -1,7 +1,7 @@
 // `hecal calibrate --method global` (calibrate.h: RunCalibrateGlobal): binds the flags into
 // report::GlobalCalibrationOptions, checks which source of matches the flags name, reads them
-// (report::ReadGlobalMatches from a correspondence file, jobs::GlobalMatchesFromImages from
-// images), runs report::CalibrateGlobal and prints.
+// (jobs::ReadGlobalMatches from a correspondence file, jobs::GlobalMatchesFromImages from
+// images), runs jobs::CalibrateGlobal and prints.
 #include <chrono>
 #include <functional>
 #include <iomanip>
@@ -13,7 +13,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/io/units.h"
-#include "hecal/report/global_calibration.h"
+#include "hecal/jobs/global_calibration.h"
 #include "hecal/report/global_text.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
@@ -24,7 +24,7 @@
 namespace hecal::cli {
 namespace {
 
-report::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseReadOptions& read,
+jobs::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseReadOptions& read,
                                   [[maybe_unused]] const report::GlobalCalibrationOptions& options,
                                   [[maybe_unused]] const Io& io) {
   if (!flags.camera.empty()) {
@@ -74,7 +74,7 @@ report::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseRea
                      "give --correspondences FILE (CSV: first,second,u1,v1,u2,v2; "
                      "docs/global.md), or target images with --images DIR --target target.yaml");
   }
-  return report::ReadGlobalMatches(flags.robot, read, flags.correspondences, flags.intrinsics);
+  return jobs::ReadGlobalMatches(flags.robot, read, flags.correspondences, flags.intrinsics);
 }
 
 // The search's bounds on standard error while it runs, one line each time the search hands
@@ -127,9 +127,9 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   read.degrees = flags.degrees;
   read.invert = flags.robot_inverse;
 
-  const report::GlobalMatches matches = ReadMatches(flags, read, options, io);
+  const jobs::GlobalMatches matches = ReadMatches(flags, read, options, io);
   const report::GlobalCalibrationResult result =
-      report::CalibrateGlobal(matches, options, SearchProgressPrinter(io, options.time_budget));
+      jobs::CalibrateGlobal(matches, options, SearchProgressPrinter(io, options.time_budget));
   report::PrintGlobalSummary(io.out, result, units);
   for (const std::string& warning : result.warnings)
     io.err << "hecal: warning: " << warning << "\n";

@@ -19,18 +19,18 @@ namespace hecal::jobs {
 namespace {
 
 // Step 2, kTargetCorners.
-report::GlobalMatches MatchTargetCorners(const GlobalImageMatchOptions& options,
+GlobalMatches MatchTargetCorners(const GlobalImageMatchOptions& options,
                                          const io::PoseTable& robot,
                                          const JobCallbacks& callbacks) {
   const vision::ImageSet set = DetectImages({options.images, options.target, options.intrinsics,
                                              options.threads, vision::ImageUse::kHandEye},
                                             options.caller, callbacks);
-  report::GlobalMatches matches;
+  GlobalMatches matches;
   matches.T_base_gripper = RobotPosePerImage(robot, set, options.images, callbacks);
   matches.focal = 0.5 * (set.camera.fx + set.camera.fy);
   for (const vision::CornerMotion& corners :
        vision::MatchTargetCorners(set, options.matches_per_motion)) {
-    report::GlobalMotion motion{corners.first,
+    GlobalMotion motion{corners.first,
                                 corners.second,
                                 set.images[std::size_t(corners.first)].id(),
                                 set.images[std::size_t(corners.second)].id(),
@@ -44,11 +44,11 @@ report::GlobalMatches MatchTargetCorners(const GlobalImageMatchOptions& options,
 }
 
 // Step 2, kSift and kOrb.
-report::GlobalMatches MatchFeatures(const GlobalImageMatchOptions& options,
+GlobalMatches MatchFeatures(const GlobalImageMatchOptions& options,
                                     const io::PoseTable& robot, const JobCallbacks& callbacks) {
   const pose::CameraModel camera = io::ReadCameraFile(options.intrinsics).camera;
   const io::StationImages listed = io::ListStationImages(options.images, "the station images");
-  report::GlobalMatches matches;
+  GlobalMatches matches;
   matches.T_base_gripper =
       io::PairRobotWithStations(robot, listed.stations, options.images,
                                 [&callbacks](const std::string& note) { callbacks.Note(note); });
@@ -70,7 +70,7 @@ report::GlobalMatches MatchFeatures(const GlobalImageMatchOptions& options,
   line << "features: " << listed.stations.size() << " images, " << features.size() << " motions, "
        << (options.source == MatchSource::kOrb ? "ORB" : "SIFT") << " matches per motion:";
   for (std::size_t k = 0; k < features.size(); ++k) {
-    report::GlobalMotion motion{
+    GlobalMotion motion{
         int(k), int(k + 1), listed.stations[k].id, listed.stations[k + 1].id, {}};
     for (std::size_t j = 0; j < features[k].size(); ++j) {
       motion.pairs.push_back({features[k][j].first_ray, features[k][j].second_ray, int(j)});
@@ -115,7 +115,7 @@ bool GlobalImageMatchOptions::IsValid(std::string* why) const {
   return true;
 }
 
-report::GlobalMatches GlobalMatchesFromImages(const GlobalImageMatchOptions& options,
+GlobalMatches GlobalMatchesFromImages(const GlobalImageMatchOptions& options,
                                               const JobCallbacks& callbacks) {
   RequireValid(options);
   const io::PoseTable robot = io::ReadPoseTable(options.robot, options.robot_read);

@@ -99,7 +99,7 @@ void ExpectSamePoses(const std::vector<Pose>& actual, const std::vector<Pose>& e
 // Corner j of a motion is the target's corner ids[j]: on the true ray to it in both views.
 TEST_F(GlobalMatchesTest, TargetCornersLieOnTheTrueRays) {
   std::vector<std::string> progress, notes;
-  const report::GlobalMatches matches = GlobalMatchesFromImages(
+  const GlobalMatches matches = GlobalMatchesFromImages(
       BoardOptions(), {[&](const std::string& text) { progress.push_back(text); },
                        [&](const std::string& note) { notes.push_back(note); },
                        {}});
@@ -115,7 +115,7 @@ TEST_F(GlobalMatchesTest, TargetCornersLieOnTheTrueRays) {
   const double half_pixel = 0.5 / matches.focal;
   ASSERT_EQ(matches.motions.size(), std::size_t(kViews - 1));
   for (std::size_t k = 0; k < matches.motions.size(); ++k) {
-    const report::GlobalMotion& motion = matches.motions[k];
+    const GlobalMotion& motion = matches.motions[k];
     EXPECT_EQ(motion.first, int(k));
     EXPECT_EQ(motion.second, int(k + 1));
     EXPECT_EQ(motion.first_name, "view_0" + std::to_string(k));
@@ -139,7 +139,7 @@ TEST_F(GlobalMatchesTest, FeatureMatchesFitTheTrueMotion) {
   const testing::TexturedStations plane = Plane();
   for (const MatchSource source : {MatchSource::kSift, MatchSource::kOrb}) {
     std::vector<std::string> progress;
-    const report::GlobalMatches matches = GlobalMatchesFromImages(
+    const GlobalMatches matches = GlobalMatchesFromImages(
         PlaneOptions(source), {[&](const std::string& text) { progress.push_back(text); }, {}, {}});
     ExpectSamePoses(matches.T_base_gripper, plane.T_base_gripper);
     EXPECT_EQ(matches.focal, 800.0);
@@ -149,7 +149,7 @@ TEST_F(GlobalMatchesTest, FeatureMatchesFitTheTrueMotion) {
                        (source == MatchSource::kSift ? "SIFT" : "ORB") + " matches per motion:";
     std::vector<double> residuals;
     for (std::size_t k = 0; k < matches.motions.size(); ++k) {
-      const report::GlobalMotion& motion = matches.motions[k];
+      const GlobalMotion& motion = matches.motions[k];
       EXPECT_EQ(motion.first_name, "view_0" + std::to_string(k));
       EXPECT_GE(motion.pairs.size(), 8u);
       EXPECT_LE(motion.pairs.size(), std::size_t(kPerMotion));

@@ -1,6 +1,6 @@
 // The point matches of the target-free calibration from a folder of station images, as one job
 // (`hecal calibrate --method global --images DIR`; docs/global.md): the robot pose of every
-// station and the matched rays of every motion, ready for report::CalibrateGlobal
+// station and the matched rays of every motion, ready for jobs::CalibrateGlobal
 // (report/global_calibration.h), printing nothing (texts through JobCallbacks, job_callbacks.h).
 //
 // Steps (GlobalMatchesFromImages)
@@ -20,7 +20,7 @@
 //                      spread over the image), then one progress line
 //                      "features: N images, M motions, SIFT matches per motion: n1 n2 …" (ORB
 //                      for kOrb).
-//   3. focal = (fx + fy) / 2 of the intrinsics, which turns report::CalibrateGlobal's pixel σ
+//   3. focal = (fx + fy) / 2 of the intrinsics, which turns jobs::CalibrateGlobal's pixel σ
 //      into radians of ray.
 // Frames and units: T_base_gripper from the robot table in metres; rays are unit vectors in the
 // camera frame of each image of a motion (v in the first, u in the second: global::BearingPair).
@@ -35,7 +35,7 @@
 
 #include "hecal/io/pose_table.h"
 #include "hecal/jobs/job_callbacks.h"
-#include "hecal/report/global_calibration.h"
+#include "hecal/jobs/global_calibration.h"
 
 namespace hecal::jobs {
 
@@ -66,7 +66,7 @@ struct GlobalImageMatchOptions {
 };
 
 // Steps 1–3 above; the motions in image order.
-report::GlobalMatches GlobalMatchesFromImages(const GlobalImageMatchOptions& options,
+GlobalMatches GlobalMatchesFromImages(const GlobalImageMatchOptions& options,
                                               const JobCallbacks& callbacks);
 
 }  // namespace hecal::jobs

@@ -15,7 +15,7 @@
 #include <ostream>
 
 #include "hecal/io/units.h"
-#include "hecal/report/global_calibration.h"
+#include "hecal/report/global_result.h"
 
 namespace hecal::report {
 

@@ -1,49 +1,26 @@
-// Target-free, globally optimal calibration as one job (`hecal calibrate --method global`,
-// docs/global.md): from the robot poses of the stations and point matches between the images of
-// two stations (unit rays), global::SolveGlobalRobust removes wrong matches and certifies the
-// L∞ optimum (global/outlier_removal.h, global/branch_and_bound.h); estimation::PolishAndRecheck
-// polishes it in L2 and re-checks the removed pairs at the polished X; the final X and its
-// covariance come from the polish with the robot's pose error marginalised, the covariance
-// checked against the data's own spread (global_calibration_check.h)
-// (estimation/epipolar_robot_noise.h: the three noise levels estimated, or the robot's held at
-// `robot_sigma` when given — eye-to-hand widened by the lever arm of the gripper positions,
-// estimation::HandPoseSigma — and only the ray noise estimated).
-//
-// Inputs (GlobalMatches): the hand pose of every station (T_base_gripper, metres), the motions
-// as pairs of station indices with their names and the matched rays; `focal` (pixels) turns the
-// pixel σ into radians of ray (1 for matches given as bearings). ReadGlobalMatches builds them
-// from a robot file and a correspondence file (io/correspondence_file.h; stations by the robot
-// file's ids when every row has one, else by 1-based row number; pixels are undistorted through
-// the intrinsics file, bearings are taken as they are); the vision layer builds them from images
-// (vision/corner_matches.h, vision/feature_matches.h).
-// Thresholds: the outlier threshold is 4√2 · pixel_sigma / focal radians of ray.
-// Frames and units: X = T_gripper_camera eye-in-hand, T_base_camera eye-to-hand (HandPose,
-// global/epipolar_problem.h); metres and radians; covariance in the right perturbation
-// (ω, v) of X.
+// The result of the target-free, globally optimal calibration (jobs/global_calibration.h,
+// `hecal calibrate --method global`, docs/global.md) and its file: the options it ran with, the
+// final X with its covariance checked against the data's own spread (global_calibration_check.h),
+// the noise levels, the L∞ certificate, the matches kept and removed, warnings.
 // Result file (WriteGlobalResult, JSON, docs/global.md "Command"): method, setup, X,
 // certificate (with `stopped_by`: "gap reached", "below threshold", "max cubes" or
 // "time budget", and the budgets), l_infinity_X, covariance (with the model check, the noise
 // levels, `robot_sigma`: "given" or "estimated", and the independent-pairs covariance), polish,
-// matches (inliers,
-// thresholds, removed pairs with the stage that removed them), warnings.
+// matches (inliers, thresholds, removed pairs with the stage that removed them), warnings.
+// Frames and units: X = T_gripper_camera eye-in-hand, T_base_camera eye-to-hand; metres and
+// radians; covariance in the right perturbation (ω, v) of X.
 //
-// Errors: InputError naming the options field (GlobalCalibrationOptions::IsValid), the files
-// with line (ReadGlobalMatches: a station the robot file does not have, pixels without
-// intrinsics, a pixel that cannot be undistorted), a motion naming a station that is not
-// there; DegenerateError when the matches do not determine X (too few pairs, motions that do
-// not observe the length of X's translation).
+// Errors: GlobalCalibrationOptions::IsValid names the field (core/options_check.h).
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "hecal/estimation/epipolar_robot_noise.h"
 #include "hecal/global/branch_and_bound.h"
-#include "hecal/global/epipolar_problem.h"
-#include "hecal/io/pose_table.h"
+#include "hecal/handeye/problem.h"
 #include "hecal/report/global_calibration_check.h"
 
 namespace hecal::report {
@@ -69,26 +46,6 @@ struct GlobalCalibrationOptions {
   // (robot_sigma: estimation::SigmaIsValid).
   bool IsValid(std::string* why) const;
 };
-
-struct GlobalMotion {
-  int first = 0;  // station indices into GlobalMatches::T_base_gripper
-  int second = 0;
-  std::string first_name;  // for the result's removed pairs
-  std::string second_name;
-  std::vector<global::BearingPair> pairs;  // v in the first camera, u in the second
-};
-
-struct GlobalMatches {
-  std::vector<Pose> T_base_gripper;  // one per station, metres
-  std::vector<GlobalMotion> motions;
-  double focal = 1.0;  // pixels of the camera the rays come from; 1 for bearings
-};
-
-// Reads the robot poses (`read`: units, angles, inversion) and the correspondence file; the
-// intrinsics file is needed when the matches are pixels ("" otherwise).
-GlobalMatches ReadGlobalMatches(const std::string& robot_file, const io::PoseReadOptions& read,
-                                const std::string& correspondence_file,
-                                const std::string& intrinsics_file);
 
 struct RemovedMatch {
   std::string first;  // station names of the motion
@@ -120,12 +77,6 @@ struct GlobalCalibrationResult {
   // covariance (in the result file's `warnings`; the CLI prints them as `hecal: warning:`).
   std::vector<std::string> warnings;
 };
-
-// Runs the job; RequireValid(options) first. `progress` (may be empty) receives the search's
-// bounds while it runs, at most every 5 s (global::SearchOptions::progress).
-GlobalCalibrationResult CalibrateGlobal(
-    const GlobalMatches& matches, const GlobalCalibrationOptions& options,
-    const std::function<void(const global::SearchProgress&)>& progress = {});
 
 // The result file (above), as text, and written atomically.
 std::string GlobalResultJson(const GlobalCalibrationResult& result);

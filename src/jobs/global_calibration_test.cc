@@ -3,7 +3,7 @@
 // wrong match is removed and named by its stations and id; the result file holds X as solved
 // and the 1σ of its translation along the hand's axes; the options name the bad field; the
 // correspondence reader numbers stations by row.
-#include "hecal/report/global_calibration.h"
+#include "hecal/jobs/global_calibration.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include "testing/options_validity.h"
 #include "testing/scratch_folder.h"
 
-namespace hecal::report {
+namespace hecal::jobs {
 namespace {
 
 GlobalMatches MatchesOf(const testing::EpipolarScene& scene, double focal) {
@@ -43,11 +43,12 @@ TEST(CalibrateGlobal, RecoversTheTrueXInBothSetupsWithACertificate) {
   for (const handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     const testing::EpipolarSceneSpec spec = SmallSpec(setup);
     const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
-    GlobalCalibrationOptions options;
+    report::GlobalCalibrationOptions options;
     options.setup = setup;
     options.epsilon = 1e-5;
     options.reach = 1.0;
-    const GlobalCalibrationResult result = CalibrateGlobal(MatchesOf(scene, spec.focal), options);
+    const report::GlobalCalibrationResult result =
+        CalibrateGlobal(MatchesOf(scene, spec.focal), options);
     EXPECT_LT(se3::Log(result.robot_noise.polish.X.inverse() * scene.X).norm(), 1e-6);
     EXPECT_LE(result.certificate.upper - result.certificate.lower, 1e-5);
     EXPECT_EQ(result.inliers, spec.motions * spec.pairs);
@@ -62,9 +63,9 @@ TEST(CalibrateGlobal, RemovesAPlantedWrongMatchAndNamesIt) {
   GlobalMatches matches = MatchesOf(scene, spec.focal);
   global::BearingPair& wrong = matches.motions[2].pairs[5];
   wrong.second = (wrong.second + Eigen::Vector3d(0.1, -0.05, 0.0)).normalized();
-  GlobalCalibrationOptions options;
+  report::GlobalCalibrationOptions options;
   options.reach = 1.0;
-  const GlobalCalibrationResult result = CalibrateGlobal(matches, options);
+  const report::GlobalCalibrationResult result = CalibrateGlobal(matches, options);
   ASSERT_EQ(result.removed.size(), 1u);
   EXPECT_EQ(result.removed[0].first, "4");
   EXPECT_EQ(result.removed[0].second, "5");
@@ -72,7 +73,7 @@ TEST(CalibrateGlobal, RemovesAPlantedWrongMatchAndNamesIt) {
   EXPECT_EQ(result.inliers, spec.motions * spec.pairs - 1);
   EXPECT_LT(se3::Log(result.robot_noise.polish.X.inverse() * scene.X).norm(), 1e-6);
 
-  const nlohmann::json doc = nlohmann::json::parse(GlobalResultJson(result));
+  const nlohmann::json doc = nlohmann::json::parse(report::GlobalResultJson(result));
   EXPECT_EQ(doc["method"], "global");
   EXPECT_EQ(doc["setup"], "eye-in-hand");
   for (int r = 0; r < 3; ++r) {
@@ -94,11 +95,11 @@ TEST(CalibrateGlobal, WritesTheTranslationSigmaAlongTheHandAxes) {
   testing::EpipolarSceneSpec spec = SmallSpec(handeye::Setup::kEyeInHand);
   spec.pixel_sigma = 0.5;
   const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
-  GlobalCalibrationOptions options;
+  report::GlobalCalibrationOptions options;
   options.reach = 1.0;
   options.max_cubes = 2000;  // the search's bounds do not matter here: the polish is the answer
   const nlohmann::json doc = nlohmann::json::parse(
-      GlobalResultJson(CalibrateGlobal(MatchesOf(scene, spec.focal), options)));
+      report::GlobalResultJson(CalibrateGlobal(MatchesOf(scene, spec.focal), options)));
   Eigen::Matrix3d R;
   Matrix6d C;
   for (int r = 0; r < 3; ++r)
@@ -123,13 +124,14 @@ TEST(CalibrateGlobal, SaysWhyTheSearchStoppedAndWarnsWhenABudgetEndedIt) {
   testing::EpipolarSceneSpec spec = SmallSpec(handeye::Setup::kEyeInHand);
   spec.pixel_sigma = 0.5;
   const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
-  GlobalCalibrationOptions options;
+  report::GlobalCalibrationOptions options;
   options.reach = 1.0;
   options.epsilon = 1e-7;
   options.relative_gap = 0.0;
   options.max_cubes = 1;
-  const GlobalCalibrationResult result = CalibrateGlobal(MatchesOf(scene, spec.focal), options);
-  const nlohmann::json doc = nlohmann::json::parse(GlobalResultJson(result));
+  const report::GlobalCalibrationResult result =
+      CalibrateGlobal(MatchesOf(scene, spec.focal), options);
+  const nlohmann::json doc = nlohmann::json::parse(report::GlobalResultJson(result));
   const nlohmann::json& c = doc["certificate"];
   EXPECT_EQ(c["stopped_by"], "max cubes");
   EXPECT_FALSE(c["certified"].get<bool>());
@@ -151,11 +153,12 @@ TEST(CalibrateGlobal, WritesTheModelCheckUnderTheCovariance) {
   testing::EpipolarSceneSpec spec = SmallSpec(handeye::Setup::kEyeInHand);
   spec.pixel_sigma = 0.5;
   const testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 12);
-  GlobalCalibrationOptions options;
+  report::GlobalCalibrationOptions options;
   options.reach = 1.0;
   options.max_cubes = 2000;  // the check needs the polish, not a closed certificate
-  const GlobalCalibrationResult result = CalibrateGlobal(MatchesOf(scene, spec.focal), options);
-  const nlohmann::json doc = nlohmann::json::parse(GlobalResultJson(result));
+  const report::GlobalCalibrationResult result =
+      CalibrateGlobal(MatchesOf(scene, spec.focal), options);
+  const nlohmann::json doc = nlohmann::json::parse(report::GlobalResultJson(result));
   const nlohmann::json& check = doc["covariance"]["model_check"];
   EXPECT_EQ(check["method"], "jackknife");
   ASSERT_TRUE(check["possible"].get<bool>()) << check.dump();
@@ -192,9 +195,9 @@ TEST(CalibrateGlobal, RefusesAMotionNamingNoStation) {
 }
 
 TEST(GlobalCalibrationOptions, NameTheBadField) {
-  const GlobalCalibrationOptions options;
+  const report::GlobalCalibrationOptions options;
   EXPECT_TRUE(testing::IsValidOptions(options));
-  using O = GlobalCalibrationOptions;
+  using O = report::GlobalCalibrationOptions;
   EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.epsilon",
                                      [](O& o) { o.epsilon = 0.0; }));
   EXPECT_TRUE(testing::RefusesNaming(options, "GlobalCalibrationOptions.epsilon",
@@ -263,4 +266,4 @@ TEST_F(GlobalFiles, NumbersStationsByRowAndTurnsPixelsIntoRays) {
 }
 
 }  // namespace
-}  // namespace hecal::report
+}  // namespace hecal::jobs
