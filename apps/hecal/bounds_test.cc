@@ -80,7 +80,7 @@ TEST_F(Bounds, NoiseLevelsAreTwoNumbers) {
                 "expected two numbers MM/DEG or one number N, got '1/x'");
   ExpectRefused({"bench", "--sigma", "nan"}, "--sigma",
                 "expected two numbers MM/DEG or one number N, got 'nan'");
-  // A negative level is a number; its range is the options' (study::SimulateOptions::IsValid).
+  // A negative level is a number; its range is the options' (jobs::SimulateOptions::IsValid).
   ExpectRefused(Simulate({"--sigma", "-1"}), "--sigma", "noise levels must be 0 to 1000 mm");
 }
 

@@ -1,5 +1,5 @@
 // The options structs of the library jobs, driven through `hecal`: for every field an
-// options struct's IsValid checks (study::SimulateOptions, ...), a bad value given on the command
+// options struct's IsValid checks (jobs::SimulateOptions, ...), a bad value given on the command
 // line exits 2 with exactly one line `hecal: --flag: problem (fix: ...)` naming the flag that set
 // the field (field_flags.h), without the field's "Options." name, prints nothing on stdout and
 // writes no output file. Options no flag can make invalid are tested beside their structs in src/:
@@ -23,7 +23,7 @@ namespace {
 
 using JobOptions = cli_test::CliTest;
 
-// study::SimulateOptions::IsValid, field by field.
+// jobs::SimulateOptions::IsValid, field by field.
 TEST_F(JobOptions, SimulateOptionsNameTheFlag) {
   const auto simulate = [&](std::vector<std::string> extra) {
     // Every case below is refused before the study runs.

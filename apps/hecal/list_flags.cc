@@ -5,7 +5,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/io/delimited_text.h"
-#include "hecal/study/simulate.h"
+#include "hecal/jobs/simulate.h"
 
 namespace hecal::cli {
 

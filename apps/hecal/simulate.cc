@@ -1,8 +1,8 @@
 // `hecal simulate` (docs/cli.md#hecal-simulate, docs/thesis-study.md): binds the flags into
-// study::SimulateOptions (study/simulate.h; list flags parsed once here, ranges checked by its
-// IsValid), runs study::Simulate, prints a table per setting (report/study_text.h) and writes the
+// jobs::SimulateOptions (study/simulate.h; list flags parsed once here, ranges checked by its
+// IsValid), runs jobs::Simulate, prints a table per setting (report/study_text.h) and writes the
 // CSV files of study/study_csv.h.
-#include "hecal/study/simulate.h"
+#include "hecal/jobs/simulate.h"
 
 #include <CLI/CLI.hpp>
 #include <memory>
@@ -41,7 +41,7 @@ Bound: first-order (Cramer-Rao-type) RMSE of the ml estimate at the truth, RMS o
 Same --seed, same CSV files whatever --threads.)";
 
 struct SimulateCommand {
-  study::SimulateOptions options;
+  jobs::SimulateOptions options;
   std::string output;
   std::string summary;
 };
@@ -49,7 +49,7 @@ struct SimulateCommand {
 void RunSimulate(const SimulateCommand& command, const Io& io) {
   RequireValid(command.options);  // before the output paths are checked
   io::CheckOutputs({{"--output", command.output}, {"--summary", command.summary}}, {});
-  const study::StudyResult result = study::Simulate(command.options);
+  const study::StudyResult result = jobs::Simulate(command.options);
   std::vector<io::OutputFile> outputs;
   if (!command.output.empty())
     outputs.push_back({"--output", command.output, study::TrialsCsv(result)});
@@ -71,7 +71,7 @@ void RunSimulate(const SimulateCommand& command, const Io& io) {
 
 void RegisterSimulateCommand(CLI::App& app, const Io& io) {
   auto command = std::make_shared<SimulateCommand>();
-  study::SimulateOptions& o = command->options;
+  jobs::SimulateOptions& o = command->options;
   CLI::App* simulate = app.add_subcommand(
       "simulate", "The thesis study: every method on simulated data, errors and summaries");
   simulate

@@ -117,11 +117,11 @@ bool BenchOptions::IsValid(std::string* why) const {
         "must be 0 to " + FormatNumber(kMaxMinTime) + " seconds, got " + FormatNumber(min_time),
         "e.g. 0.2");
   }
-  if (!(sigma.mm >= 0.0 && sigma.mm <= SimulateOptions::kMaxSigmaMm) ||
-      !(sigma.deg >= 0.0 && sigma.deg <= SimulateOptions::kMaxSigmaDeg)) {
+  if (!(sigma.mm >= 0.0 && sigma.mm <= kMaxSigmaMm) ||
+      !(sigma.deg >= 0.0 && sigma.deg <= kMaxSigmaDeg)) {
     return Invalid(why, "BenchOptions.sigma",
-                   "noise levels must be 0 to " + FormatNumber(SimulateOptions::kMaxSigmaMm) +
-                       " mm and 0 to " + FormatNumber(SimulateOptions::kMaxSigmaDeg) +
+                   "noise levels must be 0 to " + FormatNumber(kMaxSigmaMm) +
+                       " mm and 0 to " + FormatNumber(kMaxSigmaDeg) +
                        " deg per axis, got " + FormatNumber(sigma.mm) + " mm / " +
                        FormatNumber(sigma.deg) + " deg",
                    "give the standard deviation of one axis in mm and degrees, e.g. 0.5/0.1");

@@ -420,4 +420,11 @@ StudyResult RunStudy(const StudyOptions& options) {
   return result;
 }
 
+std::vector<estimation::Method> EveryMethod() {
+  std::vector<estimation::Method> methods;
+  for (const estimation::MethodInfo& info : estimation::AllMethods())
+    methods.push_back(info.method);
+  return methods;
+}
+
 }  // namespace hecal::study

@@ -42,7 +42,7 @@
 #include "hecal/geometry/types.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/sim/thesis_protocol.h"
-#include "hecal/study/simulate.h"
+#include "hecal/study/study.h"
 #include "hecal/study/study.h"
 
 namespace hecal::study {

@@ -54,6 +54,13 @@
 
 namespace hecal::study {
 
+// Every method of estimation::AllMethods(), in its order: what a study runs by default.
+std::vector<estimation::Method> EveryMethod();
+
+// The largest noise level a study simulates, per axis.
+inline constexpr double kMaxSigmaMm = 1000.0;
+inline constexpr double kMaxSigmaDeg = 180.0;
+
 // Which measurements carry the noise.
 enum class NoiseOn { kRobot, kCamera, kBoth };
 // "robot" | "camera" | "both"; nullopt otherwise.

@@ -1,4 +1,4 @@
-#include "hecal/study/simulate.h"
+#include "hecal/jobs/simulate.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 
-namespace hecal::study {
+namespace hecal::jobs {
 namespace {
 
 // `why` of an invalid options struct names the field first (core/options_check.h).
@@ -96,7 +96,7 @@ TEST(MakeStudyOptions, OneSettingPerCombinationInNestingOrderAndSiUnits) {
   options.covariance = std::nullopt;
   options.covariance_samples = 77;
   options.seed = 9;
-  const StudyOptions study = MakeStudyOptions(options);
+  const study::StudyOptions study = MakeStudyOptions(options);
   ASSERT_EQ(study.settings.size(), 2u * 2u * 2u * 2u);
   // Outliers vary fastest, then stations, ..., robot scale slowest.
   EXPECT_EQ(study.settings[0].gross_outliers, 0);
@@ -120,10 +120,10 @@ TEST(Simulate, NoiseFreeDataGiveTheTruthToRounding) {
   options.methods = {estimation::Method::kParkMartin};
   options.trials = 3;
   options.threads = 1;
-  const StudyResult result = Simulate(options);
+  const study::StudyResult result = Simulate(options);
   ASSERT_EQ(result.trials.size(), 3u);
-  for (const TrialResult& trial : result.trials) {
-    EXPECT_EQ(trial.status, TrialStatus::kOk);
+  for (const study::TrialResult& trial : result.trials) {
+    EXPECT_EQ(trial.status, study::TrialStatus::kOk);
     EXPECT_LT(trial.rotation_error, 1e-9);
     EXPECT_LT(trial.translation_error, 1e-9);
   }
@@ -144,4 +144,4 @@ TEST(OptionsError, SplitsTheMessageIntoFieldProblemAndFix) {
 }
 
 }  // namespace
-}  // namespace hecal::study
+}  // namespace hecal::jobs

@@ -1,5 +1,5 @@
 // The job of `hecal simulate`: see simulate.h.
-#include "hecal/study/simulate.h"
+#include "hecal/jobs/simulate.h"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 #include "hecal/geometry/angle_units.h"
 #include "hecal/study/study_csv.h"
 
-namespace hecal::study {
+namespace hecal::jobs {
 namespace {
 
 std::string Range(std::int64_t low, std::int64_t high) {
@@ -33,13 +33,6 @@ std::string FirstOutside(const std::vector<int>& values, int low, int high) {
 
 }  // namespace
 
-std::vector<estimation::Method> EveryMethod() {
-  std::vector<estimation::Method> methods;
-  for (const estimation::MethodInfo& info : estimation::AllMethods())
-    methods.push_back(info.method);
-  return methods;
-}
-
 bool SimulateOptions::IsValid(std::string* why) const {
   const auto empty = [&](const char* field, bool is_empty) {
     return is_empty && !Invalid(why, std::string("SimulateOptions.") + field,
@@ -61,29 +54,30 @@ bool SimulateOptions::IsValid(std::string* why) const {
   if (const std::string bad = FirstOutside(outliers, 0, kMaxStations); !bad.empty()) {
     return Invalid(why, "SimulateOptions.outliers", bad, "e.g. 0,1,2");
   }
-  for (const NoiseLevel& level : sigmas) {
+  for (const study::NoiseLevel& level : sigmas) {
     if (!(level.mm >= 0.0 && level.mm <= kMaxSigmaMm) ||
         !(level.deg >= 0.0 && level.deg <= kMaxSigmaDeg)) {
       return Invalid(why, "SimulateOptions.sigmas",
-                     "noise levels must be 0 to " + FormatNumber(kMaxSigmaMm) + " mm and 0 to " +
-                         FormatNumber(kMaxSigmaDeg) + " deg per axis, got " +
-                         FormatNumber(level.mm) + " mm / " + FormatNumber(level.deg) + " deg",
+                     "noise levels must be 0 to " + study::FormatNumber(kMaxSigmaMm) +
+                         " mm and 0 to " + study::FormatNumber(kMaxSigmaDeg) +
+                         " deg per axis, got " + study::FormatNumber(level.mm) + " mm / " +
+                         study::FormatNumber(level.deg) + " deg",
                      "give the standard deviation of one axis in mm and degrees, e.g. 0.5/0.1");
     }
   }
   for (double scale : robot_scales) {
     if (!(scale > 0.0) || !(scale <= kMaxRobotScale)) {
       return Invalid(why, "SimulateOptions.robot_scales",
-                     "'" + FormatNumber(scale) + "' is not a number above 0 and at most " +
-                         FormatNumber(kMaxRobotScale),
+                     "'" + study::FormatNumber(scale) + "' is not a number above 0 and at most " +
+                         study::FormatNumber(kMaxRobotScale),
                      "e.g. 1,5");
     }
-    for (const NoiseLevel& level : sigmas) {
+    for (const study::NoiseLevel& level : sigmas) {
       if (level.mm * scale > kMaxSigmaMm || level.deg * scale > kMaxSigmaDeg) {
         return Invalid(why, "SimulateOptions.robot_scales",
                        "the robot noise (the noise level times the robot scale) must stay within " +
-                           FormatNumber(kMaxSigmaMm) + " mm and " + FormatNumber(kMaxSigmaDeg) +
-                           " deg per axis",
+                           study::FormatNumber(kMaxSigmaMm) + " mm and " +
+                           study::FormatNumber(kMaxSigmaDeg) + " deg per axis",
                        "give a smaller robot scale or noise level");
       }
     }
@@ -125,8 +119,8 @@ bool SimulateOptions::IsValid(std::string* why) const {
   return true;
 }
 
-StudyOptions MakeStudyOptions(const SimulateOptions& options) {
-  StudyOptions study;
+study::StudyOptions MakeStudyOptions(const SimulateOptions& options) {
+  study::StudyOptions study;
   study.methods = options.methods;
   study.trials = options.trials;
   study.threads = options.threads;
@@ -138,12 +132,12 @@ StudyOptions MakeStudyOptions(const SimulateOptions& options) {
   study.estimate_noise = options.estimate_noise;
   for (double robot_scale : options.robot_scales) {
     for (handeye::Setup setup : options.setups) {
-      for (NoiseOn on : options.noise_on) {
+      for (study::NoiseOn on : options.noise_on) {
         for (sim::NoiseModel::Kind kind : options.noise) {
-          for (const NoiseLevel& sigma : options.sigmas) {
+          for (const study::NoiseLevel& sigma : options.sigmas) {
             for (int n : options.stations) {
               for (int k : options.outliers) {
-                Setting setting;
+                study::Setting setting;
                 setting.setup = setup;
                 setting.stations = n;
                 setting.noise_on = on;
@@ -163,9 +157,9 @@ StudyOptions MakeStudyOptions(const SimulateOptions& options) {
   return study;
 }
 
-StudyResult Simulate(const SimulateOptions& options) {
+study::StudyResult Simulate(const SimulateOptions& options) {
   RequireValid(options);
-  return RunStudy(MakeStudyOptions(options));
+  return study::RunStudy(MakeStudyOptions(options));
 }
 
-}  // namespace hecal::study
+}  // namespace hecal::jobs

@@ -27,31 +27,29 @@
 #include "hecal/sim/noise.h"
 #include "hecal/study/study.h"
 
-namespace hecal::study {
+namespace hecal::jobs {
 
 // Every method, in estimation::AllMethods() order (`--method all`).
-std::vector<estimation::Method> EveryMethod();
-
 struct SimulateOptions {
   static constexpr int kMinStations = 3;
   static constexpr int kMaxStations = 100000;
   static constexpr int kMaxTrials = 100000;
   static constexpr int kMaxThreads = 256;
   static constexpr int kMaxCovarianceSamples = 100000;
-  static constexpr double kMaxSigmaMm = 1000.0;
-  static constexpr double kMaxSigmaDeg = 180.0;
+  static constexpr double kMaxSigmaMm = study::kMaxSigmaMm;
+  static constexpr double kMaxSigmaDeg = study::kMaxSigmaDeg;
   static constexpr double kMaxRobotScale = 1000.0;
   static constexpr std::int64_t kMaxSettings = 10000;
   static constexpr std::int64_t kMaxTrialRows = 1000000;
 
   std::vector<handeye::Setup> setups = {handeye::Setup::kEyeInHand};
   std::vector<int> stations = {3, 5, 10, 15, 20};
-  std::vector<NoiseOn> noise_on = {NoiseOn::kBoth};
+  std::vector<study::NoiseOn> noise_on = {study::NoiseOn::kBoth};
   std::vector<sim::NoiseModel::Kind> noise = {sim::NoiseModel::Kind::kGaussian};
-  std::vector<NoiseLevel> sigmas = {{0.0, 0.0}, {0.3, 0.3}, {1.0, 1.0}};
+  std::vector<study::NoiseLevel> sigmas = {{0.0, 0.0}, {0.3, 0.3}, {1.0, 1.0}};
   std::vector<int> outliers = {0};         // gross outliers per data set (sim/gross_outliers.h)
   std::vector<double> robot_scales = {1};  // robot noise = scale × level, camera noise = level
-  std::vector<estimation::Method> methods = EveryMethod();
+  std::vector<estimation::Method> methods = study::EveryMethod();
   int trials = 200;
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
@@ -59,8 +57,8 @@ struct SimulateOptions {
   // own default (estimation::DefaultCovarianceMethod).
   std::optional<estimation::CovarianceMethod> covariance = estimation::CovarianceMethod::kNone;
   int covariance_samples = 1000;  // Monte Carlo samples per trial
-  bool reject_outliers = false;   // StudyOptions::reject_outliers
-  bool estimate_noise = false;    // StudyOptions::estimate_noise
+  bool reject_outliers = false;   // study::StudyOptions::reject_outliers
+  bool estimate_noise = false;    // study::StudyOptions::estimate_noise
 
   // True when every field is in its range (above); else false with "SimulateOptions.<field>:
   // problem (fix: …)" in `*why`.
@@ -68,9 +66,9 @@ struct SimulateOptions {
 };
 
 // The study options of the sweep: one Setting per combination, in the order above.
-StudyOptions MakeStudyOptions(const SimulateOptions& options);
+study::StudyOptions MakeStudyOptions(const SimulateOptions& options);
 
 // Runs the study (study::RunStudy); throws hecal::InputError when !options.IsValid.
-StudyResult Simulate(const SimulateOptions& options);
+study::StudyResult Simulate(const SimulateOptions& options);
 
-}  // namespace hecal::study
+}  // namespace hecal::jobs
