@@ -1,14 +1,14 @@
 // Calibrates MoveIt Calibration's 50 real eye-to-hand samples (data/moveit-calibration) through
-// the library, without the CLI: import, build the problem, calibrate with `ml`, print X with 1σ.
+// the library's front door (hecal/hecal.h), without the CLI: import the samples, calibrate the
+// pose lists with `ml` (jobs::CalibratePoses: the convention check, outlier rejection,
+// covariance), print X with 1σ.
 // Usage: example_calibrate_moveit [pose_samples.json]        (docs/README.md: the data flow)
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "hecal/estimation/calibrate.h"
-#include "hecal/geometry/so3.h"
-#include "hecal/io/import.h"
+#include "hecal/hecal.h"
 
 int main(int argc, char** argv) {
   using namespace hecal;
@@ -19,9 +19,12 @@ int main(int argc, char** argv) {
     std::vector<Pose> T_base_gripper, T_camera_target;
     for (const io::PoseRow& row : poses.robot.rows) T_base_gripper.push_back(row.pose);
     for (const io::PoseRow& row : poses.camera->rows) T_camera_target.push_back(row.pose);
-    const handeye::Problem problem =
-        handeye::MakeProblem(handeye::Setup::kEyeToHand, T_base_gripper, T_camera_target);
-    const estimation::CalibrationResult result = estimation::Calibrate(problem, {});
+    jobs::PoseCalibrationOptions options;
+    options.setup = handeye::Setup::kEyeToHand;
+    options.robot_unit = options.camera_unit = io::LengthUnit::kMetre;  // MoveIt's unit
+    const report::ResultDocument document =
+        jobs::CalibratePoses(T_base_gripper, T_camera_target, options).document;
+    const estimation::CalibrationResult& result = document.results.at(0);
     const Eigen::Vector3d t = result.X.translation();
     const Vector6d sd = result.covariance->X().diagonal().cwiseSqrt();
     const std::string method(estimation::Info(result.method).name);  // the method registry

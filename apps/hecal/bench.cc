@@ -2,19 +2,15 @@
 // study::BenchOptions, runs study::RunBench (study/bench.h) with OpenCV's hand-eye functions
 // (jobs/opencv_bench_peer.h) as its peer when vision is built, and prints the table
 // (report/study_text.h) or the JSON (report/bench_file.h).
-#include "hecal/study/bench.h"
-
 #include <CLI/CLI.hpp>
 #include <memory>
 
 #include "bounds.h"
 #include "choice_flags.h"
 #include "cli.h"
-#include "hecal/report/bench_file.h"
-#include "hecal/report/study_text.h"
+#include "hecal/hecal.h"
 #include "list_flags.h"
 #ifdef HECAL_HAVE_OPENCV_PEERS
-#include "hecal/jobs/opencv_bench_peer.h"
 #endif
 
 namespace hecal::cli {

@@ -7,9 +7,7 @@
 #include <limits>
 #include <type_traits>
 
-#include "hecal/core/error.h"
-#include "hecal/estimation/reprojection_refinement.h"
-#include "hecal/io/delimited_text.h"
+#include "hecal/hecal.h"
 #include "list_flags.h"
 
 namespace hecal::cli {

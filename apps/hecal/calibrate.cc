@@ -11,12 +11,7 @@
 #include "bounds.h"
 #include "choice_flags.h"
 #include "conventions.h"
-#include "hecal/core/error.h"
-#include "hecal/core/options_check.h"
-#include "hecal/geometry/angle_units.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/jobs/pose_file_calibration.h"
-#include "hecal/report/result_text.h"
+#include "hecal/hecal.h"
 #include "list_flags.h"
 
 namespace hecal::cli {

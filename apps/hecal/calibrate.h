@@ -14,10 +14,7 @@
 #include <vector>
 
 #include "cli.h"
-#include "hecal/estimation/calibrate.h"
-#include "hecal/handeye/problem.h"
-#include "hecal/io/pose_table.h"
-#include "hecal/report/result_file.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 
@@ -81,13 +78,13 @@ estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& tex
 // `hecal calibrate --images`: refuses the flags the image form does not take, binds the others
 // into jobs::ImageFolderCalibrationOptions and runs jobs::CalibrateFromImageFolder
 // (jobs/image_folder_calibration.h: the image front end, the pairing, the convention check,
-// report::CalibrateFromImages), printing its texts as they come (job_output.h); then prints the
+// jobs::CalibrateFromImages), printing its texts as they come (job_output.h); then prints the
 // summary (report::PrintImageResultSummary) and writes the result.
 void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& settings,
                         const Io& io);
 
 // `hecal calibrate --method global` (docs/global.md): the flags become
-// report::GlobalCalibrationOptions (report/global_calibration.h; its IsValid holds the ranges);
+// report::GlobalCalibrationOptions (report/global_result.h; its IsValid holds the ranges);
 // the flags must name one source of matches (--correspondences, or --images with --target and
 // --intrinsics; not --camera), read by jobs::ReadGlobalMatches or jobs::GlobalMatchesFromImages
 // (jobs/global_matches.h; --target none and --features choose its MatchSource);

@@ -10,14 +10,9 @@
 
 #include "bounds.h"
 #include "calibrate.h"
-#include "hecal/core/error.h"
-#include "hecal/core/options_check.h"
-#include "hecal/io/units.h"
-#include "hecal/jobs/global_calibration.h"
-#include "hecal/report/global_text.h"
+#include "hecal/hecal.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "hecal/jobs/global_matches.h"
 #include "job_output.h"
 #endif
 
@@ -25,8 +20,8 @@ namespace hecal::cli {
 namespace {
 
 jobs::GlobalMatches ReadMatches(const CalibrateFlags& flags, const io::PoseReadOptions& read,
-                                  [[maybe_unused]] const report::GlobalCalibrationOptions& options,
-                                  [[maybe_unused]] const Io& io) {
+                                [[maybe_unused]] const report::GlobalCalibrationOptions& options,
+                                [[maybe_unused]] const Io& io) {
   if (!flags.camera.empty()) {
     throw InputError("--camera", 0, "--method global reads point matches, not camera poses",
                      "give the matches with --correspondences FILE, or the images with --images "

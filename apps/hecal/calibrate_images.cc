@@ -1,11 +1,9 @@
 // `hecal calibrate --images`: see calibrate.h.
 #include "calibrate.h"
-#include "hecal/core/error.h"
+#include "hecal/hecal.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "conventions.h"
-#include "hecal/jobs/image_folder_calibration.h"
-#include "hecal/report/result_text.h"
 #include "job_output.h"
 #endif
 

@@ -24,10 +24,7 @@
 #include <string>
 #include <string_view>
 
-#include "hecal/core/error.h"
-#include "hecal/geometry/euler.h"
-#include "hecal/handeye/problem.h"
-#include "hecal/io/units.h"
+#include "hecal/hecal.h"
 #include "list_flags.h"
 
 namespace hecal::cli {

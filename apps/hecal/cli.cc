@@ -4,8 +4,7 @@
 #include <exception>
 
 #include "field_flags.h"
-#include "hecal/core/error.h"
-#include "hecal/version.h"
+#include "hecal/hecal.h"
 #include "library_logs.h"
 
 namespace hecal::cli {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cli.h"
-#include "hecal/io/atomic_file.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli::cli_test {
 

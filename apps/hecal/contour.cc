@@ -10,11 +10,7 @@
 
 #include "bounds.h"
 #include "choice_flags.h"
-#include "hecal/contour/pose_uncertainty.h"
-#include "hecal/contour/shape_pose.h"
-#include "hecal/core/error.h"
-#include "hecal/report/contour_pose_file.h"
-#include "hecal/report/contour_pose_text.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cli.h"
-#include "hecal/contour/affine_pose.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 

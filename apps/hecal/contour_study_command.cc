@@ -9,12 +9,7 @@
 #include "bounds.h"
 #include "choice_flags.h"
 #include "contour.h"
-#include "hecal/contour/contour_study.h"
-#include "hecal/core/options_check.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/io/contour_file.h"
-#include "hecal/report/contour_study_file.h"
-#include "hecal/report/contour_study_text.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 namespace {

@@ -17,15 +17,8 @@
 #include "bounds.h"
 #include "choice_flags.h"
 #include "contour.h"
-#include "hecal/contour/sequence.h"
-#include "hecal/core/error.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/io/delimited_text.h"
-#include "hecal/report/contour_track_file.h"
-#include "hecal/report/contour_track_text.h"
+#include "hecal/hecal.h"
 // The jobs' options are plain structs, bound in every build; the jobs run with the vision layer.
-#include "hecal/jobs/contour_rendering.h"
-#include "hecal/jobs/contour_tracking.h"
 #include "job_output.h"
 
 namespace hecal::cli {

@@ -2,7 +2,7 @@
 // handeye/convention_check.h): the flags that fix each mistake, for its messages and notes.
 #pragma once
 
-#include "hecal/handeye/convention_check.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 

@@ -5,14 +5,11 @@
 #include <memory>
 
 #include "bounds.h"
-#include "hecal/core/error.h"
+#include "hecal/hecal.h"
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include <vector>
 
-#include "hecal/core/options_check.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/jobs/pose_detection.h"
 #include "job_output.h"
 #endif
 

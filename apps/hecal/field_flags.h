@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "hecal/core/error.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 

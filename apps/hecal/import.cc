@@ -6,9 +6,7 @@
 #include <optional>
 
 #include "choice_flags.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/jobs/import.h"
-#include "hecal/io/units.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 namespace {

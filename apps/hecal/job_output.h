@@ -5,7 +5,7 @@
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 #include "cli.h"
-#include "hecal/jobs/job_callbacks.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 

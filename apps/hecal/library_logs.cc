@@ -5,7 +5,7 @@
 #include <glog/logging.h>
 #endif
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "hecal/vision/opencv_log.h"
+#include "hecal/hecal.h"
 #endif
 
 namespace hecal::cli {

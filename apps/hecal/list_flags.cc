@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hecal/core/error.h"
-#include "hecal/io/delimited_text.h"
-#include "hecal/jobs/simulate.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 

@@ -10,9 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "hecal/core/error.h"
-#include "hecal/estimation/methods.h"
-#include "hecal/study/study.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 

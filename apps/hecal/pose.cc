@@ -2,7 +2,7 @@
 // jobs::PoseFromFilesOptions (jobs/pose_from_points.h: every method, by name; its IsValid names
 // fields, shown as flags by field_flags.h), runs the job, prints the pose and writes its JSON
 // (report/pose_file.h). Built without the vision layer, the command runs report's job
-// (report/point_pose.h) with the pose layer's methods and refuses OpenCV's by name.
+// (jobs/point_pose.h) with the pose layer's methods and refuses OpenCV's by name.
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
@@ -12,22 +12,14 @@
 #include "bounds.h"
 #include "choice_flags.h"
 #include "cli.h"
-#include "hecal/core/options_check.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/io/units.h"
-#include "hecal/jobs/point_pose.h"
-#include "hecal/report/pose_file.h"
-#include "hecal/report/pose_text.h"
+#include "hecal/hecal.h"
 #include "list_flags.h"
 #if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "hecal/jobs/pose_from_points.h"
 #else
 #include <algorithm>
 #include <array>
 #include <string_view>
 
-#include "hecal/core/error.h"
-#include "hecal/pose/pose_method.h"
 #endif
 
 namespace hecal::cli {

@@ -5,8 +5,7 @@
 #include <memory>
 
 #include "choice_flags.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/io/units.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 namespace {

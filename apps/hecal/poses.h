@@ -1,12 +1,12 @@
 // `hecal poses convert` (docs/cli.md#hecal-poses-convert): the flags fill
 // jobs::PoseConversionOptions (choices through choice_flags.h); the job is jobs::ConvertPoseTable
-// (io/pose_conversion.h); this file writes its result atomically and prints the summary.
+// (jobs/pose_conversion.h); this file writes its result atomically and prints the summary.
 #pragma once
 
 #include <string>
 
 #include "cli.h"
-#include "hecal/jobs/pose_conversion.h"
+#include "hecal/hecal.h"
 
 namespace hecal::cli {
 

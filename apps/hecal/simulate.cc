@@ -1,20 +1,14 @@
 // `hecal simulate` (docs/cli.md#hecal-simulate, docs/thesis-study.md): binds the flags into
-// jobs::SimulateOptions (study/simulate.h; list flags parsed once here, ranges checked by its
+// jobs::SimulateOptions (jobs/simulate.h; list flags parsed once here, ranges checked by its
 // IsValid), runs jobs::Simulate, prints a table per setting (report/study_text.h) and writes the
 // CSV files of study/study_csv.h.
-#include "hecal/jobs/simulate.h"
-
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
 
 #include "bounds.h"
 #include "cli.h"
-#include "hecal/core/error.h"
-#include "hecal/core/options_check.h"
-#include "hecal/io/atomic_file.h"
-#include "hecal/report/study_text.h"
-#include "hecal/study/study_csv.h"
+#include "hecal/hecal.h"
 #include "list_flags.h"
 
 namespace hecal::cli {

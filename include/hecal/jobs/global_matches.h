@@ -1,7 +1,7 @@
 // The point matches of the target-free calibration from a folder of station images, as one job
 // (`hecal calibrate --method global --images DIR`; docs/global.md): the robot pose of every
 // station and the matched rays of every motion, ready for jobs::CalibrateGlobal
-// (report/global_calibration.h), printing nothing (texts through JobCallbacks, job_callbacks.h).
+// (jobs/global_calibration.h), printing nothing (texts through JobCallbacks, job_callbacks.h).
 //
 // Steps (GlobalMatchesFromImages)
 //   1. The options checked (IsValid) before any file is read; the robot table read

@@ -13,7 +13,7 @@
 //      caller's words (options.words): it stops with the fix for a mistake that fits clearly
 //      better, or picks the setup when options.setup is empty; its notes and then the robot
 //      table's warnings become the document's first warnings.
-//   6. report::CalibrateFromImages (report/image_calibration.h): the pose level, then the joint
+//   6. jobs::CalibrateFromImages (jobs/image_calibration.h): the pose level, then the joint
 //      reprojection refinement over X, Z and the robot poses, with every image and the skipped
 //      and rejected ones with their reasons.
 // Frames and units: T_base_gripper from the robot table (its unit labels the document),

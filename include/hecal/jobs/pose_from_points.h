@@ -10,12 +10,12 @@
 //
 // Steps (EstimatePoseFromFiles)
 //   1. The options checked (IsValid: the files, camera and σ of PointPoseOptions::IsValid,
-//      report/point_pose.h) before any file is read.
+//      jobs/point_pose.h) before any file is read.
 //   2. The method's solver put into a copy of `points` (its `method`, or its `solver` for
 //      OpenCV's methods; whatever `points` held there is replaced).
 //   3. EstimatePoseFromFiles: both point files read and paired, the camera read, solved.
 // Frames and units: T_camera_target (x_camera = T · P), the object file's length unit; pixels
-// with the origin at the centre of the top-left pixel (report/point_pose.h).
+// with the origin at the centre of the top-left pixel (jobs/point_pose.h).
 //
 // Errors (hecal::InputError): the fields of PointPoseOptions ("PointPoseOptions.focal",
 // ...), bad files; OpenCV's preconditions (source "PnpMethod NAME", vision/opencv_pnp.h);
