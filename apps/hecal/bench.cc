@@ -1,5 +1,5 @@
 // `hecal bench` (docs/cli.md#hecal-bench, docs/bench.md): binds the flags into
-// study::BenchOptions, runs study::RunBench (study/bench.h) with OpenCV's hand-eye functions
+// jobs::BenchOptions, runs jobs::RunBench (study/bench.h) with OpenCV's hand-eye functions
 // (jobs/opencv_bench_peer.h) as its peer when vision is built, and prints the table
 // (report/study_text.h) or the JSON (report/bench_file.h).
 #include <CLI/CLI.hpp>
@@ -17,15 +17,15 @@ namespace hecal::cli {
 namespace {
 
 struct BenchCommand {
-  study::BenchOptions options;
+  jobs::BenchOptions options;
   bool json = false;
 };
 
 void RunBench(const BenchCommand& command, const Io& io) {
 #ifdef HECAL_HAVE_OPENCV_PEERS
-  const study::BenchResult result = study::RunBench(command.options, jobs::OpenCvBenchPeer());
+  const jobs::BenchResult result = jobs::RunBench(command.options, jobs::OpenCvBenchPeer());
 #else
-  const study::BenchResult result = study::RunBench(command.options);
+  const jobs::BenchResult result = jobs::RunBench(command.options);
 #endif
   if (command.json) {
     io.out << report::BenchJson(result);
@@ -38,7 +38,7 @@ void RunBench(const BenchCommand& command, const Io& io) {
 
 void RegisterBenchCommand(CLI::App& app, const Io& io) {
   auto command = std::make_shared<BenchCommand>();
-  study::BenchOptions& o = command->options;
+  jobs::BenchOptions& o = command->options;
   CLI::App* bench =
       app.add_subcommand("bench", "Time hecal's solvers and OpenCV's on identical generated data");
   AddWholeNumberList(*bench, "--stations", o.stations,

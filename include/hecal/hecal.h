@@ -36,6 +36,7 @@
 // The jobs: calibration from poses (in memory or files), target-free; import and conversion of
 // pose files; pose from known points; simulation and the benchmark protocol; the contour
 // methods.
+#include "hecal/jobs/bench.h"
 #include "hecal/jobs/contour_jobs.h"
 #include "hecal/jobs/global_calibration.h"
 #include "hecal/jobs/import.h"
@@ -44,7 +45,6 @@
 #include "hecal/jobs/pose_conversion.h"
 #include "hecal/jobs/pose_file_calibration.h"
 #include "hecal/jobs/simulate.h"
-#include "hecal/study/bench.h"
 #include "hecal/study/study.h"
 #include "hecal/study/study_csv.h"
 #if defined(HECAL_HAVE_VISION)

@@ -1,4 +1,4 @@
-// The founding contour methods' jobs in the front door (docs/contour.md): the camera motion of
+// The contour methods' jobs in the front door (docs/contour.md): the camera motion of
 // one shape vector with its Unscented-Transform covariance (`hecal contour pose`,
 // contour/shape_pose.h) and the study of the pose error along a motion (`hecal contour study`,
 // contour/contour_study.h). They are the contour module's own entry points — typed options with
