@@ -27,7 +27,8 @@
 #include "hecal/version.h"
 
 // The jobs: calibration from poses (in memory or files) and from images, detection, pose from
-// points, contours.
+// points, contours; OpenCV's hand–eye functions as drop-ins.
+#include "hecal/jobs/opencv_drop_in.h"
 #include "hecal/jobs/pose_calibration.h"
 #include "hecal/jobs/pose_file_calibration.h"
 #if defined(HECAL_HAVE_VISION)
