@@ -1,14 +1,20 @@
 // OpenCV's hand–eye functions as hecal jobs: see opencv_drop_in.h.
 #include "hecal/jobs/opencv_drop_in.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/estimation/calibrate.h"
+#include "hecal/estimation/initialization.h"
+#include "hecal/estimation/ml.h"
 #include "hecal/geometry/nearest_rotation.h"
+#include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
+#include "hecal/handeye/closed_form.h"
+#include "hecal/handeye/observability.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::jobs {
@@ -93,8 +99,49 @@ void RequireLengths(const DropInPoses& robot, const DropInPoses& camera,
   }
 }
 
+// The plug-in noise model of the drop-in's ml: the RMS per axis of the residuals
+// r_i = Log(Z⁻¹ A_i X B_i) at `start`, split equally between robot and camera (floored at 1e-9 rad
+// and 1e-9·L, so that noise-free data keep a valid model).
+estimation::PoseSigma PlugInSigma(const handeye::Problem& problem, const handeye::Solution& start) {
+  double rotation = 0.0, translation = 0.0;
+  for (size_t i = 0; i < problem.A.size(); ++i) {
+    const Vector6d r = se3::Log(start.Z.inverse() * problem.A[i] * start.X * problem.B[i]);
+    rotation += r.head<3>().squaredNorm();
+    translation += r.tail<3>().squaredNorm();
+  }
+  const double components = 6.0 * static_cast<double>(problem.A.size());  // 3 axes × 2 sources
+  return {std::max(std::sqrt(rotation / components), 1e-9),
+          std::max(std::sqrt(translation / components), 1e-9 * handeye::LengthScale(problem))};
+}
+
+// X and Z by `method` on every station (DropInCalibrateOptions::reject_outliers false):
+//   closed forms: the observability check and the solver, as estimation::Calibrate runs them
+//     (the residuals, noise estimate and warnings Calibrate adds are not part of OpenCV's answer,
+//     and at 15 stations cost about 20 times the solve);
+//   ml: the observability check, ml's first start (estimation::StartingSolutions: Shah's closed
+//     form), then estimation::RefineMl with the plug-in noise model above as given sigmas — one
+//     weighted refinement (more starts on demand, ml.h) instead of Calibrate's REML alternation
+//     of pose and noise levels and its heavy-tail test, which at 15 stations take about 200
+//     times as long (docs/python.md#speed).
+// With reject_outliers: estimation::Calibrate (its station selection, then the method), without
+// covariance and model check.
 handeye::Solution Solve(const handeye::Problem& problem, estimation::Method method,
                         const DropInCalibrateOptions& options) {
+  if (!options.reject_outliers) {
+    const estimation::MethodInfo& info = estimation::Info(method);
+    if (info.closed_form) {
+      handeye::CheckObservability(problem);
+      return handeye::SolveClosedForm(*info.closed_form, problem);
+    }
+    if (method == estimation::Method::kMl) {
+      handeye::CheckObservability(problem);
+      const std::vector<handeye::Solution> starts = estimation::StartingSolutions(problem);
+      estimation::MlOptions ml;
+      ml.robot_sigma = ml.camera_sigma = PlugInSigma(problem, starts.front());
+      const estimation::MlResult result = estimation::RefineMl(problem, starts, ml);
+      return {result.X, result.Z};
+    }
+  }
   estimation::CalibrateOptions calibrate;
   calibrate.method = method;
   calibrate.covariance.method = estimation::CovarianceMethod::kNone;

@@ -21,8 +21,16 @@
 // kDropInMl → ml.
 //
 // What the drop-in computes (DropInCalibrateOptions): X and Z only — no covariance, no model
-// check, no convention check, and by default no outlier rejection (OpenCV rejects none, so both
-// use the same stations); with reject_outliers the selection of estimation::Calibrate runs first.
+// check, no convention check, no residual report, and by default no outlier rejection (OpenCV
+// rejects none, so both use the same stations). The closed forms are hecal's solvers after the
+// observability check, exactly as estimation::Calibrate runs them. `ml` is hecal's maximum-
+// likelihood refinement (estimation/ml.h) from its usual first start, with a plug-in noise model:
+// the per-axis RMS of the residuals Log(Z⁻¹ A_i X B_i) at that start, split equally between robot
+// and camera, given as the sigmas — one weighted refinement instead of estimation::Calibrate's
+// REML alternation of pose and noise levels (about 200 times as long at 15 stations), so its X
+// can differ from `hecal calibrate --method ml` within the noise. With reject_outliers,
+// estimation::Calibrate runs (its station selection, then the method with its own noise
+// estimate), still without covariance and model check.
 //
 // Errors: hecal::InputError with the argument's OpenCV name as the source (line 0) for: an unknown
 // method (OpenCV 4.6 returns the identity), fewer than 3 poses, lists of different lengths, a
