@@ -174,7 +174,7 @@ std::vector<jobs::DropInRotation> ParseRotations(py::handle object, const std::s
     return out;
   }
   Buffer b;
-  if (!b.Acquire(object)) NotAList(name, "rotations");
+  if (!b.Acquire(object) || b.ndim() == 0) NotAList(name, "rotations");
   const bool matrices = b.ndim() == 3 && b.shape(1) == 3 && b.shape(2) == 3;
   const bool vectors3 =
       b.ndim() == 3 && ((b.shape(1) == 3 && b.shape(2) == 1) || (b.shape(1) == 1 && b.shape(2) == 3));
@@ -223,7 +223,7 @@ std::vector<Eigen::Vector3d> ParseTranslations(py::handle object, const std::str
     return out;
   }
   Buffer b;
-  if (!b.Acquire(object)) NotAList(name, "translations");
+  if (!b.Acquire(object) || b.ndim() == 0) NotAList(name, "translations");
   const bool rows = b.ndim() == 2 && b.shape(1) == 3;
   const bool columns =
       b.ndim() == 3 && ((b.shape(1) == 3 && b.shape(2) == 1) || (b.shape(1) == 1 && b.shape(2) == 3));

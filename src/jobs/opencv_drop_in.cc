@@ -20,7 +20,9 @@
 namespace hecal::jobs {
 namespace {
 
-constexpr double kRotationTolerance = 1e-6;  // as CalibratePoses (pose_calibration.h)
+// A matrix within this of a rotation is projected to the nearest one (6-digit text, float32), as
+// the pose files' reader does (io/pose_table.h); beyond it refused.
+constexpr double kRotationTolerance = 1e-3;
 constexpr double kProjectAbove = 1e-12;      // float32 input: project to the nearest rotation
 
 std::string MethodList(bool robot_world) {

@@ -34,8 +34,8 @@
 //
 // Errors: hecal::InputError with the argument's OpenCV name as the source (line 0) for: an unknown
 // method (OpenCV 4.6 returns the identity), fewer than 3 poses, lists of different lengths, a
-// non-finite value, a rotation matrix that is not a rotation (|RᵀR − I| > 1e-6 or det ≤ 0; OpenCV
-// takes any matrix). hecal::DegenerateError (estimation::Calibrate's observability check) when the
+// non-finite value, a rotation matrix that is not a rotation (|RᵀR − I| > 1e-3 or det ≤ 0, as the
+// pose files' reader; closer ones are projected to the nearest rotation; OpenCV takes any matrix). hecal::DegenerateError (estimation::Calibrate's observability check) when the
 // data do not determine X, naming what cannot be observed (e.g. parallel rotation axes).
 // Thread-safe: separate calls share nothing.
 #pragma once
