@@ -45,3 +45,8 @@ py::array_t<double> ArrayFromMatrix(const Eigen::MatrixXd& matrix);
 std::optional<std::string> AsPath(const py::handle& object);
 
 }  // namespace hecal::python
+
+namespace hecal::python {
+// calibrate.cc: a result document as a hecal.CalibrationResult (calibrate_images shares it).
+py::object WrapDocument(report::ResultDocument document);
+}  // namespace hecal::python

@@ -12,4 +12,6 @@ PYBIND11_MODULE(_hecal, m) {
   m.attr("__version__") = hecal::kVersion;
   RegisterErrors(m);
   RegisterDropIn(m);
+  RegisterCalibrate(m);
+  RegisterPoses(m);
 }
