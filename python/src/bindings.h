@@ -50,3 +50,19 @@ namespace hecal::python {
 // calibrate.cc: a result document as a hecal.CalibrationResult (calibrate_images shares it).
 py::object WrapDocument(report::ResultDocument document);
 }  // namespace hecal::python
+
+namespace hecal::python {
+// calibrate.cc: the keyword arguments every calibration shares, as the CLI's flags parse them.
+handeye::ConventionWords PythonWords();
+std::optional<handeye::Setup> ParseSetupArgument(const std::optional<std::string>& setup);
+std::optional<io::LengthUnit> ParseUnitArgument(const std::string& argument,
+                                                const std::optional<std::string>& text);
+std::optional<estimation::PoseSigma> ParseSigmaArgument(const std::string& argument,
+                                                        const py::handle& value);
+std::optional<EulerSequence> ParseEulerArgument(const std::optional<std::string>& euler);
+// method "all" leaves the default method (the caller runs every method).
+estimation::CalibrateOptions CalibrateOptionsFromArguments(
+    const std::string& method, py::handle robot_sigma, py::handle camera_sigma,
+    bool keep_outliers, const std::string& robust, const std::optional<std::string>& covariance,
+    int covariance_samples, std::uint64_t seed, int threads);
+}  // namespace hecal::python

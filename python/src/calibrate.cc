@@ -20,7 +20,6 @@
 #include "bindings.h"
 
 namespace hecal::python {
-namespace {
 
 // The convention check's words in the module's terms (keyword arguments).
 handeye::ConventionWords PythonWords() {
@@ -88,6 +87,55 @@ std::optional<estimation::PoseSigma> ParseSigmaArgument(const std::string& argum
   }
   return estimation::PoseSigma{deg / kDegreesPerRadian, mm * 1e-3};
 }
+
+std::optional<EulerSequence> ParseEulerArgument(const std::optional<std::string>& euler) {
+  if (!euler) return std::nullopt;
+  auto sequence = EulerSequence::Parse(*euler);
+  if (!sequence) {
+    ThrowArgument("euler", "unknown Euler sequence '" + *euler + "'",
+                  "three letters of x, y, z: lowercase extrinsic (e.g. 'xyz'), uppercase "
+                  "intrinsic (e.g. 'ZYX')");
+  }
+  return sequence;
+}
+
+estimation::CalibrateOptions CalibrateOptionsFromArguments(
+    const std::string& method, py::handle robot_sigma, py::handle camera_sigma,
+    bool keep_outliers, const std::string& robust, const std::optional<std::string>& covariance,
+    int covariance_samples, std::uint64_t seed, int threads) {
+  estimation::CalibrateOptions options;
+  if (method != "all") {
+    const auto parsed = estimation::ParseMethod(method);
+    if (!parsed) {
+      std::string names;
+      for (const auto& info : estimation::AllMethods()) names += std::string(info.name) + " ";
+      ThrowArgument("method", "unknown method '" + method + "'", "use one of: " + names + "all");
+    }
+    options.method = *parsed;
+  }
+  options.robot_sigma = ParseSigmaArgument("robot_sigma", robot_sigma);
+  options.camera_sigma = ParseSigmaArgument("camera_sigma", camera_sigma);
+  const auto loss = estimation::ParseRobustLoss(robust);
+  if (!loss) ThrowArgument("robust", "unknown loss '" + robust + "'", "use none, huber or cauchy");
+  options.robust_loss = *loss;
+  if (covariance) {
+    const auto parsed = estimation::ParseCovarianceMethod(*covariance);
+    if (!parsed || *parsed == estimation::CovarianceMethod::kNone) {
+      ThrowArgument("covariance", "unknown covariance method '" + *covariance + "'",
+                    "use linear, unscented, montecarlo or information (or None for the "
+                    "method's default)");
+    }
+    options.covariance.method = parsed;
+  }
+  options.covariance.samples = covariance_samples;
+  options.covariance.seed = seed;
+  options.consensus.seed = seed;
+  options.covariance.threads = threads;
+  options.reject_outliers = !keep_outliers;
+  return options;
+}
+
+namespace {
 
 // One method's result within a document (the document shared by every result of a run).
 struct Result {
@@ -313,36 +361,10 @@ void RegisterCalibrate(py::module_& m) {
          bool keep_outliers, bool all_methods, std::string robust,
          std::optional<std::string> covariance, int covariance_samples, std::uint64_t seed,
          int threads, std::optional<std::vector<std::string>> station_ids) {
-        estimation::CalibrateOptions options;
         const bool all = all_methods || method == "all";
-        if (!all) {
-          const auto parsed = estimation::ParseMethod(method);
-          if (!parsed) {
-            std::string names;
-            for (const auto& info : estimation::AllMethods()) names += std::string(info.name) + " ";
-            ThrowArgument("method", "unknown method '" + method + "'", "use one of: " + names + "all");
-          }
-          options.method = *parsed;
-        }
-        options.robot_sigma = ParseSigmaArgument("robot_sigma", robot_sigma);
-        options.camera_sigma = ParseSigmaArgument("camera_sigma", camera_sigma);
-        const auto loss = estimation::ParseRobustLoss(robust);
-        if (!loss) ThrowArgument("robust", "unknown loss '" + robust + "'", "use none, huber or cauchy");
-        options.robust_loss = *loss;
-        if (covariance) {
-          const auto parsed = estimation::ParseCovarianceMethod(*covariance);
-          if (!parsed || *parsed == estimation::CovarianceMethod::kNone) {
-            ThrowArgument("covariance", "unknown covariance method '" + *covariance + "'",
-                          "use linear, unscented, montecarlo or information (or None for the "
-                          "method's default)");
-          }
-          options.covariance.method = parsed;
-        }
-        options.covariance.samples = covariance_samples;
-        options.covariance.seed = seed;
-        options.consensus.seed = seed;
-        options.covariance.threads = threads;
-        options.reject_outliers = !keep_outliers;
+        const estimation::CalibrateOptions options = CalibrateOptionsFromArguments(
+            all ? "all" : method, robot_sigma, camera_sigma, keep_outliers, robust, covariance,
+            covariance_samples, seed, threads);
         if (units && unit && *units != *unit) {
           ThrowArgument("unit", "unit='" + *unit + "' and units='" + *units + "' disagree",
                         "give one of them");
@@ -370,14 +392,7 @@ void RegisterCalibrate(py::module_& m) {
           io::PoseReadOptions read;
           read.units = ParseUnitArgument("units", both).value_or(io::LengthUnit::kMetre);
           read.degrees = degrees;
-          if (euler) {
-            read.euler = EulerSequence::Parse(*euler);
-            if (!read.euler) {
-              ThrowArgument("euler", "unknown Euler sequence '" + *euler + "'",
-                            "three letters of x, y, z: lowercase extrinsic (e.g. 'xyz'), uppercase "
-                            "intrinsic (e.g. 'ZYX')");
-            }
-          }
+          read.euler = ParseEulerArgument(euler);
           job.robot_read = read;
           job.robot_read.invert = robot_inverse;
           job.camera_read = read;

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_hecal, m) {
   RegisterDropIn(m);
   RegisterCalibrate(m);
   RegisterPoses(m);
+  RegisterImages(m);
 }
