@@ -10,6 +10,10 @@ PYBIND11_MODULE(_hecal, m) {
       "unit given), angles in radians; covariances of right perturbations, (rx, ry, rz, tx, ty, "
       "tz) per pose.";
   m.attr("__version__") = hecal::kVersion;
+  // Every docstring starts with its own signature in Python terms (the CLI-like help); pybind11's
+  // generated one would show C++ argument types.
+  pybind11::options options;
+  options.disable_function_signatures();
   RegisterErrors(m);
   RegisterDropIn(m);
   RegisterCalibrate(m);
