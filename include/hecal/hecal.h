@@ -41,6 +41,10 @@
 #include "hecal/jobs/pose_from_points.h"
 #endif
 
+// The thesis study over sweeps (`hecal simulate`) and its CSV files.
+#include "hecal/study/simulate.h"
+#include "hecal/study/study_csv.h"
+
 // Results as documents: the result file (JSON/YAML) and the printed summary.
 #include "hecal/report/result_file.h"
 #include "hecal/report/result_text.h"

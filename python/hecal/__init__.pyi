@@ -169,3 +169,23 @@ def write_poses(
     comments: Sequence[str] = ...,
 ) -> None:
     """poses (N,4,4) in metres; to: quaternion|rotvec|matrix|euler:SEQ|rpy|kuka|fanuc|abb|ur."""
+
+def simulate(
+    *,
+    stations: Sequence[int] = ...,
+    sigmas: Sequence[Union[float, Tuple[float, float]]] = ...,
+    setups: Sequence[str] = ...,
+    noise_on: Sequence[str] = ...,
+    noise: Sequence[str] = ...,
+    outliers: Sequence[int] = ...,
+    robot_scales: Sequence[float] = ...,
+    methods: Union[str, Sequence[str]] = "all",
+    trials: int = 200,
+    seed: int = 1,
+    threads: int = 0,
+    covariance: Optional[str] = None,
+    covariance_samples: int = 1000,
+    reject_outliers: bool = False,
+    estimate_noise: bool = False,
+) -> Dict[str, object]:
+    """The thesis study: {"summary": [dict], "summary_csv": str, "trials_csv": str, "seed": int}."""

@@ -27,6 +27,8 @@ void RegisterCalibrate(py::module_& m);
 void RegisterPoses(py::module_& m);
 // images.cc: calibrate_images, detect (when the vision layer is built).
 void RegisterImages(py::module_& m);
+// simulate.cc: simulate (the thesis study).
+void RegisterSimulate(py::module_& m);
 
 // An InputError whose source is a Python argument (line 0).
 [[noreturn]] void ThrowArgument(const std::string& argument, const std::string& problem,

@@ -19,4 +19,5 @@ PYBIND11_MODULE(_hecal, m) {
   RegisterCalibrate(m);
   RegisterPoses(m);
   RegisterImages(m);
+  RegisterSimulate(m);
 }
