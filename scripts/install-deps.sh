@@ -2,6 +2,17 @@
 # Installs the Debian 12 packages hecal builds and tests with (the list in README "Library, build and tests").
 # Idempotent: prints nothing and touches nothing when every package is present.
 # Usage: scripts/install-deps.sh [--fuzz]   (--fuzz adds clang + libFuzzer runtime)
+#
+# Python (docs/python.md#install): the module builds for Debian's /usr/bin/python3, whose NumPy,
+# pybind11, pytest and OpenCV (cv2) come from apt (/usr/lib/python3/dist-packages). When the
+# `python3` first on PATH is another interpreter of the same major.minor (pyenv, a python.org
+# build; not a venv of Debian's python, which can use --system-site-packages), this script also
+# writes hecal-debian.pth into that interpreter's site-packages, naming two directories:
+# /usr/lib/python3/dist-packages (Debian's packages) and the site directory where
+# `cmake --install build --component python` puts hecal with the default prefix /usr/local
+# (/usr/local/lib/python3.X/dist-packages). Then `python3 -c "import hecal"` works with either
+# interpreter. Both are appended to sys.path, after the interpreter's own packages. Another
+# major.minor cannot load the module (a different ABI) and is left alone.
 set -euo pipefail
 
 packages=(
@@ -10,6 +21,7 @@ packages=(
   libopencv-dev libopencv-contrib-dev libapriltag-dev
   libyaml-cpp-dev libtinyxml2-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libglpk-dev
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-opencv
 )
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang libclang-rt-14-dev)
@@ -20,17 +32,39 @@ for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
-[[ ${#missing[@]} -eq 0 ]] && exit 0
-
 if [[ $(id -u) -ne 0 ]]; then
   sudo=sudo
 else
   sudo=
 fi
-export DEBIAN_FRONTEND=noninteractive
-echo "install-deps: installing ${missing[*]}" >&2
-# A fresh machine may have no package lists yet: update once, then install.
-if ! $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null; then
-  $sudo apt-get update -q >/dev/null
-  $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null
+if [[ ${#missing[@]} -gt 0 ]]; then
+  export DEBIAN_FRONTEND=noninteractive
+  echo "install-deps: installing ${missing[*]}" >&2
+  # A fresh machine may have no package lists yet: update once, then install.
+  if ! $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null; then
+    $sudo apt-get update -q >/dev/null
+    $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null
+  fi
 fi
+
+# The python3 on PATH, when it is not Debian's: hecal-debian.pth (see the header).
+link_python() {
+  local python debian
+  python=$(command -v python3 || true)
+  debian=/usr/bin/python3
+  [[ -n "$python" && -x "$debian" ]] || return 0
+  local query='import os, sys, sysconfig; print(os.path.realpath(sys.executable), "%d.%d" % sys.version_info[:2], sysconfig.get_path("purelib"), sysconfig.get_path("platlib"))'
+  local exe version site _ debian_exe debian_version _p debian_platlib
+  read -r exe version site _ < <("$python" -c "$query") || return 0
+  read -r debian_exe debian_version _p debian_platlib < <("$debian" -c "$query") || return 0
+  [[ "$exe" != "$debian_exe" && "$version" == "$debian_version" ]] || return 0
+  local pth="$site/hecal-debian.pth"
+  local want
+  want=$(printf '%s\n%s\n' /usr/lib/python3/dist-packages "$debian_platlib")
+  [[ -f "$pth" && "$(cat "$pth")" == "$want" ]] && return 0
+  local writer=
+  [[ -w "$site" ]] || writer=$sudo
+  echo "install-deps: $python ($version) is not Debian's python3: writing $pth" >&2
+  printf '%s\n' "$want" | $writer tee "$pth" >/dev/null
+}
+link_python

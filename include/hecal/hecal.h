@@ -35,11 +35,12 @@
 
 // The jobs: calibration from poses (in memory or files), target-free; import and conversion of
 // pose files; pose from known points; simulation and the benchmark protocol; the contour
-// methods.
+// methods; OpenCV's hand–eye functions as drop-ins (the Python module's cv2 drop-in).
 #include "hecal/jobs/bench.h"
 #include "hecal/jobs/contour_jobs.h"
 #include "hecal/jobs/global_calibration.h"
 #include "hecal/jobs/import.h"
+#include "hecal/jobs/opencv_drop_in.h"
 #include "hecal/jobs/point_pose.h"
 #include "hecal/jobs/pose_calibration.h"
 #include "hecal/jobs/pose_conversion.h"
