@@ -4,14 +4,19 @@
 # default maximum-likelihood method, and writes out/result.json (+ out/all-methods.json); then
 # calibrates from the 28 real chessboard images of data/rwhe-kuka2 and its KUKA poses in one step
 # (detection, intrinsics, PnP, ml, joint reprojection refinement) → out/kuka2-images.json.
+# Then the same calibration from Python: installs the `hecal` module (cmake --install, component
+# python, into the system's Python path) and runs examples/python/drop_in_cv2.py, so that
+# `python3 -c "import hecal"` works afterwards (docs/python.md).
 # Installs the Debian packages it needs and builds if needed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 build=${HECAL_BUILD_DIR:-build}
-if [[ ! -x "$build/bin/hecal" ]] || [[ -n "$(find src apps include -newer "$build/bin/hecal" -print -quit)" ]]; then
+module=$(ls "$build"/python/hecal/_hecal*.so 2>/dev/null | head -1 || true)
+if [[ ! -x "$build/bin/hecal" || -z "$module" ]] ||
+   [[ -n "$(find src apps include python -newer "$build/bin/hecal" -print -quit)" ]]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" -j2 --target hecal
+  cmake --build "$build" -j2 --target hecal hecal_python
 fi
 hecal="$build/bin/hecal"
 mkdir -p out
@@ -24,5 +29,8 @@ mkdir -p out
 "$hecal" calibrate --images data/rwhe-kuka2/images --target data/rwhe-kuka2/target.yaml \
   --robot data/rwhe-kuka2/RobotPosesVec.txt --setup eye-in-hand \
   --output out/kuka2-images.json > out/kuka2-images.txt
+cmake --install "$build" --component python >/dev/null
+python3 examples/python/drop_in_cv2.py > out/python-drop-in.txt
 echo "results: out/result.json (ml), out/all-methods.json and out/all-methods.txt (every method)"
 echo "         out/kuka2-images.json and out/kuka2-images.txt (from the rwhe-kuka2 images)"
+echo "         out/python-drop-in.txt (import hecal: the cv2.calibrateHandEye drop-in)"
