@@ -4,9 +4,9 @@
 Eye-to-hand (camera fixed, target on the gripper) with MoveIt Calibration's 50 real samples
 (data/moveit-calibration/pose_samples.json: T_base_eef and T_camera_target per sample, metres).
 As OpenCV documents for eye-to-hand, the robot poses go in inverted (base2gripper), and the
-answer is then T_base_camera. The only change from the OpenCV script is the import of the
-calibration module: `import hecal as cv2` instead of `import cv2` (cv2.Rodrigues etc. are
-OpenCV's; only calibrateHandEye, calibrateRobotWorldHandEye and their constants are hecal's).
+answer is then T_base_camera. The only change from the OpenCV script is the import:
+`import hecal as cv2` instead of `import cv2`. calibrateHandEye, calibrateRobotWorldHandEye and
+their constants are hecal's; every other name (cv2.Rodrigues below) is OpenCV's, forwarded.
 
   PYTHONPATH=build/python /usr/bin/python3 examples/python/drop_in_cv2.py
 """
@@ -38,3 +38,5 @@ print("PARK: T_base_camera t = (%.4f, %.4f, %.4f) m" % tuple(t.ravel()))
 R, t = cv2.calibrateHandEye(R_base2gripper, t_base2gripper, R_target2cam, t_target2cam)
 print("ML:   T_base_camera t = (%.4f, %.4f, %.4f) m" % tuple(t.ravel()))
 print("R =\n" + np.array2string(R, precision=5, suppress_small=True))
+rvec, _ = cv2.Rodrigues(R)  # OpenCV's own function, through the same name
+print("rvec = (%.4f, %.4f, %.4f) rad" % tuple(rvec.ravel()))

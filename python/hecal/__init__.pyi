@@ -2,7 +2,7 @@
 # Frames: T_a_b maps coordinates in frame b to frame a. Lengths in metres unless a unit is given
 # (results in the robot poses' unit), angles in radians.
 import os
-from typing import Callable, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -189,3 +189,6 @@ def simulate(
     estimate_noise: bool = False,
 ) -> Dict[str, object]:
     """The thesis study: {"summary": [dict], "summary_csv": str, "trials_csv": str, "seed": int}."""
+
+# `import hecal as cv2`: any other public name is OpenCV's cv2.<name> (forwarded at run time).
+def __getattr__(name: str) -> Any: ...

@@ -28,6 +28,16 @@ def test_constants_match_opencv():
     assert hecal.CALIB_HAND_EYE_ML not in opencv_values
 
 
+def test_other_names_are_opencvs():
+    # `import hecal as cv2`: hecal's two functions, OpenCV's everything else.
+    assert hecal.Rodrigues is cv2.Rodrigues
+    assert hecal.calibrateHandEye is not cv2.calibrateHandEye
+    with pytest.raises(AttributeError, match="nor has cv2"):
+        hecal.noSuchOpenCvFunction
+    with pytest.raises(AttributeError):
+        hecal._private_name
+
+
 def test_noise_free_trials_equal_opencv_to_1e9():
     """OpenCV's 100 noise-free trials: every method equals cv2's answer (and the truth)."""
     rng = np.random.default_rng(17)
