@@ -38,8 +38,7 @@ class Buffer {
     if (TryView(object.ptr()) && (format_ == 'd' || format_ == 'f')) return true;
     Release();
     // Nested lists, integers, other float types: NumPy converts them to float64.
-    PyObject* converted =
-        PyObject_CallFunctionObjArgs(AsArray(), object.ptr(), Float64(), nullptr);
+    PyObject* converted = PyObject_CallFunctionObjArgs(AsArray(), object.ptr(), Float64(), nullptr);
     if (converted == nullptr) {
       PyErr_Clear();
       return false;
@@ -99,11 +98,13 @@ class Buffer {
 
  private:
   static PyObject* AsArray() {
-    static PyObject* function = py::object(py::module_::import("numpy").attr("asarray")).release().ptr();
+    static PyObject* function =
+        py::object(py::module_::import("numpy").attr("asarray")).release().ptr();
     return function;
   }
   static PyObject* Float64() {
-    static PyObject* dtype = py::object(py::module_::import("numpy").attr("float64")).release().ptr();
+    static PyObject* dtype =
+        py::object(py::module_::import("numpy").attr("float64")).release().ptr();
     return dtype;
   }
   bool TryView(PyObject* object) {
@@ -115,7 +116,9 @@ class Buffer {
     held_ = true;
     const char* f = view_.format == nullptr ? "B" : view_.format;
     if (*f == '<' || *f == '=' || *f == '@') ++f;  // native little-endian (x86, ARM)
-    format_ = (std::strlen(f) == 1 && view_.itemsize == (*f == 'd' ? 8 : *f == 'f' ? 4 : -1))
+    format_ = (std::strlen(f) == 1 && view_.itemsize == (*f == 'd'   ? 8
+                                                         : *f == 'f' ? 4
+                                                                     : -1))
                   ? *f
                   : '?';
     return true;
@@ -134,8 +137,8 @@ class Buffer {
 
 bool IsVectorShape(const Buffer& b) {
   return (b.ndim() == 1 && b.shape(0) == 3) ||
-         (b.ndim() == 2 && ((b.shape(0) == 3 && b.shape(1) == 1) ||
-                            (b.shape(0) == 1 && b.shape(1) == 3)));
+         (b.ndim() == 2 &&
+          ((b.shape(0) == 3 && b.shape(1) == 1) || (b.shape(0) == 1 && b.shape(1) == 3)));
 }
 
 [[noreturn]] void NotAList(const std::string& name, const char* what) {
@@ -143,41 +146,54 @@ bool IsVectorShape(const Buffer& b) {
                 "give a list or tuple of NumPy arrays, or one NumPy array with one row per pose");
 }
 
+// Calls each(i, buffer) for every entry of a list or tuple, each entry acquired as a buffer of
+// numbers (an error naming the entry otherwise); `numbers` says what the entries should be.
+template <class Each>
+void ForEachEntry(py::handle list, const std::string& name, const char* numbers, Each&& each) {
+  const py::sequence items = py::reinterpret_borrow<py::sequence>(list);
+  Buffer b;
+  for (size_t i = 0; i < items.size(); ++i) {
+    PyObject* item = PySequence_Fast_GET_ITEM(items.ptr(), static_cast<Py_ssize_t>(i));
+    if (!b.Acquire(item)) {
+      ThrowArgument(name, "entry " + std::to_string(i) + " is not an array of numbers",
+                    std::string("give ") + numbers + " as NumPy arrays");
+    }
+    each(i, b);
+  }
+}
+
+bool IsList(py::handle object) {
+  return PyList_Check(object.ptr()) || PyTuple_Check(object.ptr());
+}
+
 // Rotations: a list/tuple of 3×3 or Rodrigues-vector items, or one N×3×3 / N×3×1 / N×1×3 / N×3
 // array.
 std::vector<jobs::DropInRotation> ParseRotations(py::handle object, const std::string& name) {
   std::vector<jobs::DropInRotation> out;
-  if (PyList_Check(object.ptr()) || PyTuple_Check(object.ptr())) {
-    const py::sequence items = py::reinterpret_borrow<py::sequence>(object);
-    const size_t n = items.size();
-    out.resize(n);
-    Buffer b;
-    for (size_t i = 0; i < n; ++i) {
-      PyObject* item = PySequence_Fast_GET_ITEM(items.ptr(), static_cast<Py_ssize_t>(i));
-      if (!b.Acquire(item)) {
-        ThrowArgument(name, "entry " + std::to_string(i) + " is not an array of numbers",
-                      "give 3×3 rotation matrices or Rodrigues vectors as NumPy arrays");
-      }
-      jobs::DropInRotation& r = out[i];
-      if (b.ndim() == 2 && b.shape(0) == 3 && b.shape(1) == 3) {
-        for (int row = 0; row < 3; ++row)
-          for (int col = 0; col < 3; ++col) r.matrix(row, col) = b.At({row, col});
-      } else if (IsVectorShape(b)) {
-        r.is_vector = true;
-        for (int k = 0; k < 3; ++k) r.vector(k) = b.Flat(k);
-      } else {
-        ThrowArgument(name, "entry " + std::to_string(i) + " has shape " + b.ShapeText(),
-                      "give 3×3 rotation matrices or Rodrigues vectors shaped (3,), (3, 1) or "
-                      "(1, 3)");
-      }
-    }
+  if (IsList(object)) {
+    out.resize(py::len(object));
+    ForEachEntry(
+        object, name, "3×3 rotation matrices or Rodrigues vectors", [&](size_t i, Buffer& b) {
+          jobs::DropInRotation& r = out[i];
+          if (b.ndim() == 2 && b.shape(0) == 3 && b.shape(1) == 3) {
+            for (int row = 0; row < 3; ++row)
+              for (int col = 0; col < 3; ++col) r.matrix(row, col) = b.At({row, col});
+          } else if (IsVectorShape(b)) {
+            r.is_vector = true;
+            for (int k = 0; k < 3; ++k) r.vector(k) = b.Flat(k);
+          } else {
+            ThrowArgument(name, "entry " + std::to_string(i) + " has shape " + b.ShapeText(),
+                          "give 3×3 rotation matrices or Rodrigues vectors shaped (3,), (3, 1) or "
+                          "(1, 3)");
+          }
+        });
     return out;
   }
   Buffer b;
   if (!b.Acquire(object) || b.ndim() == 0) NotAList(name, "rotations");
   const bool matrices = b.ndim() == 3 && b.shape(1) == 3 && b.shape(2) == 3;
-  const bool vectors3 =
-      b.ndim() == 3 && ((b.shape(1) == 3 && b.shape(2) == 1) || (b.shape(1) == 1 && b.shape(2) == 3));
+  const bool vectors3 = b.ndim() == 3 && ((b.shape(1) == 3 && b.shape(2) == 1) ||
+                                          (b.shape(1) == 1 && b.shape(2) == 3));
   const bool vectors2 = b.ndim() == 2 && b.shape(1) == 3;
   if (!matrices && !vectors3 && !vectors2) {
     ThrowArgument(name, "has shape " + b.ShapeText(),
@@ -203,30 +219,22 @@ std::vector<jobs::DropInRotation> ParseRotations(py::handle object, const std::s
 // Translations: a list/tuple of (3,), (3,1), (1,3) items, or one N×3 / N×3×1 / N×1×3 array.
 std::vector<Eigen::Vector3d> ParseTranslations(py::handle object, const std::string& name) {
   std::vector<Eigen::Vector3d> out;
-  if (PyList_Check(object.ptr()) || PyTuple_Check(object.ptr())) {
-    const py::sequence items = py::reinterpret_borrow<py::sequence>(object);
-    const size_t n = items.size();
-    out.resize(n);
-    Buffer b;
-    for (size_t i = 0; i < n; ++i) {
-      PyObject* item = PySequence_Fast_GET_ITEM(items.ptr(), static_cast<Py_ssize_t>(i));
-      if (!b.Acquire(item)) {
-        ThrowArgument(name, "entry " + std::to_string(i) + " is not an array of numbers",
-                      "give translation vectors as NumPy arrays");
-      }
+  if (IsList(object)) {
+    out.resize(py::len(object));
+    ForEachEntry(object, name, "translation vectors", [&](size_t i, Buffer& b) {
       if (!IsVectorShape(b)) {
         ThrowArgument(name, "entry " + std::to_string(i) + " has shape " + b.ShapeText(),
                       "give translations shaped (3,), (3, 1) or (1, 3)");
       }
       for (int k = 0; k < 3; ++k) out[i](k) = b.Flat(k);
-    }
+    });
     return out;
   }
   Buffer b;
   if (!b.Acquire(object) || b.ndim() == 0) NotAList(name, "translations");
   const bool rows = b.ndim() == 2 && b.shape(1) == 3;
-  const bool columns =
-      b.ndim() == 3 && ((b.shape(1) == 3 && b.shape(2) == 1) || (b.shape(1) == 1 && b.shape(2) == 3));
+  const bool columns = b.ndim() == 3 && ((b.shape(1) == 3 && b.shape(2) == 1) ||
+                                         (b.shape(1) == 1 && b.shape(2) == 3));
   if (!rows && !columns) {
     ThrowArgument(name, "has shape " + b.ShapeText(),
                   "give an N×3 array of translations, or a list of (3,) / (3, 1) arrays");
@@ -234,8 +242,9 @@ std::vector<Eigen::Vector3d> ParseTranslations(py::handle object, const std::str
   out.resize(static_cast<size_t>(b.shape(0)));
   for (Py_ssize_t i = 0; i < b.shape(0); ++i) {
     for (int k = 0; k < 3; ++k) {
-      out[static_cast<size_t>(i)](k) =
-          rows ? b.At({i, k}) : b.shape(1) == 3 ? b.At({i, k, 0}) : b.At({i, 0, k});
+      out[static_cast<size_t>(i)](k) = rows              ? b.At({i, k})
+                                       : b.shape(1) == 3 ? b.At({i, k, 0})
+                                                         : b.At({i, 0, k});
     }
   }
   return out;
@@ -252,9 +261,9 @@ jobs::DropInPoses ParsePoses(py::handle R, py::handle t, const std::string& fram
 
 int ParseMethod(py::handle method, const std::string& function) {
   if (PyBool_Check(method.ptr()) || !PyIndex_Check(method.ptr())) {
-    ThrowArgument("method", "is not an integer (got " +
-                                std::string(py::str(py::type::handle_of(method).attr("__name__"))) +
-                                ")",
+    ThrowArgument("method",
+                  "is not an integer (got " +
+                      std::string(py::str(py::type::handle_of(method).attr("__name__"))) + ")",
                   "pass one of the " + function + " method constants, e.g. method=" +
                       (function == "calibrateHandEye" ? "hecal.CALIB_HAND_EYE_PARK"
                                                       : "hecal.CALIB_ROBOT_WORLD_HAND_EYE_SHAH"));
@@ -301,15 +310,15 @@ std::optional<py::array_t<double>> OutputSlot(py::handle slot, const std::string
 
 py::array_t<double> Output(const Eigen::Ref<const Eigen::MatrixXd>& value,
                            std::optional<py::array_t<double>> slot) {
-  py::array_t<double> out = slot ? *slot
-                                 : py::array_t<double>({value.rows(), value.cols()});
+  py::array_t<double> out = slot ? *slot : py::array_t<double>({value.rows(), value.cols()});
   double* p = out.mutable_data();
   for (Eigen::Index r = 0; r < value.rows(); ++r)
     for (Eigen::Index c = 0; c < value.cols(); ++c) *p++ = value(r, c);
   return out;
 }
 
-constexpr const char* kHandEyeDoc = R"doc(calibrateHandEye(R_gripper2base, t_gripper2base, R_target2cam, t_target2cam[, R_cam2gripper[, t_cam2gripper[, method]]]) -> R_cam2gripper, t_cam2gripper
+constexpr const char* kHandEyeDoc =
+    R"doc(calibrateHandEye(R_gripper2base, t_gripper2base, R_target2cam, t_target2cam[, R_cam2gripper[, t_cam2gripper[, method]]]) -> R_cam2gripper, t_cam2gripper
 
 OpenCV 4.6's cv2.calibrateHandEye, solved by hecal (docs/python.md#the-opencv-drop-in).
 
@@ -329,7 +338,8 @@ Raises hecal.InputError (a ValueError) for an unknown method, fewer than 3 poses
 different lengths, NaN/inf, a matrix that is not a rotation, a wrong shape;
 hecal.DegenerateError when the data do not determine X (e.g. parallel rotation axes).)doc";
 
-constexpr const char* kRobotWorldDoc = R"doc(calibrateRobotWorldHandEye(R_world2cam, t_world2cam, R_base2gripper, t_base2gripper[, R_base2world[, t_base2world[, R_gripper2cam[, t_gripper2cam[, method]]]]]) -> R_base2world, t_base2world, R_gripper2cam, t_gripper2cam
+constexpr const char* kRobotWorldDoc =
+    R"doc(calibrateRobotWorldHandEye(R_world2cam, t_world2cam, R_base2gripper, t_base2gripper[, R_base2world[, t_base2world[, R_gripper2cam[, t_gripper2cam[, method]]]]]) -> R_base2world, t_base2world, R_gripper2cam, t_gripper2cam
 
 OpenCV 4.6's cv2.calibrateRobotWorldHandEye, solved by hecal (docs/python.md#the-opencv-drop-in).
 
