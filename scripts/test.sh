@@ -14,10 +14,11 @@
 # merge that touches input handling: HECAL_SANITIZED_CHECKS=1 scripts/test.sh. The whole unit
 # suite under the sanitizers is: cmake -S . -B build-asan -DHECAL_SANITIZE=ON &&
 # cmake --build build-asan -j2 && ctest --test-dir build-asan -L unit
-# Slow studies carry the label "slow" and run with: ctest --test-dir build -L slow
+# Slow studies carry the label "slow", are not built by default, and run with:
+# cmake --build build --target slow_checks && ctest --test-dir build -L slow
 # Before a merge that touches a solver or the noise estimation also run the slow scale check
 # (apps/hecal/scale_slow_test.cc; CPU limits at 10⁴ and 10⁵ stations, ~10 min for every method):
-# ctest --test-dir build -L slow -R cli_scale_slow_test (needs the hecal target built).
+# cmake --build build --target slow_checks && ctest --test-dir build -L slow -R cli_scale_slow_test.
 # Installs the Debian packages it needs first (scripts/install-deps.sh, apt-get only).
 #
 # Build settings that save time (measured earlier): the test files are compiled at -Og
