@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <map>
+#include <vector>
 
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
@@ -12,14 +13,19 @@
 namespace hecal::jobs {
 namespace {
 
-// The robot poses of the used stations of the page's primary result (the first that has
-// stations), in the result's length unit.
-void AddRobotPoses(const CalibrationReportOptions& options, report::HtmlReportInput* input) {
+// The robot poses of the used stations of the page's first result that has stations, in the
+// result's length unit. A row is that of the station named by its id column; without one, row k
+// is station_order[k] (calibrate's stations in table order: the image names of --images) or,
+// from a result file, the station named "k".
+void AddRobotPoses(const CalibrationReportOptions& options,
+                   const std::vector<std::string>& station_order, report::HtmlReportInput* input) {
   if (options.robot.empty()) return;
   const io::PoseTable table = io::ReadPoseTable(options.robot, options.robot_read);
   std::map<std::string, const io::PoseRow*> rows;
-  for (size_t k = 0; k < table.rows.size(); ++k)
-    rows[table.rows[k].id.value_or(std::to_string(k))] = &table.rows[k];
+  for (size_t k = 0; k < table.rows.size(); ++k) {
+    const std::string by_row = k < station_order.size() ? station_order[k] : std::to_string(k);
+    rows[table.rows[k].id.value_or(by_row)] = &table.rows[k];
+  }
   for (const nlohmann::json& result : input->results["results"]) {
     if (!result.contains("stations")) continue;
     const double scale =
@@ -41,11 +47,11 @@ void AddRobotPoses(const CalibrationReportOptions& options, report::HtmlReportIn
 }
 
 void Write(const std::string& text, const std::string& source, const std::string& title,
-           const CalibrationReportOptions& options) {
+           const std::vector<std::string>& station_order, const CalibrationReportOptions& options) {
   report::HtmlReportInput input;
   input.results = report::ParseResultForReport(text, source);
   input.title = title;
-  AddRobotPoses(options, &input);
+  AddRobotPoses(options, station_order, &input);
   report::WriteHtmlReport(options.output, input);
 }
 
@@ -64,13 +70,14 @@ void WriteCalibrationReport(const CalibrationReportOptions& options) {
                      "name the result file calibrate wrote");
   }
   Write(io::ReadFile(options.result), options.result,
-        std::filesystem::path(options.result).filename().string(), options);
+        std::filesystem::path(options.result).filename().string(), {}, options);
 }
 
 void WriteCalibrationReport(const report::ResultDocument& document, const std::string& title,
                             const CalibrationReportOptions& options) {
   RequireValid(options);
-  Write(report::FormatResult(document, report::ResultFormat::kJson), title, title, options);
+  Write(report::FormatResult(document, report::ResultFormat::kJson), title, title, document.station_ids,
+        options);
 }
 
 }  // namespace hecal::jobs

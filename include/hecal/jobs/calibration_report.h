@@ -6,7 +6,8 @@
 // The 3D scene needs T_base_gripper per station, which the result file does not hold (it names
 // stations by id only, docs/result-file.md): the job reads them from the robot table the result
 // was calibrated from, matching the result's used station ids to the table's id column (or to
-// the 0-based row index when the table has none). Without the table the scene shows the base and
+// the 0-based row index when the table has none; calibrate --report knows its stations' order, so
+// image names match the table's rows in order). Without the table the scene shows the base and
 // the fixed frame (X eye-to-hand, Z eye-in-hand) only.
 //
 // Errors (InputError): the result file (not JSON, a missing or mistyped field, named as
