@@ -161,8 +161,8 @@
                    hoverinfo: 'name'});
     }
     plot(s, traces, {height: 620, grid: {rows: 3, columns: 1, pattern: 'coupled'},
-                     yaxis: {title: rows[0][2]}, yaxis2: {title: rows[1][2]},
-                     yaxis3: {title: rows[2][2]}, xaxis: {title: 'station (order used)'},
+                     yaxis: {title: {text: rows[0][2]}}, yaxis2: {title: {text: rows[1][2]}},
+                     yaxis3: {title: {text: rows[2][2]}}, xaxis: {title: {text: 'station (order used)'}},
                      legend: {orientation: 'h', y: 1.08}});
   }
 
@@ -205,7 +205,7 @@
     }
     plot(s, bars, {title: {text: 'σ per axis'}, height: 340, barmode: 'group',
                    grid: {rows: 1, columns: 2, pattern: 'independent'},
-                   yaxis: {title: 'σ (deg)'}, yaxis2: {title: `σ (${unit})`}});
+                   yaxis: {title: {text: 'σ (deg)'}}, yaxis2: {title: {text: `σ (${unit})`}}});
     const pairs = [[0, 1], [0, 2], [1, 2]];
     const ell = [];
     const pairColors = ['#3366cc', '#dc3912', '#109618'];
@@ -220,9 +220,9 @@
     });
     plot(s, ell, {title: {text: '95% ellipses of X\'s error (pairs of axes, marginal)'},
                   height: 400, grid: {rows: 1, columns: 2, pattern: 'independent'},
-                  xaxis: {title: 'rotation (deg)', scaleanchor: 'y'}, yaxis: {title: 'rotation (deg)'},
-                  xaxis2: {title: `translation (${unit})`, scaleanchor: 'y2'},
-                  yaxis2: {title: `translation (${unit})`}});
+                  xaxis: {title: {text: 'rotation (deg)'}, scaleanchor: 'y'}, yaxis: {title: {text: 'rotation (deg)'}},
+                  xaxis2: {title: {text: `translation (${unit})`}, scaleanchor: 'y2'},
+                  yaxis2: {title: {text: `translation (${unit})`}}});
     const mc = c.model_check;
     if (!mc) return;
     s.appendChild(el('h3', {}, 'Model check: model σ against the jackknife'));
@@ -245,7 +245,7 @@
     }
     plot(s, mtraces, {title: {text: 'X: model σ and jackknife σ per axis'}, height: 340,
                       barmode: 'group', grid: {rows: 1, columns: 2, pattern: 'independent'},
-                      yaxis: {title: 'σ (deg)'}, yaxis2: {title: `σ (${unit})`}});
+                      yaxis: {title: {text: 'σ (deg)'}}, yaxis2: {title: {text: `σ (${unit})`}}});
   }
 
   // ---- 3D scene ------------------------------------------------------------------------------
@@ -326,8 +326,8 @@
         (eyeInHand ? 'the camera at each.' : 'the target at each.')
                     : 'The robot poses were not given (hecal report --robot FILE, or calibrate --report), ' +
                       'so the scene shows the base and the fixed ' + (eyeInHand ? 'target.' : 'camera.'))));
-    plot(s, traces, {height: 560, scene: {aspectmode: 'data', xaxis: {title: 'x'},
-                                          yaxis: {title: 'y'}, zaxis: {title: 'z'}},
+    plot(s, traces, {height: 560, scene: {aspectmode: 'data', xaxis: {title: {text: 'x'}},
+                                          yaxis: {title: {text: 'y'}}, zaxis: {title: {text: 'z'}}},
                      margin: {l: 0, r: 0, t: 10, b: 0}});
   }
 
@@ -357,7 +357,7 @@
        xaxis: 'x2', yaxis: 'y2', marker: {color: COLORS.Z}},
     ], {title: {text: `X against ${primary.method}`}, height: 360,
         grid: {rows: 1, columns: 2, pattern: 'independent'},
-        yaxis: {title: unit}, yaxis2: {title: 'deg'}});
+        yaxis: {title: {text: unit}}, yaxis2: {title: {text: 'deg'}}});
   }
 
   // ---- from images ---------------------------------------------------------------------------
@@ -377,7 +377,7 @@
               marker: {color: per.map((p) => p.outlier ? COLORS.flagged : COLORS.used)},
               hovertemplate: 'image %{x}<br>RMS %{y:.3g} px<extra></extra>'}],
          {title: {text: 'Reprojection RMS per image (flagged in orange)'}, height: 340,
-          xaxis: {title: 'image (station id)', type: 'category'}, yaxis: {title: 'px'}});
+          xaxis: {title: {text: 'image (station id)'}, type: 'category'}, yaxis: {title: {text: 'px'}}});
     if (im.skipped.length) {
       s.appendChild(table(['skipped image', 'why'], im.skipped.map((p) => [p.id, p.reason])));
     }
