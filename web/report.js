@@ -134,7 +134,7 @@
       `beyond 3). ${res.stations_total} used stations` +
       (res.per_station.length < res.stations_total ? `, ${res.per_station.length} plotted` : '') +
       `; rejected stations are drawn after them. Hover for the station's id (the pose file's ` +
-      `id column, or its 0-based row).`));
+      `id column, or its 0-based row)` + (data.robot_lines.length ? ' and its line in the robot file.' : '.')));
     const groups = [
       ['used', res.per_station.filter((p) => !p.outlier), COLORS.used, 'circle'],
       ['flagged (beyond 3σ)', res.per_station.filter((p) => p.outlier), COLORS.flagged, 'diamond'],
@@ -149,7 +149,9 @@
         type: 'scatter', mode: 'markers', name: label, legendgroup: label, showlegend: j === 0,
         x: points.map((p) => p.index), y: points.map((p) => p[field]), yaxis,
         marker: {color, symbol, size: 7},
-        text: points.map((p) => `station ${p.id} (used station #${p.index})`),
+        text: points.map((p) => `station ${p.id} (used station #${p.index}` +
+          (data.robot_lines.length && p.index < data.robot_lines.length
+            ? `, robot file line ${data.robot_lines[p.index]})` : ')')),
         hovertemplate: `%{text}<br>${field}: %{y:.4g}<extra>${label}</extra>`}));
     }
     const end = res.stations_total + res.rejected.length;
