@@ -3,7 +3,8 @@
 # result is MoveIt Calibration's real one; the 10⁴-station result is that file with its stations
 # repeated (ids made unique, every 37th flagged) and a robot table of 10⁴ rows to match, so the
 # page carries 10⁴ residuals and 10⁴ robot poses (plotted: 2000 and 200, said on the page).
-# Prints the median wall time of 5 runs for each. Usage: bench/report_bench.sh [BUILD_DIR]
+# Prints the median wall time of 5 runs for each. Usage: bench/report_bench.sh [BUILD_DIR [KEEP]]
+# (KEEP: a folder that receives the two pages, e.g. to load them with web/report_pages.mjs).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 hecal="$(cd "${1:-$root/build}" && pwd)/bin/hecal"
@@ -46,3 +47,6 @@ t50=$(median "$work/r50.json" --robot "$work/robot50.csv" --output "$work/r50.ht
 echo "50        $t50  $(stat -c %s "$work/r50.html")"
 t10k=$(median "$work/r10k.json" --robot "$work/robot10k.csv" --output "$work/r10k.html")
 echo "10000     $t10k  $(stat -c %s "$work/r10k.html")"
+if [[ -n "${2:-}" ]]; then
+  cp "$work/r50.html" "$work/r10k.html" "$2"/
+fi
