@@ -1,7 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages hecal builds and tests with (the list in README "Library, build and tests").
 # Idempotent: prints nothing and touches nothing when every package is present.
-# Usage: scripts/install-deps.sh [--fuzz]   (--fuzz adds clang + libFuzzer runtime)
+# Usage: scripts/install-deps.sh [--fuzz] [--browser]   (--fuzz adds clang + libFuzzer runtime;
+# --browser adds Debian's chromium for the HTML report's browser test, tests/report/)
+#
+# The HTML report (docs/report.md): Plotly.js and the browser test's driver come from npm, pinned
+# by web/package-lock.json; `npm ci` installs them into web/node_modules when it is missing (the
+# build embeds web/node_modules/plotly.js-dist-min/plotly.min.js; configuring fails without it).
 #
 # Python (docs/python.md#install): the module builds for Debian's /usr/bin/python3, whose NumPy,
 # pybind11, pytest and OpenCV (cv2) come from apt (/usr/lib/python3/dist-packages). When the
@@ -22,10 +27,17 @@ packages=(
   libyaml-cpp-dev libtinyxml2-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libglpk-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-opencv
+  nodejs
 )
-if [[ "${1:-}" == "--fuzz" ]]; then
-  packages+=(clang libclang-rt-14-dev)
-fi
+for flag in "$@"; do
+  case "$flag" in
+    --fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    --browser) packages+=(chromium) ;;
+    *) echo "install-deps: unknown flag $flag (fix: --fuzz, --browser)" >&2; exit 2 ;;
+  esac
+done
+# Debian's nodejs comes without npm (NodeSource's includes it).
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -68,3 +80,10 @@ link_python() {
   printf '%s\n' "$want" | $writer tee "$pth" >/dev/null
 }
 link_python
+
+# The HTML report's npm packages (see the header).
+web="$(cd "$(dirname "$0")/.." && pwd)/web"
+if [[ ! -d "$web/node_modules" ]]; then
+  echo "install-deps: npm ci in $web" >&2
+  (cd "$web" && npm ci --no-audit --no-fund >/dev/null)
+fi

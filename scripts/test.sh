@@ -26,7 +26,7 @@
 # and Ninja where the build folder is new.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --browser
 build=${HECAL_BUILD_DIR:-build}
 sanitized=${HECAL_SANITIZED_BUILD_DIR:-build-sanitized}
 

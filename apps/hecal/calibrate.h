@@ -32,6 +32,7 @@ struct CalibrateFlags {
   std::string robot_sigma;
   std::string camera_sigma;
   std::string output;
+  std::string report;  // --report: the HTML page (docs/report.md)
   io::LengthUnit units = io::LengthUnit::kMetre;
   bool degrees = false;
   std::optional<EulerSequence> euler;
@@ -74,6 +75,11 @@ std::optional<double> ParsePixelSigma(const std::string& text);
 // "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
 // `flag` when it is not two numbers (the range is the options' IsValid's).
 estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& text);
+
+// --output and --report of the pose and image forms: the result file, and the HTML page
+// (jobs::WriteCalibrationReport, with the robot file as read for the 3D scene).
+void WriteCalibrateOutputs(const CalibrateFlags& flags, const io::PoseReadOptions& robot_read,
+                           const report::ResultDocument& document, const Io& io);
 
 // `hecal calibrate --images`: refuses the flags the image form does not take, binds the others
 // into jobs::ImageFolderCalibrationOptions and runs jobs::CalibrateFromImageFolder

@@ -53,10 +53,7 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
   const jobs::ImageFolderCalibration result =
       jobs::CalibrateFromImageFolder(options, PrintingCallbacks(io));
   report::PrintImageResultSummary(io.out, result.document, result.camera);
-  if (!flags.output.empty()) {
-    report::WriteResult(flags.output, result.document);
-    io.out << "wrote " << flags.output << "\n";
-  }
+  WriteCalibrateOutputs(flags, options.robot_read, result.document, io);
 }
 
 #else

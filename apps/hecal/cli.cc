@@ -12,8 +12,8 @@ namespace {
 
 constexpr Registrar kRegistrars[] = {
     &RegisterPosesCommand,     &RegisterImportCommand,  &RegisterDetectCommand,
-    &RegisterCalibrateCommand, &RegisterPoseCommand,    &RegisterSimulateCommand,
-    &RegisterBenchCommand,     &RegisterContourCommand,
+    &RegisterCalibrateCommand, &RegisterReportCommand,  &RegisterPoseCommand,
+    &RegisterSimulateCommand,  &RegisterBenchCommand,   &RegisterContourCommand,
 };
 
 }  // namespace

@@ -37,6 +37,7 @@
 // pose files; pose from known points; simulation and the benchmark protocol; the contour
 // methods; OpenCV's hand–eye functions as drop-ins (the Python module's cv2 drop-in).
 #include "hecal/jobs/bench.h"
+#include "hecal/jobs/calibration_report.h"
 #include "hecal/jobs/contour_jobs.h"
 #include "hecal/jobs/global_calibration.h"
 #include "hecal/jobs/import.h"
@@ -75,8 +76,10 @@
 #include "hecal/report/contour_track_text.h"
 #include "hecal/report/global_result.h"
 #include "hecal/report/global_text.h"
+#include "hecal/report/html_report.h"
 #include "hecal/report/pose_file.h"
 #include "hecal/report/pose_text.h"
+#include "hecal/report/report_input.h"
 #include "hecal/report/result_file.h"
 #include "hecal/report/result_text.h"
 #include "hecal/report/study_text.h"

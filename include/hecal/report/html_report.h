@@ -1,0 +1,39 @@
+// The interactive HTML report of a calibration result (`hecal report`, `calibrate --report`;
+// docs/report.md): one self-contained page that opens offline from any folder. The figures are
+// drawn in the browser by Plotly.js (web/package.json pins it) from one JSON blob of page data,
+// by the page script web/report.js; both scripts and web/report.css are built into the library
+// (src/report/CMakeLists: an assembler .incbin of the files that `npm ci` installed in web/), so
+// the binary needs no file at run time and the page loads nothing from the network.
+//
+// The page data are the checked results (report_input.h) with every station's residual, except
+// that above kMaxPlottedStations stations the residual plots keep every flagged station and an
+// even sample of the rest, and the 3D scene at most kMaxScenePoses gripper poses; the page says
+// so when it happens. Its size is printed on the page (Plotly.js is ~4.9 MB of it).
+#pragma once
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace hecal::report {
+
+constexpr size_t kMaxPlottedStations = 2000;
+constexpr size_t kMaxScenePoses = 200;
+
+struct HtmlReportInput {
+  nlohmann::json results;  // ParseResultForReport's value
+  std::string title;       // the result's name, e.g. the result file's name
+  // The robot's poses T_base_gripper (4×4, translation in the result's length unit) of the used
+  // stations, in order, for the 3D scene; empty: the scene shows the base, X and Z only.
+  std::vector<Eigen::Matrix4d> robot_poses;
+  // With robot_poses: each used station's 1-based line in the robot pose file (shown on hover).
+  std::vector<int> robot_lines;
+};
+
+// The whole page.
+std::string FormatHtmlReport(const HtmlReportInput& input);
+// Written atomically (io/atomic_file.h): complete or absent.
+void WriteHtmlReport(const std::string& path, const HtmlReportInput& input);
+
+}  // namespace hecal::report

@@ -1,0 +1,63 @@
+#include "hecal/report/html_report.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace hecal::report {
+namespace {
+
+using nlohmann::json;
+
+// The page data blob of a page.
+json PageData(const std::string& page) {
+  const std::string open = "<script type=\"application/json\" id=\"hecal-data\">";
+  const size_t begin = page.find(open) + open.size();
+  return json::parse(page.substr(begin, page.find("</script>", begin) - begin));
+}
+
+HtmlReportInput Input(size_t stations) {
+  json per_station = json::array();
+  for (size_t k = 0; k < stations; ++k)
+    per_station.push_back({{"id", std::to_string(k)}, {"whitened", 1.0}, {"outlier", k == 7}});
+  HtmlReportInput input;
+  input.title = "r.json </script> title";
+  input.results = {{"all_methods", false},
+                   {"results", json::array({{{"method", "ml"},
+                                             {"residuals", {{"per_station", per_station}}}}})}};
+  return input;
+}
+
+TEST(HtmlReport, IsOnePageWithEverythingInside) {
+  const std::string page = FormatHtmlReport(Input(5));
+  EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(page.find("Plotly"), std::string::npos);          // the embedded library
+  EXPECT_NE(page.find("hecal-data"), std::string::npos);      // the page script reads this
+  // Nothing from elsewhere: no <script src>, no stylesheet link (the browser test checks
+  // that the page makes no request).
+  EXPECT_EQ(page.find("<script src"), std::string::npos);
+  EXPECT_EQ(page.find("<link"), std::string::npos);
+  const json data = PageData(page);
+  EXPECT_EQ(data["title"], "r.json </script> title");  // escaped as <\/ in the page
+  EXPECT_EQ(data["page_bytes"].get<size_t>(), page.size());
+  EXPECT_EQ(data["results"][0]["residuals"]["per_station"].size(), 5u);
+  EXPECT_TRUE(data["notes"].empty());
+}
+
+TEST(HtmlReport, SamplesManyStationsAndSaysSo) {
+  HtmlReportInput input = Input(10'000);
+  for (int k = 0; k < 10'000; ++k) input.robot_poses.push_back(Eigen::Matrix4d::Identity());
+  const json data = PageData(FormatHtmlReport(input));
+  const json& plotted = data["results"][0]["residuals"]["per_station"];
+  EXPECT_LE(plotted.size(), kMaxPlottedStations + 1);
+  EXPECT_EQ(data["results"][0]["residuals"]["stations_total"], 10'000);
+  bool flagged_kept = false;
+  for (const json& s : plotted) flagged_kept = flagged_kept || s["index"] == 7;
+  EXPECT_TRUE(flagged_kept);
+  EXPECT_LE(data["robot_poses"].size(), kMaxScenePoses);
+  EXPECT_EQ(data["notes"].size(), 2u);
+}
+
+}  // namespace
+}  // namespace hecal::report

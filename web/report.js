@@ -1,0 +1,407 @@
+// The hecal report page (docs/report.md): builds the sections and the Plotly.js figures from the
+// page data that src/report/html_report.cc writes into <script id="hecal-data">. The fields are
+// those of the result file (docs/result-file.md), already checked by report_input.cc. Every
+// figure is a <div class="plot">: the browser test (tests/browser/) checks each one rendered.
+(function () {
+  'use strict';
+  const data = JSON.parse(document.getElementById('hecal-data').textContent);
+  const root = document.getElementById('report');
+  const CHI2_95_2D = 5.991;  // 95% quantile of χ² with 2 degrees of freedom
+  const AXES = ['x', 'y', 'z'];
+  const COLORS = {used: '#3366cc', flagged: '#e08a00', rejected: '#c0392b', line: '#888',
+                  X: '#3366cc', Z: '#109618', jack: '#e08a00'};
+
+  function el(tag, attrs, ...children) {
+    const node = document.createElement(tag);
+    for (const [key, value] of Object.entries(attrs || {})) node.setAttribute(key, value);
+    for (const child of children) {
+      if (child === null || child === undefined) continue;
+      node.appendChild(typeof child === 'string' ? document.createTextNode(child) : child);
+    }
+    return node;
+  }
+  function fmt(x, digits) {
+    if (!isFinite(x)) return String(x);
+    return Number(x).toPrecision(digits || 4);
+  }
+  function table(head, rows) {
+    return el('table', {}, el('tr', {}, ...head.map((h) => el('th', {}, h))),
+              ...rows.map((r) => el('tr', {}, ...r.map((c) =>
+                typeof c === 'number' ? el('td', {class: 'num'}, fmt(c)) : el('td', {}, c)))));
+  }
+  function plot(parent, traces, layout) {
+    const div = el('div', {class: 'plot'});
+    parent.appendChild(div);
+    const base = {margin: {l: 60, r: 20, t: 40, b: 50}, font: {size: 12},
+                  paper_bgcolor: '#fff', plot_bgcolor: '#fff', hovermode: 'closest'};
+    Plotly.newPlot(div, traces, Object.assign(base, layout),
+                   {displaylogo: false, responsive: true});
+    return div;
+  }
+  function section(title, ...children) {
+    const s = el('section', {}, el('h2', {}, title), ...children);
+    root.appendChild(s);
+    return s;
+  }
+
+  // "T_base_camera" → "the camera's pose in the robot base frame".
+  function frameWords(frame) {
+    const m = /^T_([a-z]+)_([a-z]+)$/.exec(frame);
+    if (!m) return frame;
+    const names = {base: 'robot base', gripper: 'gripper (flange)', camera: 'camera',
+                   target: 'calibration target'};
+    return `${frame}: the ${names[m[2]] || m[2]}'s pose in the ${names[m[1]] || m[1]} frame ` +
+           `(maps ${m[2]} coordinates to ${m[1]} coordinates)`;
+  }
+
+  // What to do about a warning of the result file (the texts of src/estimation and src/jobs).
+  const ADVICE = [
+    [/noise not given|estimated/i, 'The noise model was estimated from these residuals. If you ' +
+     'know your robot\'s and camera\'s accuracy, give it with --robot-sigma MM,DEG and ' +
+     '--camera-sigma MM,DEG: the σ then do not lean on this data set alone.'],
+    [/model check|jackknife|understate/i, 'The model\'s σ understate the spread between ' +
+     'station groups on the axes named: trust the jackknife column of the model check, and add ' +
+     'stations with larger, more varied rotations.'],
+    [/flagged|outlier|3-sigma|3σ/i, 'Look at the flagged stations in the residual plot (hover ' +
+     'for their ids): re-measure or remove them, or check that robot and camera rows are paired.'],
+    [/reject/i, 'The rejected stations did not fit the others at all: check their rows (pairing, ' +
+     'a failed detection, a pose in another unit). --keep-outliers keeps them.'],
+    [/convention|invers|transpos/i, 'Check the pose conventions (docs/conventions.md): ' +
+     '--robot-inverse / --camera-inverse, --euler, --degrees.'],
+    [/project|orthonormal/i, 'The rotations in the file were not exactly rotations: write them ' +
+     'with more digits.'],
+    [/plausib|unit|scale/i, 'Check the length unit (--units) and the setup (--setup).'],
+  ];
+  function advice(text) {
+    for (const [pattern, what] of ADVICE) if (pattern.test(text)) return what;
+    return 'See docs/cli.md for what this warning means.';
+  }
+
+  function quatAngleDeg(q) {
+    return 2 * Math.acos(Math.min(1, Math.abs(q[0]))) * 180 / Math.PI;
+  }
+  function relativeAngleDeg(q1, q2) {
+    const dot = Math.abs(q1[0] * q2[0] + q1[1] * q2[1] + q1[2] * q2[2] + q1[3] * q2[3]);
+    return 2 * Math.acos(Math.min(1, dot)) * 180 / Math.PI;
+  }
+  function axisOf(q) {
+    const n = Math.hypot(q[1], q[2], q[3]);
+    return n > 0 ? [q[1] / n, q[2] / n, q[3] / n] : [0, 0, 1];
+  }
+
+  // ---- the answer ---------------------------------------------------------------------------
+  function answer(r) {
+    const unit = r.units.length;
+    const s = section('The answer');
+    s.appendChild(el('p', {}, `Setup ${r.setup}, method ${r.method}` +
+      (r.covariance ? `, covariance ${r.covariance.method}` : ', no covariance') +
+      `; ${r.stations.used.length} stations used, ${r.stations.rejected.length} rejected.`));
+    for (const name of ['X', 'Z']) {
+      const pose = r[name];
+      const sig = r.covariance ? r.covariance.sigma[name] : null;
+      s.appendChild(el('h3', {}, `${name} = ${frameWords(pose.frame)}`));
+      const rows = AXES.map((a, i) => [
+        `t${a}`, pose.translation[i], sig ? sig.translation_in_parent.translation[i] : '—',
+        unit, `along the ${sig ? sig.translation_in_parent.frame : ''} frame's ${a} axis`]);
+      const q = pose.quaternion_wxyz;
+      const axis = axisOf(q);
+      rows.push(['rotation', quatAngleDeg(q), '', 'deg',
+                 `about the axis (${axis.map((v) => fmt(v, 3)).join(', ')}); quaternion wxyz ` +
+                 `(${q.map((v) => fmt(v, 6)).join(', ')})`]);
+      AXES.forEach((a, i) => rows.push([`r${a}`, '', sig ? sig.rotation_deg[i] : '—', 'deg',
+        `1σ of a small rotation about ${name}'s own ${a} axis`]));
+      s.appendChild(table(['', 'value', '1σ', 'unit', 'meaning'], rows));
+    }
+    const n = r.noise;
+    s.appendChild(el('p', {}, `Noise model (per axis, ${n.estimated ? 'estimated from the residuals' : 'given'}): ` +
+      `robot ${fmt(n.robot_sigma.translation)} ${unit}, ${fmt(n.robot_sigma.rotation_deg)}°; ` +
+      `camera ${fmt(n.camera_sigma.translation)} ${unit}, ${fmt(n.camera_sigma.rotation_deg)}°. ` +
+      `Residual RMS: ${fmt(r.residuals.rotation_rms_deg)}°, ${fmt(r.residuals.translation_rms)} ${unit}.`));
+    if (r.warnings.length === 0) s.appendChild(el('p', {}, 'No warnings.'));
+    for (const w of r.warnings) {
+      s.appendChild(el('div', {class: 'warning'}, el('div', {}, '⚠ ' + w),
+                       el('div', {class: 'todo'}, 'What to do: ' + advice(w))));
+    }
+  }
+
+  // ---- residuals ----------------------------------------------------------------------------
+  function residuals(r) {
+    const unit = r.units.length;
+    const res = r.residuals;
+    const s = section('Residuals per station', el('p', {class: 'muted'},
+      `Each station's residual Z⁻¹·A·X·B: its rotation angle, its translation length and the ` +
+      `residual whitened by its covariance under the noise model (≈ 1 for an inlier; flagged ` +
+      `beyond 3). ${res.stations_total} used stations` +
+      (res.per_station.length < res.stations_total ? `, ${res.per_station.length} plotted` : '') +
+      `; rejected stations are drawn after them. Hover for the station's id (the pose file's ` +
+      `id column, or its 0-based row)` + (data.robot_lines.length ? ' and its line in the robot file.' : '.')));
+    const groups = [
+      ['used', res.per_station.filter((p) => !p.outlier), COLORS.used, 'circle'],
+      ['flagged (beyond 3σ)', res.per_station.filter((p) => p.outlier), COLORS.flagged, 'diamond'],
+      ['rejected', res.rejected.map((p, k) => Object.assign({index: res.stations_total + k}, p)),
+       COLORS.rejected, 'x'],
+    ];
+    const traces = [];
+    const rows = [['rotation_deg', 'y', 'rotation (deg)'], ['translation', 'y2', `translation (${unit})`],
+                  ['whitened', 'y3', 'whitened']];
+    for (const [label, points, color, symbol] of groups) {
+      rows.forEach(([field, yaxis], j) => traces.push({
+        type: 'scatter', mode: 'markers', name: label, legendgroup: label, showlegend: j === 0,
+        x: points.map((p) => p.index), y: points.map((p) => p[field]), yaxis,
+        marker: {color, symbol, size: 7},
+        text: points.map((p) => `station ${p.id} (used station #${p.index}` +
+          (data.robot_lines.length && p.index < data.robot_lines.length
+            ? `, robot file line ${data.robot_lines[p.index]})` : ')')),
+        hovertemplate: `%{text}<br>${field}: %{y:.4g}<extra>${label}</extra>`}));
+    }
+    const end = res.stations_total + res.rejected.length;
+    const lines = [['y', 3 * res.rotation_rms_deg, '3 × RMS'], ['y2', 3 * res.translation_rms, '3 × RMS'],
+                   ['y3', 3, '3σ']];
+    for (const [yaxis, level, label] of lines) {
+      traces.push({type: 'scatter', mode: 'lines', x: [-0.5, end - 0.5], y: [level, level], yaxis,
+                   line: {color: COLORS.line, dash: 'dash'}, name: label, showlegend: false,
+                   hoverinfo: 'name'});
+    }
+    plot(s, traces, {height: 620, grid: {rows: 3, columns: 1, pattern: 'coupled'},
+                     yaxis: {title: {text: rows[0][2]}}, yaxis2: {title: {text: rows[1][2]}},
+                     yaxis3: {title: {text: rows[2][2]}}, xaxis: {title: {text: 'station (order used)'}},
+                     legend: {orientation: 'h', y: 1.08}});
+  }
+
+  // ---- uncertainty ---------------------------------------------------------------------------
+  function ellipse(C, i, j, scale) {
+    const a = C[i][i] * scale * scale, b = C[i][j] * scale * scale, d = C[j][j] * scale * scale;
+    const tr = (a + d) / 2, det = a * d - b * b;
+    const disc = Math.sqrt(Math.max(0, tr * tr - det));
+    const l1 = tr + disc, l2 = Math.max(0, tr - disc);
+    const theta = Math.abs(b) > 1e-300 ? Math.atan2(l1 - a, b) : (a >= d ? 0 : Math.PI / 2);
+    const k = Math.sqrt(CHI2_95_2D);
+    const xs = [], ys = [];
+    for (let n = 0; n <= 72; ++n) {
+      const t = 2 * Math.PI * n / 72;
+      const u = k * Math.sqrt(l1) * Math.cos(t), v = k * Math.sqrt(l2) * Math.sin(t);
+      xs.push(u * Math.cos(theta) - v * Math.sin(theta));
+      ys.push(u * Math.sin(theta) + v * Math.cos(theta));
+    }
+    return [xs, ys];
+  }
+
+  function uncertainty(r) {
+    const unit = r.units.length;
+    const c = r.covariance;
+    if (!c) {
+      section('Uncertainty', el('p', {}, 'This result has no covariance.'));
+      return;
+    }
+    const s = section('Uncertainty', el('p', {class: 'muted'},
+      `1σ per axis of the right perturbation δ in X = X̂·Exp(δ) (covariance ${c.method}): ` +
+      `rotations about, and translations along, each pose's own axes.`));
+    const rot = ['rx', 'ry', 'rz'], tra = ['tx', 'ty', 'tz'];
+    const bars = [];
+    for (const name of ['X', 'Z']) {
+      bars.push({type: 'bar', name: `${name} rotation`, x: rot, y: c.sigma[name].rotation_deg,
+                 marker: {color: COLORS[name]}, legendgroup: name});
+      bars.push({type: 'bar', name: `${name} translation`, x: tra, y: c.sigma[name].translation,
+                 xaxis: 'x2', yaxis: 'y2', marker: {color: COLORS[name], opacity: 0.7},
+                 legendgroup: name});
+    }
+    plot(s, bars, {title: {text: 'σ per axis'}, height: 340, barmode: 'group',
+                   grid: {rows: 1, columns: 2, pattern: 'independent'},
+                   yaxis: {title: {text: 'σ (deg)'}}, yaxis2: {title: {text: `σ (${unit})`}}});
+    const pairs = [[0, 1], [0, 2], [1, 2]];
+    const ell = [];
+    const pairColors = ['#3366cc', '#dc3912', '#109618'];
+    pairs.forEach(([i, j], k) => {
+      const [rx, ry] = ellipse(c.X, i, j, 180 / Math.PI);
+      ell.push({type: 'scatter', mode: 'lines', x: rx, y: ry, name: `${rot[i]}–${rot[j]}`,
+                line: {color: pairColors[k]}, legendgroup: String(k)});
+      const [tx, ty] = ellipse(c.X, i + 3, j + 3, 1);
+      ell.push({type: 'scatter', mode: 'lines', x: tx, y: ty, name: `${tra[i]}–${tra[j]}`,
+                xaxis: 'x2', yaxis: 'y2', line: {color: pairColors[k], dash: 'dot'},
+                legendgroup: String(k)});
+    });
+    plot(s, ell, {title: {text: '95% ellipses of X\'s error (pairs of axes, marginal)'},
+                  height: 400, grid: {rows: 1, columns: 2, pattern: 'independent'},
+                  xaxis: {title: {text: 'rotation (deg)'}, scaleanchor: 'y'}, yaxis: {title: {text: 'rotation (deg)'}},
+                  xaxis2: {title: {text: `translation (${unit})`}, scaleanchor: 'y2'},
+                  yaxis2: {title: {text: `translation (${unit})`}}});
+    const mc = c.model_check;
+    if (!mc) return;
+    s.appendChild(el('h3', {}, 'Model check: model σ against the jackknife'));
+    if (!mc.possible) {
+      s.appendChild(el('p', {}, 'No model check: ' + mc.reason));
+      return;
+    }
+    s.appendChild(el('p', {class: 'muted'},
+      'The jackknife leaves station groups out in turn; its σ should match the model\'s. ' +
+      (mc.flagged.length ? `Flagged (model understates): ${mc.flagged.join(', ')}` +
+       (mc.used ? '; the reported covariance was inflated on those axes.' : '.')
+                         : 'No axis flagged.')));
+    const mtraces = [];
+    for (const [part, label, color] of [['sigma_model', 'model', COLORS.X],
+                                         ['sigma_check', 'jackknife', COLORS.jack]]) {
+      mtraces.push({type: 'bar', name: `${label}`, x: rot, y: mc[part].X.rotation_deg,
+                    marker: {color}, legendgroup: label});
+      mtraces.push({type: 'bar', name: label, x: tra, y: mc[part].X.translation, xaxis: 'x2',
+                    yaxis: 'y2', marker: {color}, legendgroup: label, showlegend: false});
+    }
+    plot(s, mtraces, {title: {text: 'X: model σ and jackknife σ per axis'}, height: 340,
+                      barmode: 'group', grid: {rows: 1, columns: 2, pattern: 'independent'},
+                      yaxis: {title: {text: 'σ (deg)'}}, yaxis2: {title: {text: `σ (${unit})`}}});
+  }
+
+  // ---- 3D scene ------------------------------------------------------------------------------
+  function mul(A, B) {
+    return A.map((row) => B[0].map((_, j) => row.reduce((s, v, k) => s + v * B[k][j], 0)));
+  }
+  function apply(T, p) {
+    return [0, 1, 2].map((i) => T[i][0] * p[0] + T[i][1] * p[1] + T[i][2] * p[2] + T[i][3]);
+  }
+  // Polylines as one trace: segments separated by nulls.
+  function polyTrace(name, color, lines, width) {
+    const x = [], y = [], z = [];
+    for (const line of lines) {
+      for (const p of line) { x.push(p[0]); y.push(p[1]); z.push(p[2]); }
+      x.push(null); y.push(null); z.push(null);
+    }
+    return {type: 'scatter3d', mode: 'lines', name, x, y, z, line: {color, width: width || 4},
+            hoverinfo: 'name'};
+  }
+  function triad(T, size) {
+    const o = apply(T, [0, 0, 0]);
+    return [0, 1, 2].map((a) => [o, apply(T, [a === 0 ? size : 0, a === 1 ? size : 0, a === 2 ? size : 0])]);
+  }
+  function frustum(T, s) {
+    const o = apply(T, [0, 0, 0]);
+    const c = [[-0.6, -0.45], [0.6, -0.45], [0.6, 0.45], [-0.6, 0.45]].map(([u, v]) => apply(T, [u * s, v * s, s]));
+    return [[o, c[0]], [o, c[1]], [o, c[2]], [o, c[3]], [c[0], c[1], c[2], c[3], c[0]]];
+  }
+  function board(T, s) {
+    return [[[0, 0], [s, 0], [s, s], [0, s], [0, 0]].map(([u, v]) => apply(T, [u, v, 0]))];
+  }
+
+  function scene(r) {
+    const unit = r.units.length;
+    const poses = data.robot_poses;
+    const I = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]];
+    const X = r.X.matrix, Z = r.Z.matrix;
+    const eyeInHand = r.setup === 'eye-in-hand';
+    // Scene size: the largest distance of a drawn origin from the base.
+    const origins = [X, Z].concat(poses).map((T) => Math.hypot(T[0][3], T[1][3], T[2][3]));
+    const size = 0.12 * Math.max(...origins, 1e-9);
+    const traces = [];
+    const axisColors = ['#d62728', '#2ca02c', '#1f77b4'];
+    const frames = [['base', I]];
+    const cams = [], boards = [];
+    if (eyeInHand) {
+      boards.push(board(Z, size));
+      frames.push(['target (Z)', Z]);
+      poses.forEach((G) => cams.push(...frustum(mul(G, X), size * 0.6)));
+    } else {
+      cams.push(...frustum(X, size));
+      frames.push(['camera (X)', X]);
+      poses.forEach((G) => boards.push(board(mul(G, Z), size * 0.6)));
+    }
+    const grippers = poses.map((G) => triad(G, size * 0.5));
+    [0, 1, 2].forEach((a) => {
+      traces.push(polyTrace(`${AXES[a]} axes`, axisColors[a],
+        frames.map(([, T]) => triad(T, size * 1.5)[a]).concat(grippers.map((g) => g[a])), 5));
+    });
+    traces.push(polyTrace('camera' + (cams.length > 5 ? 's' : ''), '#555', cams, 3));
+    traces.push(polyTrace('target' + (boards.length > 1 ? 's' : ''), '#8e44ad', boards.flat(), 3));
+    traces.push({type: 'scatter3d', mode: 'text+markers', name: 'frames',
+                 x: frames.map(([, T]) => T[0][3]), y: frames.map(([, T]) => T[1][3]),
+                 z: frames.map(([, T]) => T[2][3]), text: frames.map(([n]) => n),
+                 marker: {size: 3, color: '#000'}, hoverinfo: 'text'});
+    if (poses.length) {
+      const flagged = new Set(r.residuals.per_station.filter((p) => p.outlier).map((p) => p.index));
+      const stride = Math.max(1, Math.round(r.stations.used.length / poses.length));
+      const ids = poses.map((_, k) => r.stations.used[k * stride]);
+      traces.push({type: 'scatter3d', mode: 'markers', name: 'gripper poses',
+                   x: poses.map((G) => G[0][3]), y: poses.map((G) => G[1][3]), z: poses.map((G) => G[2][3]),
+                   text: ids.map((id) => `station ${id}`), hoverinfo: 'text',
+                   marker: {size: 4, color: poses.map((_, k) => flagged.has(k * stride) ? COLORS.flagged : COLORS.used)}});
+    }
+    const s = section('3D scene', el('p', {class: 'muted'},
+      `In the robot base frame (${unit}); drag to rotate. Axes x red, y green, z blue. ` +
+      (poses.length ? 'Gripper poses as small triads (flagged stations\' markers in orange); ' +
+        (eyeInHand ? 'the camera at each.' : 'the target at each.')
+                    : 'The robot poses were not given (hecal report --robot FILE, or calibrate --report), ' +
+                      'so the scene shows the base and the fixed ' + (eyeInHand ? 'target.' : 'camera.'))));
+    plot(s, traces, {height: 560, scene: {aspectmode: 'data', xaxis: {title: {text: 'x'}},
+                                          yaxis: {title: {text: 'y'}}, zaxis: {title: {text: 'z'}}},
+                     margin: {l: 0, r: 0, t: 10, b: 0}});
+  }
+
+  // ---- every method --------------------------------------------------------------------------
+  function methods(results, primary) {
+    const unit = primary.units.length;
+    const s = section('Every method', el('p', {class: 'muted'},
+      `X of each method against ${primary.method}'s: the distance between the translations and ` +
+      `the angle between the rotations, with each method's residual RMS and largest σ.`));
+    const ok = results.filter((r) => !r.error);
+    const rows = results.map((r) => {
+      if (r.error) return [r.method, el('span', {class: 'error'}, 'refused: ' + r.error), '', '', '', '', ''];
+      const dt = Math.hypot(...[0, 1, 2].map((i) => r.X.translation[i] - primary.X.translation[i]));
+      const dr = relativeAngleDeg(r.X.quaternion_wxyz, primary.X.quaternion_wxyz);
+      const sig = r.covariance ? Math.max(...r.covariance.sigma.X.translation_in_parent.translation) : NaN;
+      const sigr = r.covariance ? Math.max(...r.covariance.sigma.X.rotation_deg) : NaN;
+      return [r.method, dt, dr, r.residuals.translation_rms, r.residuals.rotation_rms_deg, sig, sigr];
+    });
+    s.appendChild(table(['method', `|ΔX t| (${unit})`, 'ΔX angle (deg)', `residual RMS (${unit})`,
+                         'residual RMS (deg)', `max σ X t (${unit})`, 'max σ X r (deg)'], rows));
+    const diff = (r) => Math.hypot(...[0, 1, 2].map((i) => r.X.translation[i] - primary.X.translation[i]));
+    plot(s, [
+      {type: 'bar', name: `|ΔX t| (${unit})`, x: ok.map((r) => r.method), y: ok.map(diff),
+       marker: {color: COLORS.X}},
+      {type: 'bar', name: 'ΔX angle (deg)', x: ok.map((r) => r.method),
+       y: ok.map((r) => relativeAngleDeg(r.X.quaternion_wxyz, primary.X.quaternion_wxyz)),
+       xaxis: 'x2', yaxis: 'y2', marker: {color: COLORS.Z}},
+    ], {title: {text: `X against ${primary.method}`}, height: 360,
+        grid: {rows: 1, columns: 2, pattern: 'independent'},
+        yaxis: {title: {text: unit}}, yaxis2: {title: {text: 'deg'}}});
+  }
+
+  // ---- from images ---------------------------------------------------------------------------
+  function images(r) {
+    const im = r.images;
+    const k = im.intrinsics;
+    const s = section('From images', el('p', {}, `Intrinsics (${k.source}); reprojection RMS ` +
+      `${fmt(im.reprojection_rms_px)} px; pixel noise ${fmt(im.pixel_sigma_px)} px` +
+      (im.pixel_sigma_estimated ? ' (estimated).' : ' (given).')));
+    const names = ['fx', 'fy', 'cx', 'cy'];
+    const sig = k.sigma ? k.sigma.values : null;
+    s.appendChild(table(['', 'value (px)', '1σ (px)'],
+      names.map((n, i) => [n, k[n], sig ? sig[i] : 'not refined'])
+        .concat([['image size', `${k.width} × ${k.height}`, '']])));
+    const per = im.per_image;
+    plot(s, [{type: 'bar', x: per.map((p) => p.id), y: per.map((p) => p.rms_px),
+              marker: {color: per.map((p) => p.outlier ? COLORS.flagged : COLORS.used)},
+              hovertemplate: 'image %{x}<br>RMS %{y:.3g} px<extra></extra>'}],
+         {title: {text: 'Reprojection RMS per image (flagged in orange)'}, height: 340,
+          xaxis: {title: {text: 'image (station id)'}, type: 'category'}, yaxis: {title: {text: 'px'}}});
+    if (im.skipped.length) {
+      s.appendChild(table(['skipped image', 'why'], im.skipped.map((p) => [p.id, p.reason])));
+    }
+  }
+
+  // ---- the page ------------------------------------------------------------------------------
+  const results = data.results;
+  const primary = results.find((r) => !r.error && r.method === 'ml') || results.find((r) => !r.error);
+  root.appendChild(el('h1', {}, 'hecal calibration report'));
+  root.appendChild(el('p', {class: 'muted'}, `${data.title} — hecal ${data.hecal_version}; this ` +
+    `page is ${(data.page_bytes / 1e6).toFixed(2)} MB, Plotly.js included, and loads nothing ` +
+    `from the network.`));
+  for (const note of data.notes) root.appendChild(el('div', {class: 'note'}, note));
+  if (!primary) {
+    section('No result', el('p', {class: 'error'}, 'Every method refused the data: ' +
+      results.map((r) => `${r.method}: ${r.error}`).join('; ')));
+    return;
+  }
+  answer(primary);
+  residuals(primary);
+  uncertainty(primary);
+  scene(primary);
+  if (data.all_methods) methods(results, primary);
+  if (primary.images) images(primary);
+})();
