@@ -32,9 +32,11 @@ mkdir -p out
 "$hecal" calibrate --images data/rwhe-kuka2/images --target data/rwhe-kuka2/target.yaml \
   --robot data/rwhe-kuka2/RobotPosesVec.txt --setup eye-in-hand \
   --output out/kuka2-images.json --report out/kuka2-report.html > out/kuka2-images.txt
-cmake --install "$build" --component python >/dev/null
+sudo=
+[[ $(id -u) -eq 0 ]] || sudo=sudo  # the system's Python path is root's
+$sudo cmake --install "$build" --component python >/dev/null
 python3 examples/python/drop_in_cv2.py > out/python-drop-in.txt
 echo "results: out/result.json (ml), out/all-methods.json and out/all-methods.txt (every method)"
 echo "         out/kuka2-images.json and out/kuka2-images.txt (from the rwhe-kuka2 images)"
-echo "pages:   out/report.html (MoveIt, open it in a browser), out/kuka2-report.html"
 echo "         out/python-drop-in.txt (import hecal: the cv2.calibrateHandEye drop-in)"
+echo "pages:   out/report.html (MoveIt, open it in a browser), out/kuka2-report.html"
