@@ -35,7 +35,8 @@
 
 // The jobs: calibration from poses (in memory or files), target-free; import and conversion of
 // pose files; pose from known points; simulation and the benchmark protocol; the contour
-// methods; OpenCV's hand–eye functions as drop-ins (the Python module's cv2 drop-in).
+// methods; OpenCV's hand–eye functions as drop-ins (the Python module's cv2 drop-in); a
+// calibration's HTML report.
 #include "hecal/jobs/bench.h"
 #include "hecal/jobs/calibration_report.h"
 #include "hecal/jobs/contour_jobs.h"
