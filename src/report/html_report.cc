@@ -14,6 +14,8 @@ extern const char hecal_report_plotly_js[];
 extern const char hecal_report_plotly_js_end[];
 extern const char hecal_report_page_js[];
 extern const char hecal_report_page_js_end[];
+extern const char hecal_report_calibration_js[];
+extern const char hecal_report_calibration_js_end[];
 extern const char hecal_report_page_css[];
 extern const char hecal_report_page_css_end[];
 }
@@ -26,6 +28,15 @@ using nlohmann::json;
 std::string_view Asset(const char* begin, const char* end) {
   return {begin, static_cast<size_t>(end - begin)};
 }
+
+// The page kinds' scripts, after web/page.js; each registers itself in hecalPage.pages.
+struct Script {
+  const char* begin;
+  const char* end;
+};
+const Script kPageScripts[] = {
+    {hecal_report_calibration_js, hecal_report_calibration_js_end},
+};
 
 // At most `limit` of `stations`: every outlier and an even sample of the others, in order; each
 // keeps its position in the file as "index".
@@ -44,8 +55,8 @@ json SampleStations(const json& stations, size_t limit, bool* sampled) {
 }
 
 json PageData(const HtmlReportInput& input) {
-  json data = {{"title", input.title},
-               {"hecal_version", hecal::kVersion},
+  json data = {{"kind", "calibration"},
+               {"title", input.title},
                {"all_methods", input.results.at("all_methods")},
                {"results", json::array()},
                {"notes", json::array()}};
@@ -101,14 +112,26 @@ std::string Page(const std::string& data) {
   page += Asset(hecal_report_plotly_js, hecal_report_plotly_js_end);
   page += "\n</script>\n<script>\n";
   page += Asset(hecal_report_page_js, hecal_report_page_js_end);
-  page += "\n</script>\n</body>\n</html>\n";
+  for (const Script& script : kPageScripts) {
+    page += "\n</script>\n<script>\n";
+    page += Asset(script.begin, script.end);
+  }
+  page += "\n</script>\n<script>hecalPage.render();</script>\n</body>\n</html>\n";
   return page;
 }
 
 }  // namespace
 
 std::string FormatHtmlReport(const HtmlReportInput& input) {
-  json data = PageData(input);
+  return FormatHtmlPage(PageData(input));
+}
+
+void WriteHtmlReport(const std::string& path, const HtmlReportInput& input) {
+  io::WriteFileAtomically(path, FormatHtmlReport(input));
+}
+
+std::string FormatHtmlPage(json data) {
+  data["hecal_version"] = hecal::kVersion;
   // The page states its own size: the number is part of the page, so settle it by iterating.
   size_t bytes = 0;
   std::string page;
@@ -119,10 +142,6 @@ std::string FormatHtmlReport(const HtmlReportInput& input) {
     bytes = page.size();
   }
   return page;
-}
-
-void WriteHtmlReport(const std::string& path, const HtmlReportInput& input) {
-  io::WriteFileAtomically(path, FormatHtmlReport(input));
 }
 
 }  // namespace hecal::report

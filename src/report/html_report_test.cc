@@ -23,26 +23,44 @@ HtmlReportInput Input(size_t stations) {
     per_station.push_back({{"id", std::to_string(k)}, {"whitened", 1.0}, {"outlier", k == 7}});
   HtmlReportInput input;
   input.title = "r.json </script> title";
-  input.results = {{"all_methods", false},
-                   {"results", json::array({{{"method", "ml"},
-                                             {"residuals", {{"per_station", per_station}}}}})}};
+  input.results = {
+      {"all_methods", false},
+      {"results",
+       json::array({{{"method", "ml"}, {"residuals", {{"per_station", per_station}}}}})}};
   return input;
 }
 
 TEST(HtmlReport, IsOnePageWithEverythingInside) {
   const std::string page = FormatHtmlReport(Input(5));
   EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
-  EXPECT_NE(page.find("Plotly"), std::string::npos);          // the embedded library
-  EXPECT_NE(page.find("hecal-data"), std::string::npos);      // the page script reads this
+  EXPECT_NE(page.find("Plotly"), std::string::npos);      // the embedded library
+  EXPECT_NE(page.find("hecal-data"), std::string::npos);  // the page script reads this
   // Nothing from elsewhere: no <script src>, no stylesheet link (the browser test checks
   // that the page makes no request).
   EXPECT_EQ(page.find("<script src"), std::string::npos);
   EXPECT_EQ(page.find("<link"), std::string::npos);
   const json data = PageData(page);
   EXPECT_EQ(data["title"], "r.json </script> title");  // escaped as <\/ in the page
+  EXPECT_EQ(data["kind"], "calibration");
+  // The shell, then the calibration page's script, then the call that draws the page.
+  const size_t shell = page.find("const hecalPage");
+  const size_t calibration = page.find("hecalPage.pages.calibration =");
+  ASSERT_NE(shell, std::string::npos);
+  ASSERT_NE(calibration, std::string::npos);
+  EXPECT_LT(shell, calibration);
+  EXPECT_LT(calibration, page.find("hecalPage.render();"));
   EXPECT_EQ(data["page_bytes"].get<size_t>(), page.size());
   EXPECT_EQ(data["results"][0]["residuals"]["per_station"].size(), 5u);
   EXPECT_TRUE(data["notes"].empty());
+}
+
+TEST(HtmlReport, ShellTakesAnyKindOfPage) {
+  const std::string page = FormatHtmlPage({{"kind", "study"}, {"title", "s"}, {"x", 1}});
+  const json data = PageData(page);
+  EXPECT_EQ(data["kind"], "study");
+  EXPECT_EQ(data["x"], 1);
+  EXPECT_EQ(data["page_bytes"].get<size_t>(), page.size());
+  EXPECT_FALSE(data["hecal_version"].get<std::string>().empty());
 }
 
 TEST(HtmlReport, SamplesManyStationsAndSaysSo) {

@@ -1,9 +1,10 @@
 // The interactive HTML report of a calibration result (`hecal report`, `calibrate --report`;
 // docs/report.md): one self-contained page that opens offline from any folder. The figures are
 // drawn in the browser by Plotly.js (web/package.json pins it) from one JSON blob of page data,
-// by the page script web/report.js; both scripts and web/report.css are built into the library
-// (src/report/CMakeLists: an assembler .incbin of the files that `npm ci` installed in web/), so
-// the binary needs no file at run time and the page loads nothing from the network.
+// by the page scripts web/page.js and web/calibration.js; the scripts and web/report.css are built
+// into the library (src/report/CMakeLists: an assembler .incbin of the files that `npm ci`
+// installed in web/), so the binary needs no file at run time and the page loads nothing from the
+// network.
 //
 // The page data are the checked results (report_input.h) with every station's residual, except
 // that above kMaxPlottedStations stations the residual plots keep every flagged station and an
@@ -31,7 +32,14 @@ struct HtmlReportInput {
   std::vector<int> robot_lines;
 };
 
-// The whole page.
+// The page shell of every kind of report: `data` is one JSON object with "kind" (the page script
+// that draws it: "calibration" is web/calibration.js; each kind's script registers itself in
+// web/page.js's hecalPage.pages and is listed in html_report.cc's kPageScripts) and "title";
+// the shell adds "hecal_version" and "page_bytes" (the page's own size) and embeds Plotly.js,
+// web/page.js, every page script and web/report.css.
+std::string FormatHtmlPage(nlohmann::json data);
+
+// The calibration page.
 std::string FormatHtmlReport(const HtmlReportInput& input);
 // Written atomically (io/atomic_file.h): complete or absent.
 void WriteHtmlReport(const std::string& path, const HtmlReportInput& input);

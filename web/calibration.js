@@ -1,49 +1,10 @@
-// The hecal report page (docs/report.md): builds the sections and the Plotly.js figures from the
-// page data that src/report/html_report.cc writes into <script id="hecal-data">. The fields are
-// those of the result file (docs/result-file.md), already checked by report_input.cc. Every
-// figure is a <div class="plot">: the browser test (tests/browser/) checks each one rendered.
-(function () {
+// The calibration page of the hecal report (docs/report.md): builds its sections and Plotly.js
+// figures from the page data that src/report/html_report.cc writes into <script id="hecal-data">
+// (kind "calibration"). The fields are those of the result file (docs/result-file.md), already
+// checked by report_input.cc. Helpers (el, plot, section, ...) come from web/page.js.
+hecalPage.pages.calibration = function (data, root) {
   'use strict';
-  const data = JSON.parse(document.getElementById('hecal-data').textContent);
-  const root = document.getElementById('report');
-  const CHI2_95_2D = 5.991;  // 95% quantile of χ² with 2 degrees of freedom
-  const AXES = ['x', 'y', 'z'];
-  const COLORS = {used: '#3366cc', flagged: '#e08a00', rejected: '#c0392b', line: '#888',
-                  X: '#3366cc', Z: '#109618', jack: '#e08a00'};
-
-  function el(tag, attrs, ...children) {
-    const node = document.createElement(tag);
-    for (const [key, value] of Object.entries(attrs || {})) node.setAttribute(key, value);
-    for (const child of children) {
-      if (child === null || child === undefined) continue;
-      node.appendChild(typeof child === 'string' ? document.createTextNode(child) : child);
-    }
-    return node;
-  }
-  function fmt(x, digits) {
-    if (!isFinite(x)) return String(x);
-    return Number(x).toPrecision(digits || 4);
-  }
-  function table(head, rows) {
-    return el('table', {}, el('tr', {}, ...head.map((h) => el('th', {}, h))),
-              ...rows.map((r) => el('tr', {}, ...r.map((c) =>
-                typeof c === 'number' ? el('td', {class: 'num'}, fmt(c)) : el('td', {}, c)))));
-  }
-  function plot(parent, traces, layout) {
-    const div = el('div', {class: 'plot'});
-    parent.appendChild(div);
-    const base = {margin: {l: 60, r: 20, t: 40, b: 50}, font: {size: 12},
-                  paper_bgcolor: '#fff', plot_bgcolor: '#fff', hovermode: 'closest'};
-    Plotly.newPlot(div, traces, Object.assign(base, layout),
-                   {displaylogo: false, responsive: true});
-    return div;
-  }
-  function section(title, ...children) {
-    const s = el('section', {}, el('h2', {}, title), ...children);
-    root.appendChild(s);
-    return s;
-  }
-
+  const {el, fmt, table, plot, section, CHI2_95_2D, AXES, COLORS} = hecalPage;
   // "T_base_camera" → "the camera's pose in the robot base frame".
   function frameWords(frame) {
     const m = /^T_([a-z]+)_([a-z]+)$/.exec(frame);
@@ -404,4 +365,4 @@
   scene(primary);
   if (data.all_methods) methods(results, primary);
   if (primary.images) images(primary);
-})();
+};
