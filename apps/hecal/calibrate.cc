@@ -132,11 +132,12 @@ void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& set
 
 void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   const auto check_outputs = [&] {
-    io::CheckOutputs({{"--output", flags.output}, {"--report", flags.report}}, {{"--robot", flags.robot},
-                                                    {"--camera", flags.camera},
-                                                    {"--target", flags.target},
-                                                    {"--intrinsics", flags.intrinsics},
-                                                    {"--correspondences", flags.correspondences}});
+    io::CheckOutputs({{"--output", flags.output}, {"--report", flags.report}},
+                     {{"--robot", flags.robot},
+                      {"--camera", flags.camera},
+                      {"--target", flags.target},
+                      {"--intrinsics", flags.intrinsics},
+                      {"--correspondences", flags.correspondences}});
   };
   if (flags.method == "global" || !flags.correspondences.empty()) {
     if (!flags.report.empty()) {
@@ -147,8 +148,29 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
     return RunCalibrateGlobal(flags, io);
   }
   const CalibrateSettings settings = ParseCalibrateFlags(flags);
+  const CalibrateFlags defaults;
+  const std::pair<const char*, bool> stream_flags[] = {
+      {"--time-offset", flags.time_offset.has_value()},
+      {"--time-offset-window", flags.time_offset_window != defaults.time_offset_window},
+      {"--max-gap", flags.max_gap != defaults.max_gap},
+      {"--max-speed", flags.max_speed != defaults.max_speed},
+      {"--stations", flags.stations != defaults.stations}};
+  for (const auto& [name, given] : stream_flags) {
+    if (given && !flags.streams) {
+      throw InputError(name, 0, std::string(name) + " applies to --streams only",
+                       "add --streams when --robot and --camera are time-stamped streams, or "
+                       "leave it out");
+    }
+  }
   check_outputs();
-  if (flags.images.empty()) {
+  if (flags.streams) {
+    if (!flags.images.empty()) {
+      throw InputError("--streams", 0, "--images cannot be a stream yet",
+                       "detect the images' poses first (hecal detect) and give them as a "
+                       "camera stream with a stamp column (docs/streams.md)");
+    }
+    RunCalibrateStreams(flags, settings, io);
+  } else if (flags.images.empty()) {
     RunCalibratePoses(flags, settings, io);
   } else {
     RunCalibrateImages(flags, settings, io);
@@ -213,6 +235,26 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command
       ->add_option("--reach", flags->reach,
                    "With --method global: search X's translation up to this length, metres")
+      ->capture_default_str();
+  command->add_flag("--streams", flags->streams,
+                    "--robot and --camera are time-stamped streams (a stamp column): pair them by "
+                    "time and fit the clocks' offset (docs/streams.md)");
+  command->add_option("--time-offset", flags->time_offset,
+                      "With --streams: the offset in seconds (camera stamp t is robot time t + "
+                      "offset); estimated when absent");
+  command
+      ->add_option("--time-offset-window", flags->time_offset_window,
+                   "With --streams: search the offset within ± this many seconds")
+      ->capture_default_str();
+  command->add_option("--max-gap", flags->max_gap,
+                      "With --streams: never interpolate across a longer gap, seconds (default: 3 "
+                      "sample periods)");
+  command
+      ->add_option("--max-speed", flags->max_speed,
+                   "With --streams: no stations where the robot moves faster, MM,DEG per second")
+      ->capture_default_str();
+  AddWholeNumber(*command, "--stations", flags->stations,
+                 "With --streams: keep at most this many stations, spread in rotation")
       ->capture_default_str();
   command->add_option("--robot-sigma", flags->robot_sigma,
                       "Robot pose noise per axis, MM,DEG (estimated when absent)");

@@ -51,6 +51,13 @@ struct CalibrateFlags {
   long max_cubes = 20'000'000;    // --max-cubes: the search's budget of cube tests (global)
   double time_budget = 120.0;     // --time-budget SECONDS: the search's time (global)
   std::string features = "sift";  // --features sift|orb (global with --target none)
+  // --streams: --robot and --camera are time-stamped streams (docs/streams.md).
+  bool streams = false;
+  std::optional<double> time_offset;  // --time-offset SECONDS: given, not estimated
+  double time_offset_window = 1.0;    // --time-offset-window SECONDS
+  double max_gap = 0.0;               // --max-gap SECONDS (0: 3 periods of the denser stream)
+  std::string max_speed = "300,45";   // --max-speed MM,DEG per second
+  int stations = 500;                 // --stations N: at most this many from the streams
 };
 
 // The flags every form shares, checked.
@@ -96,5 +103,11 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
 // (jobs/global_matches.h; --target none and --features choose its MatchSource);
 // jobs::CalibrateGlobal runs the job, report::WriteGlobalResult writes the result file.
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io);
+
+// `calibrate --streams` (calibrate_streams.cc): the flags bound into
+// jobs::StreamCalibrationOptions (jobs/stream_calibration.h); the job runs, the summaries print,
+// the outputs are written.
+void RunCalibrateStreams(const CalibrateFlags& flags, const CalibrateSettings& settings,
+                         const Io& io);
 
 }  // namespace hecal::cli

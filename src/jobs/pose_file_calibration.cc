@@ -40,13 +40,8 @@ bool PoseFileCalibrationOptions::IsValid(std::string* why) const {
   return robot_read.IsValid(why) && camera_read.IsValid(why);
 }
 
-PoseFileCalibration CalibrateFromPoseFiles(const PoseFileCalibrationOptions& options) {
-  RequireValid(options);
-  const io::PoseTable robot = io::ReadPoseTable(options.robot, options.robot_read);
-  const io::PoseTable camera = io::ReadPoseTable(options.camera, options.camera_read);
-  const io::Stations stations = io::PairStations(robot, camera);
-  RefuseSameFile(options);
-
+PairedPoses PairedTablePoses(const PoseFileCalibrationOptions& options, const io::PoseTable& robot,
+                             const io::PoseTable& camera, const io::Stations& stations) {
   PairedPoses poses;
   poses.data.T_base_gripper = stations.robot;
   poses.data.T_camera_target = stations.camera;
@@ -69,6 +64,16 @@ PoseFileCalibration CalibrateFromPoseFiles(const PoseFileCalibrationOptions& opt
   poses.camera_words = options.file_words.camera;
   poses.notes = robot.warnings;
   poses.notes.insert(poses.notes.end(), camera.warnings.begin(), camera.warnings.end());
+  return poses;
+}
+
+PoseFileCalibration CalibrateFromPoseFiles(const PoseFileCalibrationOptions& options) {
+  RequireValid(options);
+  const io::PoseTable robot = io::ReadPoseTable(options.robot, options.robot_read);
+  const io::PoseTable camera = io::ReadPoseTable(options.camera, options.camera_read);
+  const io::Stations stations = io::PairStations(robot, camera);
+  RefuseSameFile(options);
+  const PairedPoses poses = PairedTablePoses(options, robot, camera, stations);
   return {CalibratePairedPoses(poses, options.calibrate, options.all_methods).document};
 }
 

@@ -162,6 +162,40 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
           {"pose_level", pose_level}};
 }
 
+json StreamsJson(const StreamReport& report, double scale, json* time_offset) {
+  json dropped = {{"outside", report.dropped_outside},
+                  {"gap", report.dropped_gap},
+                  {"fast", report.dropped_fast},
+                  {"thinned", report.thinned}};
+  *time_offset = {
+      {"seconds", report.offset},
+      {"sigma", report.offset_sigma ? json(*report.offset_sigma) : json(nullptr)},
+      {"estimated", report.offset_estimated},
+      {"convention", "a camera sample stamped t was taken at robot-clock time t + seconds"}};
+  if (report.offset_estimated) {
+    (*time_offset)["search_window"] = report.search_window;
+    (*time_offset)["coarse_seconds"] =
+        report.coarse_offset ? json(*report.coarse_offset) : json(nullptr);
+    (*time_offset)["coarse_correlation"] = report.coarse_correlation;
+    (*time_offset)["profile_evaluations"] = report.profile_evaluations;
+    Eigen::Matrix<double, 12, 1> cross = report.covariance_with_XZ;
+    cross.segment<3>(3) *= scale;
+    cross.segment<3>(9) *= scale;
+    (*time_offset)["covariance_with_XZ"] =
+        std::vector<double>(cross.data(), cross.data() + cross.size());
+  }
+  return {{"robot_samples", report.robot_samples},
+          {"camera_samples", report.camera_samples},
+          {"stations_from", report.camera_gives_stations ? "camera" : "robot"},
+          {"interpolation", "SO(3)xR3 geodesic (slerp, linear translation)"},
+          {"max_gap_seconds", report.max_gap},
+          {"max_angular_speed_deg_per_s", report.max_angular_speed * kDegreesPerRadian},
+          {"max_linear_speed_per_s", report.max_linear_speed * scale},
+          {"max_stations", report.max_stations},
+          {"candidates", report.candidates},
+          {"dropped", dropped}};
+}
+
 json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   json object = {
@@ -229,6 +263,11 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
   if (document.images) {
     object["refinement"] = "reprojection";
     object["images"] = ImagesJson(document, *document.images);
+  }
+  if (document.streams) {
+    json time_offset;
+    object["streams"] = StreamsJson(*document.streams, scale, &time_offset);
+    object["time_offset"] = time_offset;
   }
   return object;
 }

@@ -195,4 +195,29 @@ void PrintImageResultSummary(std::ostream& out, const ResultDocument& document,
   PrintImageTable(out, document, report);
 }
 
+void PrintStreamSummary(std::ostream& out, const ResultDocument& document) {
+  if (!document.streams) return;
+  const StreamReport& s = *document.streams;
+  const int used = static_cast<int>(document.station_ids.size() - document.rejected.size());
+  out << "\nstreams: robot " << s.robot_samples << " samples, camera " << s.camera_samples
+      << "; stations from the " << (s.camera_gives_stations ? "camera" : "robot")
+      << " stream: " << used << " used of " << s.candidates
+      << " samples (dropped: " << s.dropped_outside << " outside the other stream, "
+      << s.dropped_gap << " at gaps over " << std::setprecision(3) << s.max_gap << " s, "
+      << s.dropped_fast << " in fast motion, " << s.thinned << " thinned; "
+      << document.rejected.size() << " rejected as outliers)\n";
+  out << "time offset (camera stamp t = robot time t + offset): " << std::fixed
+      << std::setprecision(2) << s.offset * 1e3 << " ms";
+  if (s.offset_sigma) out << " ± " << *s.offset_sigma * 1e3 << " ms (1σ)";
+  if (s.offset_estimated) {
+    out << ", fitted with X and Z from the angular-speed correlation's "
+        << (s.coarse_offset ? *s.coarse_offset * 1e3 : 0.0) << " ms (r = " << std::setprecision(3)
+        << s.coarse_correlation << ")";
+  } else {
+    out << (s.coarse_offset ? "" : " (given or unobservable)");
+  }
+  out << "\n";
+  out.unsetf(std::ios::floatfield);
+}
+
 }  // namespace hecal::report

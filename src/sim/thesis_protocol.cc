@@ -29,23 +29,33 @@ Pose RandomPose(std::mt19937_64& rng, double offset) {
   return MakePose(UniformRotation(rng), UniformBox(rng, offset));
 }
 
-// T_target_camera of one station: position in the cube around (0, 0, −d), orientation tilted
-// about the image-plane axes and spun about the optical axis. The nominal orientation (identity)
-// has the optical axis +z pointing at the target origin.
-Pose CameraInTarget(const ProtocolOptions& options, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> tilt(-options.max_tilt, options.max_tilt);
-  std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
-  const double alpha = tilt(rng);
-  const double beta = tilt(rng);
-  const double gamma = spin(rng);
+}  // namespace
+
+Pose CameraInTarget(const ProtocolOptions& options, double alpha, double beta, double gamma,
+                    const Eigen::Vector3d& displacement) {
   const Eigen::Matrix3d R =
       ElementaryRotation(0, alpha) * ElementaryRotation(1, beta) * ElementaryRotation(2, gamma);
-  const Eigen::Vector3d position =
-      Eigen::Vector3d(0.0, 0.0, -options.start_distance) + UniformBox(rng, 0.5 * options.cube_side);
-  return MakePose(R, position);
+  return MakePose(R, Eigen::Vector3d(0.0, 0.0, -options.start_distance) + displacement);
 }
 
-}  // namespace
+HandEyeTruth DrawTruth(const ProtocolOptions& options, std::mt19937_64& rng) {
+  // The flange offset is the small one: X for eye-in-hand (camera on the flange), Z for
+  // eye-to-hand (target on the flange).
+  HandEyeTruth truth;
+  if (options.setup == handeye::Setup::kEyeInHand) {
+    truth.X = RandomPose(rng, options.hand_eye_offset);
+    truth.Z = RandomPose(rng, options.other_offset);
+  } else {
+    truth.X = RandomPose(rng, options.other_offset);
+    truth.Z = RandomPose(rng, options.hand_eye_offset);
+  }
+  return truth;
+}
+
+Pose RobotPoseFor(handeye::Setup setup, const HandEyeTruth& truth, const Pose& T_target_camera) {
+  const Pose A = truth.Z * T_target_camera * truth.X.inverse();  // from Z = A X B
+  return setup == handeye::Setup::kEyeInHand ? A : A.inverse();
+}
 
 handeye::Problem SimulatedData::MeasuredProblem() const {
   return handeye::MakeProblem(setup, T_base_gripper, T_camera_target);
@@ -87,23 +97,21 @@ SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const Noise
   RequireValid(options);
   SimulatedData data;
   data.setup = options.setup;
-  // The flange offset is the small one: X for eye-in-hand (camera on the flange), Z for
-  // eye-to-hand (target on the flange).
-  if (options.setup == handeye::Setup::kEyeInHand) {
-    data.X = RandomPose(rng, options.hand_eye_offset);
-    data.Z = RandomPose(rng, options.other_offset);
-  } else {
-    data.X = RandomPose(rng, options.other_offset);
-    data.Z = RandomPose(rng, options.hand_eye_offset);
-  }
-  const Pose X_inverse = data.X.inverse();
+  const HandEyeTruth truth = DrawTruth(options, rng);
+  data.X = truth.X;
+  data.Z = truth.Z;
+  // Each station: position in the cube around (0, 0, −d), tilted about the image-plane axes and
+  // spun about the optical axis.
+  std::uniform_real_distribution<double> tilt(-options.max_tilt, options.max_tilt);
+  std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
   for (int i = 0; i < options.stations; ++i) {
-    const Pose T_target_camera = CameraInTarget(options, rng);
-    const Pose B = T_target_camera.inverse();             // T_camera_target
-    const Pose A = data.Z * T_target_camera * X_inverse;  // from Z = A X B
-    const Pose T_base_gripper = options.setup == handeye::Setup::kEyeInHand ? A : A.inverse();
-    data.T_base_gripper_true.push_back(T_base_gripper);
-    data.T_camera_target_true.push_back(B);
+    const double alpha = tilt(rng);
+    const double beta = tilt(rng);
+    const double gamma = spin(rng);
+    const Pose T_target_camera =
+        CameraInTarget(options, alpha, beta, gamma, UniformBox(rng, 0.5 * options.cube_side));
+    data.T_base_gripper_true.push_back(RobotPoseFor(options.setup, truth, T_target_camera));
+    data.T_camera_target_true.push_back(T_target_camera.inverse());
   }
   // Noise after the truth so the noise-free data are the same whatever the noise model.
   AddMeasurementNoise(robot_noise, camera_noise, rng, &data);

@@ -35,6 +35,7 @@
 #include "hecal/estimation/calibrate.h"
 #include "hecal/handeye/convention_check.h"
 #include "hecal/io/pose_table.h"
+#include "hecal/jobs/pose_calibration.h"
 #include "hecal/report/result_file.h"
 
 namespace hecal::jobs {
@@ -69,6 +70,11 @@ struct PoseFileCalibrationOptions {
 struct PoseFileCalibration {
   report::ResultDocument document;  // what report::WriteResult writes; one result per method
 };
+
+// Steps 4–5's input: the stations of the two tables (paired by the caller: io::PairStations here,
+// by time for streams, stream_calibration.h) with what the tables and options know of them.
+PairedPoses PairedTablePoses(const PoseFileCalibrationOptions& options, const io::PoseTable& robot,
+                             const io::PoseTable& camera, const io::Stations& stations);
 
 // Steps 1–5 above.
 PoseFileCalibration CalibrateFromPoseFiles(const PoseFileCalibrationOptions& options);

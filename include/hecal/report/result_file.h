@@ -43,6 +43,34 @@ struct ImageReport {
   estimation::CalibrationResult pose_level;  // X, Z before the reprojection refinement
 };
 
+// `hecal calibrate --streams` (docs/streams.md): how the stations were made from two
+// time-stamped streams and the time offset, written as "streams" and "time_offset".
+struct StreamReport {
+  int robot_samples = 0;
+  int camera_samples = 0;
+  bool camera_gives_stations = true;  // the camera stream is the sparser one
+  double max_gap = 0.0;               // seconds
+  double max_angular_speed = 0.0;     // rad/s
+  double max_linear_speed = 0.0;      // m/s
+  int max_stations = 0;
+  int candidates = 0;
+  int dropped_outside = 0;
+  int dropped_gap = 0;
+  int dropped_fast = 0;
+  int thinned = 0;
+  // Time offset: a camera sample stamped t was taken at robot-clock time t + offset (seconds).
+  double offset = 0.0;
+  std::optional<double> offset_sigma;   // when estimated and observable
+  bool offset_estimated = false;        // false: given (--time-offset)
+  double search_window = 0.0;           // seconds, ± of the coarse search
+  std::optional<double> coarse_offset;  // the angular-speed correlation's value, when found
+  double coarse_correlation = 0.0;
+  int profile_evaluations = 0;
+  // Cov((X, Z), offset), (δX, δZ) in metres and radians per second of offset; zero when not
+  // estimated.
+  Eigen::Matrix<double, 12, 1> covariance_with_XZ = Eigen::Matrix<double, 12, 1>::Zero();
+};
+
 struct ResultDocument {
   handeye::Setup setup = handeye::Setup::kEyeInHand;
   io::LengthUnit unit = io::LengthUnit::kMetre;        // output length unit
@@ -52,6 +80,7 @@ struct ResultDocument {
   bool all_methods = false;                            // write {"results": [...]}
   std::vector<MethodFailure> failures;                 // `all` only: methods that refused
   std::optional<ImageReport> images;                   // `calibrate --images` only
+  std::optional<StreamReport> streams;                 // `calibrate --streams` only
 };
 
 // The ids of the stations that were used (station_ids without the rejected), in order: the

@@ -20,6 +20,10 @@
 // summary, the intrinsics before → after ± 1σ when they were refined (fx, fy, cx, cy to 7
 // significant digits, the distortion to 5), then the reprojection RMS over every point with the
 // pixel sigma (given or estimated) and one row per used image: its RMS in px and a "> 3σ" flag.
+//
+// From streams (`--streams`, document.streams set): the samples of each stream, which one gave
+// the stations and how many each rule dropped (docs/streams.md), and the time offset in
+// milliseconds with its 1σ, the coarse correlation's value, or "given".
 #pragma once
 
 #include <ostream>
@@ -40,5 +44,8 @@ void PrintMethodComparison(std::ostream& out, const ResultDocument& document);
 // Starts with a blank line. `camera_before`: the intrinsics the refinement started from.
 void PrintImageResultSummary(std::ostream& out, const ResultDocument& document,
                              const pose::CameraModel& camera_before);
+
+// Starts with a blank line; nothing when document.streams is empty.
+void PrintStreamSummary(std::ostream& out, const ResultDocument& document);
 
 }  // namespace hecal::report

@@ -53,6 +53,22 @@ struct SimulatedData {
   handeye::Problem MeasuredProblem() const;
 };
 
+// The unknowns of one data set, drawn as above (uniform rotations; translations in the cube of the
+// flange offset for the flange's unknown, of other_offset for the other).
+struct HandEyeTruth {
+  Pose X = Pose::Identity();
+  Pose Z = Pose::Identity();
+};
+HandEyeTruth DrawTruth(const ProtocolOptions& options, std::mt19937_64& rng);
+
+// T_target_camera at tilts alpha, beta about the image-plane axes and spin gamma about the optical
+// axis, displaced by `displacement` from the start point (0, 0, −start_distance).
+Pose CameraInTarget(const ProtocolOptions& options, double alpha, double beta, double gamma,
+                    const Eigen::Vector3d& displacement);
+
+// T_base_gripper that puts the camera at T_target_camera (from Z = A X B, problem.h).
+Pose RobotPoseFor(handeye::Setup setup, const HandEyeTruth& truth, const Pose& T_target_camera);
+
 // Throws hecal::InputError when !options.IsValid.
 // The rng draws the truth, then the stations, then the noise (AddMeasurementNoise).
 SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const NoiseModel& robot_noise,

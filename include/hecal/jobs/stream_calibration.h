@@ -1,0 +1,52 @@
+// Calibration from two recorded streams (`hecal calibrate --streams`; docs/streams.md): a robot
+// stream of T_base_gripper and a camera stream of T_camera_target, each a pose table with a
+// `stamp` column on its own clock, at any rates.
+//
+// Steps (CalibrateFromStreams)
+//   1. The options checked; both tables read (io/pose_table.h, each with its read options) and
+//      every row must have a stamp. Stamps above 1e14 are taken as integer nanoseconds (ROS and
+//      most loggers; 1e14 s would be three million years) and converted, with a note. The streams
+//      checked (streams/pose_stream.h: at least 2 samples, finite, strictly increasing).
+//   2. The coarse time offset (streams/time_offset_search.h, ±window), or the offset given.
+//   3. Stations chosen at that offset (streams/stream_stations.h: the sparser stream's samples,
+//      the denser interpolated; never across a gap; not in fast motion; thinned to max_stations
+//      well spread in rotation). Station ids: the sparser table's id, or its stamp.
+//   4. Calibration at that offset as from paired pose files (pose_file_calibration.h steps 4–5:
+//      the convention check, the method, outlier rejection, covariance).
+//   5. Unless the offset was given: the offset fitted jointly with X and Z (streams/time_offset.h)
+//      on the stations step 4 used, with its noise model; then step 4 again at the fitted offset,
+//      and the offset's σ and its covariance with (X, Z) at that result's noise model; (X, Z)'s
+//      covariance gains the offset's share (time_offset.h).
+// The document's `streams` (report::StreamReport) says what was used and the offset.
+//
+// Errors: InputError for invalid options, a table without stamps, bad stamps, streams that do not
+// overlap, too few stations left by the rules (naming how many each rule dropped); those of the
+// tables, the convention check and the calibration pass through. Warnings (in the result): no
+// motion to tell the offset (the offset is then 0 or the one given), a fitted offset on the edge
+// of the window.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "hecal/jobs/pose_file_calibration.h"
+#include "hecal/report/result_file.h"
+#include "hecal/streams/stream_stations.h"
+
+namespace hecal::jobs {
+
+struct StreamCalibrationOptions {
+  PoseFileCalibrationOptions files;   // the two tables, their reading, setup, method, words
+  std::optional<double> time_offset;  // seconds, given: not estimated (--time-offset)
+  double window = 1.0;                // seconds, ± of the coarse search (--time-offset-window)
+  streams::StationRules rules;        // --max-gap, --max-speed, --stations
+  // core/options_check.h: files (PoseFileCalibrationOptions::IsValid), then
+  // StreamCalibrationOptions.time_offset (not finite), .window (not above 0 and finite),
+  // .rules.max_gap (negative or not finite), .rules.max_angular_speed / .max_linear_speed (not
+  // above 0), .rules.max_stations (below 3).
+  bool IsValid(std::string* why) const;
+};
+
+report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& options);
+
+}  // namespace hecal::jobs

@@ -1,0 +1,273 @@
+// Calibration from two recorded streams: stream_calibration.h (docs/streams.md).
+#include "hecal/jobs/stream_calibration.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "hecal/core/error.h"
+#include "hecal/core/options_check.h"
+#include "hecal/estimation/ml.h"
+#include "hecal/handeye/problem.h"
+#include "hecal/streams/time_offset.h"
+#include "hecal/streams/time_offset_search.h"
+
+namespace hecal::jobs {
+namespace {
+
+constexpr double kNanosecondStamps = 1e14;  // stamps above this are integer nanoseconds
+constexpr double kOffsetTolerance = 1e-5;   // seconds, of the profile's minimum
+
+// Step 1: a table as a stream; `note` gets the nanosecond conversion when made.
+streams::PoseStream StreamOf(const io::PoseTable& table, std::vector<std::string>* notes) {
+  streams::PoseStream stream;
+  stream.source = table.source;
+  for (const io::PoseRow& row : table.rows) {
+    if (!row.stamp) {
+      throw InputError(table.source, row.line, "has no stamp",
+                       "--streams needs a `stamp` column (seconds) on every row; `hecal import "
+                       "--format ethz` writes one (docs/streams.md)");
+    }
+    stream.stamps.push_back(*row.stamp);
+    stream.poses.push_back(row.pose);
+    stream.lines.push_back(row.line);
+  }
+  if (!stream.stamps.empty() && std::abs(stream.stamps.front()) > kNanosecondStamps) {
+    for (double& t : stream.stamps) t *= 1e-9;
+    notes->push_back(table.source + ": stamps above 1e14 read as integer nanoseconds");
+  }
+  streams::CheckStream(stream);
+  return stream;
+}
+
+std::string StampId(double t) {
+  char text[40];
+  std::snprintf(text, sizeof text, "t=%.6f", t);
+  return text;
+}
+
+// Step 3's stations as paired poses with ids, for CalibratePairedPoses.
+io::Stations StationsAt(const streams::PoseStream& robot, const streams::PoseStream& camera,
+                        const io::PoseTable& sparse_table, const streams::StreamStations& chosen,
+                        double offset) {
+  const streams::PairedStreamPoses poses = streams::PosesAt(robot, camera, chosen, offset);
+  io::Stations stations{.robot = poses.T_base_gripper, .camera = poses.T_camera_target, .ids = {}};
+  const streams::PoseStream& sparse = chosen.camera_gives_stations ? camera : robot;
+  for (const size_t k : chosen.samples) {
+    const io::PoseRow& row = sparse_table.rows[k];
+    stations.ids.push_back(row.id ? *row.id : StampId(sparse.stamps[k]));
+  }
+  return stations;
+}
+
+std::string Count(int n, const char* what) {
+  return std::to_string(n) + " " + what;
+}
+
+// The profile of time_offset.h on `used` stations with the noise model of `result`, warm-started
+// from the last optimum.
+struct ProfileOnStations {
+  const streams::PoseStream& robot;
+  const streams::PoseStream& camera;
+  streams::StreamStations used;
+  handeye::Setup setup;
+  estimation::MlOptions ml;
+  handeye::Solution last;
+
+  streams::ProfilePoint operator()(double offset) {
+    const streams::PairedStreamPoses poses = streams::PosesAt(robot, camera, used, offset);
+    if (poses.T_base_gripper.empty()) {
+      return {.cost = std::numeric_limits<double>::infinity(), .X = last.X, .Z = last.Z};
+    }
+    const handeye::Problem problem =
+        handeye::MakeProblem(setup, poses.T_base_gripper, poses.T_camera_target);
+    const estimation::MlResult fit = estimation::RefineMl(problem, {last}, ml);
+    last = {.X = fit.X, .Z = fit.Z};
+    return {.cost = fit.cost, .X = fit.X, .Z = fit.Z};
+  }
+};
+
+ProfileOnStations MakeProfile(const streams::PoseStream& robot, const streams::PoseStream& camera,
+                              const streams::StreamStations& chosen,
+                              const report::ResultDocument& document) {
+  const estimation::CalibrationResult& result = document.results.at(0);
+  ProfileOnStations profile{.robot = robot,
+                            .camera = camera,
+                            .used = chosen,
+                            .setup = document.setup,
+                            .ml = {},
+                            .last = {}};
+  profile.used.samples.clear();
+  for (size_t i = 0; i < chosen.samples.size(); ++i) {
+    if (std::find(document.rejected.begin(), document.rejected.end(), static_cast<int>(i)) ==
+        document.rejected.end())
+      profile.used.samples.push_back(chosen.samples[i]);
+  }
+  // A noise model that is exactly zero (noise-free data) would make the whitening singular.
+  constexpr double kFloor = 1e-12;
+  profile.ml.robot_sigma = estimation::PoseSigma{std::max(result.robot_sigma.rotation, kFloor),
+                                                 std::max(result.robot_sigma.translation, kFloor)};
+  profile.ml.camera_sigma =
+      estimation::PoseSigma{std::max(result.camera_sigma.rotation, kFloor),
+                            std::max(result.camera_sigma.translation, kFloor)};
+  profile.ml.camera_excess = result.camera_excess;
+  profile.ml.heavy_tails = false;
+  profile.ml.starts_on_demand = false;
+  profile.ml.max_noise_iterations = 1;
+  profile.last = {.X = result.X, .Z = result.Z};
+  return profile;
+}
+
+}  // namespace
+
+bool StreamCalibrationOptions::IsValid(std::string* why) const {
+  if (!files.IsValid(why)) return false;
+  if (time_offset && !std::isfinite(*time_offset)) {
+    return Invalid(why, "StreamCalibrationOptions.time_offset", "is not a finite number",
+                   "give the offset in seconds (e.g. 0.03), or leave it out to estimate it");
+  }
+  if (!(window > 0.0) || !std::isfinite(window)) {
+    return Invalid(why, "StreamCalibrationOptions.window", "must be a finite number above 0",
+                   "give the half-width of the offset search in seconds (default 1)");
+  }
+  if (!(rules.max_gap >= 0.0) || !std::isfinite(rules.max_gap)) {
+    return Invalid(why, "StreamCalibrationOptions.rules.max_gap", "must be 0 or a finite time",
+                   "give the longest gap to interpolate across in seconds (0: 3 periods)");
+  }
+  if (!(rules.max_angular_speed > 0.0) || !(rules.max_linear_speed > 0.0)) {
+    return Invalid(why, "StreamCalibrationOptions.rules.max_angular_speed",
+                   "the speed limits must be above 0",
+                   "give the fastest motion to take stations in, e.g. --max-speed 45,0.3");
+  }
+  if (rules.max_stations < 3) {
+    return Invalid(why, "StreamCalibrationOptions.rules.max_stations", "must be at least 3",
+                   "give how many stations to keep at most (default 500)");
+  }
+  return true;
+}
+
+report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& options) {
+  RequireValid(options);
+  const PoseFileCalibrationOptions& files = options.files;
+  const io::PoseTable robot_table = io::ReadPoseTable(files.robot, files.robot_read);
+  const io::PoseTable camera_table = io::ReadPoseTable(files.camera, files.camera_read);
+  std::vector<std::string> notes;
+  const streams::PoseStream robot = StreamOf(robot_table, &notes);
+  const streams::PoseStream camera = StreamOf(camera_table, &notes);
+
+  // Step 2.
+  report::StreamReport report;
+  report.robot_samples = static_cast<int>(robot.stamps.size());
+  report.camera_samples = static_cast<int>(camera.stamps.size());
+  report.search_window = options.window;
+  report.offset_estimated = !options.time_offset;
+  const double period = std::max(streams::MedianPeriod(robot), streams::MedianPeriod(camera));
+  double max_gap = options.rules.max_gap;
+  if (max_gap == 0.0) {
+    max_gap = 3.0 * std::min(streams::MedianPeriod(robot), streams::MedianPeriod(camera));
+  }
+  double offset = options.time_offset.value_or(0.0);
+  std::vector<std::string> warnings;
+  if (!options.time_offset) {
+    const streams::CoarseOffset coarse =
+        streams::SearchTimeOffset(robot, camera, options.window, std::max(max_gap, 3 * period));
+    if (coarse.found) {
+      offset = coarse.offset;
+      report.coarse_offset = coarse.offset;
+      report.coarse_correlation = coarse.correlation;
+    } else {
+      report.offset_estimated = false;
+      warnings.push_back(
+          "the streams show no motion to tell the clocks' offset by: stations were paired at "
+          "offset 0 (give --time-offset SECONDS when it is known)");
+    }
+  }
+
+  // Step 3.
+  const double radius = std::max(4.0 * period, 0.05);
+  streams::StationRules rules = options.rules;
+  rules.margin = report.offset_estimated ? 2.0 * radius : 0.0;
+  const streams::StreamStations chosen = streams::ChooseStations(robot, camera, offset, rules);
+  report.camera_gives_stations = chosen.camera_gives_stations;
+  report.max_gap = chosen.max_gap;
+  report.max_angular_speed = rules.max_angular_speed;
+  report.max_linear_speed = rules.max_linear_speed;
+  report.max_stations = rules.max_stations;
+  report.candidates = chosen.candidates;
+  report.dropped_outside = chosen.dropped_outside;
+  report.dropped_gap = chosen.dropped_gap;
+  report.dropped_fast = chosen.dropped_fast;
+  report.thinned = chosen.thinned;
+  if (chosen.samples.size() < 3) {
+    const io::PoseTable& sparse = chosen.camera_gives_stations ? camera_table : robot_table;
+    throw InputError(
+        sparse.source, 0,
+        "only " + std::to_string(chosen.samples.size()) + " of its " +
+            std::to_string(chosen.candidates) + " samples can be stations (" +
+            Count(chosen.dropped_outside, "outside the other stream, ") +
+            Count(chosen.dropped_gap, "at a gap longer than ") + std::to_string(chosen.max_gap) +
+            " s, " + Count(chosen.dropped_fast, "in fast motion)"),
+        "check that both streams cover the same time (the offset search is ±--time-offset-window), "
+        "or relax --max-gap / --max-speed");
+  }
+  const io::PoseTable& sparse_table = chosen.camera_gives_stations ? camera_table : robot_table;
+
+  // Step 4.
+  const auto calibrate_at = [&](double at, const estimation::CalibrateOptions& calibrate,
+                                bool all_methods) {
+    PairedPoses poses = PairedTablePoses(files, robot_table, camera_table,
+                                         StationsAt(robot, camera, sparse_table, chosen, at));
+    poses.notes.insert(poses.notes.begin(), notes.begin(), notes.end());
+    return CalibratePairedPoses(poses, calibrate, all_methods).document;
+  };
+  // When the offset is fitted, this first calibration only gives the noise model and the
+  // stations used: ml without covariance or model check.
+  estimation::CalibrateOptions first = files.calibrate;
+  if (report.offset_estimated) {
+    first.method = estimation::Method::kMl;
+    first.covariance.method = estimation::CovarianceMethod::kNone;
+    first.model_check = false;
+  }
+  report::ResultDocument document =
+      calibrate_at(offset, first, files.all_methods && !report.offset_estimated);
+
+  // Step 5.
+  if (report.offset_estimated) {
+    ProfileOnStations search = MakeProfile(robot, camera, chosen, document);
+    const streams::OffsetMinimum minimum =
+        streams::MinimiseProfile(std::ref(search), offset, radius, 2.0 * radius, kOffsetTolerance);
+    offset = minimum.offset;
+    report.profile_evaluations = minimum.evaluations;
+    if (minimum.on_edge) {
+      warnings.push_back("the fitted time offset lies on the edge of its search, " +
+                         std::to_string(2.0 * radius) +
+                         " s from the angular-speed estimate: the streams' speeds may not "
+                         "match (check the pairing of robot and camera files)");
+    }
+    document = calibrate_at(offset, files.calibrate, files.all_methods);
+    ProfileOnStations at_result = MakeProfile(robot, camera, chosen, document);
+    const streams::ProfilePoint at = at_result(offset);
+    const streams::OffsetUncertainty uncertainty =
+        streams::ProfileUncertainty(std::ref(at_result), offset, at, 1e-3);
+    if (uncertainty.curved) {
+      report.offset_sigma = uncertainty.sigma;
+      report.covariance_with_XZ = uncertainty.slope * uncertainty.sigma * uncertainty.sigma;
+      for (estimation::CalibrationResult& result : document.results)
+        if (result.covariance) result.covariance->covariance += uncertainty.added;
+    } else {
+      warnings.push_back(
+          "the fit does not change with the time offset (too little motion at the stations): "
+          "its σ is unknown and (X, Z)'s covariance leaves it out");
+    }
+  }
+  report.offset = offset;
+  for (estimation::CalibrationResult& result : document.results)
+    result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());
+  document.streams = report;
+  return document;
+}
+
+}  // namespace hecal::jobs

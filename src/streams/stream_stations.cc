@@ -1,0 +1,126 @@
+// Stations from two streams: stream_stations.h (docs/streams.md).
+#include "hecal/streams/stream_stations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hecal::streams {
+namespace {
+
+// The geodesic angle between two rotations.
+double Angle(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  const double c = 0.5 * ((A.transpose() * B).trace() - 1.0);
+  return std::acos(std::clamp(c, -1.0, 1.0));
+}
+
+// Rule 4: farthest-point sampling of `keep` of `candidates` by their rotations; time order kept.
+std::vector<size_t> Thin(const std::vector<size_t>& candidates,
+                         const std::vector<Eigen::Matrix3d>& rotations, size_t keep) {
+  const size_t n = candidates.size();
+  std::vector<double> distance(n, std::numeric_limits<double>::infinity());
+  std::vector<bool> chosen(n, false);
+  size_t next = 0;
+  for (size_t picked = 0; picked < keep; ++picked) {
+    chosen[next] = true;
+    size_t farthest = next;
+    double best = -1.0;
+    for (size_t k = 0; k < n; ++k) {
+      if (chosen[k]) continue;
+      distance[k] = std::min(distance[k], Angle(rotations[next], rotations[k]));
+      if (distance[k] > best) {
+        best = distance[k];
+        farthest = k;
+      }
+    }
+    next = farthest;
+  }
+  std::vector<size_t> kept;
+  for (size_t k = 0; k < n; ++k)
+    if (chosen[k]) kept.push_back(candidates[k]);
+  return kept;
+}
+
+// Whether every interval of `stream` that meets [a, b] (inside the stream) is at most max_gap long.
+bool Covered(const PoseStream& stream, double a, double b, double max_gap) {
+  const std::vector<double>& s = stream.stamps;
+  const auto first = static_cast<size_t>(std::upper_bound(s.begin(), s.end(), a) - s.begin());
+  const auto last = static_cast<size_t>(std::lower_bound(s.begin(), s.end(), b) - s.begin());
+  for (size_t j = std::max<size_t>(first, 1); j <= std::min(last, s.size() - 1); ++j)
+    if (s[j] - s[j - 1] > max_gap) return false;
+  return true;
+}
+
+}  // namespace
+
+StreamStations ChooseStations(const PoseStream& robot, const PoseStream& camera, double offset,
+                              const StationRules& rules) {
+  StreamStations out;
+  const double robot_rate = 1.0 / MedianPeriod(robot);
+  const double camera_rate = 1.0 / MedianPeriod(camera);
+  out.camera_gives_stations = camera_rate <= robot_rate;
+  const PoseStream& sparse = out.camera_gives_stations ? camera : robot;
+  const PoseStream& dense = out.camera_gives_stations ? robot : camera;
+  out.max_gap = rules.max_gap > 0 ? rules.max_gap : 3.0 * MedianPeriod(dense);
+  // The denser stream's clock at a sparse sample's time t: robot time t + offset for camera
+  // samples, camera time t − offset for robot samples.
+  const double sign = out.camera_gives_stations ? 1.0 : -1.0;
+  const double robot_gap = std::max(out.max_gap, 3.0 * MedianPeriod(robot));
+  out.candidates = static_cast<int>(sparse.stamps.size());
+  std::vector<size_t> candidates;
+  std::vector<Eigen::Matrix3d> rotations;
+  for (size_t k = 0; k < sparse.stamps.size(); ++k) {
+    const double t = sparse.stamps[k] + sign * offset;
+    if (t - rules.margin < dense.stamps.front() || t + rules.margin > dense.stamps.back()) {
+      ++out.dropped_outside;
+      continue;
+    }
+    if (!Covered(dense, t - rules.margin, t + rules.margin, out.max_gap)) {
+      ++out.dropped_gap;
+      continue;
+    }
+    const double robot_time = out.camera_gives_stations ? t : sparse.stamps[k];
+    const std::optional<Speed> speed = SpeedAt(robot, robot_time, robot_gap);
+    if (!speed || speed->angular > rules.max_angular_speed ||
+        speed->linear > rules.max_linear_speed) {
+      ++out.dropped_fast;
+      continue;
+    }
+    candidates.push_back(k);
+    const Pose robot_pose =
+        out.camera_gives_stations ? *PoseAt(robot, t, out.max_gap) : sparse.poses[k];
+    rotations.push_back(robot_pose.linear());
+  }
+  const auto keep = static_cast<size_t>(std::max(rules.max_stations, 0));
+  if (candidates.size() > keep) {
+    out.thinned = static_cast<int>(candidates.size() - keep);
+    out.samples = Thin(candidates, rotations, keep);
+  } else {
+    out.samples = candidates;
+  }
+  return out;
+}
+
+PairedStreamPoses PosesAt(const PoseStream& robot, const PoseStream& camera,
+                          const StreamStations& stations, double offset) {
+  PairedStreamPoses out;
+  for (const size_t k : stations.samples) {
+    if (stations.camera_gives_stations) {
+      const std::optional<Pose> A = PoseAt(robot, camera.stamps[k] + offset, stations.max_gap);
+      if (!A) return {};
+      out.T_base_gripper.push_back(*A);
+      out.T_camera_target.push_back(camera.poses[k]);
+      out.camera_stamps.push_back(camera.stamps[k]);
+    } else {
+      const double t = robot.stamps[k] - offset;
+      const std::optional<Pose> B = PoseAt(camera, t, stations.max_gap);
+      if (!B) return {};
+      out.T_base_gripper.push_back(robot.poses[k]);
+      out.T_camera_target.push_back(*B);
+      out.camera_stamps.push_back(t);
+    }
+  }
+  return out;
+}
+
+}  // namespace hecal::streams
