@@ -22,13 +22,13 @@ void RunCalibrateStreams(const CalibrateFlags& flags, const CalibrateSettings& s
   files.all_methods = settings.all;
   files.words = ConventionFlagWords();
   files.file_words = {"--robot", "--camera"};
-  options.time_offset = flags.time_offset;
-  options.window = flags.time_offset_window;
-  options.rules.max_gap = flags.max_gap;
+  options.streams.time_offset = flags.time_offset;
+  options.streams.window = flags.time_offset_window;
+  options.streams.rules.max_gap = flags.max_gap;
   const estimation::PoseSigma speed = ParseSigma("--max-speed", flags.max_speed);
-  options.rules.max_angular_speed = speed.rotation;
-  options.rules.max_linear_speed = speed.translation;
-  options.rules.max_stations = flags.stations;
+  options.streams.rules.max_angular_speed = speed.rotation;
+  options.streams.rules.max_linear_speed = speed.translation;
+  options.streams.rules.max_stations = flags.stations;
   const report::ResultDocument document = jobs::CalibrateFromStreams(options);
   for (size_t k = 0; k < document.results.size(); ++k) {
     if (k > 0) io.out << "\n";

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "hecal/hecal.h"
 #include "list_flags.h"
+#include "simulate_streams.h"
 
 namespace hecal::cli {
 namespace {
@@ -38,9 +39,14 @@ struct SimulateCommand {
   jobs::SimulateOptions options;
   std::string output;
   std::string summary;
+  StreamStudyFlags streams;  // --streams and its flags
 };
 
 void RunSimulate(const SimulateCommand& command, const Io& io) {
+  if (command.streams.streams) {
+    return RunSimulateStreams(command.options, command.streams, command.output, command.summary,
+                              io);
+  }
   RequireValid(command.options);  // before the output paths are checked
   io::CheckOutputs({{"--output", command.output}, {"--summary", command.summary}}, {});
   const study::StudyResult result = jobs::Simulate(command.options);
@@ -103,7 +109,10 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
   simulate
       ->add_option_function<std::string>(
           "--sigma",
-          [&o](const std::string& text) { o.sigmas = ParseNoiseLevels("--sigma", text); },
+          [&o, command](const std::string& text) {
+            o.sigmas = ParseNoiseLevels("--sigma", text);
+            command->streams.sigma_given = true;
+          },
           "Noise levels: n (= n mm and n deg per component) or MM/DEG (list sweeps)")
       ->default_str("0,0.3,1");
   AddMethodListFlag(*simulate, o.methods);
@@ -149,6 +158,7 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
                      "Tell no method the sigmas: estimated from the residuals (the default path)");
   simulate->add_option("--output", command->output, "Per-trial CSV (written atomically)");
   simulate->add_option("--summary", command->summary, "Summary CSV (written atomically)");
+  AddStreamStudyFlags(*simulate, command->streams);
   simulate->footer(kFooter);
   simulate->callback([command, io] { RunSimulate(*command, io); });
 }

@@ -49,6 +49,7 @@
 #include "hecal/jobs/pose_file_calibration.h"
 #include "hecal/jobs/simulate.h"
 #include "hecal/jobs/stream_calibration.h"
+#include "hecal/jobs/stream_study.h"
 #include "hecal/study/study.h"
 #include "hecal/study/study_csv.h"
 #if defined(HECAL_HAVE_VISION)

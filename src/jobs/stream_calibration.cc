@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -34,7 +35,9 @@ streams::PoseStream StreamOf(const io::PoseTable& table, std::vector<std::string
     stream.stamps.push_back(*row.stamp);
     stream.poses.push_back(row.pose);
     stream.lines.push_back(row.line);
+    if (row.id) stream.ids.push_back(*row.id);
   }
+  if (stream.ids.size() != stream.stamps.size()) stream.ids.clear();
   if (!stream.stamps.empty() && std::abs(stream.stamps.front()) > kNanosecondStamps) {
     for (double& t : stream.stamps) t *= 1e-9;
     notes->push_back(table.source + ": stamps above 1e14 read as integer nanoseconds");
@@ -49,19 +52,19 @@ std::string StampId(double t) {
   return text;
 }
 
-// Step 3's stations as paired poses with ids, for CalibratePairedPoses.
+// Step 3's stations as paired poses with ids: the sparser stream's sample ids, or its stamps.
 io::Stations StationsAt(const streams::PoseStream& robot, const streams::PoseStream& camera,
-                        const io::PoseTable& sparse_table, const streams::StreamStations& chosen,
-                        double offset) {
+                        const streams::StreamStations& chosen, double offset) {
   const streams::PairedStreamPoses poses = streams::PosesAt(robot, camera, chosen, offset);
   io::Stations stations{.robot = poses.T_base_gripper, .camera = poses.T_camera_target, .ids = {}};
   const streams::PoseStream& sparse = chosen.camera_gives_stations ? camera : robot;
-  for (const size_t k : chosen.samples) {
-    const io::PoseRow& row = sparse_table.rows[k];
-    stations.ids.push_back(row.id ? *row.id : StampId(sparse.stamps[k]));
-  }
+  for (const size_t k : chosen.samples)
+    stations.ids.push_back(k < sparse.ids.size() ? sparse.ids[k] : StampId(sparse.stamps[k]));
   return stations;
 }
+
+using CalibrateStations = std::function<report::ResultDocument(
+    const io::Stations&, const estimation::CalibrateOptions&, bool all_methods)>;
 
 std::string Count(int n, const char* what) {
   return std::to_string(n) + " " + what;
@@ -121,43 +124,12 @@ ProfileOnStations MakeProfile(const streams::PoseStream& robot, const streams::P
   return profile;
 }
 
-}  // namespace
-
-bool StreamCalibrationOptions::IsValid(std::string* why) const {
-  if (!files.IsValid(why)) return false;
-  if (time_offset && !std::isfinite(*time_offset)) {
-    return Invalid(why, "StreamCalibrationOptions.time_offset", "is not a finite number",
-                   "give the offset in seconds (e.g. 0.03), or leave it out to estimate it");
-  }
-  if (!(window > 0.0) || !std::isfinite(window)) {
-    return Invalid(why, "StreamCalibrationOptions.window", "must be a finite number above 0",
-                   "give the half-width of the offset search in seconds (default 1)");
-  }
-  if (!(rules.max_gap >= 0.0) || !std::isfinite(rules.max_gap)) {
-    return Invalid(why, "StreamCalibrationOptions.rules.max_gap", "must be 0 or a finite time",
-                   "give the longest gap to interpolate across in seconds (0: 3 periods)");
-  }
-  if (!(rules.max_angular_speed > 0.0) || !(rules.max_linear_speed > 0.0)) {
-    return Invalid(why, "StreamCalibrationOptions.rules.max_angular_speed",
-                   "the speed limits must be above 0",
-                   "give the fastest motion to take stations in, e.g. --max-speed 45,0.3");
-  }
-  if (rules.max_stations < 3) {
-    return Invalid(why, "StreamCalibrationOptions.rules.max_stations", "must be at least 3",
-                   "give how many stations to keep at most (default 500)");
-  }
-  return true;
-}
-
-report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& options) {
-  RequireValid(options);
-  const PoseFileCalibrationOptions& files = options.files;
-  const io::PoseTable robot_table = io::ReadPoseTable(files.robot, files.robot_read);
-  const io::PoseTable camera_table = io::ReadPoseTable(files.camera, files.camera_read);
-  std::vector<std::string> notes;
-  const streams::PoseStream robot = StreamOf(robot_table, &notes);
-  const streams::PoseStream camera = StreamOf(camera_table, &notes);
-
+// Steps 2–5 of stream_calibration.h on checked streams; `calibrate` runs step 4 on paired
+// stations.
+report::ResultDocument FitStreams(const streams::PoseStream& robot,
+                                  const streams::PoseStream& camera, const StreamOptions& options,
+                                  const estimation::CalibrateOptions& calibrate_options,
+                                  bool all_methods, const CalibrateStations& calibrate) {
   // Step 2.
   report::StreamReport report;
   report.robot_samples = static_cast<int>(robot.stamps.size());
@@ -187,9 +159,11 @@ report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& opti
   }
 
   // Step 3.
-  const double radius = std::max(4.0 * period, 0.05);
+  // The scan's grid step: χ² is smooth over a few sample periods.
+  const double grid = std::min(std::max(2.0 * period, 0.02), options.window);
   streams::StationRules rules = options.rules;
-  rules.margin = report.offset_estimated ? 2.0 * radius : 0.0;
+  // The fit may move the offset anywhere in the window: stations must have poses there.
+  rules.margin = report.offset_estimated ? options.window + std::abs(offset) : 0.0;
   const streams::StreamStations chosen = streams::ChooseStations(robot, camera, offset, rules);
   report.camera_gives_stations = chosen.camera_gives_stations;
   report.max_gap = chosen.max_gap;
@@ -202,9 +176,8 @@ report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& opti
   report.dropped_fast = chosen.dropped_fast;
   report.thinned = chosen.thinned;
   if (chosen.samples.size() < 3) {
-    const io::PoseTable& sparse = chosen.camera_gives_stations ? camera_table : robot_table;
     throw InputError(
-        sparse.source, 0,
+        (chosen.camera_gives_stations ? camera : robot).source, 0,
         "only " + std::to_string(chosen.samples.size()) + " of its " +
             std::to_string(chosen.candidates) + " samples can be stations (" +
             Count(chosen.dropped_outside, "outside the other stream, ") +
@@ -213,41 +186,36 @@ report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& opti
         "check that both streams cover the same time (the offset search is ±--time-offset-window), "
         "or relax --max-gap / --max-speed");
   }
-  const io::PoseTable& sparse_table = chosen.camera_gives_stations ? camera_table : robot_table;
 
   // Step 4.
-  const auto calibrate_at = [&](double at, const estimation::CalibrateOptions& calibrate,
-                                bool all_methods) {
-    PairedPoses poses = PairedTablePoses(files, robot_table, camera_table,
-                                         StationsAt(robot, camera, sparse_table, chosen, at));
-    poses.notes.insert(poses.notes.begin(), notes.begin(), notes.end());
-    return CalibratePairedPoses(poses, calibrate, all_methods).document;
+  const auto calibrate_at = [&](double at, const estimation::CalibrateOptions& with, bool all) {
+    return calibrate(StationsAt(robot, camera, chosen, at), with, all);
   };
   // When the offset is fitted, this first calibration only gives the noise model and the
   // stations used: ml without covariance or model check.
-  estimation::CalibrateOptions first = files.calibrate;
+  estimation::CalibrateOptions first = calibrate_options;
   if (report.offset_estimated) {
     first.method = estimation::Method::kMl;
     first.covariance.method = estimation::CovarianceMethod::kNone;
     first.model_check = false;
   }
   report::ResultDocument document =
-      calibrate_at(offset, first, files.all_methods && !report.offset_estimated);
+      calibrate_at(offset, first, all_methods && !report.offset_estimated);
 
   // Step 5.
   if (report.offset_estimated) {
     ProfileOnStations search = MakeProfile(robot, camera, chosen, document);
-    const streams::OffsetMinimum minimum =
-        streams::MinimiseProfile(std::ref(search), offset, radius, 2.0 * radius, kOffsetTolerance);
+    const streams::OffsetMinimum minimum = streams::MinimiseProfile(
+        std::ref(search), offset, -options.window, options.window, grid, kOffsetTolerance);
     offset = minimum.offset;
     report.profile_evaluations = minimum.evaluations;
     if (minimum.on_edge) {
-      warnings.push_back("the fitted time offset lies on the edge of its search, " +
-                         std::to_string(2.0 * radius) +
-                         " s from the angular-speed estimate: the streams' speeds may not "
-                         "match (check the pairing of robot and camera files)");
+      warnings.push_back("the fitted time offset lies on the edge of the search window ±" +
+                         std::to_string(options.window) +
+                         " s: widen --time-offset-window, or check that the robot and camera "
+                         "files are of the same recording");
     }
-    document = calibrate_at(offset, files.calibrate, files.all_methods);
+    document = calibrate_at(offset, calibrate_options, all_methods);
     ProfileOnStations at_result = MakeProfile(robot, camera, chosen, document);
     const streams::ProfilePoint at = at_result(offset);
     const streams::OffsetUncertainty uncertainty =
@@ -268,6 +236,72 @@ report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& opti
     result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());
   document.streams = report;
   return document;
+}
+
+}  // namespace
+
+bool StreamCalibrationOptions::IsValid(std::string* why) const {
+  return files.IsValid(why) && streams.IsValid(why);
+}
+
+bool StreamOptions::IsValid(std::string* why) const {
+  if (time_offset && !std::isfinite(*time_offset)) {
+    return Invalid(why, "StreamOptions.time_offset", "is not a finite number",
+                   "give the offset in seconds (e.g. 0.03), or leave it out to estimate it");
+  }
+  if (!(window > 0.0) || !std::isfinite(window)) {
+    return Invalid(why, "StreamOptions.window", "must be a finite number above 0",
+                   "give the half-width of the offset search in seconds (default 1)");
+  }
+  if (!(rules.max_gap >= 0.0) || !std::isfinite(rules.max_gap)) {
+    return Invalid(why, "StreamOptions.rules.max_gap", "must be 0 or a finite time",
+                   "give the longest gap to interpolate across in seconds (0: 3 periods)");
+  }
+  if (!(rules.max_angular_speed > 0.0) || !(rules.max_linear_speed > 0.0)) {
+    return Invalid(why, "StreamOptions.rules.max_angular_speed", "the speed limits must be above 0",
+                   "give the fastest motion to take stations in, e.g. --max-speed 45,0.3");
+  }
+  if (rules.max_stations < 3) {
+    return Invalid(why, "StreamOptions.rules.max_stations", "must be at least 3",
+                   "give how many stations to keep at most (default 500)");
+  }
+  return true;
+}
+
+report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& options) {
+  RequireValid(options);
+  const PoseFileCalibrationOptions& files = options.files;
+  const io::PoseTable robot_table = io::ReadPoseTable(files.robot, files.robot_read);
+  const io::PoseTable camera_table = io::ReadPoseTable(files.camera, files.camera_read);
+  std::vector<std::string> notes;
+  const streams::PoseStream robot = StreamOf(robot_table, &notes);
+  const streams::PoseStream camera = StreamOf(camera_table, &notes);
+  return FitStreams(
+      robot, camera, options.streams, files.calibrate, files.all_methods,
+      [&](const io::Stations& stations, const estimation::CalibrateOptions& with, bool all) {
+        PairedPoses poses = PairedTablePoses(files, robot_table, camera_table, stations);
+        poses.notes.insert(poses.notes.begin(), notes.begin(), notes.end());
+        return CalibratePairedPoses(poses, with, all).document;
+      });
+}
+
+report::ResultDocument CalibrateStreams(const streams::PoseStream& robot,
+                                        const streams::PoseStream& camera,
+                                        const StreamOptions& options,
+                                        const PoseCalibrationOptions& calibration) {
+  RequireValid(calibration);
+  RequireValid(options);
+  streams::CheckStream(robot);
+  streams::CheckStream(camera);
+  return FitStreams(
+      robot, camera, options, calibration.calibrate, calibration.all_methods,
+      [&](const io::Stations& stations, const estimation::CalibrateOptions& with, bool all) {
+        PoseCalibrationOptions at = calibration;
+        at.calibrate = with;
+        at.all_methods = all;
+        at.station_ids = stations.ids;
+        return CalibratePoses(stations.robot, stations.camera, at).document;
+      });
 }
 
 }  // namespace hecal::jobs

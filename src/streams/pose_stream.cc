@@ -85,14 +85,50 @@ std::optional<Pose> PoseAt(const PoseStream& stream, double t, double max_gap) {
   return T;
 }
 
-std::optional<Speed> SpeedAt(const PoseStream& stream, double t, double max_gap) {
-  const std::optional<size_t> k = Bracket(stream, t, max_gap);
-  if (!k) return std::nullopt;
-  const Pose& T0 = stream.poses[*k];
-  const Pose& T1 = stream.poses[*k + 1];
-  const double dt = stream.stamps[*k + 1] - stream.stamps[*k];
-  return Speed{.angular = so3::Log(T0.linear().transpose() * T1.linear()).norm() / dt,
-               .linear = (T1.translation() - T0.translation()).norm() / dt};
+std::optional<Pose> SmoothPoseAt(const PoseStream& stream, double t, double max_gap,
+                                 double bandwidth) {
+  const std::vector<double>& s = stream.stamps;
+  const auto first =
+      static_cast<size_t>(std::upper_bound(s.begin(), s.end(), t - bandwidth) - s.begin());
+  const auto end =
+      static_cast<size_t>(std::lower_bound(s.begin(), s.end(), t + bandwidth) - s.begin());
+  int before = 0, after = 0;
+  for (size_t j = first; j < end; ++j) {
+    if (j > first && s[j] - s[j - 1] > max_gap) return std::nullopt;
+    (s[j] <= t ? before : after) += 1;
+  }
+  if (before < 2 || after < 2) return std::nullopt;
+  size_t nearest = first;
+  for (size_t j = first; j < end; ++j)
+    if (std::abs(s[j] - t) < std::abs(s[nearest] - t)) nearest = j;
+  const Eigen::Matrix3d R_nearest = stream.poses[nearest].linear();
+  // Weighted least squares of y_j = a + b τ_j + c τ_j², τ_j = (t_j − t) / bandwidth.
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Matrix<double, 3, 6> right = Eigen::Matrix<double, 3, 6>::Zero();
+  for (size_t j = first; j < end; ++j) {
+    const double tau = (s[j] - t) / bandwidth;
+    const double u = 1.0 - std::abs(tau * tau * tau);
+    const double weight = u * u * u;
+    const Eigen::Vector3d basis(1.0, tau, tau * tau);
+    Vector6d y;
+    y << so3::Log(R_nearest.transpose() * stream.poses[j].linear()), stream.poses[j].translation();
+    normal += weight * basis * basis.transpose();
+    right += weight * basis * y.transpose();
+  }
+  const Eigen::Matrix<double, 3, 6> coefficients = normal.ldlt().solve(right);
+  Pose T = Pose::Identity();
+  T.linear() = R_nearest * so3::Exp(coefficients.row(0).head<3>().transpose());
+  T.translation() = coefficients.row(0).tail<3>().transpose();
+  return T;
+}
+
+std::optional<Speed> SpeedAt(const PoseStream& stream, double t, double max_gap, double baseline) {
+  const std::optional<Pose> before = PoseAt(stream, t - baseline, max_gap);
+  const std::optional<Pose> after = PoseAt(stream, t + baseline, max_gap);
+  if (!before || !after) return std::nullopt;
+  return Speed{
+      .angular = so3::Log(before->linear().transpose() * after->linear()).norm() / (2 * baseline),
+      .linear = (after->translation() - before->translation()).norm() / (2 * baseline)};
 }
 
 }  // namespace hecal::streams

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "hecal/streams/time_offset_search.h"
+
 namespace hecal::streams {
 namespace {
 
@@ -62,6 +64,8 @@ StreamStations ChooseStations(const PoseStream& robot, const PoseStream& camera,
   const PoseStream& sparse = out.camera_gives_stations ? camera : robot;
   const PoseStream& dense = out.camera_gives_stations ? robot : camera;
   out.max_gap = rules.max_gap > 0 ? rules.max_gap : 3.0 * MedianPeriod(dense);
+  out.smoothing = rules.smoothing > 0 ? rules.smoothing : std::max(0.1, 3.0 * MedianPeriod(dense));
+  const double reach = rules.margin + out.smoothing;
   // The denser stream's clock at a sparse sample's time t: robot time t + offset for camera
   // samples, camera time t − offset for robot samples.
   const double sign = out.camera_gives_stations ? 1.0 : -1.0;
@@ -71,16 +75,16 @@ StreamStations ChooseStations(const PoseStream& robot, const PoseStream& camera,
   std::vector<Eigen::Matrix3d> rotations;
   for (size_t k = 0; k < sparse.stamps.size(); ++k) {
     const double t = sparse.stamps[k] + sign * offset;
-    if (t - rules.margin < dense.stamps.front() || t + rules.margin > dense.stamps.back()) {
+    if (t - reach < dense.stamps.front() || t + reach > dense.stamps.back()) {
       ++out.dropped_outside;
       continue;
     }
-    if (!Covered(dense, t - rules.margin, t + rules.margin, out.max_gap)) {
+    if (!Covered(dense, t - reach, t + reach, out.max_gap)) {
       ++out.dropped_gap;
       continue;
     }
     const double robot_time = out.camera_gives_stations ? t : sparse.stamps[k];
-    const std::optional<Speed> speed = SpeedAt(robot, robot_time, robot_gap);
+    const std::optional<Speed> speed = SpeedAt(robot, robot_time, robot_gap, kSpeedBaseline);
     if (!speed || speed->angular > rules.max_angular_speed ||
         speed->linear > rules.max_linear_speed) {
       ++out.dropped_fast;
@@ -106,14 +110,15 @@ PairedStreamPoses PosesAt(const PoseStream& robot, const PoseStream& camera,
   PairedStreamPoses out;
   for (const size_t k : stations.samples) {
     if (stations.camera_gives_stations) {
-      const std::optional<Pose> A = PoseAt(robot, camera.stamps[k] + offset, stations.max_gap);
+      const std::optional<Pose> A =
+          SmoothPoseAt(robot, camera.stamps[k] + offset, stations.max_gap, stations.smoothing);
       if (!A) return {};
       out.T_base_gripper.push_back(*A);
       out.T_camera_target.push_back(camera.poses[k]);
       out.camera_stamps.push_back(camera.stamps[k]);
     } else {
       const double t = robot.stamps[k] - offset;
-      const std::optional<Pose> B = PoseAt(camera, t, stations.max_gap);
+      const std::optional<Pose> B = SmoothPoseAt(camera, t, stations.max_gap, stations.smoothing);
       if (!B) return {};
       out.T_base_gripper.push_back(robot.poses[k]);
       out.T_camera_target.push_back(*B);

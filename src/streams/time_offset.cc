@@ -84,26 +84,27 @@ Eigen::Matrix<double, 12, 1> Difference(const ProfilePoint& at, const ProfilePoi
 
 }  // namespace
 
-OffsetMinimum MinimiseProfile(const Profile& profile, double start, double radius, double limit,
-                              double tolerance) {
+OffsetMinimum MinimiseProfile(const Profile& profile, double start, double low, double high,
+                              double step, double tolerance) {
   OffsetMinimum out;
-  double centre = start;
-  for (;;) {
-    const double a = std::max(centre - radius, start - limit);
-    const double b = std::min(centre + radius, start + limit);
-    const Brent found =
-        Minimise([&](double offset) { return profile(offset).cost; }, a, b, tolerance);
-    out.evaluations += found.evaluations;
-    out.offset = found.x;
-    const bool low = found.x - a < 4 * tolerance;
-    const bool high = b - found.x < 4 * tolerance;
-    if (!low && !high) return out;
-    if ((low && a <= start - limit) || (high && b >= start + limit)) {
-      out.on_edge = true;
-      return out;
+  double best = start;
+  double best_cost = profile(start).cost;
+  const int points = static_cast<int>(std::ceil((high - low) / step));
+  for (int k = 0; k <= points; ++k) {
+    const double offset = std::min(low + k * step, high);
+    const double cost = profile(offset).cost;
+    if (cost < best_cost) {
+      best = offset;
+      best_cost = cost;
     }
-    centre = found.x + (low ? -0.5 : 0.5) * radius;
   }
+  out.evaluations = points + 2;
+  const Brent found = Minimise([&](double offset) { return profile(offset).cost; },
+                               std::max(best - step, low), std::min(best + step, high), tolerance);
+  out.evaluations += found.evaluations;
+  out.offset = found.fx <= best_cost ? found.x : best;
+  out.on_edge = out.offset - low < 4 * tolerance || high - out.offset < 4 * tolerance;
+  return out;
 }
 
 OffsetUncertainty ProfileUncertainty(const Profile& profile, double offset, const ProfilePoint& at,

@@ -9,24 +9,20 @@
 #include <vector>
 
 #include "hecal/core/error.h"
-#include "hecal/geometry/so3.h"
 
 namespace hecal::streams {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// |Log(R(t−Δ)ᵀ R(t+Δ))| / 2Δ at t = begin + k·h, NaN where the stream has no pose.
+// The angular speed (pose_stream.h) at t = begin + k·h, NaN where the stream has no pose.
 std::vector<double> SpeedSignal(const PoseStream& stream, double begin, double h, size_t n,
                                 double max_gap) {
   std::vector<double> speed(n, kNaN);
   for (size_t k = 0; k < n; ++k) {
-    const double t = begin + static_cast<double>(k) * h;
-    const std::optional<Pose> before = PoseAt(stream, t - kSpeedBaseline, max_gap);
-    const std::optional<Pose> after = PoseAt(stream, t + kSpeedBaseline, max_gap);
-    if (!before || !after) continue;
-    speed[k] =
-        so3::Log(before->linear().transpose() * after->linear()).norm() / (2.0 * kSpeedBaseline);
+    const std::optional<Speed> at =
+        SpeedAt(stream, begin + static_cast<double>(k) * h, max_gap, kSpeedBaseline);
+    if (at) speed[k] = at->angular;
   }
   return speed;
 }

@@ -29,24 +29,40 @@
 #include <optional>
 #include <string>
 
+#include "hecal/jobs/pose_calibration.h"
 #include "hecal/jobs/pose_file_calibration.h"
 #include "hecal/report/result_file.h"
 #include "hecal/streams/stream_stations.h"
 
 namespace hecal::jobs {
 
-struct StreamCalibrationOptions {
-  PoseFileCalibrationOptions files;   // the two tables, their reading, setup, method, words
+// How stations are made of the streams and whether the offset is fitted.
+struct StreamOptions {
   std::optional<double> time_offset;  // seconds, given: not estimated (--time-offset)
   double window = 1.0;                // seconds, ± of the coarse search (--time-offset-window)
   streams::StationRules rules;        // --max-gap, --max-speed, --stations
-  // core/options_check.h: files (PoseFileCalibrationOptions::IsValid), then
-  // StreamCalibrationOptions.time_offset (not finite), .window (not above 0 and finite),
-  // .rules.max_gap (negative or not finite), .rules.max_angular_speed / .max_linear_speed (not
-  // above 0), .rules.max_stations (below 3).
+  // core/options_check.h: false naming StreamOptions.time_offset (not finite), .window (not
+  // above 0 and finite), .rules.max_gap (negative or not finite), .rules.max_angular_speed (a
+  // speed limit not above 0), .rules.max_stations (below 3).
   bool IsValid(std::string* why) const;
 };
 
+struct StreamCalibrationOptions {
+  PoseFileCalibrationOptions files;  // the two tables, their reading, setup, method, words
+  StreamOptions streams;
+  // files (PoseFileCalibrationOptions::IsValid), then streams.
+  bool IsValid(std::string* why) const;
+};
+
+// Steps 1–5 from two pose tables.
 report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& options);
+
+// Steps 1 (the stream check) to 5 from streams in memory (metres), step 4 as CalibratePoses
+// (pose_calibration.h) does it with `calibration` (its station_ids are ignored: the sparser
+// stream's ids, or its stamps, name the stations).
+report::ResultDocument CalibrateStreams(const streams::PoseStream& robot,
+                                        const streams::PoseStream& camera,
+                                        const StreamOptions& options,
+                                        const PoseCalibrationOptions& calibration);
 
 }  // namespace hecal::jobs

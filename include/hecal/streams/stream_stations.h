@@ -2,17 +2,18 @@
 // their paired poses at a time offset.
 //
 // The sparser stream (fewer samples per second) gives the stations: each of its samples is a
-// candidate, and the denser stream is interpolated at that sample's time on its own clock
-// (pose_stream.h; convention of time_offset_search.h: camera time t is robot time t + offset).
+// candidate, and the denser stream's smoothed pose is taken at that sample's time on its own clock
+// (pose_stream.h's SmoothPoseAt over ±smoothing; convention of time_offset_search.h: camera time
+// t is robot time t + offset).
 // The rule, in this order, each drop counted:
-//   1. outside: the denser stream does not cover the sample's time at every offset within
-//      ±margin of the offset (the fit moves the offset that far);
-//   2. gap: the two samples around that time are more than max_gap apart (never interpolated
-//      across; default 3 × the denser stream's median period);
+//   1. outside: the denser stream does not cover the sample's time ± smoothing at every offset
+//      within ±margin of the offset (the fit moves the offset that far);
+//   2. gap: two samples in that span are more than max_gap apart (never smoothed across;
+//      default 3 × the denser stream's median period);
 //   3. fast: the robot moves faster than max_angular_speed or max_linear_speed there (the robot
-//      stream's speed, pose_stream.h): motion blur in the image and interpolation error grow
-//      with speed (defaults 45°/s and 0.3 m/s: at 30 Hz and 10 ms exposure, 0.45° and 3 mm
-//      of blur);
+//      stream's speed over ±kSpeedBaseline, pose_stream.h, time_offset_search.h): motion blur in
+//      the image and interpolation error grow with speed (defaults 45°/s and 0.3 m/s: at 30 Hz and
+//      10 ms exposure, 0.45° and 3 mm of blur);
 //   4. thinned: above max_stations candidates, farthest-point sampling in rotation keeps
 //      max_stations well spread ones — starting from the first candidate, each next station is
 //      the candidate whose robot rotation is farthest (geodesic angle) from every station kept,
@@ -32,12 +33,14 @@ struct StationRules {
   double max_angular_speed = 0.7853981633974483;  // rad/s (45°/s)
   double max_linear_speed = 0.3;                  // m/s
   int max_stations = 500;
-  double margin = 0.0;  // seconds, rule 1
+  double margin = 0.0;     // seconds, rule 1
+  double smoothing = 0.0;  // seconds; 0: max(0.1 s, 3 periods of the denser stream)
 };
 
 struct StreamStations {
   bool camera_gives_stations = true;  // false: the robot stream is the sparser one
   double max_gap = 0.0;               // the bound used (seconds)
+  double smoothing = 0.0;             // the smoothing half-width used (seconds)
   std::vector<size_t> samples;        // the stations: indices into the sparser stream, in order
   int candidates = 0;                 // samples of the sparser stream
   int dropped_outside = 0;
@@ -56,7 +59,7 @@ struct PairedStreamPoses {
   std::vector<double> camera_stamps;  // each station's time on the camera clock
 };
 
-// The stations' poses at `offset`: each station's own sample and the denser stream interpolated
+// The stations' poses at `offset`: each station's own sample and the denser stream's smoothed pose
 // at its time. A station whose interpolated pose is missing at this offset (outside ±margin of the
 // offset it was chosen at) makes the result empty.
 PairedStreamPoses PosesAt(const PoseStream& robot, const PoseStream& camera,

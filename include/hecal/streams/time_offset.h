@@ -8,8 +8,9 @@
 // and ml's cost is minimised over X and Z with the noise model held fixed,
 //     χ²(δ) = min over X, Z of Σ_i r_iᵀ Σ_i⁻¹ r_i         (ml.h),
 // and δ̂ minimises χ²(δ) — the same optimum as minimising over all three at once. δ̂ is found by
-// Brent's method (Brent 1973, "Algorithms for Minimization without Derivatives", ch. 5) in
-// [start − radius, start + radius], the bracket moved when the minimum lies on its edge.
+// scanning χ² over the search window on a grid (and at the angular-speed correlation's value,
+// time_offset_search.h, which slow motion can leave far off), then by Brent's method (Brent 1973,
+// "Algorithms for Minimization without Derivatives", ch. 5) within one grid step of the best.
 //
 // Uncertainty (first order, the same Gaussian approximation as ml's covariance): the profile's
 // curvature gives the offset's variance, σ_δ² = 2 / (d²χ²/dδ²) (three points at δ̂ ± h, h chosen
@@ -38,13 +39,13 @@ using Profile = std::function<ProfilePoint(double offset)>;
 struct OffsetMinimum {
   double offset = 0.0;
   int evaluations = 0;
-  bool on_edge = false;  // still on the edge of the widest bracket allowed (limit)
+  bool on_edge = false;  // the minimum lies on the edge of [low, high]
 };
 
-// δ̂ in [start − radius, start + radius], the bracket moved (at most to |δ − start| ≤ limit)
-// while the minimum lies on its edge; to `tolerance` seconds.
-OffsetMinimum MinimiseProfile(const Profile& profile, double start, double radius, double limit,
-                              double tolerance);
+// δ̂ in [low, high]: χ² at `start` and on the grid low, low + step, …, high; then Brent within
+// ±step of the best, to `tolerance` seconds.
+OffsetMinimum MinimiseProfile(const Profile& profile, double start, double low, double high,
+                              double step, double tolerance);
 
 struct OffsetUncertainty {
   double sigma = 0.0;                   // seconds

@@ -7,21 +7,20 @@
 //
 // Convention: a camera sample stamped t was taken at robot-clock time t + offset.
 //
-// Both speed signals are sampled on one grid of step h = half the smaller median period, each
-// from its own stream over a baseline of ±kSpeedBaseline seconds (|Log(R(t−Δ)ᵀ R(t+Δ))| / 2Δ,
-// poses interpolated, pose_stream.h; the baseline averages the finite difference's noise, which
-// at 30 Hz and 1° per pose would otherwise be ~40°/s). The offset maximises the Pearson
-// correlation of s_camera(t) and s_robot(t + offset) over lags in [−window, window] (steps of h),
-// refined by a parabola through the best lag and its neighbours; lags whose overlap is under
-// kMinOverlap of the shorter stream's span are skipped. This is the search's start value only: the
-// joint fit (time_offset.h) refines it.
+// Both angular-speed signals are sampled on one grid of step h = half the smaller median period,
+// each from its own stream over a baseline of ±kSpeedBaseline seconds (pose_stream.h's SpeedAt).
+// The offset maximises the Pearson correlation of s_camera(t) and s_robot(t + offset) over lags in
+// [−window, window] (steps of h), refined by a parabola through the best lag and its neighbours;
+// lags whose overlap is under kMinOverlap of the shorter stream's span are skipped. Slow, smooth
+// motion makes the peak broad (the speed varies over seconds), so this is only one start of the
+// joint fit (time_offset.h), which scans the whole window too.
 #pragma once
 
 #include "hecal/streams/pose_stream.h"
 
 namespace hecal::streams {
 
-inline constexpr double kSpeedBaseline = 0.1;  // seconds, Δ above
+inline constexpr double kSpeedBaseline = 0.1;  // seconds, each side
 inline constexpr double kMinOverlap = 0.5;     // of the shorter stream's span
 
 struct CoarseOffset {
