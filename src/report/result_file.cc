@@ -123,6 +123,15 @@ json CameraJson(const pose::CameraModel& camera) {
              std::vector<double>(camera.distortion.begin(), camera.distortion.end())}}}};
 }
 
+// [[u, v], ...] rounded to `decimals` decimals (the file's size: see kPointDecimals).
+json RoundedPixels(const std::vector<Eigen::Vector2d>& pixels, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  json out = json::array();
+  for (const Eigen::Vector2d& p : pixels)
+    out.push_back({std::round(p.x() * scale) / scale, std::round(p.y() * scale) / scale});
+  return out;
+}
+
 json ImagesJson(const ResultDocument& document, const ImageReport& report) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   json intrinsics = CameraJson(report.camera);
@@ -137,9 +146,15 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
   json per_image = json::array();
   const std::vector<std::string> used = UsedStationIds(document);
   for (size_t k = 0; k < used.size() && k < report.image_rms_px.size(); ++k) {
-    per_image.push_back({{"id", used[k]},
-                         {"rms_px", report.image_rms_px[k]},
-                         {"outlier", static_cast<bool>(report.image_outlier.at(k))}});
+    json image = {{"id", used[k]},
+                  {"rms_px", report.image_rms_px[k]},
+                  {"outlier", static_cast<bool>(report.image_outlier.at(k))}};
+    if (k < report.image_files.size()) image["file"] = report.image_files[k];
+    if (k < report.image_points_px.size()) {
+      image["points_px"] = RoundedPixels(report.image_points_px[k], kPointDecimals);
+      image["residuals_px"] = RoundedPixels(report.image_residuals_px.at(k), kResidualDecimals);
+    }
+    per_image.push_back(std::move(image));
   }
   json skipped = json::array();
   for (size_t k = 0; k < document.rejected.size() && k < report.skipped_reasons.size(); ++k) {
