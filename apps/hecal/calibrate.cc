@@ -99,6 +99,7 @@ void WriteCalibrateOutputs(const CalibrateFlags& flags, const io::PoseReadOption
     options.output = flags.report;
     options.robot = flags.robot;
     options.robot_read = robot_read;
+    options.images = flags.images;  // --images: the thumbnails
     jobs::WriteCalibrationReport(document, "hecal calibrate --robot " + flags.robot, options);
     io.out << "wrote " << flags.report << "\n";
   }
@@ -132,11 +133,12 @@ void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& set
 
 void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   const auto check_outputs = [&] {
-    io::CheckOutputs({{"--output", flags.output}, {"--report", flags.report}}, {{"--robot", flags.robot},
-                                                    {"--camera", flags.camera},
-                                                    {"--target", flags.target},
-                                                    {"--intrinsics", flags.intrinsics},
-                                                    {"--correspondences", flags.correspondences}});
+    io::CheckOutputs({{"--output", flags.output}, {"--report", flags.report}},
+                     {{"--robot", flags.robot},
+                      {"--camera", flags.camera},
+                      {"--target", flags.target},
+                      {"--intrinsics", flags.intrinsics},
+                      {"--correspondences", flags.correspondences}});
   };
   if (flags.method == "global" || !flags.correspondences.empty()) {
     if (!flags.report.empty()) {
