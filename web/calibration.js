@@ -307,16 +307,18 @@ hecalPage.pages.calibration = function (data, root) {
       .concat([['image size', `${k.width} × ${k.height}`, '', 'px']]);
     s.appendChild(table(['', 'value', '1σ', 'unit'], rows));
     const per = im.per_image;
+    const perPoint = per.every((p) => p.points_px);
     const bars = plot(s, [{type: 'bar', x: per.map((p) => p.id), y: per.map((p) => p.rms_px),
               marker: {color: per.map((p) => p.outlier ? COLORS.flagged : COLORS.used)},
               hovertemplate: 'image %{x}<br>RMS %{y:.3g} px<extra>click to show</extra>'}],
-         {title: {text: 'Reprojection RMS per image (flagged in orange; click a bar to show the image)'},
+         {title: {text: 'Reprojection RMS per image (flagged in orange' +
+                        (perPoint ? '; click a bar to show the image)' : ')')},
           height: 340, xaxis: {title: {text: 'image (station id)'}, type: 'category'},
           yaxis: {title: {text: 'px'}}});
     if (im.skipped.length) {
       s.appendChild(table(['skipped image', 'why'], im.skipped.map((p) => [p.id, p.reason])));
     }
-    if (!per.every((p) => p.points_px)) {
+    if (!perPoint) {
       s.appendChild(el('div', {class: 'note'}, 'The per-point figures (residuals over the image, ' +
         'corner coverage, each image with its corners) need a result file that holds each ' +
         'image\'s corners (images.per_image[].points_px); this result file has none (an older ' +

@@ -99,7 +99,7 @@ hecalPage.imageFigures = (function () {
       `least 3 corners), at the same magnification: the systematic part. A pattern — growing ` +
       `towards the edges, turning about the centre — is a lens model that does not fit; noise ` +
       `points every way and averages out. Click a legend entry to hide it. ${total} corners` +
-      (stride > 1 ? `; ${Math.ceil(total / stride)} drawn (every ${stride}th: above ` +
+      (stride > 1 ? `; ${Math.ceil(total / stride)} drawn (1 in ${stride}: above ` +
        `${MAX_ARROWS} the corners are decimated; the means use every corner).` : '.')));
     const meanTraces = arrowTraces(means.map((s) => [s[0] / s[4], s[1] / s[4]]),
                                    means.map((s) => [s[2] / s[4], s[3] / s[4]]), scale, 1,
