@@ -6,7 +6,8 @@
 # page carries 10⁴ residuals and 10⁴ robot poses (plotted: 2000 and 200, said on the page).
 # The images case is rwhe-kuka2's 28 chessboard images (1920 × 1200 PNG): its result from
 # `calibrate --images` (every corner and residual in the file) reported with `--images`, so the
-# page embeds 28 thumbnails, decoded from the PNGs on every core.
+# page embeds 28 thumbnails, decoded from the PNGs (one at a time, vision/image_read.h) and
+# downscaled and encoded on every core.
 # Prints the median wall time of 5 runs for each. Usage: bench/report_bench.sh [BUILD_DIR [KEEP]]
 # (KEEP: a folder that receives the pages, e.g. to load them with web/report_pages.mjs).
 set -euo pipefail

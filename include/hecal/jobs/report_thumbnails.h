@@ -1,7 +1,8 @@
 // The image thumbnails of a report page as a job step (`hecal report --images DIR`,
 // `calibrate --images --report`, `detect --report`; docs/report.md): the first
 // report::kMaxThumbnails of the images named, each read from the folder and made a
-// report::kThumbnailSide-pixel JPEG (vision/thumbnail.h), decoded in parallel on every core.
+// report::kThumbnailSide-pixel JPEG (vision/thumbnail.h), on every core (the decoding itself one
+// file at a time: vision::ReadGrayImage holds a lock while it captures the codecs' messages).
 // Defined with the vision layer only (the report library reads no image); callers built without
 // it check HECAL_HAVE_VISION.
 //
