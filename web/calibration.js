@@ -5,6 +5,7 @@
 hecalPage.pages.calibration = function (data, root) {
   'use strict';
   const {el, fmt, table, plot, section, CHI2_95_2D, AXES, COLORS} = hecalPage;
+  const {mul, polyTrace, triad, axisTraces, frustum, board} = hecalPage.scene3d;
   // "T_base_camera" → "the camera's pose in the robot base frame".
   function frameWords(frame) {
     const m = /^T_([a-z]+)_([a-z]+)$/.exec(frame);
@@ -212,35 +213,6 @@ hecalPage.pages.calibration = function (data, root) {
   }
 
   // ---- 3D scene ------------------------------------------------------------------------------
-  function mul(A, B) {
-    return A.map((row) => B[0].map((_, j) => row.reduce((s, v, k) => s + v * B[k][j], 0)));
-  }
-  function apply(T, p) {
-    return [0, 1, 2].map((i) => T[i][0] * p[0] + T[i][1] * p[1] + T[i][2] * p[2] + T[i][3]);
-  }
-  // Polylines as one trace: segments separated by nulls.
-  function polyTrace(name, color, lines, width) {
-    const x = [], y = [], z = [];
-    for (const line of lines) {
-      for (const p of line) { x.push(p[0]); y.push(p[1]); z.push(p[2]); }
-      x.push(null); y.push(null); z.push(null);
-    }
-    return {type: 'scatter3d', mode: 'lines', name, x, y, z, line: {color, width: width || 4},
-            hoverinfo: 'name'};
-  }
-  function triad(T, size) {
-    const o = apply(T, [0, 0, 0]);
-    return [0, 1, 2].map((a) => [o, apply(T, [a === 0 ? size : 0, a === 1 ? size : 0, a === 2 ? size : 0])]);
-  }
-  function frustum(T, s) {
-    const o = apply(T, [0, 0, 0]);
-    const c = [[-0.6, -0.45], [0.6, -0.45], [0.6, 0.45], [-0.6, 0.45]].map(([u, v]) => apply(T, [u * s, v * s, s]));
-    return [[o, c[0]], [o, c[1]], [o, c[2]], [o, c[3]], [c[0], c[1], c[2], c[3], c[0]]];
-  }
-  function board(T, s) {
-    return [[[0, 0], [s, 0], [s, s], [0, s], [0, 0]].map(([u, v]) => apply(T, [u, v, 0]))];
-  }
-
   function scene(r) {
     const unit = r.units.length;
     const poses = data.robot_poses;
@@ -250,8 +222,6 @@ hecalPage.pages.calibration = function (data, root) {
     // Scene size: the largest distance of a drawn origin from the base.
     const origins = [X, Z].concat(poses).map((T) => Math.hypot(T[0][3], T[1][3], T[2][3]));
     const size = 0.12 * Math.max(...origins, 1e-9);
-    const traces = [];
-    const axisColors = ['#d62728', '#2ca02c', '#1f77b4'];
     const frames = [['base', I]];
     const cams = [], boards = [];
     if (eyeInHand) {
@@ -264,10 +234,7 @@ hecalPage.pages.calibration = function (data, root) {
       poses.forEach((G) => boards.push(board(mul(G, Z), size * 0.6)));
     }
     const grippers = poses.map((G) => triad(G, size * 0.5));
-    [0, 1, 2].forEach((a) => {
-      traces.push(polyTrace(`${AXES[a]} axes`, axisColors[a],
-        frames.map(([, T]) => triad(T, size * 1.5)[a]).concat(grippers.map((g) => g[a])), 5));
-    });
+    const traces = axisTraces(frames.map(([, T]) => triad(T, size * 1.5)).concat(grippers));
     traces.push(polyTrace('camera' + (cams.length > 5 ? 's' : ''), '#555', cams, 3));
     traces.push(polyTrace('target' + (boards.length > 1 ? 's' : ''), '#8e44ad', boards.flat(), 3));
     traces.push({type: 'scatter3d', mode: 'text+markers', name: 'frames',
@@ -327,23 +294,38 @@ hecalPage.pages.calibration = function (data, root) {
   function images(r) {
     const im = r.images;
     const k = im.intrinsics;
-    const s = section('From images', el('p', {}, `Intrinsics (${k.source}); reprojection RMS ` +
-      `${fmt(im.reprojection_rms_px)} px; pixel noise ${fmt(im.pixel_sigma_px)} px` +
-      (im.pixel_sigma_estimated ? ' (estimated).' : ' (given).')));
-    const names = ['fx', 'fy', 'cx', 'cy'];
+    const s = section('From images', el('p', {}, `Intrinsics (${k.source}` +
+      (k.rms_px !== undefined ? `, fit RMS ${fmt(k.rms_px, 3)} px` : '') + `); reprojection ` +
+      `RMS ${fmt(im.reprojection_rms_px)} px over every corner at the result; pixel noise ` +
+      `${fmt(im.pixel_sigma_px)} px` + (im.pixel_sigma_estimated ? ' (estimated).' : ' (given).')));
+    // 1σ of (fx, fy, cx, cy, k1, k2, p1, p2, k3) when refined with X and Z (--refine-intrinsics).
     const sig = k.sigma ? k.sigma.values : null;
-    s.appendChild(table(['', 'value (px)', '1σ (px)'],
-      names.map((n, i) => [n, k[n], sig ? sig[i] : 'not refined'])
-        .concat([['image size', `${k.width} × ${k.height}`, '']])));
+    const coefficients = (k.distortion && k.distortion.coefficients) || [];
+    const rows = ['fx', 'fy', 'cx', 'cy'].map((n, i) => [n, k[n], sig ? sig[i] : 'not refined', 'px'])
+      .concat(['k1', 'k2', 'p1', 'p2', 'k3'].slice(0, coefficients.length).map((n, i) =>
+        [n, coefficients[i], sig ? sig[4 + i] : 'not refined', '']))
+      .concat([['image size', `${k.width} × ${k.height}`, '', 'px']]);
+    s.appendChild(table(['', 'value', '1σ', 'unit'], rows));
     const per = im.per_image;
-    plot(s, [{type: 'bar', x: per.map((p) => p.id), y: per.map((p) => p.rms_px),
+    const perPoint = per.every((p) => p.points_px);
+    const bars = plot(s, [{type: 'bar', x: per.map((p) => p.id), y: per.map((p) => p.rms_px),
               marker: {color: per.map((p) => p.outlier ? COLORS.flagged : COLORS.used)},
-              hovertemplate: 'image %{x}<br>RMS %{y:.3g} px<extra></extra>'}],
-         {title: {text: 'Reprojection RMS per image (flagged in orange)'}, height: 340,
-          xaxis: {title: {text: 'image (station id)'}, type: 'category'}, yaxis: {title: {text: 'px'}}});
+              hovertemplate: 'image %{x}<br>RMS %{y:.3g} px<extra>click to show</extra>'}],
+         {title: {text: 'Reprojection RMS per image (flagged in orange' +
+                        (perPoint ? '; click a bar to show the image)' : ')')},
+          height: 340, xaxis: {title: {text: 'image (station id)'}, type: 'category'},
+          yaxis: {title: {text: 'px'}}});
     if (im.skipped.length) {
       s.appendChild(table(['skipped image', 'why'], im.skipped.map((p) => [p.id, p.reason])));
     }
+    if (!perPoint) {
+      s.appendChild(el('div', {class: 'note'}, 'The per-point figures (residuals over the image, ' +
+        'corner coverage, each image with its corners) need a result file that holds each ' +
+        'image\'s corners (images.per_image[].points_px); this result file has none (an older ' +
+        `hecal wrote it): calibrate again with this hecal (${data.hecal_version}) to see them.`));
+      return;
+    }
+    hecalPage.imageFigures(s, per, k.width, k.height, data.thumbnails, [bars]);
   }
 
   // ---- the page ------------------------------------------------------------------------------

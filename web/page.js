@@ -43,6 +43,57 @@ const hecalPage = (function () {
     return s;
   }
 
+  // ---- 3D scenes (the calibration page's robot scene, the detect page's cameras) ------------
+  // Poses are 4×4 row arrays; polylines are arrays of [x, y, z] points.
+  const scene3d = (function () {
+    const AXIS_COLORS = ['#d62728', '#2ca02c', '#1f77b4'];  // x red, y green, z blue
+    function mul(A, B) {
+      return A.map((row) => B[0].map((_, j) => row.reduce((s, v, k) => s + v * B[k][j], 0)));
+    }
+    function apply(T, p) {
+      return [0, 1, 2].map((i) => T[i][0] * p[0] + T[i][1] * p[1] + T[i][2] * p[2] + T[i][3]);
+    }
+    // The inverse of a rigid transform: [Rᵀ, −Rᵀt].
+    function invert(T) {
+      const R = [0, 1, 2].map((i) => [0, 1, 2].map((j) => T[j][i]));
+      const t = R.map((row) => -(row[0] * T[0][3] + row[1] * T[1][3] + row[2] * T[2][3]));
+      return [[...R[0], t[0]], [...R[1], t[1]], [...R[2], t[2]], [0, 0, 0, 1]];
+    }
+    // Polylines as one trace: segments separated by nulls.
+    function polyTrace(name, color, lines, width) {
+      const x = [], y = [], z = [];
+      for (const line of lines) {
+        for (const p of line) { x.push(p[0]); y.push(p[1]); z.push(p[2]); }
+        x.push(null); y.push(null); z.push(null);
+      }
+      return {type: 'scatter3d', mode: 'lines', name, x, y, z, line: {color, width: width || 4},
+              hoverinfo: 'name'};
+    }
+    // A pose's x, y, z axes of length `size`: three segments.
+    function triad(T, size) {
+      const o = apply(T, [0, 0, 0]);
+      return [0, 1, 2].map((a) => [o, apply(T, [a === 0 ? size : 0, a === 1 ? size : 0, a === 2 ? size : 0])]);
+    }
+    // Triads as three traces, one per axis colour.
+    function axisTraces(triads, width) {
+      return [0, 1, 2].map((a) => polyTrace(`${AXES[a]} axes`, AXIS_COLORS[a],
+                                            triads.map((t) => t[a]), width || 5));
+    }
+    // A camera at T looking along its z axis (x right, y down), of depth s.
+    function frustum(T, s) {
+      const o = apply(T, [0, 0, 0]);
+      const c = [[-0.6, -0.45], [0.6, -0.45], [0.6, 0.45], [-0.6, 0.45]].map(([u, v]) => apply(T, [u * s, v * s, s]));
+      return [[o, c[0]], [o, c[1]], [o, c[2]], [o, c[3]], [c[0], c[1], c[2], c[3], c[0]]];
+    }
+    // A planar target at T: the rectangle [x0, x1] × [y0, y1] of its z = 0 plane (a square of
+    // side `x0` when only that is given).
+    function board(T, x0, y0, x1, y1) {
+      if (y0 === undefined) [x1, y1, x0, y0] = [x0, x0, 0, 0];
+      return [[[x0, y0], [x1, y0], [x1, y1], [x0, y1], [x0, y0]].map(([u, v]) => apply(T, [u, v, 0]))];
+    }
+    return {mul, apply, invert, polyTrace, triad, axisTraces, frustum, board};
+  })();
+
   function render() {
     const data = JSON.parse(document.getElementById('hecal-data').textContent);
     const page = hecalPage.pages[data.kind];
@@ -52,5 +103,6 @@ const hecalPage = (function () {
     }
     page(data, root);
   }
-  return {root, el, fmt, table, plot, section, render, CHI2_95_2D, AXES, COLORS, pages: {}};
+  return {root, el, fmt, table, plot, section, render, scene3d, CHI2_95_2D, AXES, COLORS,
+          pages: {}};
 })();

@@ -99,6 +99,7 @@ void WriteCalibrateOutputs(const CalibrateFlags& flags, const io::PoseReadOption
     options.output = flags.report;
     options.robot = flags.robot;
     options.robot_read = robot_read;
+    options.images = flags.images;  // --images: the thumbnails
     jobs::WriteCalibrationReport(document, "hecal calibrate --robot " + flags.robot, options);
     io.out << "wrote " << flags.report << "\n";
   }

@@ -143,7 +143,65 @@ TEST_F(CalibrateImagesTest, RecoversXAndZFromRenderedImages) {
     EXPECT_EQ(result["covariance"]["X"].size(), 6u);
     EXPECT_EQ(images["pose_level"]["method"], "ml");
     EXPECT_NE(run.out.find("reprojection: RMS"), std::string::npos) << run.out;
+    // The per-point fields: the image's file, its 54 corners and their residuals at the result.
+    const json& image = images["per_image"][3];
+    EXPECT_EQ(image["file"], "view_03.png");
+    ASSERT_EQ(image["points_px"].size(), 54u);
+    ASSERT_EQ(image["residuals_px"].size(), 54u);
+    double squared = 0.0;
+    for (const json& r : image["residuals_px"])
+      squared += std::pow(r[0].get<double>(), 2) + std::pow(r[1].get<double>(), 2);
+    EXPECT_NEAR(std::sqrt(squared / 54.0), image["rms_px"].get<double>(), 1e-3);
   }
+}
+
+// The page of a result from images (docs/report.md, "From images"): `calibrate --report` and
+// `hecal report --images DIR` embed one thumbnail per used image; an image missing from the
+// folder given is refused (exit 2, named) and nothing is written.
+TEST_F(CalibrateImagesTest, ReportWithThumbnailsAndAMissingImage) {
+  const handeye::Setup setup = handeye::Setup::kEyeInHand;
+  std::vector<std::string> args = Args(setup, RobotFile(setup, AllViews(), false));
+  args.insert(args.end(), {"--report", Path("calibrate.html")});
+  const cli_test::Outcome run = Hecal(args);
+  ASSERT_EQ(run.code, 0) << run.err;
+  const auto thumbnails = [&](const std::string& page) {
+    const std::string text = Read(page);
+    size_t n = 0;
+    for (size_t at = text.find("data:image/jpeg;base64,"); at != std::string::npos;
+         at = text.find("data:image/jpeg;base64,", at + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_EQ(thumbnails("calibrate.html"), static_cast<size_t>(kViews));
+  const cli_test::Outcome report = Hecal({"report", Path("result.json"), "--images",
+                                          RenderDir().string(), "--output", Path("report.html")});
+  ASSERT_EQ(report.code, 0) << report.err;
+  EXPECT_EQ(thumbnails("report.html"), static_cast<size_t>(kViews));
+
+  std::filesystem::create_directories(dir_ / "partial");
+  for (int i = 0; i < kViews; ++i) {
+    if (i == 5) continue;
+    std::filesystem::copy_file(RenderDir() / (ViewName(i) + ".png"),
+                               dir_ / "partial" / (ViewName(i) + ".png"));
+  }
+  const cli_test::Outcome missing = Hecal(
+      {"report", Path("result.json"), "--images", Path("partial"), "--output", Path("bad.html")});
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("view_05.png: the image of station 'view_05' is not in --images"),
+            std::string::npos)
+      << missing.err;
+  EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("bad.html")));
+  // --images for a result that is not from images.
+  json poses = json::parse(Read("result.json"));
+  poses.erase("images");
+  poses.erase("refinement");
+  Write("poses.json", poses.dump());
+  const cli_test::Outcome not_images = Hecal(
+      {"report", Path("poses.json"), "--images", Path("partial"), "--output", Path("bad.html")});
+  EXPECT_EQ(not_images.code, 2);
+  EXPECT_NE(not_images.err.find("is not from images"), std::string::npos) << not_images.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("bad.html")));
 }
 
 // --refine-intrinsics from intrinsics 1% / 2 px off (6 px in focal length): the refined focal

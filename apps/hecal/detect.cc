@@ -27,7 +27,8 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
   const std::string camera_path = flags.intrinsics.empty() ? paths.camera : "";
   io::CheckOutputs({{"--output", flags.output},
                     {"--output (points)", paths.points},
-                    {"--output (intrinsics)", camera_path}},
+                    {"--output (intrinsics)", camera_path},
+                    {"--report", flags.report}},
                    {{"--target", flags.target}, {"--intrinsics", flags.intrinsics}});
   const jobs::PoseDetection result = jobs::DetectCameraPoses(options, PrintingCallbacks(io));
 
@@ -37,10 +38,15 @@ void RunDetect(const DetectFlags& flags, const Io& io) {
   if (result.camera_yaml) {
     outputs.push_back({"--output (intrinsics)", camera_path, *result.camera_yaml});
   }
+  if (!flags.report.empty()) {
+    outputs.push_back({"--report", flags.report,
+                       jobs::FormatDetectionReport(result.set, flags.images, flags.intrinsics)});
+  }
   io::WriteFilesAtomically(outputs);
   io.out << "hecal: wrote " << result.table.rows.size() << " poses to " << flags.output
          << " (T_camera_target, m, quaternion), points to " << paths.points
-         << (result.camera_yaml ? ", intrinsics to " + paths.camera : std::string()) << "\n";
+         << (result.camera_yaml ? ", intrinsics to " + paths.camera : std::string())
+         << (flags.report.empty() ? std::string() : ", the page to " + flags.report) << "\n";
 }
 
 #else
@@ -69,6 +75,9 @@ void RegisterDetectCommand(CLI::App& app, const Io& io) {
       ->add_option("--output", flags->output,
                    "Pose table of T_camera_target (CSV); also writes <output stem>.points.csv")
       ->required();
+  command->add_option("--report", flags->report,
+                      "Interactive HTML page of the detections (docs/report.md), e.g. "
+                      "detect.html: corners, residuals, coverage, thumbnails, camera poses");
   AddWholeNumber(*command, "--threads", flags->threads,
                  "Detection threads, 0 to 256 (default 0 = every core)");
   command->callback([flags, &io] { RunDetect(*flags, io); });

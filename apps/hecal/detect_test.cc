@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
@@ -169,6 +170,42 @@ TEST_F(DetectTest, PosesWithGivenIntrinsicsMatchTheRenderedTruth) {
   }
   EXPECT_LT(worst, 0.3);
   EXPECT_FALSE(std::filesystem::exists(Path("camera.camera.yaml")));  // intrinsics were given
+}
+
+// --report: the detect page (docs/report.md, "The detect page"), written with the other outputs:
+// every used image with its corners, residuals, pose and thumbnail.
+TEST_F(DetectTest, ReportIsTheDetectPage) {
+  const std::string images = FirstViews(3);
+  const cli_test::Outcome run =
+      Hecal({"detect", "--images", images, "--target", TargetFile(), "--intrinsics", CameraFile(),
+             "--output", Path("camera.csv"), "--report", Path("detect.html")});
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("the page to " + Path("detect.html")), std::string::npos) << run.out;
+  const std::string page = Read("detect.html");
+  const size_t begin = page.find("<script type=\"application/json\" id=\"hecal-data\">");
+  ASSERT_NE(begin, std::string::npos);
+  const size_t start = page.find('>', begin) + 1;
+  const nlohmann::json data =
+      nlohmann::json::parse(page.substr(start, page.find("</script>", start) - start));
+  EXPECT_EQ(data["kind"], "detect");
+  ASSERT_EQ(data["per_image"].size(), 3u);
+  const nlohmann::json& image = data["per_image"][1];
+  EXPECT_EQ(image["id"], "view_01");
+  EXPECT_EQ(image["file"], "view_01.png");
+  EXPECT_EQ(image["points_px"].size(), 54u);
+  EXPECT_EQ(image["residuals_px"].size(), 54u);
+  EXPECT_LT(image["rms_px"].get<double>(), 0.2);
+  EXPECT_EQ(data["thumbnails"]["count"], 3);
+  EXPECT_EQ(
+      data["thumbnails"]["by_id"]["view_02"].get<std::string>().rfind("data:image/jpeg;base64,", 0),
+      0u);
+  // The page is one of the outputs checked before detection: it may not overwrite an input.
+  const cli_test::Outcome clash =
+      Hecal({"detect", "--images", images, "--target", TargetFile(), "--intrinsics", CameraFile(),
+             "--output", Path("other.csv"), "--report", TargetFile()});
+  EXPECT_EQ(clash.code, 2);
+  EXPECT_NE(clash.err.find("--report"), std::string::npos) << clash.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("other.csv")));
 }
 
 TEST_F(DetectTest, EstimatesTheIntrinsicsWhenNotGiven) {

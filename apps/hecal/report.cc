@@ -1,5 +1,6 @@
-// `hecal report RESULT.json --output report.html [--robot robot.csv …]`: the interactive HTML
-// page of a calibration result (docs/report.md, docs/cli.md#report); jobs::WriteCalibrationReport.
+// `hecal report RESULT.json --output report.html [--robot robot.csv …] [--images DIR]`: the
+// interactive HTML page of a calibration result (docs/report.md, docs/cli.md#report);
+// jobs::WriteCalibrationReport.
 #include <CLI/CLI.hpp>
 #include <memory>
 
@@ -18,6 +19,8 @@ void RegisterReportCommand(CLI::App& app, const Io& io) {
   command->add_option("--output", options->output, "The page, e.g. report.html")->required();
   command->add_option("--robot", options->robot,
                       "The robot poses the result was calibrated from, for the 3D scene");
+  command->add_option("--images", options->images,
+                      "The image folder of a result of calibrate --images, for the thumbnails");
   AddLengthUnitFlag(*command, "--units", options->robot_read.units,
                     "With --robot: length unit of columns without a suffix (m or mm)");
   command->add_flag("--degrees", options->robot_read.degrees,

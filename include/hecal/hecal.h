@@ -55,9 +55,10 @@
 #if defined(HECAL_HAVE_VISION)
 // The jobs that read images: calibration from images, detection, pose by any method name
 // (OpenCV's PnP too), target-free matches, contour tracking and rendering, OpenCV's hand-eye
-// functions as the benchmark's peer.
+// functions as the benchmark's peer; the detect page of the HTML report.
 #include "hecal/jobs/contour_rendering.h"
 #include "hecal/jobs/contour_tracking.h"
+#include "hecal/jobs/detection_report.h"
 #include "hecal/jobs/global_matches.h"
 #include "hecal/jobs/image_calibration.h"
 #include "hecal/jobs/image_folder_calibration.h"

@@ -22,6 +22,13 @@ namespace {
 
 using Parameters = std::array<double, kPoseAmbientSize>;
 
+// Σ ‖r_k‖² of pixel residuals (px²).
+double SquaredSum(const std::vector<Eigen::Vector2d>& residuals) {
+  double sum = 0.0;
+  for (const Eigen::Vector2d& r : residuals) sum += r.squaredNorm();
+  return sum;
+}
+
 struct VarianceComponent {
   double squared_sum = 0.0;  // of the whitened residuals of the group
   double redundancy = 0.0;   // m_k − tr(N⁻¹ N_k)
@@ -186,15 +193,16 @@ class Refinement {
   Pose G(size_t i) const { return PoseFromParameters(g_[i].data()); }
   pose::CameraModel Camera() const { return pose::WithIntrinsics(options_.camera, k_.data()); }
 
-  // Squared pixel error of every point of station i, summed (px²), and the point count.
-  double StationSquaredSum(size_t i) const {
+  // The pixel error π(B P_k) − u_k of every point of station i (px).
+  std::vector<Eigen::Vector2d> StationResiduals(size_t i) const {
     const Pose B = CameraFromUnknowns(options_.setup, X(), Z(), G(i));
     const pose::CameraModel camera = Camera();
-    double sum = 0.0;
+    std::vector<Eigen::Vector2d> residuals;
+    residuals.reserve(images_[i].target.size());
     for (size_t k = 0; k < images_[i].target.size(); ++k) {
-      sum += (pose::Project(camera, B * images_[i].target[k]) - images_[i].pixels[k]).squaredNorm();
+      residuals.push_back(pose::Project(camera, B * images_[i].target[k]) - images_[i].pixels[k]);
     }
-    return sum;
+    return residuals;
   }
 
  private:
@@ -264,7 +272,7 @@ class Refinement {
 
   double PixelSquaredSum() const {
     double sum = 0.0;
-    for (size_t i = 0; i < images_.size(); ++i) sum += StationSquaredSum(i);
+    for (size_t i = 0; i < images_.size(); ++i) sum += SquaredSum(StationResiduals(i));
     return sum;
   }
 
@@ -400,7 +408,8 @@ ReprojectionResult RefineReprojection(const std::vector<Pose>& T_base_gripper,
   double total = 0.0;
   for (size_t i = 0; i < images.size(); ++i) {
     result.T_base_gripper.push_back(refinement.G(i));
-    const double squared = refinement.StationSquaredSum(i);
+    result.residuals_px.push_back(refinement.StationResiduals(i));
+    const double squared = SquaredSum(result.residuals_px.back());
     total += squared;
     const double n = std::max<double>(1.0, static_cast<double>(images[i].target.size()));
     result.image_rms_px.push_back(std::sqrt(squared / n));

@@ -38,18 +38,20 @@ std::string OutlierReason(const estimation::ImageCalibrationResult& result, size
 }  // namespace
 
 report::ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
-                                   estimation::ImageCalibrationOptions options) {
+                                           estimation::ImageCalibrationOptions options) {
   const size_t used_count =
       static_cast<size_t>(std::count_if(input.skipped.begin(), input.skipped.end(),
                                         [](const std::string& reason) { return reason.empty(); }));
-  if (input.skipped.size() != input.image_ids.size() || used_count != input.stations.size()) {
+  if (input.skipped.size() != input.image_ids.size() || used_count != input.stations.size() ||
+      (!input.image_files.empty() && input.image_files.size() != input.image_ids.size())) {
     throw InputError("image calibration", 0,
                      std::to_string(input.image_ids.size()) + " images, " +
-                         std::to_string(input.skipped.size()) + " skip reasons and " +
+                         std::to_string(input.skipped.size()) + " skip reasons, " +
+                         std::to_string(input.image_files.size()) + " file names and " +
                          std::to_string(input.stations.size()) + " stations for " +
                          std::to_string(used_count) + " used images",
-                     "give one skip reason per image (empty when used) and one station per "
-                     "used image");
+                     "give one skip reason (empty when used) and one file name (or none) per "
+                     "image, and one station per used image");
   }
   report::ResultDocument document;
   document.unit = input.unit;
@@ -108,6 +110,17 @@ report::ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
   report.rms_px = result.reprojection.rms_px;
   report.image_rms_px = result.reprojection.image_rms_px;
   report.image_outlier = result.reprojection.image_outlier;
+  // The used stations (not rejected by the calibration), which the per-image vectors follow.
+  const std::vector<int>& calibration_rejected = result.result.rejected;
+  for (size_t s = 0, k = 0; s < input.stations.size(); ++s) {
+    if (std::find(calibration_rejected.begin(), calibration_rejected.end(), static_cast<int>(s)) !=
+        calibration_rejected.end())
+      continue;
+    if (!input.image_files.empty())
+      report.image_files.push_back(input.image_files[station_image[s]]);
+    report.image_points_px.push_back(input.stations[s].points.pixels);
+    report.image_residuals_px.push_back(result.reprojection.residuals_px.at(k++));
+  }
   report.pose_level = result.pose_level;
   CheckFiniteResult(result.result);
   document.results.push_back(std::move(result.result));

@@ -6,8 +6,8 @@
 
 #include "hecal/core/options_check.h"
 #include "hecal/io/quaternion_columns.h"
-#include "hecal/jobs/image_front_end.h"
 #include "hecal/jobs/image_calibration.h"
+#include "hecal/jobs/image_front_end.h"
 
 namespace hecal::jobs {
 
@@ -37,6 +37,7 @@ ImageFolderCalibration CalibrateFromImageFolder(const ImageFolderCalibrationOpti
   for (size_t i = 0; i < set.images.size(); ++i) {
     const vision::ImageRecord& image = set.images[i];
     input.image_ids.push_back(image.id());
+    input.image_files.push_back(image.name);
     input.skipped.push_back(image.skipped);
     if (!image.used()) continue;
     estimation::ImageStation station;

@@ -1,6 +1,8 @@
 // Camera poses from a folder of target images: see pose_detection.h.
 #include "hecal/jobs/pose_detection.h"
 
+#include <utility>
+
 #include "hecal/core/options_check.h"
 #include "hecal/io/camera_file.h"
 #include "hecal/io/delimited_text.h"
@@ -22,7 +24,7 @@ PoseDetection DetectCameraPoses(const PoseDetectionOptions& options,
   RequireValid(options);
   vision::ImageSetOptions image_options = options.images;
   image_options.use = vision::ImageUse::kPoses;
-  const vision::ImageSet set = DetectImages(image_options, options.caller, callbacks);
+  vision::ImageSet set = DetectImages(image_options, options.caller, callbacks);
 
   PoseDetection result;
   result.camera = set.camera;
@@ -54,6 +56,7 @@ PoseDetection DetectCameraPoses(const PoseDetectionOptions& options,
              std::to_string(set.size.width) + "x" + std::to_string(set.size.height),
          "RMS reprojection error " + io::FormatDouble(set.estimated->rms_px) + " px"});
   }
+  result.set = std::move(set);
   return result;
 }
 

@@ -14,8 +14,12 @@ extern const char hecal_report_plotly_js[];
 extern const char hecal_report_plotly_js_end[];
 extern const char hecal_report_page_js[];
 extern const char hecal_report_page_js_end[];
+extern const char hecal_report_images_js[];
+extern const char hecal_report_images_js_end[];
 extern const char hecal_report_calibration_js[];
 extern const char hecal_report_calibration_js_end[];
+extern const char hecal_report_detect_js[];
+extern const char hecal_report_detect_js_end[];
 extern const char hecal_report_page_css[];
 extern const char hecal_report_page_css_end[];
 }
@@ -29,13 +33,16 @@ std::string_view Asset(const char* begin, const char* end) {
   return {begin, static_cast<size_t>(end - begin)};
 }
 
-// The page kinds' scripts, after web/page.js; each registers itself in hecalPage.pages.
+// The scripts after web/page.js: the figures shared by pages (web/images.js), then the page
+// kinds' scripts, each registering itself in hecalPage.pages.
 struct Script {
   const char* begin;
   const char* end;
 };
 const Script kPageScripts[] = {
+    {hecal_report_images_js, hecal_report_images_js_end},
     {hecal_report_calibration_js, hecal_report_calibration_js_end},
+    {hecal_report_detect_js, hecal_report_detect_js_end},
 };
 
 // At most `limit` of `stations`: every outlier and an even sample of the others, in order; each
@@ -74,6 +81,11 @@ json PageData(const HtmlReportInput& input) {
     data["notes"].push_back("More than " + std::to_string(kMaxPlottedStations) +
                             " stations: the residual plots show every flagged station and an "
                             "even sample of the others; the numbers use every station.");
+  }
+  for (const json& result : data["results"]) {
+    if (!result.contains("images")) continue;
+    data["thumbnails"] = ThumbnailsJson(input.thumbnails, result["images"]["per_image"].size());
+    break;
   }
   const size_t n = input.robot_poses.size();
   const size_t stride = n <= kMaxScenePoses ? 1 : (n + kMaxScenePoses - 1) / kMaxScenePoses;

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "hecal/report/detection_page.h"
+
 namespace hecal::report {
 namespace {
 
@@ -61,6 +63,49 @@ TEST(HtmlReport, ShellTakesAnyKindOfPage) {
   EXPECT_EQ(data["x"], 1);
   EXPECT_EQ(data["page_bytes"].get<size_t>(), page.size());
   EXPECT_FALSE(data["hecal_version"].get<std::string>().empty());
+}
+
+TEST(HtmlReport, ImagesGetTheirThumbnails) {
+  HtmlReportInput input = Input(2);
+  input.results["results"][0]["images"] = {
+      {"per_image", json::array({{{"id", "0"}}, {{"id", "1"}}})}};
+  json data = PageData(FormatHtmlReport(input));
+  EXPECT_EQ(data["thumbnails"]["count"], 0);  // not at hand: the page says how to add them
+  EXPECT_EQ(data["thumbnails"]["images"], 2);
+  input.thumbnails = {{"1", "jpeg"}};
+  data = PageData(FormatHtmlReport(input));
+  EXPECT_EQ(data["thumbnails"]["by_id"]["1"], "data:image/jpeg;base64,anBlZw==");
+  // The shared image figures come before the page scripts that use them.
+  const std::string page = FormatHtmlReport(input);
+  EXPECT_LT(page.find("hecalPage.imageFigures ="), page.find("hecalPage.pages.calibration ="));
+  EXPECT_LT(page.find("hecalPage.imageFigures ="), page.find("hecalPage.pages.detect ="));
+}
+
+TEST(HtmlReport, DetectPage) {
+  DetectionPageInput input;
+  input.title = "images";
+  input.camera.width = 640;
+  input.camera.height = 480;
+  DetectionPageImage used;
+  used.id = "a";
+  used.file = "a.png";
+  used.points_px = {{10.004, 20.0}};
+  used.residuals_px = {{0.0123, -0.0004}};
+  used.rms_px = 0.0123;
+  DetectionPageImage skipped;
+  skipped.id = "b";
+  skipped.skipped = "target not found";
+  input.images = {used, skipped};
+  input.thumbnails = {{"a", "x"}};
+  const json data = PageData(FormatDetectionPage(input));
+  EXPECT_EQ(data["kind"], "detect");
+  ASSERT_EQ(data["per_image"].size(), 1u);
+  EXPECT_EQ(data["per_image"][0]["points_px"][0], json::array({10.0, 20.0}));
+  EXPECT_EQ(data["per_image"][0]["residuals_px"][0], json::array({0.012, -0.0}));
+  EXPECT_EQ(data["per_image"][0]["T_camera_target"].size(), 4u);
+  EXPECT_EQ(data["skipped"][0]["reason"], "target not found");
+  EXPECT_EQ(data["intrinsics"]["width"], 640);
+  EXPECT_EQ(data["thumbnails"]["count"], 1);
 }
 
 TEST(HtmlReport, SamplesManyStationsAndSaysSo) {

@@ -28,7 +28,8 @@ class Checker {
   const json& Get(const std::string& field) const {
     if (!value_.is_object()) Fail("", "an object");
     const auto it = value_.find(field);
-    if (it == value_.end()) throw InputError(source_, 0, "field " + Join(field) + " is missing", kFix);
+    if (it == value_.end())
+      throw InputError(source_, 0, "field " + Join(field) + " is missing", kFix);
     return *it;
   }
   bool Has(const std::string& field) const { return value_.contains(field); }
@@ -74,6 +75,15 @@ class Checker {
     if (!v.is_array()) Fail(field, "an array");
     for (size_t k = 0; k < v.size(); ++k)
       each(Checker(source_, v[k], Join(field) + "[" + std::to_string(k) + "]"));
+  }
+  // An array of [u, v] pairs of finite numbers (pixels); returns its length.
+  size_t Pairs(const std::string& field) const {
+    const json& v = Get(field);
+    if (!v.is_array()) Fail(field, "an array of [u, v] pairs of numbers");
+    for (size_t k = 0; k < v.size(); ++k)
+      if (!IsVector(v[k], 2))
+        Fail(field + "[" + std::to_string(k) + "]", "[u, v]: 2 finite numbers");
+    return v.size();
   }
   void Strings(const std::string& field) const {
     Array(field, [](const Checker& c) {
@@ -145,6 +155,12 @@ void CheckImages(const Checker& images) {
     c.String("id");
     c.Number("rms_px");
     c.Bool("outlier");
+    if (c.Has("file")) c.String("file");
+    // The per-point fields (this version on): both or neither, one residual per point.
+    if (c.Has("points_px") || c.Has("residuals_px")) {
+      if (c.Pairs("residuals_px") != c.Pairs("points_px"))
+        c.Fail("residuals_px", "one [du, dv] per point of points_px");
+    }
   });
   images.Array("skipped", [](const Checker& c) {
     c.String("id");
@@ -194,8 +210,8 @@ void CheckResult(const Checker& r) {
 json ParseResultForReport(std::string_view text, const std::string& source) {
   json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (document.is_discarded()) {
-    throw InputError(source, 0, "not JSON (hecal report reads the JSON result file; YAML is not read)",
-                     kFix);
+    throw InputError(source, 0,
+                     "not JSON (hecal report reads the JSON result file; YAML is not read)", kFix);
   }
   if (!document.is_object()) Checker(source, document, "").Fail("", "a JSON object");
   if (document.contains("certificate")) {

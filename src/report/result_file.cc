@@ -137,9 +137,15 @@ json ImagesJson(const ResultDocument& document, const ImageReport& report) {
   json per_image = json::array();
   const std::vector<std::string> used = UsedStationIds(document);
   for (size_t k = 0; k < used.size() && k < report.image_rms_px.size(); ++k) {
-    per_image.push_back({{"id", used[k]},
-                         {"rms_px", report.image_rms_px[k]},
-                         {"outlier", static_cast<bool>(report.image_outlier.at(k))}});
+    json image = {{"id", used[k]},
+                  {"rms_px", report.image_rms_px[k]},
+                  {"outlier", static_cast<bool>(report.image_outlier.at(k))}};
+    if (k < report.image_files.size()) image["file"] = report.image_files[k];
+    if (k < report.image_points_px.size()) {
+      image["points_px"] = JsonPixels(report.image_points_px[k], kPointDecimals);
+      image["residuals_px"] = JsonPixels(report.image_residuals_px.at(k), kResidualDecimals);
+    }
+    per_image.push_back(std::move(image));
   }
   json skipped = json::array();
   for (size_t k = 0; k < document.rejected.size() && k < report.skipped_reasons.size(); ++k) {
@@ -272,6 +278,42 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
   return object;
 }
 
+// The JSON text with each per-point list ("points_px", "residuals_px": numbers only) on one line
+// instead of one number per line: a third of the size (docs/result-file.md).
+std::string CompactPixelLists(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  size_t at = 0;
+  for (;;) {
+    const size_t key =
+        std::min(text.find("\"points_px\": [", at), text.find("\"residuals_px\": [", at));
+    if (key == std::string::npos) break;
+    const size_t open = text.find('[', key);
+    if (text[key - 1] == '\\') {  // inside a string: \"points_px\": [
+      out.append(text, at, open + 1 - at);
+      at = open + 1;
+      continue;
+    }
+    out.append(text, at, open - at);
+    int depth = 0;
+    size_t k = open;
+    for (; k < text.size(); ++k) {
+      const char c = text[k];
+      if (c == '\n') {
+        while (k + 1 < text.size() && text[k + 1] == ' ') ++k;
+        continue;
+      }
+      out += c;
+      if (c == ',') out += ' ';
+      if (c == '[') ++depth;
+      if (c == ']' && --depth == 0) break;
+    }
+    at = k + 1;
+  }
+  out.append(text, at, std::string::npos);
+  return out;
+}
+
 void EmitYaml(const json& value, YAML::Emitter& out) {
   if (value.is_object()) {
     out << YAML::BeginMap;
@@ -337,7 +379,7 @@ std::string FormatResult(const ResultDocument& document, ResultFormat format) {
   } else {
     root = ResultJson(document, document.results.at(0));
   }
-  if (format == ResultFormat::kJson) return root.dump(2) + "\n";
+  if (format == ResultFormat::kJson) return CompactPixelLists(root.dump(2)) + "\n";
   YAML::Emitter out;
   EmitYaml(root, out);
   return std::string(out.c_str()) + "\n";

@@ -3,10 +3,13 @@
 # browser). Writes each kind of page from bundled data with the built CLI:
 #   moveit-ml.html   MoveIt Calibration's 50 eye-to-hand stations, `hecal report --robot`
 #   moveit-all.html  the same, `calibrate --method all --report`
-#   kuka2.html       rwhe-kuka2's 28 chessboard images, `calibrate --images --report`
+#   kuka2.html       rwhe-kuka2's 28 chessboard images, `calibrate --images --report` (with the
+#                    thumbnails, the residual field and the corner coverage)
+#   kuka2-detect.html the same images, `hecal detect --report` (the detect page)
 # checks that a foreign JSON exits 2 naming the field and writes nothing, then loads every page in
 # headless Chromium with the network off (web/report_pages.mjs: no console error, no request but
-# the file, every figure drawn) and keeps a screenshot beside each page.
+# the file, every figure drawn, a click on an image entry shows that image's thumbnail) and keeps
+# a screenshot beside each page.
 # Usage: browser_test.sh HECAL OUT_DIR   (needs scripts/install-deps.sh --browser: chromium, and
 # web/node_modules from npm ci)
 set -euo pipefail
@@ -31,6 +34,8 @@ cd "$root"
 "$hecal" calibrate --images data/rwhe-kuka2/images --target data/rwhe-kuka2/target.yaml \
   --robot data/rwhe-kuka2/RobotPosesVec.txt --setup eye-in-hand --threads 2 \
   --report "$out/kuka2.html" >/dev/null
+"$hecal" detect --images data/rwhe-kuka2/images --target data/rwhe-kuka2/target.yaml \
+  --threads 2 --output "$out/kuka2-detect.csv" --report "$out/kuka2-detect.html" >/dev/null
 
 # A foreign JSON: exit 2, one line naming the field, no page.
 echo '{"hecal_version": "0.1.0", "setup": "eye-to-hand", "method": "ml", "units": {"length": "m"}, "X": {"frame": "T_base_camera", "matrix": [[1, 0, 0]]}}' \
@@ -46,4 +51,5 @@ if [[ $status -ne 2 || "$message" != *"field X.matrix: expected a 4x4 matrix"* |
 fi
 
 cd "$root/web"
-node report_pages.mjs "$chromium" "$out/moveit-ml.html" "$out/moveit-all.html" "$out/kuka2.html"
+node report_pages.mjs "$chromium" "$out/moveit-ml.html" "$out/moveit-all.html" "$out/kuka2.html" \
+  "$out/kuka2-detect.html"

@@ -118,6 +118,8 @@ struct ReprojectionResult {
   // refine_intrinsics: their covariance (pose::IntrinsicsOf order; px², px, 1).
   std::optional<Eigen::Matrix<double, pose::kNumIntrinsics, pose::kNumIntrinsics>>
       intrinsics_covariance;
+  // Per station, per point (the order of ImagePoints): π(B P_k) − u_k at the result (px).
+  std::vector<std::vector<Eigen::Vector2d>> residuals_px;
 };
 
 // Requires T_base_gripper.size() == images.size() and a start (X0, Z0) close enough for the

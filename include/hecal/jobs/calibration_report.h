@@ -10,9 +10,15 @@
 // image names match the table's rows in order). Without the table the scene shows the base and
 // the fixed frame (X eye-to-hand, Z eye-in-hand) only.
 //
+// With `images` (a result from images), each used image's thumbnail: the result names its file
+// (images.per_image[].file, written by this version on); the page shows the thumbnail under the
+// image's detected points when clicked.
+//
 // Errors (InputError): the result file (not JSON, a missing or mistyped field, named as
-// "field results[0].X.matrix"), the robot table (read errors, a station id it lacks); nothing is
-// written then.
+// "field results[0].X.matrix"), the robot table (read errors, a station id it lacks), `images`
+// given for a result that is not from images or names no files, an image missing from the folder
+// or unreadable (named), `images` in a hecal built without the vision layer; nothing is written
+// then.
 #pragma once
 
 #include <string>
@@ -23,10 +29,13 @@
 namespace hecal::jobs {
 
 struct CalibrationReportOptions {
-  std::string result;   // the result file (JSON, docs/result-file.md)
-  std::string output;   // the page (.html)
-  std::string robot;    // optional: the robot pose table (T_base_gripper) of the calibration
+  std::string result;  // the result file (JSON, docs/result-file.md)
+  std::string output;  // the page (.html)
+  std::string robot;   // optional: the robot pose table (T_base_gripper) of the calibration
   io::PoseReadOptions robot_read;  // as calibrate read it (units, --degrees, --euler, inverse)
+  // optional: the image folder of a result from images, for the thumbnails
+  // (jobs/report_thumbnails.h): each used image's `file` (images.per_image) read from it.
+  std::string images;
 
   // result and output given.
   bool IsValid(std::string* why) const;

@@ -14,11 +14,13 @@
 //    (estimation/plausibility.h, on the used stations' poses);
 //  - ImageReport: the intrinsics used (given, estimated or refined with their 1σ), the pixel σ,
 //    the reprojection RMS over every point and per image, the image outliers and the pose-level
-//    result before the refinement.
+//    result before the refinement; per used image its file (when image_files is given), its
+//    detected points and their residuals at the result (the report's per-point figures).
 // Frames and units: those of the stations (metres, radians, pixels); `unit` only labels the
 // document. `--method all` and the Unscented covariance are refused by the caller (flags).
 //
-// Errors: InputError when `skipped` does not have one entry per image or the stations do not
+// Errors: InputError when `skipped` (or a non-empty `image_files`) does not have one entry per
+// image or the stations do not
 // match the used images; those of estimation::CalibrateFromImages (DegenerateError,
 // InputError) and CheckFiniteResult pass through.
 #pragma once
@@ -37,6 +39,7 @@ struct ImageCalibrationInput {
   io::LengthUnit unit = io::LengthUnit::kMetre;    // the document's output unit (the robot file's)
   bool robot_unit_named = true;                    // false: the robot unit came from a flag
   std::vector<std::string> image_ids;              // every image of the folder, in order
+  std::vector<std::string> image_files;            // optional, per image: its file in the folder
   std::vector<std::string> skipped;                // per image: why it is not used, empty when used
   std::vector<estimation::ImageStation> stations;  // one per used image, in order
   std::string intrinsics_source;            // the camera file given, or "estimated from the images"
@@ -46,6 +49,6 @@ struct ImageCalibrationInput {
 
 // Runs the job above; options.calibrate.station_ids is set to the used images' ids.
 report::ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
-                                   estimation::ImageCalibrationOptions options);
+                                           estimation::ImageCalibrationOptions options);
 
 }  // namespace hecal::jobs

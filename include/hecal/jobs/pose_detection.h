@@ -52,6 +52,7 @@ struct PoseDetection {
   // camera.yaml of the estimated intrinsics (to io::DetectionCompanionPaths(output).camera);
   // nullopt when they were given.
   std::optional<std::string> camera_yaml;
+  vision::ImageSet set;  // the image front end's result (the detect page, detection_report.h)
 };
 
 // Steps 1–3 above.

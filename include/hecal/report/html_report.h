@@ -1,21 +1,26 @@
 // The interactive HTML report of a calibration result (`hecal report`, `calibrate --report`;
 // docs/report.md): one self-contained page that opens offline from any folder. The figures are
 // drawn in the browser by Plotly.js (web/package.json pins it) from one JSON blob of page data,
-// by the page scripts web/page.js and web/calibration.js; the scripts and web/report.css are built
+// by the page scripts web/page.js, web/images.js and web/calibration.js (web/detect.js draws the
+// detect page, detection_page.h); the scripts and web/report.css are built
 // into the library (src/report/CMakeLists: an assembler .incbin of the files that `npm ci`
 // installed in web/), so the binary needs no file at run time and the page loads nothing from the
 // network.
 //
-// The page data are the checked results (report_input.h) with every station's residual, except
+// The page data are the checked results (report_input.h) with every station's residual (and,
+// from images, every detected point and its residual: web/images.js draws them), except
 // that above kMaxPlottedStations stations the residual plots keep every flagged station and an
 // even sample of the rest, and the 3D scene at most kMaxScenePoses gripper poses; the page says
-// so when it happens. Its size is printed on the page (Plotly.js is ~4.9 MB of it).
+// so when it happens. Its size is printed on the page (Plotly.js is ~4.9 MB of it), and that of
+// the image thumbnails when there are any.
 #pragma once
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "hecal/report/page_thumbnails.h"
 
 namespace hecal::report {
 
@@ -30,6 +35,9 @@ struct HtmlReportInput {
   std::vector<Eigen::Matrix4d> robot_poses;
   // With robot_poses: each used station's 1-based line in the robot pose file (shown on hover).
   std::vector<int> robot_lines;
+  // From images: thumbnails of the used images (page_thumbnails.h), by station id; empty when
+  // the images are not at hand (the page says how to add them).
+  std::vector<Thumbnail> thumbnails;
 };
 
 // The page shell of every kind of report: `data` is one JSON object with "kind" (the page script

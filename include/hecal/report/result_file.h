@@ -8,6 +8,7 @@
 // unit², scaled to the output length unit.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <optional>
 #include <string>
@@ -26,6 +27,12 @@ struct MethodFailure {
   std::string message;
 };
 
+// The decimals of the per-point pixel fields of "images.per_image" (docs/result-file.md): 0.01 px
+// for a detected point and 0.001 px for a residual, well below a detector's accuracy (~0.05 px)
+// and a residual's size, so that a 28-image result with ~50 corners each stays near 100 kB.
+inline constexpr int kPointDecimals = 2;
+inline constexpr int kResidualDecimals = 3;
+
 // `hecal calibrate --images`: the image level of the result, written as "images" (and
 // "refinement": "reprojection"). Per-image vectors follow the used stations, in order.
 struct ImageReport {
@@ -39,6 +46,12 @@ struct ImageReport {
   double rms_px = 0.0;  // reprojection RMS over every point at the result
   std::vector<double> image_rms_px;
   std::vector<bool> image_outlier;
+  // Optional, per used image (empty: not written): its file in the image folder ("im_00.png",
+  // "pose_00/image.png"), its detected points (px) and their residuals π(B P_k) − u_k at the
+  // result (px), written rounded to kPointDecimals and kResidualDecimals decimals.
+  std::vector<std::string> image_files;
+  std::vector<std::vector<Eigen::Vector2d>> image_points_px;
+  std::vector<std::vector<Eigen::Vector2d>> image_residuals_px;
   std::vector<std::string> skipped_reasons;  // one per ResultDocument::rejected, same order
   estimation::CalibrationResult pose_level;  // X, Z before the reprojection refinement
 };
