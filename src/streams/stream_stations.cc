@@ -10,31 +10,38 @@
 namespace hecal::streams {
 namespace {
 
+constexpr double kSelectionSmoothing = 0.5;  // seconds
+
 // The geodesic angle between two rotations.
 double Angle(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
   const double c = 0.5 * ((A.transpose() * B).trace() - 1.0);
   return std::acos(std::clamp(c, -1.0, 1.0));
 }
 
-// Rule 4: farthest-point sampling of `keep` of `candidates` by their rotations; time order kept.
-std::vector<size_t> Thin(const std::vector<size_t>& candidates,
-                         const std::vector<Eigen::Matrix3d>& rotations, size_t keep) {
+// Rule 4: farthest-point sampling of at most `keep` of `candidates` by their rotations, none
+// within `spacing` seconds of a station kept; time order kept.
+std::vector<size_t> Thin(const std::vector<size_t>& candidates, const std::vector<double>& times,
+                         const std::vector<Eigen::Matrix3d>& rotations, size_t keep,
+                         double spacing) {
   const size_t n = candidates.size();
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
-  std::vector<bool> chosen(n, false);
+  std::vector<bool> chosen(n, false), excluded(n, false);
   size_t next = 0;
-  for (size_t picked = 0; picked < keep; ++picked) {
+  for (size_t picked = 0; picked < keep && n > 0; ++picked) {
     chosen[next] = true;
-    size_t farthest = next;
+    for (size_t k = 0; k < n; ++k)
+      if (std::abs(times[k] - times[next]) < spacing) excluded[k] = true;
+    size_t farthest = n;
     double best = -1.0;
     for (size_t k = 0; k < n; ++k) {
-      if (chosen[k]) continue;
+      if (excluded[k]) continue;
       distance[k] = std::min(distance[k], Angle(rotations[next], rotations[k]));
       if (distance[k] > best) {
         best = distance[k];
         farthest = k;
       }
     }
+    if (farthest == n) break;
     next = farthest;
   }
   std::vector<size_t> kept;
@@ -73,6 +80,7 @@ StreamStations ChooseStations(const PoseStream& robot, const PoseStream& camera,
   out.candidates = static_cast<int>(sparse.stamps.size());
   std::vector<size_t> candidates;
   std::vector<Eigen::Matrix3d> rotations;
+  std::vector<double> times;
   for (size_t k = 0; k < sparse.stamps.size(); ++k) {
     const double t = sparse.stamps[k] + sign * offset;
     if (t - reach < dense.stamps.front() || t + reach > dense.stamps.back()) {
@@ -91,17 +99,18 @@ StreamStations ChooseStations(const PoseStream& robot, const PoseStream& camera,
       continue;
     }
     candidates.push_back(k);
-    const Pose robot_pose =
-        out.camera_gives_stations ? *PoseAt(robot, t, out.max_gap) : sparse.poses[k];
-    rotations.push_back(robot_pose.linear());
+    times.push_back(sparse.stamps[k]);
+    // Rule 4 picks by rotation: by a rotation smoothed over ±kSelectionSmoothing, so that the
+    // choice does not follow the noise of the samples the fit uses (picking the most turned
+    // samples would pick those whose noise turns them most).
+    const double robot_t = out.camera_gives_stations ? t : sparse.stamps[k];
+    const std::optional<Pose> smooth = SmoothPoseAt(robot, robot_t, robot_gap, kSelectionSmoothing);
+    const Pose selected = smooth ? *smooth : *PoseAt(robot, robot_t, robot_gap);
+    rotations.push_back(selected.linear());
   }
   const auto keep = static_cast<size_t>(std::max(rules.max_stations, 0));
-  if (candidates.size() > keep) {
-    out.thinned = static_cast<int>(candidates.size() - keep);
-    out.samples = Thin(candidates, rotations, keep);
-  } else {
-    out.samples = candidates;
-  }
+  out.samples = Thin(candidates, times, rotations, keep, 2.0 * out.smoothing);
+  out.thinned = static_cast<int>(candidates.size() - out.samples.size());
   return out;
 }
 

@@ -14,11 +14,14 @@
 //      stream's speed over ±kSpeedBaseline, pose_stream.h, time_offset_search.h): motion blur in
 //      the image and interpolation error grow with speed (defaults 45°/s and 0.3 m/s: at 30 Hz and
 //      10 ms exposure, 0.45° and 3 mm of blur);
-//   4. thinned: above max_stations candidates, farthest-point sampling in rotation keeps
-//      max_stations well spread ones — starting from the first candidate, each next station is
-//      the candidate whose robot rotation is farthest (geodesic angle) from every station kept,
-//      which favours the large rotations between stations that hand–eye calibration needs (Tsai
-//      and Lenz 1989, §V). The kept stations stay in time order.
+//   4. thinned: farthest-point sampling in rotation keeps at most max_stations well spread ones,
+//      no two closer in time than twice the smoothing — starting from the first candidate, each
+//      next station is the candidate, not within that time of a station kept, whose robot
+//      rotation is farthest (geodesic angle) from every station kept. The rotation spread favours
+//      the large rotations between stations that hand–eye calibration needs (Tsai and Lenz 1989,
+//      §V); the spacing keeps the stations' smoothed poses from sharing samples, so their noise
+//      is independent as the fit assumes (sharing made the offset's σ 3× too small). The kept
+//      stations stay in time order.
 #pragma once
 
 #include <vector>
