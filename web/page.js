@@ -43,6 +43,31 @@ const hecalPage = (function () {
     return s;
   }
 
+  // The page's title and the line every page starts with (its size, offline).
+  function pageHeader(heading, data) {
+    root.appendChild(el('h1', {}, heading));
+    root.appendChild(el('p', {class: 'muted'}, `${data.title} — hecal ${data.hecal_version}; this ` +
+      `page is ${(data.page_bytes / 1e6).toFixed(2)} MB, Plotly.js included, and loads nothing ` +
+      `from the network.`));
+  }
+  // The curve of the 2×2 block (i, j) of covariance C, scaled by `unit` (e.g. rad → deg), at k σ:
+  // [xs, ys] around the origin (72 segments).
+  function ellipse(C, i, j, unit, k) {
+    const a = C[i][i] * unit * unit, b = C[i][j] * unit * unit, d = C[j][j] * unit * unit;
+    const tr = (a + d) / 2, det = a * d - b * b;
+    const disc = Math.sqrt(Math.max(0, tr * tr - det));
+    const l1 = tr + disc, l2 = Math.max(0, tr - disc);
+    const theta = Math.abs(b) > 1e-300 ? Math.atan2(l1 - a, b) : (a >= d ? 0 : Math.PI / 2);
+    const xs = [], ys = [];
+    for (let n = 0; n <= 72; ++n) {
+      const t = 2 * Math.PI * n / 72;
+      const u = k * Math.sqrt(l1) * Math.cos(t), v = k * Math.sqrt(l2) * Math.sin(t);
+      xs.push(u * Math.cos(theta) - v * Math.sin(theta));
+      ys.push(u * Math.sin(theta) + v * Math.cos(theta));
+    }
+    return [xs, ys];
+  }
+
   function render() {
     const data = JSON.parse(document.getElementById('hecal-data').textContent);
     const page = hecalPage.pages[data.kind];
@@ -52,5 +77,6 @@ const hecalPage = (function () {
     }
     page(data, root);
   }
-  return {root, el, fmt, table, plot, section, render, CHI2_95_2D, AXES, COLORS, pages: {}};
+  return {root, el, fmt, table, plot, section, pageHeader, ellipse, render, CHI2_95_2D, AXES, COLORS,
+          pages: {}};
 })();

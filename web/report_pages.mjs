@@ -42,7 +42,7 @@ try {
       const drawn = [...div.querySelectorAll('svg.main-svg, canvas')].map((e) => e.getBoundingClientRect())
         .filter((r) => r.width > 0 && r.height > 0);
       const title = div.closest('section')?.querySelector('h2')?.textContent ?? '?';
-      const marks = div.querySelectorAll('.scatterlayer .trace, .barlayer .trace, canvas').length;
+      const marks = div.querySelectorAll('.scatterlayer .trace, .barlayer .trace, .boxlayer .trace, canvas').length;
       return { i, title, drawn: drawn.length, marks };
     }));
     if (plots.length === 0) problems.push('no figure on the page');

@@ -83,4 +83,5 @@
 #include "hecal/report/report_input.h"
 #include "hecal/report/result_file.h"
 #include "hecal/report/result_text.h"
+#include "hecal/report/simulate_page.h"
 #include "hecal/report/study_text.h"
