@@ -4,17 +4,8 @@
 // checked by report_input.cc. Helpers (el, plot, section, ...) come from web/page.js.
 hecalPage.pages.calibration = function (data, root) {
   'use strict';
-  const {el, fmt, table, plot, section, pageHeader, ellipse, CHI2_95_2D, AXES, COLORS} = hecalPage;
-  // "T_base_camera" → "the camera's pose in the robot base frame".
-  function frameWords(frame) {
-    const m = /^T_([a-z]+)_([a-z]+)$/.exec(frame);
-    if (!m) return frame;
-    const names = {base: 'robot base', gripper: 'gripper (flange)', camera: 'camera',
-                   target: 'calibration target'};
-    return `${frame}: the ${names[m[2]] || m[2]}'s pose in the ${names[m[1]] || m[1]} frame ` +
-           `(maps ${m[2]} coordinates to ${m[1]} coordinates)`;
-  }
-
+  const {el, fmt, table, plot, section, pageHeader, poseEllipses, frameWords, AXES, COLORS} =
+      hecalPage;
   // What to do about a warning of the result file (the texts of src/estimation and src/jobs).
   const ADVICE = [
     [/noise not given|estimated/i, 'The noise model was estimated from these residuals. If you ' +
@@ -152,23 +143,7 @@ hecalPage.pages.calibration = function (data, root) {
     plot(s, bars, {title: {text: 'σ per axis'}, height: 340, barmode: 'group',
                    grid: {rows: 1, columns: 2, pattern: 'independent'},
                    yaxis: {title: {text: 'σ (deg)'}}, yaxis2: {title: {text: `σ (${unit})`}}});
-    const pairs = [[0, 1], [0, 2], [1, 2]];
-    const ell = [];
-    const pairColors = ['#3366cc', '#dc3912', '#109618'];
-    pairs.forEach(([i, j], k) => {
-      const [rx, ry] = ellipse(c.X, i, j, 180 / Math.PI, Math.sqrt(CHI2_95_2D));
-      ell.push({type: 'scatter', mode: 'lines', x: rx, y: ry, name: `${rot[i]}–${rot[j]}`,
-                line: {color: pairColors[k]}, legendgroup: String(k)});
-      const [tx, ty] = ellipse(c.X, i + 3, j + 3, 1, Math.sqrt(CHI2_95_2D));
-      ell.push({type: 'scatter', mode: 'lines', x: tx, y: ty, name: `${tra[i]}–${tra[j]}`,
-                xaxis: 'x2', yaxis: 'y2', line: {color: pairColors[k], dash: 'dot'},
-                legendgroup: String(k)});
-    });
-    plot(s, ell, {title: {text: '95% ellipses of X\'s error (pairs of axes, marginal)'},
-                  height: 400, grid: {rows: 1, columns: 2, pattern: 'independent'},
-                  xaxis: {title: {text: 'rotation (deg)'}, scaleanchor: 'y'}, yaxis: {title: {text: 'rotation (deg)'}},
-                  xaxis2: {title: {text: `translation (${unit})`}, scaleanchor: 'y2'},
-                  yaxis2: {title: {text: `translation (${unit})`}}});
+    poseEllipses(s, c.X, 1, unit);
     const mc = c.model_check;
     if (!mc) return;
     s.appendChild(el('h3', {}, 'Model check: model σ against the jackknife'));

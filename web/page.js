@@ -43,6 +43,16 @@ const hecalPage = (function () {
     return s;
   }
 
+  // "T_base_camera" → "the camera's pose in the robot base frame".
+  function frameWords(frame) {
+    const m = /^T_([a-z]+)_([a-z]+)$/.exec(frame);
+    if (!m) return frame;
+    const names = {base: 'robot base', gripper: 'gripper (flange)', camera: 'camera',
+                   target: 'calibration target'};
+    return `${frame}: the ${names[m[2]] || m[2]}'s pose in the ${names[m[1]] || m[1]} frame ` +
+           `(maps ${m[2]} coordinates to ${m[1]} coordinates)`;
+  }
+
   // The page's title and the line every page starts with (its size, offline).
   function pageHeader(heading, data) {
     root.appendChild(el('h1', {}, heading));
@@ -68,6 +78,29 @@ const hecalPage = (function () {
     return [xs, ys];
   }
 
+  // The figure of X's 95% error ellipses for each pair of axes (marginal 2×2 blocks, χ²₂) from the
+  // 6×6 covariance C of (ω, v) in radians and a length unit; `scale` turns that unit into `unit`.
+  function poseEllipses(parent, C, scale, unit) {
+    const rot = ['rx', 'ry', 'rz'], tra = ['tx', 'ty', 'tz'];
+    const colors = ['#3366cc', '#dc3912', '#109618'];
+    const traces = [];
+    [[0, 1], [0, 2], [1, 2]].forEach(([i, j], k) => {
+      const [rx, ry] = ellipse(C, i, j, 180 / Math.PI, Math.sqrt(CHI2_95_2D));
+      traces.push({type: 'scatter', mode: 'lines', x: rx, y: ry, name: `${rot[i]}–${rot[j]}`,
+                   line: {color: colors[k]}, legendgroup: String(k)});
+      const [tx, ty] = ellipse(C, i + 3, j + 3, scale, Math.sqrt(CHI2_95_2D));
+      traces.push({type: 'scatter', mode: 'lines', x: tx, y: ty, name: `${tra[i]}–${tra[j]}`,
+                   xaxis: 'x2', yaxis: 'y2', line: {color: colors[k], dash: 'dot'},
+                   legendgroup: String(k)});
+    });
+    return plot(parent, traces, {
+      title: {text: '95% ellipses of X\'s error (pairs of axes, marginal)'}, height: 400,
+      grid: {rows: 1, columns: 2, pattern: 'independent'},
+      xaxis: {title: {text: 'rotation (deg)'}, scaleanchor: 'y'}, yaxis: {title: {text: 'rotation (deg)'}},
+      xaxis2: {title: {text: `translation (${unit})`}, scaleanchor: 'y2'},
+      yaxis2: {title: {text: `translation (${unit})`}}});
+  }
+
   function render() {
     const data = JSON.parse(document.getElementById('hecal-data').textContent);
     const page = hecalPage.pages[data.kind];
@@ -77,6 +110,6 @@ const hecalPage = (function () {
     }
     page(data, root);
   }
-  return {root, el, fmt, table, plot, section, pageHeader, ellipse, render, CHI2_95_2D, AXES, COLORS,
-          pages: {}};
+  return {root, el, fmt, table, plot, section, pageHeader, ellipse, poseEllipses, frameWords, render,
+          CHI2_95_2D, AXES, COLORS, pages: {}};
 })();

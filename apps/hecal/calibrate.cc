@@ -132,17 +132,14 @@ void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& set
 
 void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
   const auto check_outputs = [&] {
-    io::CheckOutputs({{"--output", flags.output}, {"--report", flags.report}}, {{"--robot", flags.robot},
-                                                    {"--camera", flags.camera},
-                                                    {"--target", flags.target},
-                                                    {"--intrinsics", flags.intrinsics},
-                                                    {"--correspondences", flags.correspondences}});
+    io::CheckOutputs({{"--output", flags.output}, {"--report", flags.report}},
+                     {{"--robot", flags.robot},
+                      {"--camera", flags.camera},
+                      {"--target", flags.target},
+                      {"--intrinsics", flags.intrinsics},
+                      {"--correspondences", flags.correspondences}});
   };
   if (flags.method == "global" || !flags.correspondences.empty()) {
-    if (!flags.report.empty()) {
-      throw InputError("--report", 0, "the HTML report does not show target-free results yet",
-                       "leave --report out with --method global (docs/report.md)");
-    }
     check_outputs();
     return RunCalibrateGlobal(flags, io);
   }

@@ -75,6 +75,7 @@
 #include "hecal/report/contour_study_text.h"
 #include "hecal/report/contour_track_file.h"
 #include "hecal/report/contour_track_text.h"
+#include "hecal/report/global_page.h"
 #include "hecal/report/global_result.h"
 #include "hecal/report/global_text.h"
 #include "hecal/report/html_report.h"

@@ -7,6 +7,7 @@
 
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
+#include "hecal/report/global_page.h"
 #include "hecal/report/html_report.h"
 #include "hecal/report/report_input.h"
 
@@ -28,14 +29,14 @@ void AddRobotPoses(const CalibrationReportOptions& options,
   }
   for (const nlohmann::json& result : input->results["results"]) {
     if (!result.contains("stations")) continue;
-    const double scale =
-        result["units"]["length"].get<std::string>() == "mm" ? 1000.0 : 1.0;
+    const double scale = result["units"]["length"].get<std::string>() == "mm" ? 1000.0 : 1.0;
     for (const nlohmann::json& id : result["stations"]["used"]) {
       const auto it = rows.find(id.get<std::string>());
       if (it == rows.end()) {
-        throw InputError(options.robot, 0,
-                         "the result's station '" + id.get<std::string>() + "' is not in this table",
-                         "give the robot pose table the result was calibrated from");
+        throw InputError(
+            options.robot, 0,
+            "the result's station '" + id.get<std::string>() + "' is not in this table",
+            "give the robot pose table the result was calibrated from");
       }
       Eigen::Matrix4d T = it->second->pose.matrix();
       T.topRightCorner<3, 1>() *= scale;
@@ -59,7 +60,8 @@ void Write(const std::string& text, const std::string& source, const std::string
 
 bool CalibrationReportOptions::IsValid(std::string* why) const {
   if (output.empty())
-    return Invalid(why, "CalibrationReportOptions.output", "no output file", "name the page, e.g. report.html");
+    return Invalid(why, "CalibrationReportOptions.output", "no output file",
+                   "name the page, e.g. report.html");
   return true;
 }
 
@@ -69,15 +71,24 @@ void WriteCalibrationReport(const CalibrationReportOptions& options) {
     throw InputError("CalibrationReportOptions.result", 0, "no result file",
                      "name the result file calibrate wrote");
   }
-  Write(io::ReadFile(options.result), options.result,
-        std::filesystem::path(options.result).filename().string(), {}, options);
+  const std::string text = io::ReadFile(options.result);
+  const std::string title = std::filesystem::path(options.result).filename().string();
+  if (report::IsGlobalResult(nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false))) {
+    if (!options.robot.empty()) {
+      throw InputError("--robot", 0, "the target-free result's page has no robot scene",
+                       "leave --robot out for a `--method global` result (docs/report.md)");
+    }
+    return io::WriteFileAtomically(options.output,
+                                   report::FormatGlobalReport(text, options.result, title));
+  }
+  Write(text, options.result, title, {}, options);
 }
 
 void WriteCalibrationReport(const report::ResultDocument& document, const std::string& title,
                             const CalibrationReportOptions& options) {
   RequireValid(options);
-  Write(report::FormatResult(document, report::ResultFormat::kJson), title, title, document.station_ids,
-        options);
+  Write(report::FormatResult(document, report::ResultFormat::kJson), title, title,
+        document.station_ids, options);
 }
 
 }  // namespace hecal::jobs

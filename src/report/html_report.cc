@@ -18,6 +18,10 @@ extern const char hecal_report_calibration_js[];
 extern const char hecal_report_calibration_js_end[];
 extern const char hecal_report_simulate_js[];
 extern const char hecal_report_simulate_js_end[];
+extern const char hecal_report_contour_study_js[];
+extern const char hecal_report_contour_study_js_end[];
+extern const char hecal_report_global_js[];
+extern const char hecal_report_global_js_end[];
 extern const char hecal_report_page_css[];
 extern const char hecal_report_page_css_end[];
 }
@@ -39,6 +43,8 @@ struct Script {
 const Script kPageScripts[] = {
     {hecal_report_calibration_js, hecal_report_calibration_js_end},
     {hecal_report_simulate_js, hecal_report_simulate_js_end},
+    {hecal_report_contour_study_js, hecal_report_contour_study_js_end},
+    {hecal_report_global_js, hecal_report_global_js_end},
 };
 
 // At most `limit` of `stations`: every outlier and an even sample of the others, in order; each

@@ -10,6 +10,9 @@
 // image names match the table's rows in order). Without the table the scene shows the base and
 // the fixed frame (X eye-to-hand, Z eye-in-hand) only.
 //
+// A target-free result file (`--method global`, report::IsGlobalResult) gets the global page
+// (report/global_page.h) instead; it takes no robot table.
+//
 // Errors (InputError): the result file (not JSON, a missing or mistyped field, named as
 // "field results[0].X.matrix"), the robot table (read errors, a station id it lacks); nothing is
 // written then.
@@ -23,16 +26,17 @@
 namespace hecal::jobs {
 
 struct CalibrationReportOptions {
-  std::string result;   // the result file (JSON, docs/result-file.md)
-  std::string output;   // the page (.html)
-  std::string robot;    // optional: the robot pose table (T_base_gripper) of the calibration
+  std::string result;  // the result file (JSON, docs/result-file.md)
+  std::string output;  // the page (.html)
+  std::string robot;   // optional: the robot pose table (T_base_gripper) of the calibration
   io::PoseReadOptions robot_read;  // as calibrate read it (units, --degrees, --euler, inverse)
 
   // result and output given.
   bool IsValid(std::string* why) const;
 };
 
-// `hecal report`: reads options.result, writes options.output.
+// `hecal report`: reads options.result (a calibration or a target-free result), writes
+// options.output.
 void WriteCalibrationReport(const CalibrationReportOptions& options);
 
 // `hecal calibrate --report`: the same page from the document in memory (options.result unused;
