@@ -109,9 +109,8 @@ void ExpectRefusal(const cli_test::Outcome& result, const std::string& words) {
 // the result file writes the same kind of page, and refuses a robot table (no scene to show).
 TEST_F(CalibrateGlobal, ReportPageFromTheRunAndFromTheResultFile) {
   const std::vector<std::string> args = {
-      "calibrate",         "--method",            "global",  "--robot", Path("robot.csv"),
-      "--setup",           "eye-in-hand",         "--reach", "1",       "--correspondences",
-      Path("bearings.csv")};
+      "calibrate",   "--method", "global", "--robot",           Path("robot.csv"),   "--setup",
+      "eye-in-hand", "--reach",  "1",      "--correspondences", Path("bearings.csv")};
   std::vector<std::string> both = args, missing = args;
   both.insert(both.end(), {"--output", Path("g.json"), "--report", Path("g.html")});
   const auto run = Hecal(both);
