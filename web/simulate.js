@@ -191,9 +191,9 @@ hecalPage.pages.simulate = function (data, root) {
 
   pageHeader('hecal simulate: the thesis study', data);
   if (data.trials_sampled) {
-    root.appendChild(el('div', {class: 'note'}, `More than ${data.trials[0][0].rotation_deg.length} ` +
-      `trials per setting: the distributions show an even sample of the ${data.trials_total}; ` +
-      'the numbers use every trial.'));
+    root.appendChild(el('div', {class: 'note'}, 'The distributions show an even sample of the ' +
+      `${data.trials_total} trials per setting (${data.trials[0][0].rotation_deg.length} for the ` +
+      'first method of the first setting); the numbers use every trial.'));
   }
   numbers();
   const figures = section('Figures', el('p', {class: 'muted'},
