@@ -4,18 +4,9 @@
 // checked by report_input.cc. Helpers (el, plot, section, ...) come from web/page.js.
 hecalPage.pages.calibration = function (data, root) {
   'use strict';
-  const {el, fmt, table, plot, section, CHI2_95_2D, AXES, COLORS} = hecalPage;
+  const {el, fmt, table, plot, section, pageHeader, poseEllipses, frameWords, AXES, COLORS} =
+      hecalPage;
   const {mul, polyTrace, triad, axisTraces, frustum, board} = hecalPage.scene3d;
-  // "T_base_camera" → "the camera's pose in the robot base frame".
-  function frameWords(frame) {
-    const m = /^T_([a-z]+)_([a-z]+)$/.exec(frame);
-    if (!m) return frame;
-    const names = {base: 'robot base', gripper: 'gripper (flange)', camera: 'camera',
-                   target: 'calibration target'};
-    return `${frame}: the ${names[m[2]] || m[2]}'s pose in the ${names[m[1]] || m[1]} frame ` +
-           `(maps ${m[2]} coordinates to ${m[1]} coordinates)`;
-  }
-
   // What to do about a warning of the result file (the texts of src/estimation and src/jobs).
   const ADVICE = [
     [/noise not given|estimated/i, 'The noise model was estimated from these residuals. If you ' +
@@ -131,23 +122,6 @@ hecalPage.pages.calibration = function (data, root) {
   }
 
   // ---- uncertainty ---------------------------------------------------------------------------
-  function ellipse(C, i, j, scale) {
-    const a = C[i][i] * scale * scale, b = C[i][j] * scale * scale, d = C[j][j] * scale * scale;
-    const tr = (a + d) / 2, det = a * d - b * b;
-    const disc = Math.sqrt(Math.max(0, tr * tr - det));
-    const l1 = tr + disc, l2 = Math.max(0, tr - disc);
-    const theta = Math.abs(b) > 1e-300 ? Math.atan2(l1 - a, b) : (a >= d ? 0 : Math.PI / 2);
-    const k = Math.sqrt(CHI2_95_2D);
-    const xs = [], ys = [];
-    for (let n = 0; n <= 72; ++n) {
-      const t = 2 * Math.PI * n / 72;
-      const u = k * Math.sqrt(l1) * Math.cos(t), v = k * Math.sqrt(l2) * Math.sin(t);
-      xs.push(u * Math.cos(theta) - v * Math.sin(theta));
-      ys.push(u * Math.sin(theta) + v * Math.cos(theta));
-    }
-    return [xs, ys];
-  }
-
   function uncertainty(r) {
     const unit = r.units.length;
     const c = r.covariance;
@@ -170,23 +144,7 @@ hecalPage.pages.calibration = function (data, root) {
     plot(s, bars, {title: {text: 'σ per axis'}, height: 340, barmode: 'group',
                    grid: {rows: 1, columns: 2, pattern: 'independent'},
                    yaxis: {title: {text: 'σ (deg)'}}, yaxis2: {title: {text: `σ (${unit})`}}});
-    const pairs = [[0, 1], [0, 2], [1, 2]];
-    const ell = [];
-    const pairColors = ['#3366cc', '#dc3912', '#109618'];
-    pairs.forEach(([i, j], k) => {
-      const [rx, ry] = ellipse(c.X, i, j, 180 / Math.PI);
-      ell.push({type: 'scatter', mode: 'lines', x: rx, y: ry, name: `${rot[i]}–${rot[j]}`,
-                line: {color: pairColors[k]}, legendgroup: String(k)});
-      const [tx, ty] = ellipse(c.X, i + 3, j + 3, 1);
-      ell.push({type: 'scatter', mode: 'lines', x: tx, y: ty, name: `${tra[i]}–${tra[j]}`,
-                xaxis: 'x2', yaxis: 'y2', line: {color: pairColors[k], dash: 'dot'},
-                legendgroup: String(k)});
-    });
-    plot(s, ell, {title: {text: '95% ellipses of X\'s error (pairs of axes, marginal)'},
-                  height: 400, grid: {rows: 1, columns: 2, pattern: 'independent'},
-                  xaxis: {title: {text: 'rotation (deg)'}, scaleanchor: 'y'}, yaxis: {title: {text: 'rotation (deg)'}},
-                  xaxis2: {title: {text: `translation (${unit})`}, scaleanchor: 'y2'},
-                  yaxis2: {title: {text: `translation (${unit})`}}});
+    poseEllipses(s, c.X, 1, unit);
     const mc = c.model_check;
     if (!mc) return;
     s.appendChild(el('h3', {}, 'Model check: model σ against the jackknife'));
@@ -331,10 +289,7 @@ hecalPage.pages.calibration = function (data, root) {
   // ---- the page ------------------------------------------------------------------------------
   const results = data.results;
   const primary = results.find((r) => !r.error && r.method === 'ml') || results.find((r) => !r.error);
-  root.appendChild(el('h1', {}, 'hecal calibration report'));
-  root.appendChild(el('p', {class: 'muted'}, `${data.title} — hecal ${data.hecal_version}; this ` +
-    `page is ${(data.page_bytes / 1e6).toFixed(2)} MB, Plotly.js included, and loads nothing ` +
-    `from the network.`));
+  pageHeader('hecal calibration report', data);
   for (const note of data.notes) root.appendChild(el('div', {class: 'note'}, note));
   if (!primary) {
     section('No result', el('p', {class: 'error'}, 'Every method refused the data: ' +

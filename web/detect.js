@@ -2,18 +2,15 @@
 // page"): builds its sections from the page data of src/report/detection_page.cc (kind
 // "detect"): per image the detected corners and their reprojection RMS at the image's own PnP
 // pose, the per-point figures of web/images.js, and the cameras' poses around the target in 3D.
-// Helpers (el, plot, section, scene3d, ...) come from web/page.js.
+// Helpers (el, plot, section, pageHeader, scene3d, ...) come from web/page.js.
 hecalPage.pages.detect = function (data, root) {
   'use strict';
-  const {el, fmt, table, plot, section, COLORS} = hecalPage;
+  const {el, fmt, table, plot, section, pageHeader, COLORS} = hecalPage;
   const {invert, polyTrace, triad, axisTraces, frustum, board} = hecalPage.scene3d;
   const per = data.per_image;
   const k = data.intrinsics;
 
-  root.appendChild(el('h1', {}, 'hecal detection report'));
-  root.appendChild(el('p', {class: 'muted'}, `${data.title} — hecal ${data.hecal_version}; this ` +
-    `page is ${(data.page_bytes / 1e6).toFixed(2)} MB, Plotly.js included, and loads nothing ` +
-    `from the network.`));
+  pageHeader('hecal detection report', data);
 
   // ---- the detections ----------------------------------------------------------------------
   const s = section('Detections', el('p', {},

@@ -43,6 +43,64 @@ const hecalPage = (function () {
     return s;
   }
 
+  // "T_base_camera" → "the camera's pose in the robot base frame".
+  function frameWords(frame) {
+    const m = /^T_([a-z]+)_([a-z]+)$/.exec(frame);
+    if (!m) return frame;
+    const names = {base: 'robot base', gripper: 'gripper (flange)', camera: 'camera',
+                   target: 'calibration target'};
+    return `${frame}: the ${names[m[2]] || m[2]}'s pose in the ${names[m[1]] || m[1]} frame ` +
+           `(maps ${m[2]} coordinates to ${m[1]} coordinates)`;
+  }
+
+  // The page's title and the line every page starts with (its size, offline).
+  function pageHeader(heading, data) {
+    root.appendChild(el('h1', {}, heading));
+    root.appendChild(el('p', {class: 'muted'}, `${data.title} — hecal ${data.hecal_version}; this ` +
+      `page is ${(data.page_bytes / 1e6).toFixed(2)} MB, Plotly.js included, and loads nothing ` +
+      `from the network.`));
+  }
+  // The curve of the 2×2 block (i, j) of covariance C, scaled by `unit` (e.g. rad → deg), at k σ:
+  // [xs, ys] around the origin (72 segments).
+  function ellipse(C, i, j, unit, k) {
+    const a = C[i][i] * unit * unit, b = C[i][j] * unit * unit, d = C[j][j] * unit * unit;
+    const tr = (a + d) / 2, det = a * d - b * b;
+    const disc = Math.sqrt(Math.max(0, tr * tr - det));
+    const l1 = tr + disc, l2 = Math.max(0, tr - disc);
+    const theta = Math.abs(b) > 1e-300 ? Math.atan2(l1 - a, b) : (a >= d ? 0 : Math.PI / 2);
+    const xs = [], ys = [];
+    for (let n = 0; n <= 72; ++n) {
+      const t = 2 * Math.PI * n / 72;
+      const u = k * Math.sqrt(l1) * Math.cos(t), v = k * Math.sqrt(l2) * Math.sin(t);
+      xs.push(u * Math.cos(theta) - v * Math.sin(theta));
+      ys.push(u * Math.sin(theta) + v * Math.cos(theta));
+    }
+    return [xs, ys];
+  }
+
+  // The figure of X's 95% error ellipses for each pair of axes (marginal 2×2 blocks, χ²₂) from the
+  // 6×6 covariance C of (ω, v) in radians and a length unit; `scale` turns that unit into `unit`.
+  function poseEllipses(parent, C, scale, unit) {
+    const rot = ['rx', 'ry', 'rz'], tra = ['tx', 'ty', 'tz'];
+    const colors = ['#3366cc', '#dc3912', '#109618'];
+    const traces = [];
+    [[0, 1], [0, 2], [1, 2]].forEach(([i, j], k) => {
+      const [rx, ry] = ellipse(C, i, j, 180 / Math.PI, Math.sqrt(CHI2_95_2D));
+      traces.push({type: 'scatter', mode: 'lines', x: rx, y: ry, name: `${rot[i]}–${rot[j]}`,
+                   line: {color: colors[k]}, legendgroup: String(k)});
+      const [tx, ty] = ellipse(C, i + 3, j + 3, scale, Math.sqrt(CHI2_95_2D));
+      traces.push({type: 'scatter', mode: 'lines', x: tx, y: ty, name: `${tra[i]}–${tra[j]}`,
+                   xaxis: 'x2', yaxis: 'y2', line: {color: colors[k], dash: 'dot'},
+                   legendgroup: String(k)});
+    });
+    return plot(parent, traces, {
+      title: {text: '95% ellipses of X\'s error (pairs of axes, marginal)'}, height: 400,
+      grid: {rows: 1, columns: 2, pattern: 'independent'},
+      xaxis: {title: {text: 'rotation (deg)'}, scaleanchor: 'y'}, yaxis: {title: {text: 'rotation (deg)'}},
+      xaxis2: {title: {text: `translation (${unit})`}, scaleanchor: 'y2'},
+      yaxis2: {title: {text: `translation (${unit})`}}});
+  }
+
   // ---- 3D scenes (the calibration page's robot scene, the detect page's cameras) ------------
   // Poses are 4×4 row arrays; polylines are arrays of [x, y, z] points.
   const scene3d = (function () {
@@ -103,6 +161,6 @@ const hecalPage = (function () {
     }
     page(data, root);
   }
-  return {root, el, fmt, table, plot, section, render, scene3d, CHI2_95_2D, AXES, COLORS,
-          pages: {}};
+  return {root, el, fmt, table, plot, section, pageHeader, ellipse, poseEllipses, frameWords, render,
+          scene3d, CHI2_95_2D, AXES, COLORS, pages: {}};
 })();

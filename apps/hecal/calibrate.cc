@@ -141,10 +141,6 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
                       {"--correspondences", flags.correspondences}});
   };
   if (flags.method == "global" || !flags.correspondences.empty()) {
-    if (!flags.report.empty()) {
-      throw InputError("--report", 0, "the HTML report does not show target-free results yet",
-                       "leave --report out with --method global (docs/report.md)");
-    }
     check_outputs();
     return RunCalibrateGlobal(flags, io);
   }

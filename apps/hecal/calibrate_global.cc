@@ -1,8 +1,10 @@
 // `hecal calibrate --method global` (calibrate.h: RunCalibrateGlobal): binds the flags into
 // report::GlobalCalibrationOptions, checks which source of matches the flags name, reads them
 // (jobs::ReadGlobalMatches from a correspondence file, jobs::GlobalMatchesFromImages from
-// images), runs jobs::CalibrateGlobal and prints.
+// images), runs jobs::CalibrateGlobal, prints, and writes the result file (--output) and its
+// HTML page (--report, report/global_page.h), both or neither.
 #include <chrono>
+#include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -128,9 +130,18 @@ void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io) {
   report::PrintGlobalSummary(io.out, result, units);
   for (const std::string& warning : result.warnings)
     io.err << "hecal: warning: " << warning << "\n";
-  if (flags.output.empty()) return;
-  report::WriteGlobalResult(flags.output, result);
-  io.out << "wrote " << flags.output << "\n";
+  const std::string json = report::GlobalResultJson(result);
+  std::vector<io::OutputFile> outputs;
+  if (!flags.output.empty()) outputs.push_back({"--output", flags.output, json});
+  if (!flags.report.empty()) {
+    const std::string title = std::filesystem::path(flags.report).filename().string();
+    outputs.push_back(
+        {"--report", flags.report, report::FormatGlobalReport(json, "the global result", title)});
+  }
+  io::WriteFilesAtomically(outputs);
+  for (const std::string& file : {flags.output, flags.report}) {
+    if (!file.empty()) io.out << "wrote " << file << "\n";
+  }
 }
 
 }  // namespace hecal::cli

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -83,6 +84,11 @@ class CalibrateGlobal : public CliTest {
     EXPECT_LT(Eigen::AngleAxisd(R.transpose() * scene_.X.linear()).angle(), 1e-6);
     EXPECT_LT((t - scene_.X.translation()).norm(), 1e-6);
     EXPECT_EQ(doc["covariance"]["X"].size(), 6u);
+    ASSERT_EQ(doc["motions"].size(), 4u);  // noise-free: every motion fits to rounding
+    for (const nlohmann::json& motion : doc["motions"]) {
+      EXPECT_EQ(motion["pairs"].get<int>(), 20);
+      EXPECT_LT(motion["max_rad"].get<double>(), 1e-6);
+    }
   }
 
   testing::EpipolarScene scene_;
@@ -97,6 +103,37 @@ void ExpectRefusal(const cli_test::Outcome& result, const std::string& words) {
   EXPECT_EQ(result.code, 2) << result.out;
   EXPECT_NE(result.err.find(words), std::string::npos) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+}
+
+// --report writes the global page beside the result file (both or neither); `hecal report` on
+// the result file writes the same kind of page, and refuses a robot table (no scene to show) and
+// an image folder (no images).
+TEST_F(CalibrateGlobal, ReportPageFromTheRunAndFromTheResultFile) {
+  const std::vector<std::string> args = {
+      "calibrate",   "--method", "global", "--robot",           Path("robot.csv"),   "--setup",
+      "eye-in-hand", "--reach",  "1",      "--correspondences", Path("bearings.csv")};
+  std::vector<std::string> both = args, missing = args;
+  both.insert(both.end(), {"--output", Path("g.json"), "--report", Path("g.html")});
+  const auto run = Hecal(both);
+  ASSERT_EQ(run.code, 0) << run.err;
+  const std::string page = Read("g.html");
+  EXPECT_NE(page.find("\"kind\":\"global\""), std::string::npos);
+  EXPECT_NE(page.find("\"motions\":[{"), std::string::npos);
+  EXPECT_NE(run.out.find("wrote " + Path("g.html")), std::string::npos) << run.out;
+  const auto report = Hecal({"report", Path("g.json"), "--output", Path("again.html")});
+  ASSERT_EQ(report.code, 0) << report.err;
+  EXPECT_NE(Read("again.html").find("\"kind\":\"global\""), std::string::npos);
+  ExpectRefusal(Hecal({"report", Path("g.json"), "--robot", Path("robot.csv"), "--output",
+                       Path("scene.html")}),
+                "no robot scene");
+  EXPECT_FALSE(std::filesystem::exists(Path("scene.html")));
+  ExpectRefusal(
+      Hecal({"report", Path("g.json"), "--images", Path("."), "--output", Path("images.html")}),
+      "not from images");
+  EXPECT_FALSE(std::filesystem::exists(Path("images.html")));
+  missing.insert(missing.end(), {"--output", Path("h.json"), "--report", Path("no/h.html")});
+  ExpectRefusal(Hecal(missing), "--report");
+  EXPECT_FALSE(std::filesystem::exists(Path("h.json")));
 }
 
 // --robot-sigma MM,DEG: the robot's noise is held at the given levels (only the ray noise is

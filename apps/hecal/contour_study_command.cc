@@ -1,7 +1,8 @@
 // `hecal contour study` (docs/cli.md#hecal-contour-study): the contour paper's experiments
 // (contour/contour_study.h). The flags bind into contour::ContourStudyOptions, whose IsValid
 // checks every range (field_flags.h names the flag); report/contour_study_file.h writes the CSV
-// and the figures, all or none, after the whole study ran.
+// and the HTML page with the paper's Fig. 3 and 4 (--report), all or none, after the whole study
+// ran.
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <memory>
@@ -14,25 +15,22 @@
 namespace hecal::cli {
 namespace {
 
+// Monte Carlo poses kept for the page's Fig. 4 (of --samples per step).
+constexpr int kPlottedSamples = 1000;
+
 struct StudyCommand {
   contour::ContourStudyOptions options;
   std::string contour;  // --contour: the target's control points, read into options.target
-  std::string output, plot, covariance_plot;
+  std::string output, report;
   std::optional<double> covariance_at;
 };
 
 void RunStudy(StudyCommand command, const Io& io) {
   contour::ContourStudyOptions& o = command.options;
   if (!command.contour.empty()) o.target = io::ReadContourFile(command.contour);
-  if (!command.covariance_plot.empty()) o.keep_samples = 1000;
+  if (!command.report.empty()) o.keep_samples = kPlottedSamples;
   RequireValid(o);
-  std::string plot = command.plot;
-  if (plot.empty() && !command.output.empty()) {
-    plot = std::filesystem::path(command.output).replace_extension(".svg").string();
-  }
-  io::CheckOutputs({{"--output", command.output},
-                    {"--plot", plot},
-                    {"--covariance-plot", command.covariance_plot}},
+  io::CheckOutputs({{"--output", command.output}, {"--report", command.report}},
                    {{"--contour", command.contour}});
 
   const std::vector<contour::StudyStep> steps = contour::RunContourStudy(o);
@@ -42,14 +40,14 @@ void RunStudy(StudyCommand command, const Io& io) {
   if (!command.output.empty()) {
     outputs.push_back({"--output", command.output, report::ContourStudyCsv(o, steps)});
   }
-  if (!plot.empty()) outputs.push_back({"--plot", plot, report::ContourStudyFigure(o, steps)});
-  if (!command.covariance_plot.empty()) {
-    outputs.push_back(
-        {"--covariance-plot", command.covariance_plot,
-         report::ContourCovarianceFigure(o, steps, command.covariance_at.value_or(o.from))});
+  if (!command.report.empty()) {
+    const std::string title = std::filesystem::path(command.report).filename().string();
+    outputs.push_back({"--report", command.report,
+                       report::FormatHtmlPage(report::ContourStudyPageData(
+                           o, steps, command.covariance_at.value_or(o.from), title))});
   }
   io::WriteFilesAtomically(outputs);
-  for (const std::string& file : {command.output, plot, command.covariance_plot}) {
+  for (const std::string& file : {command.output, command.report}) {
     if (!file.empty()) io.out << "wrote " << file << "\n";
   }
 }
@@ -85,11 +83,11 @@ void AddContourStudyCommand(CLI::App& contour, const Io& io) {
       "UT centre weight w0 (0)");
   study->add_option("--output", command->output,
                     "CSV: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias");
-  study->add_option("--plot", command->plot, "Fig. 3 SVG (default: --output with .svg)");
-  study->add_option("--covariance-plot", command->covariance_plot, "Fig. 4 SVG");
+  study->add_option("--report", command->report,
+                    "HTML page: the numbers, the paper's Fig. 3 and Fig. 4 (docs/report.md)");
   study->add_option_function<double>(
       "--covariance-at", [command](double at) { command->covariance_at = at; },
-      "Motion value of the covariance plot (default: --from)");
+      "Motion value of the page's Fig. 4 (default: --from)");
   study->callback([command, io] { RunStudy(*command, io); });
 }
 

@@ -7,8 +7,8 @@
 // contour::ShapeTrackerOptions and RenderOptions beyond the fields SequenceTrackingOptions and
 // SequenceRenderOptions bound more tightly, UnscentedPoseOptions.bias_threshold,
 // uncertainty::MeanOptions, estimation::StationTestOptions, sim::TriangleThresholdOptions and
-// ProtocolOptions, report::svg::FigureOptions, and the vision options (DetectOptions,
-// IntrinsicsOptions, IntrinsicsFitOptions, OrderOptions, RenderOptions).
+// ProtocolOptions, and the vision options (DetectOptions, IntrinsicsOptions,
+// IntrinsicsFitOptions, OrderOptions, RenderOptions).
 #include <gtest/gtest.h>
 
 #include <algorithm>

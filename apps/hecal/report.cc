@@ -14,7 +14,9 @@ void RegisterReportCommand(CLI::App& app, const Io& io) {
   auto options = std::make_shared<jobs::CalibrationReportOptions>();
   CLI::App* command = app.add_subcommand(
       "report", "Write the interactive HTML page of a calibration result (opens offline)");
-  command->add_option("RESULT", options->result, "Result file of `hecal calibrate --output` (JSON)")
+  command
+      ->add_option("RESULT", options->result,
+                   "Result file of `hecal calibrate --output` (JSON; also of --method global)")
       ->required();
   command->add_option("--output", options->output, "The page, e.g. report.html")->required();
   command->add_option("--robot", options->robot,

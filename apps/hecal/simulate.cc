@@ -1,8 +1,9 @@
 // `hecal simulate` (docs/cli.md#hecal-simulate, docs/thesis-study.md): binds the flags into
 // jobs::SimulateOptions (jobs/simulate.h; list flags parsed once here, ranges checked by its
 // IsValid), runs jobs::Simulate, prints a table per setting (report/study_text.h) and writes the
-// CSV files of study/study_csv.h.
+// CSV files of study/study_csv.h and the HTML page (report/simulate_page.h), all or none.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -39,22 +40,34 @@ struct SimulateCommand {
   jobs::SimulateOptions options;
   std::string output;
   std::string summary;
+  std::string report;
   StreamStudyFlags streams;  // --streams and its flags
 };
 
 void RunSimulate(const SimulateCommand& command, const Io& io) {
   if (command.streams.streams) {
+    if (!command.report.empty()) {
+      throw InputError("--report", 0, "--report has no page for the stream study",
+                       "leave --report out with --streams");
+    }
     return RunSimulateStreams(command.options, command.streams, command.output, command.summary,
                               io);
   }
   RequireValid(command.options);  // before the output paths are checked
-  io::CheckOutputs({{"--output", command.output}, {"--summary", command.summary}}, {});
+  io::CheckOutputs(
+      {{"--output", command.output}, {"--summary", command.summary}, {"--report", command.report}},
+      {});
   const study::StudyResult result = jobs::Simulate(command.options);
   std::vector<io::OutputFile> outputs;
   if (!command.output.empty())
     outputs.push_back({"--output", command.output, study::TrialsCsv(result)});
   if (!command.summary.empty()) {
     outputs.push_back({"--summary", command.summary, study::SummaryCsv(result)});
+  }
+  if (!command.report.empty()) {
+    const std::string title = std::filesystem::path(command.report).filename().string();
+    outputs.push_back({"--report", command.report,
+                       report::FormatHtmlPage(report::SimulatePageData(result, title))});
   }
   io::WriteFilesAtomically(outputs);
   io.out << "hecal simulate: seed " << command.options.seed << "\n";
@@ -65,6 +78,7 @@ void RunSimulate(const SimulateCommand& command, const Io& io) {
   if (!command.summary.empty()) {
     io.out << "hecal: wrote the summary to " << command.summary << "\n";
   }
+  if (!command.report.empty()) io.out << "hecal: wrote the page to " << command.report << "\n";
 }
 
 }  // namespace
@@ -158,6 +172,8 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
                      "Tell no method the sigmas: estimated from the residuals (the default path)");
   simulate->add_option("--output", command->output, "Per-trial CSV (written atomically)");
   simulate->add_option("--summary", command->summary, "Summary CSV (written atomically)");
+  simulate->add_option("--report", command->report,
+                       "HTML page of the results with figures (docs/report.md; opens offline)");
   AddStreamStudyFlags(*simulate, command->streams);
   simulate->footer(kFooter);
   simulate->callback([command, io] { RunSimulate(*command, io); });

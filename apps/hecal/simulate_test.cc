@@ -76,5 +76,36 @@ TEST_F(SimulateCommand, BadFlagsExitTwoWithOneLine) {
   EXPECT_FALSE(std::filesystem::exists(Path("missing/dir/trials.csv")));
 }
 
+// --report writes the page with the CSV files, or nothing: a page in a missing directory leaves
+// the CSV unwritten too.
+TEST_F(SimulateCommand, ReportIsWrittenWithTheOtherFilesOrNotAtAll) {
+  const std::vector<std::string> common = {"simulate", "--stations", "3,5",      "--trials",  "3",
+                                           "--sigma",  "0.3",        "--method", "andreff,ml"};
+  std::vector<std::string> good = common, bad = common;
+  good.insert(good.end(), {"--summary", Path("summary.csv"), "--report", Path("study.html")});
+  const Outcome run = Hecal(good);
+  ASSERT_EQ(run.code, 0) << run.err;
+  const std::string page = Read("study.html");
+  EXPECT_NE(page.find("\"kind\":\"simulate\""), std::string::npos);
+  EXPECT_NE(page.find("hecalPage.pages.simulate"), std::string::npos);
+  EXPECT_NE(run.out.find("wrote the page to"), std::string::npos) << run.out;
+  bad.insert(bad.end(), {"--summary", Path("other.csv"), "--report", Path("missing/study.html")});
+  const Outcome refused = Hecal(bad);
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_NE(refused.err.find("--report"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("other.csv")));
+}
+
+// The stream study has no page: --report with --streams exits 2 and writes nothing.
+TEST_F(SimulateCommand, ReportIsRefusedWithStreams) {
+  const Outcome run =
+      Hecal({"simulate", "--streams", "--trials", "1", "--report", Path("streams.html")});
+  EXPECT_EQ(run.code, 2) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_NE(run.err.find("--report"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("streams.html")));
+}
+
 }  // namespace
 }  // namespace hecal::cli

@@ -78,6 +78,7 @@
 #include "hecal/report/contour_study_text.h"
 #include "hecal/report/contour_track_file.h"
 #include "hecal/report/contour_track_text.h"
+#include "hecal/report/global_page.h"
 #include "hecal/report/global_result.h"
 #include "hecal/report/global_text.h"
 #include "hecal/report/html_report.h"
@@ -86,4 +87,5 @@
 #include "hecal/report/report_input.h"
 #include "hecal/report/result_file.h"
 #include "hecal/report/result_text.h"
+#include "hecal/report/simulate_page.h"
 #include "hecal/report/study_text.h"

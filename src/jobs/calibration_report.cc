@@ -9,6 +9,7 @@
 #include "hecal/core/options_check.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/jobs/report_thumbnails.h"
+#include "hecal/report/global_page.h"
 #include "hecal/report/html_report.h"
 #include "hecal/report/report_input.h"
 
@@ -108,8 +109,21 @@ void WriteCalibrationReport(const CalibrationReportOptions& options) {
     throw InputError("CalibrationReportOptions.result", 0, "no result file",
                      "name the result file calibrate wrote");
   }
-  Write(io::ReadFile(options.result), options.result,
-        std::filesystem::path(options.result).filename().string(), {}, options);
+  const std::string text = io::ReadFile(options.result);
+  const std::string title = std::filesystem::path(options.result).filename().string();
+  if (report::IsGlobalResult(nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false))) {
+    if (!options.robot.empty()) {
+      throw InputError("--robot", 0, "the target-free result's page has no robot scene",
+                       "leave --robot out for a `--method global` result (docs/report.md)");
+    }
+    if (!options.images.empty()) {
+      throw InputError("--images", 0, "the result " + options.result + " is not from images",
+                       "leave --images out for a `--method global` result (docs/report.md)");
+    }
+    return io::WriteFileAtomically(options.output,
+                                   report::FormatGlobalReport(text, options.result, title));
+  }
+  Write(text, options.result, title, {}, options);
 }
 
 void WriteCalibrationReport(const report::ResultDocument& document, const std::string& title,

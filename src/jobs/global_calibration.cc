@@ -189,6 +189,22 @@ report::GlobalCalibrationResult CalibrateGlobal(
     result.removed.push_back({m.first_name, m.second_name, id,
                               by != stage.end() ? by->second : "re-check at the polished X"});
   }
+  // Each motion's residuals at the final X (the re-check keeps the motions in order).
+  for (std::size_t k = 0; k < matches.motions.size(); ++k) {
+    report::MotionResidual residual{matches.motions[k].first_name, matches.motions[k].second_name};
+    const global::EpipolarMotion& kept = rechecked.inliers.motions[k];
+    double squares = 0.0;
+    for (const global::BearingPair& pair : kept.pairs) {
+      const double r =
+          std::abs(estimation::SampsonAngle(result.robot_noise.polish.X, kept.hand, pair));
+      squares += r * r;
+      residual.max = std::max(residual.max, r);
+    }
+    residual.pairs = int(kept.pairs.size());
+    residual.rms = kept.pairs.empty() ? 0.0 : std::sqrt(squares / double(kept.pairs.size()));
+    for (const auto& [motion, id] : rechecked.removed) residual.removed += motion == int(k);
+    result.motions.push_back(std::move(residual));
+  }
   return result;
 }
 }  // namespace hecal::jobs

@@ -56,14 +56,40 @@ TEST(NearestStep, PicksTheClosestMotionValueAndTheFirstOfEquals) {
   EXPECT_EQ(NearestStep(steps, -3.0).value, 0.0);
 }
 
-TEST(ContourStudyFigure, IsOneSvgWithSixPanels) {
+// The page data: every step in display units, Fig. 4's step the nearest to `at` with its
+// covariances scaled per component (mm², mm·deg, deg²) and its poses as errors against the truth.
+TEST(ContourStudyPage, StepsAndTheCovarianceStepInDisplayUnits) {
   contour::ContourStudyOptions options;
-  const std::string svg = ContourStudyFigure(options, TwoSteps());
-  EXPECT_EQ(svg.rfind("<svg", 0) == 0 || svg.rfind("<?xml", 0) == 0, true);
-  for (const char* name :
-       {"Tx error", "Ty error", "Tz error", "Rx error", "Ry error", "Rz error"}) {
-    EXPECT_NE(svg.find(name), std::string::npos) << name;
-  }
+  options.motion = contour::StudyMotion::kRx;
+  std::vector<contour::StudyStep> steps = TwoSteps();
+  steps[1].truth << 0, 0, 5000, 0.2, 0, 0;
+  steps[1].mc_poses = {steps[1].truth, steps[1].truth};
+  steps[1].mc_poses[1](0) += 1.0;   // 1 mm along Tx
+  steps[1].mc_poses[1](3) += 0.01;  // 0.01 rad about x
+  steps[1].sigma_poses.assign(13, steps[1].truth);
+  const nlohmann::json data = ContourStudyPageData(options, steps, 8.0, "rx.html");
+  EXPECT_EQ(data["kind"], "contour_study");
+  EXPECT_EQ(data["title"], "rx.html");
+  EXPECT_EQ(data["motion"], "rx");
+  EXPECT_EQ(data["motion_label"], "rx (deg)");
+  EXPECT_EQ(data["components"].size(), 6u);
+  EXPECT_EQ(data["units"][0], "mm");
+  EXPECT_EQ(data["units"][3], "deg");
+  ASSERT_EQ(data["steps"].size(), 2u);
+  const double deg = 180.0 / std::numbers::pi;
+  EXPECT_DOUBLE_EQ(data["steps"][0]["mc_sd"][0].get<double>(), 0.1);  // mm stay mm
+  EXPECT_DOUBLE_EQ(data["steps"][0]["ut_sd"][4].get<double>(), 0.2 * deg);
+  EXPECT_TRUE(data["steps"][1]["bias"][3].get<bool>());
+  const nlohmann::json& cov = data["covariance"];
+  EXPECT_EQ(cov["value"], 10.0);  // 8 is nearer to 10 than to 0
+  EXPECT_DOUBLE_EQ(cov["mc_covariance"][0][0].get<double>(), 0.01);
+  EXPECT_DOUBLE_EQ(cov["mc_covariance"][0][3].get<double>(), 0.0);
+  EXPECT_NEAR(cov["ut_covariance"][3][3].get<double>(), 0.01 * deg * deg, 1e-9);
+  ASSERT_EQ(cov["mc_samples"].size(), 2u);
+  EXPECT_NEAR(cov["mc_samples"][1][0].get<double>(), 1.0, 1e-9);
+  EXPECT_NEAR(cov["mc_samples"][1][3].get<double>(), 0.01 * deg, 1e-6);
+  EXPECT_NEAR(cov["mc_samples"][0][5].get<double>(), 0.0, 1e-12);
+  EXPECT_EQ(cov["sigma_points"].size(), 13u);
 }
 
 }  // namespace

@@ -140,6 +140,16 @@ std::string GlobalResultJson(const GlobalCalibrationResult& result) {
     removed.push_back({{"first", r.first}, {"second", r.second}, {"id", r.id}, {"by", r.by}});
   }
   doc["matches"]["removed"] = removed;
+  nlohmann::json motions = nlohmann::json::array();
+  for (const MotionResidual& m : result.motions) {
+    motions.push_back({{"first", m.first},
+                       {"second", m.second},
+                       {"pairs", m.pairs},
+                       {"removed", m.removed},
+                       {"rms_rad", m.rms},
+                       {"max_rad", m.max}});
+  }
+  doc["motions"] = motions;
   doc["warnings"] = result.warnings;
   return doc.dump(2) + "\n";
 }

@@ -20,6 +20,12 @@ extern const char hecal_report_calibration_js[];
 extern const char hecal_report_calibration_js_end[];
 extern const char hecal_report_detect_js[];
 extern const char hecal_report_detect_js_end[];
+extern const char hecal_report_simulate_js[];
+extern const char hecal_report_simulate_js_end[];
+extern const char hecal_report_contour_study_js[];
+extern const char hecal_report_contour_study_js_end[];
+extern const char hecal_report_global_js[];
+extern const char hecal_report_global_js_end[];
 extern const char hecal_report_page_css[];
 extern const char hecal_report_page_css_end[];
 }
@@ -43,6 +49,9 @@ const Script kPageScripts[] = {
     {hecal_report_images_js, hecal_report_images_js_end},
     {hecal_report_calibration_js, hecal_report_calibration_js_end},
     {hecal_report_detect_js, hecal_report_detect_js_end},
+    {hecal_report_simulate_js, hecal_report_simulate_js_end},
+    {hecal_report_contour_study_js, hecal_report_contour_study_js_end},
+    {hecal_report_global_js, hecal_report_global_js_end},
 };
 
 // At most `limit` of `stations`: every outlier and an even sample of the others, in order; each

@@ -6,107 +6,22 @@
 #include <initializer_list>
 
 #include "hecal/core/error.h"
+#include "hecal/report/json_checker.h"
 
 namespace hecal::report {
 namespace {
 
 using nlohmann::json;
+using Checker = JsonChecker;
 
+// The fix of every error about a target-free result file.
+constexpr const char* kGlobalFix =
+    "give a result file written by `hecal calibrate --method global --output FILE.json` "
+    "(docs/result-file.md#target-free---method-global)";
+
+// The fix of every error about a calibration result file.
 constexpr const char* kFix =
     "give a result file written by `hecal calibrate --output FILE.json` (docs/result-file.md)";
-
-// Checks fields below one object; `path` is the JSON path shown in errors ("results[0].X").
-class Checker {
- public:
-  Checker(const std::string& source, const json& value, std::string path)
-      : source_(source), value_(value), path_(std::move(path)) {}
-
-  [[noreturn]] void Fail(const std::string& field, const std::string& expected) const {
-    throw InputError(source_, 0, "field " + Join(field) + ": expected " + expected, kFix);
-  }
-
-  const json& Get(const std::string& field) const {
-    if (!value_.is_object()) Fail("", "an object");
-    const auto it = value_.find(field);
-    if (it == value_.end())
-      throw InputError(source_, 0, "field " + Join(field) + " is missing", kFix);
-    return *it;
-  }
-  bool Has(const std::string& field) const { return value_.contains(field); }
-
-  Checker Object(const std::string& field) const {
-    const json& v = Get(field);
-    if (!v.is_object()) Fail(field, "an object");
-    return {source_, v, Join(field)};
-  }
-  void String(const std::string& field) const {
-    if (!Get(field).is_string()) Fail(field, "a string");
-  }
-  void OneOf(const std::string& field, std::initializer_list<const char*> choices) const {
-    const json& v = Get(field);
-    std::string names;
-    for (const char* choice : choices) {
-      if (v.is_string() && v.get<std::string>() == choice) return;
-      names += names.empty() ? "" : " or ";
-      names += choice;
-    }
-    Fail(field, names);
-  }
-  void Bool(const std::string& field) const {
-    if (!Get(field).is_boolean()) Fail(field, "true or false");
-  }
-  void Number(const std::string& field) const {
-    const json& v = Get(field);
-    if (!v.is_number() || !std::isfinite(v.get<double>())) Fail(field, "a finite number");
-  }
-  void Vector(const std::string& field, size_t n) const {
-    if (!IsVector(Get(field), n)) Fail(field, std::to_string(n) + " finite numbers");
-  }
-  void Matrix(const std::string& field, size_t n) const {
-    const json& v = Get(field);
-    bool ok = v.is_array() && v.size() == n;
-    for (size_t r = 0; ok && r < n; ++r) ok = IsVector(v[r], n);
-    if (!ok) Fail(field, "a " + std::to_string(n) + "x" + std::to_string(n) + " matrix of numbers");
-  }
-  // An array whose every element is checked by `each` (a Checker on the element).
-  template <typename Each>
-  void Array(const std::string& field, Each each) const {
-    const json& v = Get(field);
-    if (!v.is_array()) Fail(field, "an array");
-    for (size_t k = 0; k < v.size(); ++k)
-      each(Checker(source_, v[k], Join(field) + "[" + std::to_string(k) + "]"));
-  }
-  // An array of [u, v] pairs of finite numbers (pixels); returns its length.
-  size_t Pairs(const std::string& field) const {
-    const json& v = Get(field);
-    if (!v.is_array()) Fail(field, "an array of [u, v] pairs of numbers");
-    for (size_t k = 0; k < v.size(); ++k)
-      if (!IsVector(v[k], 2))
-        Fail(field + "[" + std::to_string(k) + "]", "[u, v]: 2 finite numbers");
-    return v.size();
-  }
-  void Strings(const std::string& field) const {
-    Array(field, [](const Checker& c) {
-      if (!c.value_.is_string()) c.Fail("", "a string");
-    });
-  }
-
- private:
-  static bool IsVector(const json& v, size_t n) {
-    if (!v.is_array() || v.size() != n) return false;
-    for (const json& x : v)
-      if (!x.is_number() || !std::isfinite(x.get<double>())) return false;
-    return true;
-  }
-  std::string Join(const std::string& field) const {
-    if (field.empty()) return path_.empty() ? "(top level)" : path_;
-    return path_.empty() ? field : path_ + "." + field;
-  }
-
-  const std::string& source_;
-  const json& value_;
-  std::string path_;
-};
 
 void CheckPose(const Checker& pose) {
   pose.String("frame");
@@ -213,23 +128,99 @@ json ParseResultForReport(std::string_view text, const std::string& source) {
     throw InputError(source, 0,
                      "not JSON (hecal report reads the JSON result file; YAML is not read)", kFix);
   }
-  if (!document.is_object()) Checker(source, document, "").Fail("", "a JSON object");
-  if (document.contains("certificate")) {
+  if (!document.is_object()) Checker(source, document, "", kFix).Fail("", "a JSON object");
+  if (IsGlobalResult(document)) {
     throw InputError(source, 0,
-                     "a target-free result (`--method global`): hecal report does not show it yet",
-                     "see the result with `hecal calibrate --method global` (docs/global.md)");
+                     "a target-free result (`--method global`), not a calibration result",
+                     "read it with ParseGlobalResultForReport (docs/report.md)");
   }
   json out = {{"all_methods", document.contains("results")}, {"results", json::array()}};
   if (document.contains("results")) {
-    const Checker top(source, document, "");
+    const Checker top(source, document, "", kFix);
     top.Array("results", CheckResult);
     if (document["results"].empty()) top.Fail("results", "at least one result");
     out["results"] = document["results"];
   } else {
-    CheckResult(Checker(source, document, ""));
+    CheckResult(Checker(source, document, "", kFix));
     out["results"].push_back(std::move(document));
   }
   return out;
+}
+
+bool IsGlobalResult(const json& document) {
+  return document.is_object() && document.contains("certificate");
+}
+
+json ParseGlobalResultForReport(std::string_view text, const std::string& source) {
+  json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (document.is_discarded()) throw InputError(source, 0, "not JSON", kGlobalFix);
+  const Checker r(source, document, "", kGlobalFix);
+  if (!document.is_object()) r.Fail("", "a JSON object");
+  r.OneOf("method", {"global"});
+  r.OneOf("setup", {"eye-in-hand", "eye-to-hand"});
+  const Checker x = r.Object("X");
+  x.String("frame");
+  x.Matrix("rotation", 3);
+  x.Vector("translation_m", 3);
+  const Checker c = r.Object("certificate");
+  for (const char* field : {"lower", "upper", "cubes", "lps", "seconds", "time_budget_s",
+                            "max_cubes", "search_seconds", "epsilon", "relative_gap", "reach_m"}) {
+    c.Number(field);
+  }
+  c.Bool("certified");
+  c.String("stopped_by");
+  c.String("error");
+  const Checker l = r.Object("l_infinity_X");
+  l.Matrix("rotation", 3);
+  l.Vector("translation_m", 3);
+  const Checker cov = r.Object("covariance");
+  cov.String("method");
+  cov.Matrix("X", 6);
+  cov.Matrix("independent_pairs_X", 6);
+  cov.String("convention");
+  for (const char* field :
+       {"ray_sigma_rad", "robot_rotation_sigma_rad", "robot_translation_sigma_m"})
+    cov.Number(field);
+  cov.OneOf("robot_sigma", {"given", "estimated"});
+  const Checker parent = cov.Object("translation_in_parent");
+  parent.String("frame");
+  parent.Vector("translation", 3);
+  const Checker check = cov.Object("model_check");
+  check.Bool("possible");
+  if (check.Get("possible").get<bool>()) {
+    for (const char* part : {"sigma_model", "sigma_check"}) {
+      const Checker sigma = check.Object(part).Object("X");
+      sigma.Vector("rotation_rad", 3);
+      sigma.Vector("translation_m", 3);
+    }
+    check.Strings("flagged");
+    check.Bool("used");
+  } else {
+    check.String("reason");
+  }
+  const Checker polish = r.Object("polish");
+  polish.Number("rms_rad");
+  polish.Number("pairs");
+  const Checker matches = r.Object("matches");
+  for (const char* field :
+       {"inliers", "threshold_rad", "pixel_threshold_rad", "error_scale_rad", "pixel_sigma"}) {
+    matches.Number(field);
+  }
+  matches.Array("removed", [](const Checker& m) {
+    m.String("first");
+    m.String("second");
+    m.Number("id");
+    m.String("by");
+  });
+  if (r.Has("motions")) {  // older files have no per-motion residuals
+    r.Array("motions", [](const Checker& m) {
+      m.String("first");
+      m.String("second");
+      for (const char* field : {"pairs", "removed", "rms_rad", "max_rad"}) m.Number(field);
+    });
+  }
+  r.Strings("warnings");
+  return document;
 }
 
 }  // namespace hecal::report

@@ -6,6 +6,12 @@
 #   kuka2.html       rwhe-kuka2's 28 chessboard images, `calibrate --images --report` (with the
 #                    thumbnails, the residual field and the corner coverage)
 #   kuka2-detect.html the same images, `hecal detect --report` (the detect page)
+#   simulate.html    a small thesis study (2 settings × 20 trials × 3 methods, with covariance),
+#                    `simulate --report`
+#   contour-study.html  the contour study along rx (5 steps × 500 samples), `contour study --report`
+#   global.html      the target-free result of tests/data/report/global-*.csv (a synthetic
+#                    scene; 2000 cubes: not certified, fast), `calibrate --method global
+#                    --output`, then `hecal report`
 # checks that a foreign JSON exits 2 naming the field and writes nothing, then loads every page in
 # headless Chromium with the network off (web/report_pages.mjs: no console error, no request but
 # the file, every figure drawn, a click on an image entry shows that image's thumbnail) and keeps
@@ -36,6 +42,14 @@ cd "$root"
   --report "$out/kuka2.html" >/dev/null
 "$hecal" detect --images data/rwhe-kuka2/images --target data/rwhe-kuka2/target.yaml \
   --threads 2 --output "$out/kuka2-detect.csv" --report "$out/kuka2-detect.html" >/dev/null
+"$hecal" simulate --stations 3,6 --trials 20 --sigma 0.3 --method ml,tsai-lenz,park-martin \
+  --covariance linear --threads 2 --report "$out/simulate.html" >/dev/null
+"$hecal" contour study --motion rx --from 0 --to 20 --steps 5 --samples 500 --threads 2 \
+  --report "$out/contour-study.html" >/dev/null
+"$hecal" calibrate --method global --setup eye-in-hand --robot tests/data/report/global-robot.csv \
+  --correspondences tests/data/report/global-bearings.csv --pixel-sigma 0.000625 --reach 1 \
+  --max-cubes 2000 --threads 2 --output "$out/global.json" >/dev/null 2>&1
+"$hecal" report "$out/global.json" --output "$out/global.html" >/dev/null
 
 # A foreign JSON: exit 2, one line naming the field, no page.
 echo '{"hecal_version": "0.1.0", "setup": "eye-to-hand", "method": "ml", "units": {"length": "m"}, "X": {"frame": "T_base_camera", "matrix": [[1, 0, 0]]}}' \
@@ -52,4 +66,4 @@ fi
 
 cd "$root/web"
 node report_pages.mjs "$chromium" "$out/moveit-ml.html" "$out/moveit-all.html" "$out/kuka2.html" \
-  "$out/kuka2-detect.html"
+  "$out/kuka2-detect.html" "$out/simulate.html" "$out/contour-study.html" "$out/global.html"

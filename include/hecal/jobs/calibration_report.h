@@ -14,6 +14,9 @@
 // (images.per_image[].file, written by this version on); the page shows the thumbnail under the
 // image's detected points when clicked.
 //
+// A target-free result file (`--method global`, report::IsGlobalResult) gets the global page
+// (report/global_page.h) instead; it takes no robot table and no images.
+//
 // Errors (InputError): the result file (not JSON, a missing or mistyped field, named as
 // "field results[0].X.matrix"), the robot table (read errors, a station id it lacks), `images`
 // given for a result that is not from images or names no files, an image missing from the folder
@@ -41,7 +44,8 @@ struct CalibrationReportOptions {
   bool IsValid(std::string* why) const;
 };
 
-// `hecal report`: reads options.result, writes options.output.
+// `hecal report`: reads options.result (a calibration or a target-free result), writes
+// options.output.
 void WriteCalibrationReport(const CalibrationReportOptions& options);
 
 // `hecal calibrate --report`: the same page from the document in memory (options.result unused;

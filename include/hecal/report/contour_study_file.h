@@ -4,15 +4,18 @@
 //    component: motion,value,component,mc_mean_error,mc_std,ut_mean_error,ut_std,bias
 //    (component Tx,Ty,Tz,Rx,Ry,Rz; errors against the true motion in mm and degrees; bias 1 when
 //    the bias check flags the component);
-//  - the contour paper's Fig. 3 (SVG, report/svg_figure.h): mean error ± 2σ against the motion,
-//    UT solid, Monte Carlo dashed, one panel per component;
-//  - Fig. 4 at the step nearest a motion value: every 2×2 block of the pose covariance as 2σ
-//    ellipses (UT solid, Monte Carlo dashed) with the kept Monte Carlo poses
-//    (ContourStudyOptions::keep_samples) and the 13 sigma points.
+//  - the HTML page (kind "contour_study", drawn by web/contour_study.js in the page shell of
+//    html_report.h; docs/report.md "The contour study page"): the steps' numbers, and as Plotly.js
+//    figures the contour paper's Fig. 3 (mean error ± 2σ against the motion, one panel per pose
+//    component, UT solid, Monte Carlo dashed) and Fig. 4 at the step nearest a motion value
+//    (every 2×2 block of the pose covariance as 2σ ellipses, UT solid and Monte Carlo dashed,
+//    with the kept Monte Carlo poses, ContourStudyOptions::keep_samples, and the 13 sigma
+//    points).
 // Display units: mm for Tx..Tz, degrees for Rx..Rz (the contour paper's).
 #pragma once
 
 #include <array>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -34,12 +37,14 @@ const contour::StudyStep& NearestStep(const std::vector<contour::StudyStep>& ste
 std::string ContourStudyCsv(const contour::ContourStudyOptions& o,
                             const std::vector<contour::StudyStep>& steps);
 
-// Fig. 3 (SVG).
-std::string ContourStudyFigure(const contour::ContourStudyOptions& o,
-                               const std::vector<contour::StudyStep>& steps);
-
-// Fig. 4 (SVG) at NearestStep(steps, at).
-std::string ContourCovarianceFigure(const contour::ContourStudyOptions& o,
-                                    const std::vector<contour::StudyStep>& steps, double at);
+// The page data: "motion", "motion_label", the setting (seed, samples, pixel_noise, z0_mm,
+// focal_mm, pixel_size_mm), "components" and their "units", "steps" (value; mc_mean, mc_sd,
+// ut_mean, ut_sd: the errors per component in display units; bias: 6 flags) and "covariance" at
+// NearestStep(steps, at): its value, the MC and UT mean errors, both covariances in display units
+// (C_ab scaled by the units of a and b), the kept Monte Carlo poses and the sigma points as
+// errors against the truth (rows of 6, display units). `steps` not empty.
+nlohmann::json ContourStudyPageData(const contour::ContourStudyOptions& o,
+                                    const std::vector<contour::StudyStep>& steps, double at,
+                                    const std::string& title);
 
 }  // namespace hecal::report

@@ -6,7 +6,9 @@
 // certificate (with `stopped_by`: "gap reached", "below threshold", "max cubes" or
 // "time budget", and the budgets), l_infinity_X, covariance (with the model check, the noise
 // levels, `robot_sigma`: "given" or "estimated", and the independent-pairs covariance), polish,
-// matches (inliers, thresholds, removed pairs with the stage that removed them), warnings.
+// matches (inliers, thresholds, removed pairs with the stage that removed them), motions (per
+// motion, i.e. pair of stations: the pairs kept and removed, the RMS and largest residual of the
+// kept pairs at the final X), warnings.
 // Frames and units: X = T_gripper_camera eye-in-hand, T_base_camera eye-to-hand; metres and
 // radians; covariance in the right perturbation (ω, v) of X.
 //
@@ -54,6 +56,17 @@ struct RemovedMatch {
   std::string by;  // "epipolar ransac", "l-infinity support set", "re-check at the polished X"
 };
 
+// One motion's residuals at the final X: the Sampson angle of each kept pair
+// (estimation::SampsonAngle, radians of ray).
+struct MotionResidual {
+  std::string first;  // station names of the motion
+  std::string second;
+  int pairs = 0;     // kept
+  int removed = 0;   // removed (RemovedMatch)
+  double rms = 0.0;  // radians, over the kept pairs (0 when none)
+  double max = 0.0;
+};
+
 struct GlobalCalibrationResult {
   GlobalCalibrationOptions options;
   // The final X, covariance (the model check's: inflated where the data spread more than the
@@ -72,6 +85,7 @@ struct GlobalCalibrationResult {
   double pixel_threshold = 0.0;          // radians: 4√2 · pixel_sigma / focal
   double error_scale = 0.0;              // radians: the data's error scale
   std::vector<RemovedMatch> removed;     // in motion order, then pair order
+  std::vector<MotionResidual> motions;   // in the order of the matches' motions
   double search_seconds = 0.0;           // every global solve together
   // What the reader should know: a search stopped by a budget, weak evidence for the
   // covariance (in the result file's `warnings`; the CLI prints them as `hecal: warning:`).

@@ -41,10 +41,12 @@ struct HtmlReportInput {
 };
 
 // The page shell of every kind of report: `data` is one JSON object with "kind" (the page script
-// that draws it: "calibration" is web/calibration.js; each kind's script registers itself in
-// web/page.js's hecalPage.pages and is listed in html_report.cc's kPageScripts) and "title";
-// the shell adds "hecal_version" and "page_bytes" (the page's own size) and embeds Plotly.js,
-// web/page.js, every page script and web/report.css.
+// that draws it: "calibration" is web/calibration.js, "detect" web/detect.js
+// (detection_page.h), "simulate" web/simulate.js (simulate_page.h), "contour_study"
+// web/contour_study.js (contour_study_file.h), "global" web/global.js (global_page.h); each kind's
+// script registers itself in web/page.js's hecalPage.pages and is listed in html_report.cc's
+// kPageScripts) and "title"; the shell adds "hecal_version" and "page_bytes" (the page's own size)
+// and embeds Plotly.js, web/page.js, every page script and web/report.css.
 std::string FormatHtmlPage(nlohmann::json data);
 
 // The calibration page.
