@@ -105,11 +105,8 @@ void WriteCalibrateOutputs(const CalibrateFlags& flags, const io::PoseReadOption
   }
 }
 
-namespace {
-
-// The flags bound into jobs::PoseFileCalibrationOptions; the job runs, then the summaries print.
-void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& settings,
-                       const Io& io) {
+jobs::PoseFileCalibrationOptions PoseFileOptions(const CalibrateFlags& flags,
+                                                 const CalibrateSettings& settings) {
   jobs::PoseFileCalibrationOptions options;
   options.robot = flags.robot;
   options.camera = flags.camera;
@@ -122,12 +119,25 @@ void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& set
   options.all_methods = settings.all;
   options.words = ConventionFlagWords();
   options.file_words = {"--robot", "--camera"};
-  const report::ResultDocument document = jobs::CalibrateFromPoseFiles(options).document;
+  return options;
+}
+
+void PrintCalibrateSummaries(const report::ResultDocument& document, const Io& io) {
   for (size_t k = 0; k < document.results.size(); ++k) {
     if (k > 0) io.out << "\n";
     report::PrintResultSummary(io.out, document, document.results[k]);
   }
-  if (settings.all) report::PrintMethodComparison(io.out, document);
+  if (document.all_methods) report::PrintMethodComparison(io.out, document);
+}
+
+namespace {
+
+// The flags bound into jobs::PoseFileCalibrationOptions; the job runs, then the summaries print.
+void RunCalibratePoses(const CalibrateFlags& flags, const CalibrateSettings& settings,
+                       const Io& io) {
+  const jobs::PoseFileCalibrationOptions options = PoseFileOptions(flags, settings);
+  const report::ResultDocument document = jobs::CalibrateFromPoseFiles(options).document;
+  PrintCalibrateSummaries(document, io);
   WriteCalibrateOutputs(flags, options.robot_read, document, io);
 }
 

@@ -104,6 +104,14 @@ void RunCalibrateImages(const CalibrateFlags& flags, const CalibrateSettings& se
 // jobs::CalibrateGlobal runs the job, report::WriteGlobalResult writes the result file.
 void RunCalibrateGlobal(const CalibrateFlags& flags, const Io& io);
 
+// The flags of the pose-table forms (--robot, --camera, their reading, setup, method) as the
+// pose-file job's options, with the flags' names in its texts.
+jobs::PoseFileCalibrationOptions PoseFileOptions(const CalibrateFlags& flags,
+                                                 const CalibrateSettings& settings);
+
+// Every result's summary, then the comparison of `--method all`.
+void PrintCalibrateSummaries(const report::ResultDocument& document, const Io& io);
+
 // `calibrate --streams` (calibrate_streams.cc): the flags bound into
 // jobs::StreamCalibrationOptions (jobs/stream_calibration.h); the job runs, the summaries print,
 // the outputs are written.
