@@ -167,6 +167,7 @@ report::ResultDocument FitStreams(const streams::PoseStream& robot,
   const streams::StreamStations chosen = streams::ChooseStations(robot, camera, offset, rules);
   report.camera_gives_stations = chosen.camera_gives_stations;
   report.max_gap = chosen.max_gap;
+  report.smoothing = chosen.smoothing;
   report.max_angular_speed = rules.max_angular_speed;
   report.max_linear_speed = rules.max_linear_speed;
   report.max_stations = rules.max_stations;

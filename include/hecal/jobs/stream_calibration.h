@@ -9,8 +9,8 @@
 //      checked (streams/pose_stream.h: at least 2 samples, finite, strictly increasing).
 //   2. The coarse time offset (streams/time_offset_search.h, ±window), or the offset given.
 //   3. Stations chosen at that offset (streams/stream_stations.h: the sparser stream's samples,
-//      the denser interpolated; never across a gap; not in fast motion; thinned to max_stations
-//      well spread in rotation). Station ids: the sparser table's id, or its stamp.
+//      the denser smoothed at their times; never across a gap; not in fast motion; thinned to
+//      max_stations well spread in rotation). Station ids: the sparser table's id, or its stamp.
 //   4. Calibration at that offset as from paired pose files (pose_file_calibration.h steps 4–5:
 //      the convention check, the method, outlier rejection, covariance).
 //   5. Unless the offset was given: the offset fitted jointly with X and Z (streams/time_offset.h)

@@ -63,6 +63,7 @@ struct StreamReport {
   int camera_samples = 0;
   bool camera_gives_stations = true;  // the camera stream is the sparser one
   double max_gap = 0.0;               // seconds
+  double smoothing = 0.0;             // seconds, ± of the denser stream's local regression
   double max_angular_speed = 0.0;     // rad/s
   double max_linear_speed = 0.0;      // m/s
   int max_stations = 0;

@@ -63,7 +63,7 @@ struct PairedStreamPoses {
 };
 
 // The stations' poses at `offset`: each station's own sample and the denser stream's smoothed pose
-// at its time. A station whose interpolated pose is missing at this offset (outside ±margin of the
+// at its time. A station whose smoothed pose is missing at this offset (outside ±margin of the
 // offset it was chosen at) makes the result empty.
 PairedStreamPoses PosesAt(const PoseStream& robot, const PoseStream& camera,
                           const StreamStations& stations, double offset);

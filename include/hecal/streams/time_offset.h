@@ -4,7 +4,7 @@
 // t + offset.
 //
 // The joint maximum-likelihood fit over (X, Z, offset) is split as a profile: for an offset δ
-// the stations' poses are re-paired (the robot stream interpolated at t + δ, stream_stations.h)
+// the stations' poses are re-paired (the robot stream smoothed at t + δ, stream_stations.h)
 // and ml's cost is minimised over X and Z with the noise model held fixed,
 //     χ²(δ) = min over X, Z of Σ_i r_iᵀ Σ_i⁻¹ r_i         (ml.h),
 // and δ̂ minimises χ²(δ) — the same optimum as minimising over all three at once. δ̂ is found by
