@@ -2,7 +2,6 @@
 #include "simulate_streams.h"
 
 #include <filesystem>
-#include <random>
 
 #include "bounds.h"
 
@@ -12,18 +11,8 @@ namespace {
 // The first trial's recording as pose files with stamps, and its truth.
 std::vector<io::OutputFile> RecordingFiles(const jobs::StreamStudyOptions& options,
                                            const std::string& dir) {
-  sim::StreamSimulationOptions simulation = options.simulation;
-  simulation.protocol.setup = options.setups.front();
-  study::Setting setting;
-  setting.setup = simulation.protocol.setup;
-  setting.noise_kind = options.noise;
-  setting.translation_sigma = options.sigmas.front().mm * 1e-3;
-  setting.rotation_sigma = options.sigmas.front().deg / kDegreesPerRadian;
-  std::mt19937_64 rng(study::TrialSeed(options.seed, setting.setup, 0, 0));
-  std::uniform_real_distribution<double> offset(-options.offset_range, options.offset_range);
-  simulation.time_offset = offset(rng);
-  const sim::SimulatedStreams data = sim::SimulateStreams(simulation, study::RobotNoise(setting),
-                                                          study::CameraNoise(setting), rng);
+  const sim::SimulatedStreams data =
+      jobs::SimulateStreamTrial(options, options.setups.front(), options.sigmas.front(), 0);
   const auto table = [](const std::vector<double>& stamps, const std::vector<Pose>& poses) {
     io::PoseTable out;
     for (size_t k = 0; k < stamps.size(); ++k) {

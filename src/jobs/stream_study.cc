@@ -32,20 +32,20 @@ streams::PoseStream Stream(const std::vector<double>& stamps, const std::vector<
   return {.stamps = stamps, .poses = poses, .lines = {}, .ids = {}, .source = name};
 }
 
-StreamTrial RunTrial(const StreamStudyOptions& options, handeye::Setup setup,
-                     const study::NoiseLevel& level, int trial) {
+study::Setting SettingOf(const StreamStudyOptions& options, handeye::Setup setup,
+                         const study::NoiseLevel& level) {
   study::Setting setting;
   setting.setup = setup;
   setting.noise_kind = options.noise;
   setting.translation_sigma = level.mm * 1e-3;
   setting.rotation_sigma = level.deg / kDegreesPerRadian;
-  std::mt19937_64 rng(study::TrialSeed(options.seed, setup, 0, trial));
-  std::uniform_real_distribution<double> offset(-options.offset_range, options.offset_range);
-  sim::StreamSimulationOptions simulation = options.simulation;
-  simulation.protocol.setup = setup;
-  simulation.time_offset = offset(rng);
-  const sim::SimulatedStreams data = sim::SimulateStreams(simulation, study::RobotNoise(setting),
-                                                          study::CameraNoise(setting), rng);
+  return setting;
+}
+
+StreamTrial RunTrial(const StreamStudyOptions& options, handeye::Setup setup,
+                     const study::NoiseLevel& level, int trial) {
+  const study::Setting setting = SettingOf(options, setup, level);
+  const sim::SimulatedStreams data = SimulateStreamTrial(options, setup, level, trial);
   StreamTrial out;
   out.setup = setup;
   out.sigma = level;
@@ -95,6 +95,18 @@ double Rms(double sum_squares, int n) {
 }
 
 }  // namespace
+
+sim::SimulatedStreams SimulateStreamTrial(const StreamStudyOptions& options, handeye::Setup setup,
+                                          const study::NoiseLevel& level, int trial) {
+  const study::Setting setting = SettingOf(options, setup, level);
+  std::mt19937_64 rng(study::TrialSeed(options.seed, setup, 0, trial));
+  std::uniform_real_distribution<double> offset(-options.offset_range, options.offset_range);
+  sim::StreamSimulationOptions simulation = options.simulation;
+  simulation.protocol.setup = setup;
+  simulation.time_offset = offset(rng);
+  return sim::SimulateStreams(simulation, study::RobotNoise(setting), study::CameraNoise(setting),
+                              rng);
+}
 
 bool StreamStudyOptions::IsValid(std::string* why) const {
   if (setups.empty() || sigmas.empty()) {

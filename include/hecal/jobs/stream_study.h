@@ -74,6 +74,10 @@ struct StreamStudyResult {
   std::vector<StreamSetting> settings;
 };
 
+// The recording of one trial (its offset drawn, then SimulateStreams), as RunStreamStudy makes it.
+sim::SimulatedStreams SimulateStreamTrial(const StreamStudyOptions& options, handeye::Setup setup,
+                                          const study::NoiseLevel& level, int trial);
+
 // Throws hecal::InputError when !options.IsValid. Same seed, same result whatever `threads`.
 StreamStudyResult RunStreamStudy(const StreamStudyOptions& options);
 
