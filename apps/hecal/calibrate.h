@@ -58,6 +58,7 @@ struct CalibrateFlags {
   double max_gap = 0.0;               // --max-gap SECONDS (0: 3 periods of the denser stream)
   std::string max_speed = "300,45";   // --max-speed MM,DEG per second
   int stations = 500;                 // --stations N: at most this many from the streams
+  std::string fix;  // --fix tz=VALUE: planar robots (docs/planar.md)
 };
 
 // The flags every form shares, checked.
@@ -78,6 +79,12 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags);
 // noise is then estimated, for --method global the default applies); the range is the options'
 // IsValid's.
 std::optional<double> ParsePixelSigma(const std::string& text);
+
+// --fix "tx|ty|tz=VALUE[m|cm|mm]" (planar robots, handeye/planar.h): a component of X's
+// translation in X's parent frame, in metres; a VALUE without a unit is in `units` (--units).
+// InputError naming --fix when it does not parse, or when its size (above 5 m) says the unit is
+// wrong.
+handeye::TranslationFix ParseFix(const std::string& text, io::LengthUnit units);
 
 // "MM,DEG" (--robot-sigma, --camera-sigma) → PoseSigma in metres and radians; InputError naming
 // `flag` when it is not two numbers (the range is the options' IsValid's).

@@ -11,6 +11,7 @@ namespace {
 constexpr auto kFieldFlags = std::to_array<std::pair<std::string_view, std::string_view>>({
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
+    {"CalibrateOptions.fix", "--fix"},
     {"ConventionCheckOptions.setup", "--setup"},
     {"ImageCalibrationOptions.pixel_sigma", "--pixel-sigma"},
     {"ImageFolderCalibrationOptions.robot", "--robot"},

@@ -128,6 +128,16 @@ bool CalibrateOptions::IsValid(std::string* why) const {
     return Invalid(why, "CalibrateOptions.robust_scale", "the robust loss scale must be positive",
                    "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
   }
+  if (fix && (fix->axis < 0 || fix->axis > 2 || !std::isfinite(fix->value))) {
+    return Invalid(why, "CalibrateOptions.fix", "the fixed component must be tx, ty or tz with a "
+                   "finite value", "give e.g. tz=0.12 (metres)");
+  }
+  if (fix && method != Method::kMl) {
+    return Invalid(why, "CalibrateOptions.fix",
+                   "a fixed translation component needs the method ml, not " +
+                       std::string(Info(method).name),
+                   "use --method ml (the default)");
+  }
   return covariance.IsValid(why) && consensus.IsValid(why);
 }
 
@@ -161,6 +171,7 @@ StationSelection SelectStationsFor(const handeye::Problem& problem,
   selection_options.robot_sigma = options.robot_sigma;
   selection_options.camera_sigma = options.camera_sigma;
   selection_options.consensus = options.consensus;
+  selection_options.fix = options.fix;
   return SelectStations(problem, selection_options);
 }
 
@@ -189,9 +200,10 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   ValidateOptions(all_stations, options);
   const RobustLoss loss = options.robust_loss;
   const handeye::Problem problem = handeye::SubProblem(all_stations, selection.used);
-  handeye::CheckObservability(problem);
+  handeye::CheckObservability(problem, options.fix.has_value());
 
   CalibrationResult result;
+  if (options.fix) result.fixed = handeye::ResolveFix(problem, *options.fix);
   result.method = options.method;
   result.rejected = selection.Rejected();
   result.outlier_rejection = selection.rounds > 0 || selection.too_many;
@@ -206,13 +218,16 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     ml_options.camera_sigma = options.camera_sigma;
     ml_options.robust_loss = loss;
     ml_options.robust_scale = options.robust_scale;
+    ml_options.fixed = result.fixed;
     // The selection's own fit is this very solve when it was made on the same stations from
     // the same starts with the same noise model (station_selection.h).
     const bool reuse = selection.fit && loss == RobustLoss::kNone &&
                        SameSigma(selection.fit_robot_sigma, options.robot_sigma) &&
                        SameSigma(selection.fit_camera_sigma, options.camera_sigma);
-    MlResult ml =
-        reuse ? *selection.fit : RefineMl(problem, StartingSolutions(problem), ml_options);
+    const std::vector<handeye::Solution> starts =
+        result.fixed ? std::vector<handeye::Solution>{handeye::FixedStart(problem, *result.fixed)}
+                     : StartingSolutions(problem);
+    MlResult ml = reuse ? *selection.fit : RefineMl(problem, starts, ml_options);
     // The selection's fit is Gaussian (station_selection.h): the heavy-tail stage on top.
     if (reuse) FitHeavyTails(problem, ml_options, &ml);
     result.X = ml.X;
@@ -272,7 +287,8 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   // Now that the robot noise is known (given or estimated): is every direction of X's
   // translation observed by more than noise? (observability.h)
   if (std::string weak =
-          handeye::CheckObservabilityUnderNoise(problem, result.robot_sigma.rotation);
+          handeye::CheckObservabilityUnderNoise(problem, result.robot_sigma.rotation,
+                                                result.fixed.has_value());
       !weak.empty()) {
     result.warnings.push_back(std::move(weak));
   }

@@ -150,6 +150,7 @@ handeye::Solution Resolve(const handeye::Problem& problem, const CalibrationResu
       ml.camera_excess = result.camera_excess;
       ml.robust_loss = options.robust_loss;
       ml.robust_scale = options.robust_scale;
+      ml.fixed = result.fixed;
       for (size_t i = 0; i < result.station_scale.size(); ++i)
         if (kept.empty() || kept[i]) ml.station_scale.push_back(result.station_scale[i]);
       return RefineMlFromGoodStart(problem, start.front(), ml);

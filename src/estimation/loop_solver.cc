@@ -27,6 +27,20 @@ double ParameterNorm(const handeye::Solution& solution) {
                    solution.Z.translation().squaredNorm());
 }
 
+// With one component of X's translation given (planar.h): the normal equations restricted to the
+// constraint's tangent, P H P + α (I − P) and P g with P = U Uᵀ (U = FixTangentBasis, α the mean
+// of diag H), so that every step keeps the fixed coordinate to first order; ApplyFix then puts
+// the candidate exactly on the constraint.
+void RestrictToFix(const handeye::Solution& at, const handeye::FixedTranslation& fixed,
+                   LoopNormalEquations* equations) {
+  const Eigen::Matrix<double, 12, 11> U = handeye::FixTangentBasis(at, fixed);
+  const Matrix12d P = U * U.transpose();
+  const double alpha = std::max(equations->hessian.diagonal().mean(), kMinDiagonal);
+  equations->hessian =
+      P * equations->hessian * P + alpha * (Matrix12d::Identity() - P);
+  equations->gradient = P * equations->gradient;
+}
+
 }  // namespace
 
 double LoopCostValue(const handeye::Problem& problem, const std::vector<Matrix6d>& whitening,
@@ -62,9 +76,15 @@ LoopNormalEquations LinearizeLoopCost(const handeye::Problem& problem,
 handeye::Solution MinimizeLoopCost(const handeye::Problem& problem,
                                    const std::vector<Matrix6d>& whitening,
                                    const ceres::LossFunction* loss,
-                                   const handeye::Solution& start) {
-  handeye::Solution current = start;
-  LoopNormalEquations equations = LinearizeLoopCost(problem, whitening, loss, current);
+                                   const handeye::Solution& start,
+                                   const handeye::FixedTranslation* fixed) {
+  handeye::Solution current = fixed ? handeye::ApplyFix(start, *fixed) : start;
+  const auto linearize = [&](const handeye::Solution& at) {
+    LoopNormalEquations equations = LinearizeLoopCost(problem, whitening, loss, at);
+    if (fixed) RestrictToFix(at, *fixed, &equations);
+    return equations;
+  };
+  LoopNormalEquations equations = linearize(current);
   double radius = kInitialRadius;
   double nu = 2.0;
   bool newton_decrease_due = true;  // after each linearisation
@@ -83,8 +103,9 @@ handeye::Solution MinimizeLoopCost(const handeye::Problem& problem,
     const Vector12d step = -damped.ldlt().solve(equations.gradient);
     if (!step.allFinite()) break;
     if (step.norm() <= kParameterTolerance * (ParameterNorm(current) + kParameterTolerance)) break;
-    const handeye::Solution candidate{current.X * se3::Exp(step.head<6>()),
-                                      current.Z * se3::Exp(step.tail<6>())};
+    handeye::Solution candidate{current.X * se3::Exp(step.head<6>()),
+                                current.Z * se3::Exp(step.tail<6>())};
+    if (fixed) candidate = handeye::ApplyFix(candidate, *fixed);
     const double candidate_cost = LoopCostValue(problem, whitening, loss, candidate);
     const double predicted =
         -(equations.gradient.dot(step) + 0.5 * step.dot(equations.hessian * step));
@@ -94,7 +115,7 @@ handeye::Solution MinimizeLoopCost(const handeye::Problem& problem,
       const bool converged = actual <= kFunctionTolerance * 0.5 * equations.cost;
       current = candidate;
       if (converged) break;
-      equations = LinearizeLoopCost(problem, whitening, loss, current);
+      equations = linearize(current);
       newton_decrease_due = true;
       radius =
           std::min(kMaxRadius, radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * ratio - 1.0, 3)));

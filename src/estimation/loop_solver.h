@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "hecal/estimation/loop_residual.h"
+#include "hecal/handeye/planar.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::estimation::internal {
@@ -59,8 +60,11 @@ LoopNormalEquations LinearizeLoopCost(const handeye::Problem& problem,
                                       const handeye::Solution& solution);
 
 // The minimiser above from `start`. Returns the last accepted point (`start` when no step was).
+// With `fixed` (planar.h): on the surface where X's fixed coordinate has its value — start and
+// every candidate moved onto it along the planar family, the steps on its tangent.
 handeye::Solution MinimizeLoopCost(const handeye::Problem& problem,
                                    const std::vector<Matrix6d>& whitening,
-                                   const ceres::LossFunction* loss, const handeye::Solution& start);
+                                   const ceres::LossFunction* loss, const handeye::Solution& start,
+                                   const handeye::FixedTranslation* fixed = nullptr);
 
 }  // namespace hecal::estimation::internal

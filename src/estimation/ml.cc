@@ -37,7 +37,8 @@ class MlSolver {
       : problem_(problem),
         length_scale_(handeye::LengthScale(problem)),
         loss_(MakeLoss(options.robust_loss, options.robust_scale)),
-        station_scale_(options.station_scale) {}
+        station_scale_(options.station_scale),
+        fixed_(options.fixed) {}
 
   double length_scale() const { return length_scale_; }
   size_t stations() const { return problem_.A.size(); }
@@ -96,6 +97,7 @@ class MlSolver {
     const Matrix12d information =
         internal::LinearizeLoopCost(problem_, Whitening(solution.X, theta), loss_.get(), solution)
             .hessian;
+    if (fixed_) return handeye::ConstrainedInverse(information, solution, *fixed_);
     const Eigen::LLT<Matrix12d> llt(information);
     if (llt.info() == Eigen::Success) return llt.solve(Matrix12d::Identity());
     return information.completeOrthogonalDecomposition().pseudoInverse();
@@ -104,13 +106,15 @@ class MlSolver {
  private:
   handeye::Solution SolveOnce(const handeye::Solution& start, const std::vector<Matrix6d>& W) {
     ++solves_;
-    return internal::MinimizeLoopCost(problem_, W, loss_.get(), start);
+    return internal::MinimizeLoopCost(problem_, W, loss_.get(), start,
+                                      fixed_ ? &*fixed_ : nullptr);
   }
 
   const handeye::Problem& problem_;
   double length_scale_;
   std::unique_ptr<ceres::LossFunction> loss_;
   std::vector<double> station_scale_;
+  std::optional<handeye::FixedTranslation> fixed_;
   int solves_ = 0;
 };
 
@@ -166,7 +170,7 @@ bool MayBeWrongMinimum(const MlSolver& solver, const std::vector<handeye::Soluti
       });
   if (!near_a_start) return true;
   if (spec.AnyEstimated() || options.robust_loss != RobustLoss::kNone) return false;
-  const double dof = 6.0 * static_cast<double>(solver.stations()) - 12.0;
+  const double dof = 6.0 * static_cast<double>(solver.stations()) - (options.fixed ? 11.0 : 12.0);
   return !(uncertainty::ChiSquareCdf(solver.Evaluate(best, theta).cost, dof) <= kFitLevel);
 }
 
@@ -250,7 +254,8 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
 
   MlResult result;
   handeye::Solution best = RefineStarts(solver, starts, theta, &result);
-  if (options.starts_on_demand && MayBeWrongMinimum(solver, starts, best, theta, spec, options)) {
+  // With a fixed component the closed forms do not apply (parallel axes): the caller's starts.
+  if (options.starts_on_demand && !options.fixed && MayBeWrongMinimum(solver, starts, best, theta, spec, options)) {
     std::vector<handeye::Solution> more = starts;
     for (const handeye::Solution& start : Solutions(InitialSolutions(problem)))
       more.push_back(start);

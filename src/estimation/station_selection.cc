@@ -77,13 +77,14 @@ StationSelection SelectStations(const handeye::Problem& problem,
                                 const StationSelectionOptions& options) {
   RequireValid(options);
   const size_t n = problem.A.size();
-  if (n < 3) handeye::CheckObservability(problem);  // throws: too few stations
+  if (n < 3) handeye::CheckObservability(problem, options.fix.has_value());  // throws: too few
   StationSelection selection = AllStations(n);
   const int max_rejected = static_cast<int>((n - 3) / 2);
   if (max_rejected == 0) return selection;
 
-  selection.consensus = handeye::FindStationConsensus(problem, options.consensus);
-  std::vector<bool> candidate = selection.consensus.inlier;
+  if (!options.fix) selection.consensus = handeye::FindStationConsensus(problem, options.consensus);
+  std::vector<bool> candidate =
+      options.fix ? std::vector<bool>(n, true) : selection.consensus.inlier;
   // A consensus that leaves out more than may be rejected is no basis: test from all stations.
   if (CountUnused(candidate) > max_rejected) candidate.assign(n, true);
 
@@ -101,9 +102,14 @@ StationSelection SelectStations(const handeye::Problem& problem,
   std::vector<handeye::Solution> starts;
   for (int round = 0; round < kMaxRounds; ++round) {
     const handeye::Problem set = handeye::SubProblem(problem, candidate);
-    handeye::CheckObservability(set);
+    handeye::CheckObservability(set, options.fix.has_value());
+    if (options.fix) ml_options.fixed = handeye::ResolveFix(set, *options.fix);
     // Later rounds change the set by a few stations: the last fit is in the right basin.
-    if (round == 0) starts = StartingSolutions(set);
+    if (round == 0) {
+      starts = options.fix ? std::vector<handeye::Solution>{handeye::FixedStart(
+                                 set, *ml_options.fixed)}
+                           : StartingSolutions(set);
+    }
     const MlResult fit = RefineMl(set, starts, ml_options);
     starts = {{fit.X, fit.Z}};
     std::vector<StationLinearization> stations = LinearizeStations(problem, fit.X, fit.Z);

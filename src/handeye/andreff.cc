@@ -1,6 +1,7 @@
 #include "hecal/handeye/andreff.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/nearest_rotation.h"
@@ -14,10 +15,14 @@ namespace {
 using Matrix12d = Eigen::Matrix<double, 12, 12>;
 using Vector12d = Eigen::Matrix<double, 12, 1>;
 
-}  // namespace
+// The normal equations N w = g of (A1)+(A2) in the scaled units (step 1 of the header).
+struct AndreffSystem {
+  Matrix12d N = Matrix12d::Zero();  // upper triangle filled
+  Vector12d g = Vector12d::Zero();
+  double scale = 1.0;  // translations were divided by this
+};
 
-Pose SolveAndreff(const std::vector<Motion>& motions) {
-  RequireMotions(motions, 2);
+AndreffSystem BuildSystem(const std::vector<Motion>& motions) {
   const double n = static_cast<double>(motions.size());
   const double scale = TranslationScale(motions);
 
@@ -43,16 +48,25 @@ Pose SolveAndreff(const std::vector<Motion>& motions) {
     g_t.noalias() += I_minus_R_A.transpose() * t_A;
   }
 
-  Matrix12d N = Matrix12d::Zero();  // upper triangle is what the LDLT reads
+  AndreffSystem system;
+  system.scale = scale;
+  Matrix12d& N = system.N;
   N.topLeftCorner<9, 9>() = 2.0 * n * Matrix9d::Identity() - S - S.transpose();
   for (int k = 0; k < 3; ++k) {
     for (int l = 0; l < 3; ++l) N.block<3, 3>(3 * k, 3 * l) += tt(k, l) * I3;
   }
   N.topRightCorner<9, 3>() = tR;
   N.bottomRightCorner<3, 3>() = RR;
-  Vector12d g;
-  g << g_R, g_t;
-  const Eigen::LDLT<Matrix12d, Eigen::Upper> ldlt(N);
+  system.g << g_R, g_t;
+  return system;
+}
+
+}  // namespace
+
+Pose SolveAndreff(const std::vector<Motion>& motions) {
+  RequireMotions(motions, 2);
+  const AndreffSystem system = BuildSystem(motions);
+  const Eigen::LDLT<Matrix12d, Eigen::Upper> ldlt(system.N);
   const Vector12d pivots = ldlt.vectorD().cwiseAbs();
   if (ldlt.info() != Eigen::Success ||
       !(pivots.minCoeff() > kAndreffMinPivotRatio * pivots.maxCoeff())) {
@@ -61,9 +75,32 @@ Pose SolveAndreff(const std::vector<Motion>& motions) {
         "(every motion rotates about parallel axes, or not at all)",
         "add stations whose relative rotations have different axes");
   }
-  const Vector12d w = ldlt.solve(g);
+  const Vector12d w = ldlt.solve(system.g);
   const Eigen::Matrix3d R_X = NearestRotationSvd(Unvec(w.head<9>()));
   return MakePose(R_X, SolveTranslation(motions, R_X));
+}
+
+Pose SolveAndreff(const std::vector<Motion>& motions, const TranslationFix& fix) {
+  RequireMotions(motions, 2);
+  const AndreffSystem system = BuildSystem(motions);
+  // Equality-constrained least squares: [N e; eᵀ 0] [w; μ] = [g; value / scale].
+  Eigen::Matrix<double, 13, 13> K = Eigen::Matrix<double, 13, 13>::Zero();
+  K.topLeftCorner<12, 12>() = system.N.selfadjointView<Eigen::Upper>();
+  K(9 + fix.axis, 12) = K(12, 9 + fix.axis) = 1.0;
+  Eigen::Matrix<double, 13, 1> rhs;
+  rhs << system.g, fix.value / system.scale;
+  Eigen::FullPivLU<Eigen::Matrix<double, 13, 13>> lu(K);
+  lu.setThreshold(kAndreffMinPivotRatio);
+  if (!lu.isInvertible()) {
+    throw DegenerateError(
+        "the hand-eye rotation, even with " + ComponentName(fix.axis) +
+            " of X given (the robot does not rotate, or does not also translate across its "
+            "rotation axis)",
+        "add stations that rotate by tens of degrees and move the robot across its rotation axis");
+  }
+  const Eigen::Matrix<double, 13, 1> w = lu.solve(rhs);
+  const Eigen::Matrix3d R_X = NearestRotationSvd(Unvec(w.head<9>()));
+  return MakePose(R_X, SolveTranslation(motions, R_X, fix));
 }
 
 }  // namespace hecal::handeye

@@ -27,6 +27,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/handeye/planar.h"
 
 namespace hecal::handeye {
 namespace {
@@ -60,7 +61,15 @@ bool AnyRotation(const std::vector<Pose>& A) {
   return false;
 }
 
-// (O1): the normal matrix of the translation step over all station pairs.
+// What to do about an unobservable direction: tilt, or give the component (planar.h).
+std::string AxesFix(const Eigen::Vector3d& direction) {
+  return "rotate the robot about at least two clearly different axes (tilt as well as spin); "
+         "for a planar robot give that component with --fix " +
+         ComponentName(NearestAxis(direction)) + "=VALUE (method ml)";
+}
+
+}  // namespace
+
 Eigen::Matrix3d TranslationNormalMatrix(const std::vector<Pose>& A) {
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
   for (const Pose& pose : A) M += pose.linear();
@@ -68,9 +77,7 @@ Eigen::Matrix3d TranslationNormalMatrix(const std::vector<Pose>& A) {
   return n * n * Eigen::Matrix3d::Identity() - M.transpose() * M;
 }
 
-}  // namespace
-
-void CheckObservability(const Problem& problem) {
+void CheckObservability(const Problem& problem, bool translation_fixed) {
   if (problem.A.size() != problem.B.size()) {
     throw std::invalid_argument("CheckObservability: " + std::to_string(problem.A.size()) +
                                 " robot poses but " + std::to_string(problem.B.size()) +
@@ -97,18 +104,19 @@ void CheckObservability(const Problem& problem) {
   const double s1 = std::max(W - lambda(0), 0.0);
   const double s2 = std::max(W - lambda(1), 0.0);
   const double spread = 2.0 * std::atan2(std::sqrt(s2), std::sqrt(s1));  // (O2)
-  if (spread < kParallelAxes) {
+  if (spread < kParallelAxes && !translation_fixed) {
     throw DegenerateError(
         "the translation of X (" + std::string(XFrameName(problem.setup)) +
             ") along the common rotation axis " + Direction(eigen.eigenvectors().col(0)) +
             " of the " + TranslationFrame(problem.setup) +
             " frame: every relative rotation of the robot is about parallel axes (spread " +
             Degrees(spread) + ")",
-        "rotate the robot about at least two clearly different axes (tilt as well as spin)");
+        AxesFix(eigen.eigenvectors().col(0)));
   }
 }
 
-std::string CheckObservabilityUnderNoise(const Problem& problem, double robot_rotation_sigma) {
+std::string CheckObservabilityUnderNoise(const Problem& problem, double robot_rotation_sigma,
+                                         bool translation_fixed) {
   const double pairs = 0.5 * static_cast<double>(problem.A.size() * (problem.A.size() - 1));
   const double floor = pairs * 4.0 * robot_rotation_sigma * robot_rotation_sigma;
   if (!(floor > 0.0)) return {};
@@ -125,15 +133,20 @@ std::string CheckObservabilityUnderNoise(const Problem& problem, double robot_ro
         "rotate the robot between stations by tens of degrees, about at least two different "
         "axes");
   }
-  const std::string along = " along " + Direction(eigen.eigenvectors().col(0)) + " of the " +
-                            TranslationFrame(problem.setup) + " frame";
-  if (rho(0) < kNoiseDegenerate) {
-    throw DegenerateError(
-        x + along + ": the robot's rotation axes differ only by " + noise +
-            " (the axes' spread observes it " + ratio + " what noise alone would)",
-        "rotate the robot about at least two clearly different axes (tilt as well as spin)");
+  // With one component given (planar.h) the least observed direction is not estimated.
+  const int weakest = translation_fixed ? 1 : 0;
+  const std::string along = " along " + Direction(eigen.eigenvectors().col(weakest)) +
+                            " of the " + TranslationFrame(problem.setup) + " frame";
+  std::snprintf(ratio, sizeof(ratio), "%.3g times", rho(weakest));
+  if (rho(weakest) < kNoiseDegenerate) {
+    throw DegenerateError(x + along + ": the robot's rotation axes differ only by " + noise +
+                              " (the axes' spread observes it " + ratio +
+                              " what noise alone would)",
+                          translation_fixed ? "rotate the robot by tens of degrees about its axis "
+                                              "and move it across the axis between stations"
+                                            : AxesFix(eigen.eigenvectors().col(0)));
   }
-  if (rho(0) < kNoiseWeak) {
+  if (rho(weakest) < kNoiseWeak) {
     return x + along + " is weakly observed: the rotation axes' spread observes it only " + ratio +
            " what " + noise +
            " alone would; tilt the robot about more different axes to pin it down";

@@ -10,6 +10,7 @@
 #include "hecal/handeye/translation.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <string>
 
 #include "hecal/core/error.h"
@@ -21,18 +22,26 @@ namespace {
 // N is numerically singular when its smallest eigenvalue is below this fraction of the largest.
 constexpr double kRelativeSingularity = 1e-12;
 
-}  // namespace
-
-Eigen::Vector3d SolveTranslation(const std::vector<Motion>& motions, const Eigen::Matrix3d& R_X) {
-  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d g = Eigen::Vector3d::Zero();
+// The normal equations N t = g of (T1).
+void Accumulate(const std::vector<Motion>& motions, const Eigen::Matrix3d& R_X,
+                Eigen::Matrix3d* N, Eigen::Vector3d* g) {
+  N->setZero();
+  g->setZero();
   for (const Motion& motion : motions) {
     const Eigen::Matrix3d& R_A = motion.A.linear();
     const Eigen::Vector3d rhs = R_X * motion.B.translation() - motion.A.translation();
-    N -= R_A + R_A.transpose();
-    N.diagonal().array() += 2.0;
-    g.noalias() += R_A.transpose() * rhs - rhs;
+    *N -= R_A + R_A.transpose();
+    N->diagonal().array() += 2.0;
+    g->noalias() += R_A.transpose() * rhs - rhs;
   }
+}
+
+}  // namespace
+
+Eigen::Vector3d SolveTranslation(const std::vector<Motion>& motions, const Eigen::Matrix3d& R_X) {
+  Eigen::Matrix3d N;
+  Eigen::Vector3d g;
+  Accumulate(motions, R_X, &N, &g);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(N);
   const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
   // The mean of 4 sin²(θ/2) over the motions is λ₁ + λ₂ + λ₃ over 2 per motion; below the square
@@ -52,6 +61,28 @@ Eigen::Vector3d SolveTranslation(const std::vector<Motion>& motions, const Eigen
   }
   // t = V Λ⁻¹ Vᵀ g with the decomposition already at hand.
   return eigen.eigenvectors() * (eigen.eigenvectors().transpose() * g).cwiseQuotient(lambda);
+}
+
+Eigen::Vector3d SolveTranslation(const std::vector<Motion>& motions, const Eigen::Matrix3d& R_X,
+                                 const TranslationFix& fix) {
+  Eigen::Matrix3d N;
+  Eigen::Vector3d g;
+  Accumulate(motions, R_X, &N, &g);
+  // [N e; eᵀ 0] [t; μ] = [g; value].
+  Eigen::Matrix4d K = Eigen::Matrix4d::Zero();
+  K.topLeftCorner<3, 3>() = N;
+  K(fix.axis, 3) = K(3, fix.axis) = 1.0;
+  Eigen::Vector4d rhs;
+  rhs << g, fix.value;
+  Eigen::FullPivLU<Eigen::Matrix4d> lu(K);
+  lu.setThreshold(kRelativeSingularity);
+  if (!lu.isInvertible()) {
+    throw DegenerateError("the translation of X, even with " + ComponentName(fix.axis) +
+                              " given: the robot does not rotate, or rotates about an axis "
+                              "perpendicular to " + ComponentName(fix.axis),
+                          "fix the component along the robot's rotation axis");
+  }
+  return lu.solve(rhs).head<3>();
 }
 
 }  // namespace hecal::handeye

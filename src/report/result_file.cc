@@ -203,6 +203,21 @@ json StreamsJson(const StreamReport& report, double scale, json* time_offset) {
           {"dropped", dropped}};
 }
 
+// Planar robots (handeye/planar.h): the given component and the family the data cannot tell
+// apart.
+json FixedJson(const handeye::FixedTranslation& fixed, handeye::Setup setup, double scale) {
+  const auto vector = [](const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); };
+  return {{"component", handeye::ComponentName(fixed.fix.axis)},
+          {"frame", setup == handeye::Setup::kEyeInHand ? "gripper" : "base"},
+          {"value", fixed.fix.value * scale},
+          {"free_direction_X", vector(fixed.x_direction)},
+          {"free_direction_Z", vector(fixed.z_direction)},
+          {"family",
+           "X with translation t_X + s*free_direction_X and Z with t_Z + s*free_direction_Z fit "
+           "the data equally for every s; the given component picks s, and the covariance is "
+           "zero along it"}};
+}
+
 json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   json object = {
@@ -266,6 +281,7 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
   object["stations"] = {
       {"used", used}, {"rejected", rejected}, {"outlier_rejection", result.outlier_rejection}};
   if (result.seed) object["seed"] = *result.seed;
+  if (result.fixed) object["fixed"] = FixedJson(*result.fixed, document.setup, scale);
   object["warnings"] = result.warnings;
   if (document.images) {
     object["refinement"] = "reprojection";

@@ -55,6 +55,15 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
       << handeye::SetupName(document.setup) << ", " << result.residuals.size() << " stations)\n";
   PrintPose(out, "X", handeye::XFrameName(document.setup), result.X, scale, unit);
   PrintPose(out, "Z", handeye::ZFrameName(document.setup), result.Z, scale, unit);
+  if (result.fixed) {
+    const Eigen::Vector3d& d = result.fixed->x_direction;
+    out << "fixed: " << handeye::ComponentName(result.fixed->fix.axis) << " of X = "
+        << result.fixed->fix.value * scale << " " << unit << " (given, not estimated: the robot "
+        << "rotates about one axis, so X's translation along (" << d.x() << ", " << d.y() << ", "
+        << d.z() << ") of the "
+        << (document.setup == handeye::Setup::kEyeInHand ? "gripper" : "base")
+        << " frame is not observed; Z's translation moves with it)\n";
+  }
   if (result.covariance) {
     const estimation::CalibrationCovariance& c = *result.covariance;
     out << "covariance: " << estimation::CovarianceMethodName(c.method);

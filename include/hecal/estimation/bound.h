@@ -23,6 +23,7 @@
 
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/geometry/types.h"
+#include "hecal/handeye/planar.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::estimation {
@@ -48,5 +49,12 @@ AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, cons
 // The same sigmas at every station (PoseCovariance, pose_sigma.h).
 AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
                               const PoseSigma& robot_sigma, const PoseSigma& camera_sigma);
+
+// Planar robots (handeye/planar.h): the bound when one coordinate of X's translation is given —
+// the constrained inverse information (zero along the fixed coordinate), so the RMSE figures are
+// of the observable part.
+AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
+                              const PoseSigma& robot_sigma, const PoseSigma& camera_sigma,
+                              const handeye::FixedTranslation& fixed);
 
 }  // namespace hecal::estimation

@@ -43,6 +43,7 @@
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/station_selection.h"
 #include "hecal/geometry/types.h"
+#include "hecal/handeye/planar.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::estimation {
@@ -66,10 +67,14 @@ struct CalibrateOptions {
   bool model_check = true;
   // Station names for warnings, one per station of the problem (default: numbers from 1).
   std::vector<std::string> station_ids;
+  // Planar robots (handeye/planar.h, docs/planar.md): one component of X's translation given
+  // (--fix tz=VALUE), metres in X's parent frame; method ml only.
+  std::optional<handeye::TranslationFix> fix;
 
   // core/options_check.h: false naming CalibrateOptions.robot_sigma / .camera_sigma (outside
   // pose_sigma.h's range, or both zero in rotation or in translation: a singular noise model),
-  // .robust_scale (not positive and finite), or a CovarianceOptions or ConsensusOptions field.
+  // .robust_scale (not positive and finite), .fix (an axis other than 0–2, a value not finite,
+  // or a method other than ml), or a CovarianceOptions or ConsensusOptions field.
   bool IsValid(std::string* why) const;
 };
 
@@ -116,6 +121,9 @@ struct CalibrationResult {
   // covariance), when it used any.
   std::optional<std::uint64_t> seed;
   std::vector<std::string> warnings;
+  // With CalibrateOptions::fix: the fixed component and the directions of the family (planar.h,
+  // (P1)) the data cannot tell apart; the covariance is zero along the fixed coordinate.
+  std::optional<handeye::FixedTranslation> fixed;
 };
 
 // Throws hecal::DegenerateError on degenerate data (handeye/observability.h), hecal::InputError

@@ -59,6 +59,8 @@
 // whole covariance, a given sigma included. Not tried in the outlier
 // rejection's fits (station_selection.h), which test under the Gaussian model.
 //
+// Planar robots (MlOptions::fixed, handeye/planar.h): the same on the surface where one
+// coordinate of X's translation has its given value.
 // Covariance: the Gauss–Newton inverse information (Σ_i w_i J_iᵀ Σ_i⁻¹ J_i)⁻¹ at the optimum
 // (12 × 12 over (δX, δZ), right perturbations, (ω, v) order; w_i = ρ'(s_i) the robust weights,
 // 1 without a robust loss), with the estimated variances when the sigmas were estimated.
@@ -72,6 +74,7 @@
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/estimation/robust_loss.h"
+#include "hecal/handeye/planar.h"
 #include "hecal/handeye/problem.h"
 
 namespace hecal::estimation {
@@ -94,6 +97,11 @@ struct MlOptions {
   // "Starts on demand" above: when the optimum from `starts` may be a wrong minimum, refine from
   // every closed-form start too. Off: `starts` only (e.g. to study one start's basin).
   bool starts_on_demand = true;
+  // Planar robots (handeye/planar.h): one component of X's translation given; the minimisation
+  // stays on that constraint and the covariance is the constrained inverse information (zero
+  // along the fixed coordinate). The starts should come from handeye::FixedStart: the closed
+  // forms of "Starts on demand" do not apply to planar data and are not tried.
+  std::optional<handeye::FixedTranslation> fixed;
 
   // core/options_check.h: false naming MlOptions.robot_sigma / .camera_sigma (negative or not
   // finite; no upper bound: the estimate of one refinement seeds the next), .robust_scale (not

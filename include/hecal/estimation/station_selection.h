@@ -52,6 +52,7 @@
 #include "hecal/estimation/ml.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/pose_sigma.h"
+#include "hecal/handeye/planar.h"
 #include "hecal/handeye/problem.h"
 #include "hecal/handeye/station_consensus.h"
 
@@ -70,6 +71,10 @@ struct StationSelectionOptions {
   // next to them; camera_sigma then only weights the ml fit.
   std::vector<Matrix6d> camera_covariances;
   handeye::ConsensusOptions consensus;
+  // Planar robots (handeye/planar.h): one component of X's translation given; the fits keep it,
+  // start from handeye::FixedStart, and the consensus (closed forms on subsets, which planar data
+  // do not determine) is skipped: the rounds start from every station.
+  std::optional<handeye::TranslationFix> fix;
 
   // core/options_check.h: false naming StationSelectionOptions.robot_sigma / .camera_sigma
   // outside pose_sigma.h's range, .camera_covariances with a non-finite entry, or a

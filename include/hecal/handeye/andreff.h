@@ -41,11 +41,17 @@
 
 #include "hecal/geometry/types.h"
 #include "hecal/handeye/motion.h"
+#include "hecal/handeye/planar.h"
 
 namespace hecal::handeye {
 
 inline constexpr double kAndreffMinPivotRatio = 1e-12;
 
 Pose SolveAndreff(const std::vector<Motion>& motions);
+
+// The same with one coordinate of X's translation given (planar robots, planar.h): (A1)+(A2)
+// solved as an equality-constrained least-squares problem (the KKT system), and the translation
+// re-solve likewise. Throws DegenerateError when even then the system is singular.
+Pose SolveAndreff(const std::vector<Motion>& motions, const TranslationFix& fix);
 
 }  // namespace hecal::handeye

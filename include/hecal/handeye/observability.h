@@ -24,6 +24,7 @@
 // its estimated noise). ρ_min < kNoiseDegenerate is an error, ρ_min < kNoiseWeak a warning.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -38,12 +39,22 @@ inline constexpr double kParallelAxes = 1e-3;  // rad: spread of axes below this
 inline constexpr double kNoiseDegenerate = 3.0;  // ρ_min below this: not observable
 inline constexpr double kNoiseWeak = 20.0;       // ρ_min below this: weakly observable
 
-// Throws hecal::DegenerateError naming what cannot be observed and what data would fix it.
-void CheckObservability(const Problem& problem);
+// (O1) of observability.cc: the normal matrix N = n² I − MᵀM (M = Σ R_Ai) of the translation step
+// over all station pairs; its eigenvector of the smallest eigenvalue is the least observed
+// direction of X's translation, in X's parent frame.
+Eigen::Matrix3d TranslationNormalMatrix(const std::vector<Pose>& A);
+
+// Throws hecal::DegenerateError naming what cannot be observed and what data would fix it; for
+// parallel axes the fix names the component a planar robot gives (--fix, planar.h).
+// translation_fixed: one component of X's translation is given (planar.h), so parallel axes are
+// not an error (the other checks remain).
+void CheckObservability(const Problem& problem, bool translation_fixed = false);
 
 // The noise-aware check above, for a robot rotation noise σ (radians per axis, given or
 // estimated; σ = 0 disables it). Throws DegenerateError when a direction of X's translation is
 // observed only by noise; returns a warning (empty when none) when it is weakly observed.
-std::string CheckObservabilityUnderNoise(const Problem& problem, double robot_rotation_sigma);
+// translation_fixed: the least observed direction is given (planar.h); the next one is tested.
+std::string CheckObservabilityUnderNoise(const Problem& problem, double robot_rotation_sigma,
+                                         bool translation_fixed = false);
 
 }  // namespace hecal::handeye
