@@ -14,6 +14,7 @@ constexpr Registrar kRegistrars[] = {
     &RegisterPosesCommand,     &RegisterImportCommand,  &RegisterDetectCommand,
     &RegisterCalibrateCommand, &RegisterReportCommand,  &RegisterPoseCommand,
     &RegisterSimulateCommand,  &RegisterBenchCommand,   &RegisterContourCommand,
+    &RegisterPlanCommand,
 };
 
 }  // namespace

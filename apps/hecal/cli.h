@@ -34,6 +34,7 @@ void RegisterPoseCommand(CLI::App& app, const Io& io);
 void RegisterSimulateCommand(CLI::App& app, const Io& io);
 void RegisterBenchCommand(CLI::App& app, const Io& io);
 void RegisterContourCommand(CLI::App& app, const Io& io);
+void RegisterPlanCommand(CLI::App& app, const Io& io);
 
 // argv[0] is the program name, as in main().
 int RunHecal(const std::vector<std::string>& argv, std::ostream& out, std::ostream& err);

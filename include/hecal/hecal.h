@@ -30,6 +30,7 @@
 #include "hecal/io/import.h"
 #include "hecal/io/pose_table.h"
 #include "hecal/io/units.h"
+#include "hecal/io/workspace_file.h"
 #include "hecal/pose/pose_method.h"
 #include "hecal/version.h"
 
@@ -43,6 +44,8 @@
 #include "hecal/jobs/global_calibration.h"
 #include "hecal/jobs/import.h"
 #include "hecal/jobs/opencv_drop_in.h"
+#include "hecal/jobs/plan.h"
+#include "hecal/jobs/plan_study.h"
 #include "hecal/jobs/point_pose.h"
 #include "hecal/jobs/pose_calibration.h"
 #include "hecal/jobs/pose_conversion.h"

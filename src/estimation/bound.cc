@@ -22,11 +22,8 @@ Matrix12d Information(const handeye::Problem& truth, const Pose& X, const Pose& 
   }
   Matrix12d information = Matrix12d::Zero();
   for (size_t i = 0; i < truth.A.size(); ++i) {
-    Matrix6x12d J;
-    LoopResidual(truth.A[i], truth.B[i], X, Z, &J);
-    const Matrix6d W = WhiteningMatrix(
-        StationCovariance(truth.setup, truth.A[i], truth.B[i], X, robot[i], camera[i]));
-    internal::AddWeightedGram(W.lazyProduct(J), 1.0, &information);
+    information += StationInformation(truth.setup, truth.A[i], truth.B[i], X, Z, robot[i],
+                                      camera[i]);
   }
   return information;
 }
@@ -42,6 +39,17 @@ AccuracyBound BoundFrom(const Matrix12d& covariance) {
 }
 
 }  // namespace
+
+Eigen::Matrix<double, 12, 12> StationInformation(handeye::Setup setup, const Pose& A,
+                                                 const Pose& B, const Pose& X, const Pose& Z,
+                                                 const Matrix6d& robot, const Matrix6d& camera) {
+  Matrix6x12d J;
+  LoopResidual(A, B, X, Z, &J);
+  const Matrix6d W = WhiteningMatrix(StationCovariance(setup, A, B, X, robot, camera));
+  Matrix12d information = Matrix12d::Zero();
+  internal::AddWeightedGram(W.lazyProduct(J), 1.0, &information);
+  return information;
+}
 
 AccuracyBound FirstOrderBound(const handeye::Problem& truth, const Pose& X, const Pose& Z,
                               const std::vector<Matrix6d>& robot,

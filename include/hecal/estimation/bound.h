@@ -28,6 +28,13 @@
 
 namespace hecal::estimation {
 
+// One station's term J_iᵀ Σ_i⁻¹ J_i of I (12 × 12, full symmetric), station i given as (A_i, B_i)
+// of problem.h with its robot and camera covariances — what a planned station would add
+// (plan/pose_plan.h).
+Eigen::Matrix<double, 12, 12> StationInformation(handeye::Setup setup, const Pose& A,
+                                                 const Pose& B, const Pose& X, const Pose& Z,
+                                                 const Matrix6d& robot, const Matrix6d& camera);
+
 struct AccuracyBound {
   Eigen::Matrix<double, 12, 12> covariance;  // I⁻¹, blocks (δX, δZ)
   double rotation_rmse_X = 0.0;              // radians
