@@ -81,14 +81,26 @@ PlanStudyRow RunPlanStudy(const PlanStudyOptions& options) {
       moved.X = nominal.X * se3::Exp(sign * xi);
       scenes.push_back(moved);
     }
+    // The existing stations (the first of the pool) are the base; the rest are the candidates.
+    const std::vector<plan::ViewCandidate> existing(pool.begin(), pool.begin() + options.existing);
+    const std::vector<plan::ViewCandidate> rest(pool.begin() + options.existing, pool.end());
+    std::vector<plan::Matrix12d> base(scenes.size(), plan::Matrix12d::Zero());
+    for (const auto& station : plan::CandidateInformation(existing, scenes, options.robot_sigma,
+                                                          options.camera_sigma)) {
+      for (size_t k = 0; k < scenes.size(); ++k) base[k] += station[k];
+    }
     const std::vector<int> chosen = plan::ChooseStations(
-        plan::CandidateInformation(pool, scenes, options.robot_sigma, options.camera_sigma),
-        std::vector<plan::Matrix12d>(scenes.size(), plan::Matrix12d::Zero()), options.stations);
+        plan::CandidateInformation(rest, scenes, options.robot_sigma, options.camera_sigma), base,
+        options.stations);
     for (bool is_planned : {false, true}) {
       std::vector<Pose> robot_true, camera_true, robot, camera;
-      for (int k = 0; k < options.stations; ++k) {
-        const plan::ViewCandidate& station =
-            pool[static_cast<size_t>(is_planned ? chosen[static_cast<size_t>(k)] : k)];
+      for (int k = 0; k < options.existing + options.stations; ++k) {
+        const bool added = k >= options.existing;
+        const size_t index =
+            is_planned && added
+                ? static_cast<size_t>(options.existing + chosen[static_cast<size_t>(k - options.existing)])
+                : static_cast<size_t>(k);
+        const plan::ViewCandidate& station = pool[index];
         robot_true.push_back(station.T_base_gripper);
         camera_true.push_back(station.T_camera_target);
         robot.push_back(sim::AddNoise(station.T_base_gripper, robot_noise, rng));

@@ -36,5 +36,22 @@ TEST(PlanStudy, TheTable) {
   }
 }
 
+// --next on a weak existing set: 4 random stations, then 3 more (random or planned).
+TEST(PlanStudy, NextOnAWeakSet) {
+  for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
+    PlanStudyOptions options;
+    options.setup = setup;
+    options.existing = 4;
+    options.stations = 3;
+    const PlanStudyRow row = RunPlanStudy(options);
+    std::printf("| %s | 4 + 3 | random: %.4f deg, %.3f mm | planned: %.4f deg, %.3f mm |\n",
+                std::string(handeye::SetupName(setup)).c_str(),
+                row.random.achieved_rotation * 57.29577951308232, row.random.achieved_translation * 1e3,
+                row.planned.achieved_rotation * 57.29577951308232,
+                row.planned.achieved_translation * 1e3);
+    EXPECT_LT(row.planned.achieved_translation, row.random.achieved_translation);
+  }
+}
+
 }  // namespace
 }  // namespace hecal::jobs

@@ -4,9 +4,11 @@
 // Each trial draws a truth (X, Z) as the protocol does, and a pool of `pool` stations from the
 // protocol's distribution (camera in a 1 m cube 1 m from the target, tilts ±45°, free spin).
 //  - random: the first N of the pool, as the protocol takes them;
-//  - planned: N of the pool chosen D-optimally for X (plan/station_design.h) at a nominal that is
-//    the truth moved by the nominal error (5°, 20 mm along a random direction), robust over the
-//    nominal's perturbed copies as `hecal plan` is.
+//  - planned: N of the pool chosen D-optimally for X (plan/station_design.h) at a nominal whose X
+//    is the truth's moved by the nominal error (5°, 20 mm along a random direction), robust over
+//    the nominal's copies moved once more either way, as `hecal plan` is.
+// With `existing` > 0 (the `--next` case): both arms start from the pool's first `existing`
+// stations; random adds the next N of the pool, planned chooses N of the rest on top of them.
 // Both get the same noise model, are calibrated with ml (noise given, no outlier rejection or
 // model check), and compared with the truth. The predicted RMSE is the first-order bound at the
 // truth for the stations taken (estimation/bound.h), the RMS over the trials.
@@ -21,7 +23,8 @@ namespace hecal::jobs {
 
 struct PlanStudyOptions {
   handeye::Setup setup = handeye::Setup::kEyeInHand;
-  int stations = 10;
+  int stations = 10;  // planned (or random) stations
+  int existing = 0;   // --next: random stations both arms start from (the first of the pool)
   int trials = 200;
   int pool = 300;
   estimation::PoseSigma robot_sigma{0.05 * 0.017453292519943295, 0.1e-3};
