@@ -214,12 +214,11 @@ void RunCalibrate(const CalibrateFlags& flags, const Io& io) {
     }
   }
   check_outputs();
+  if (!flags.stamps.empty() && !flags.streams) {
+    throw InputError("--stamps", 0, "--stamps applies to --streams --images only",
+                     "add --streams, or leave it out");
+  }
   if (flags.streams) {
-    if (!flags.images.empty()) {
-      throw InputError("--streams", 0, "--images cannot be a stream yet",
-                       "detect the images' poses first (hecal detect) and give them as a "
-                       "camera stream with a stamp column (docs/streams.md)");
-    }
     RunCalibrateStreams(flags, settings, io);
   } else if (flags.images.empty()) {
     RunCalibratePoses(flags, settings, io);
@@ -311,6 +310,9 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
                       "Robot pose noise per axis, MM,DEG (estimated when absent)");
   command->add_option("--camera-sigma", flags->camera_sigma,
                       "Camera pose noise per axis, MM,DEG (estimated when absent)");
+  command->add_option("--stamps", flags->stamps,
+                      "With --streams --images: the images' time stamps, CSV image,stamp "
+                      "(default: the file names are the stamps)");
   command->add_option("--fix", flags->fix,
                       "Planar robot (all rotations about one axis): X's translation component "
                       "along that axis, given, e.g. tz=120mm (docs/planar.md)");

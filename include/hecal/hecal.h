@@ -65,6 +65,7 @@
 #include "hecal/jobs/global_matches.h"
 #include "hecal/jobs/image_calibration.h"
 #include "hecal/jobs/image_folder_calibration.h"
+#include "hecal/jobs/image_stream_calibration.h"
 #include "hecal/jobs/job_callbacks.h"
 #include "hecal/jobs/opencv_bench_peer.h"
 #include "hecal/jobs/pose_detection.h"

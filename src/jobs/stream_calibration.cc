@@ -272,8 +272,15 @@ bool StreamOptions::IsValid(std::string* why) const {
 report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& options) {
   RequireValid(options);
   const PoseFileCalibrationOptions& files = options.files;
-  const io::PoseTable robot_table = io::ReadPoseTable(files.robot, files.robot_read);
-  const io::PoseTable camera_table = io::ReadPoseTable(files.camera, files.camera_read);
+  return CalibrateFromStreamTables(options, io::ReadPoseTable(files.robot, files.robot_read),
+                                   io::ReadPoseTable(files.camera, files.camera_read));
+}
+
+report::ResultDocument CalibrateFromStreamTables(const StreamCalibrationOptions& options,
+                                                 const io::PoseTable& robot_table,
+                                                 const io::PoseTable& camera_table) {
+  RequireValid(options);
+  const PoseFileCalibrationOptions& files = options.files;
   std::vector<std::string> notes;
   const streams::PoseStream robot = StreamOf(robot_table, &notes);
   const streams::PoseStream camera = StreamOf(camera_table, &notes);

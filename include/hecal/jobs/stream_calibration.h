@@ -57,6 +57,12 @@ struct StreamCalibrationOptions {
 // Steps 1–5 from two pose tables.
 report::ResultDocument CalibrateFromStreams(const StreamCalibrationOptions& options);
 
+// The same from tables already read (options.files names them in messages): the camera stream of
+// images (image_stream_calibration.h) comes this way.
+report::ResultDocument CalibrateFromStreamTables(const StreamCalibrationOptions& options,
+                                                 const io::PoseTable& robot,
+                                                 const io::PoseTable& camera);
+
 // Steps 1 (the stream check) to 5 from streams in memory (metres), step 4 as CalibratePoses
 // (pose_calibration.h) does it with `calibration` (its station_ids are ignored: the sparser
 // stream's ids, or its stamps, name the stations).
