@@ -123,8 +123,11 @@ def main():
     parser.add_argument("--python-path", required=True)
     parser.add_argument("--slow", action="store_true", help="run the <!-- slow --> blocks only")
     parser.add_argument("--list", action="store_true", help="print the commands, run nothing")
-    parser.add_argument("--timeout", type=float, default=300)
+    parser.add_argument("--timeout", type=float,
+                        help="seconds per command (default 300, with --slow 1800)")
     args = parser.parse_args()
+    if args.timeout is None:
+        args.timeout = 1800 if args.slow else 300
     hecal = os.path.abspath(args.hecal)
     found = collect()
     if args.list:
