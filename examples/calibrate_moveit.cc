@@ -2,7 +2,7 @@
 // the library's front door (hecal/hecal.h), without the CLI: import the samples, calibrate the
 // pose lists with `ml` (jobs::CalibratePoses: the convention check, outlier rejection,
 // covariance), print X with 1σ.
-// Usage: example_calibrate_moveit [pose_samples.json]        (docs/README.md: the data flow)
+// Usage: example_calibrate_moveit [pose_samples.json]        (docs/architecture.md: the data flow)
 #include <cmath>
 #include <cstdio>
 #include <string>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages hecal builds and tests with (the list in README "Library, build and tests").
+# Installs the Debian 12 packages hecal builds and tests with (docs/build.md).
 # Idempotent: prints nothing and touches nothing when every package is present.
 # Usage: scripts/install-deps.sh [--fuzz] [--browser]   (--fuzz adds clang + libFuzzer runtime;
 # --browser adds Debian's chromium for the HTML report's browser test, tests/report/)

@@ -3,7 +3,7 @@
 # bad-input corpus and the fuzzers' kept inputs, label "robustness", are part of it).
 # With HECAL_SANITIZED_CHECKS=1 it also builds the "robustness" tests a second time under
 # AddressSanitizer and UndefinedBehaviorSanitizer and runs them there, beside the unit suite
-# (README "Reliability"). That build is unoptimised (-O0: with -O3 the sanitizers make the
+# (docs/reliability.md). That build is unoptimised (-O0: with -O3 the sanitizers make the
 # compiler about four times slower). It is off by default because it no longer fits CI's time:
 # on a clean clone on 2 cores (2026-11-29) the release build took 29.3 min wall (683 steps; the
 # heaviest files 30–59 s each: estimation/noise_estimation.cc, pose/dlt_pose.cc,

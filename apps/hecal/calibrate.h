@@ -1,5 +1,5 @@
 // `hecal calibrate` (docs/cli.md#hecal-calibrate; the steps:
-// docs/README.md#the-data-flow-of-hecal-calibrate): the flags of every form, checked once
+// docs/architecture.md#the-data-flow-of-hecal-calibrate): the flags of every form, checked once
 // (ParseCalibrateFlags), then the form, each a library job with its options bound from the flags:
 // from pose tables (calibrate.cc: jobs::CalibrateFromPoseFiles), from images (calibrate_images.cc:
 // jobs::CalibrateFromImageFolder) or target-free (calibrate_global.cc: the matches from

@@ -1,5 +1,5 @@
 // How much a single plane weakens the target-free X on rendered images (docs/global.md,
-// "Measured"; README "Global"): `hecal calibrate --method global --images DIR --target none` —
+// "Measured"; docs/global.md): `hecal calibrate --method global --images DIR --target none` —
 // SIFT, ratio and mutual checks, RANSAC, the L∞ search (--max-cubes 20000), the re-check and the
 // polish with the robot error marginalised — on eye-in-hand station sets (testing/
 // textured_stations.h: 10 stations, 9 motions of 10–18° and 2–5 cm, exact robot poses, 800 × 600

@@ -1,6 +1,6 @@
 // The estimated robot noise and the covariance of X from `hecal calibrate --images --method ml`
 // on its default path (robot and pixel noise estimated, nothing given), on many rendered image
-// sets of a known scene (README "Uncertainty", "From images").
+// sets of a known scene (docs/uncertainty.md, "From images").
 //
 // Each set: an eye-in-hand camera sees the 9 × 6 chessboard of testing/rendered_scene.h from
 // random directions (0.36–0.44 m away, tilted 10–35° towards a random azimuth, turned about its
@@ -15,13 +15,13 @@
 // Coverage: the fraction of sets with NEES ≤ χ²⁻¹(68.3% / 95.4%; 6), the definition of the
 // pose-level table (uncertainty/consistency.h).
 //
-// Asserted (the targets of README "Uncertainty"): 8 stations, robot noise 0.5° / 2 mm, 100 sets:
+// Asserted (the targets of docs/uncertainty.md): 8 stations, robot noise 0.5° / 2 mm, 100 sets:
 // the estimated robot rotation sigma within 30% of the truth in ≥ 90% of the sets, the
 // translation sigma too, and 2σ coverage of X ≥ 90%. Both within 30% at once is printed, not
 // asserted: each rests on ν ≈ 3n − 6 = 18 degrees of freedom, so even an exact variance
 // estimator (σ̂²ν/σ² ~ χ²(ν)) has each within 30% with probability 0.93 and both with about 0.86.
 // 28 stations, 0.01° / 0.05 mm (the regime of the real rwhe-kuka2 set), 30 sets: 2σ coverage
-// ≥ 90%. Measured: README "Uncertainty", "From images". Run time: about 20 min for both on two
+// ≥ 90%. Measured: docs/uncertainty.md, "From images". Run time: about 20 min for both on two
 // cores (the noisy images make the chessboard search slow).
 #include <gtest/gtest.h>
 

@@ -241,7 +241,7 @@ TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
 // sets. Measured: eye-in-hand pose-level 0.0040° / 0.018 mm RMS, reprojection 0.0020° / 0.016 mm;
 // eye-to-hand 0.0041° / 0.019 mm and 0.0020° / 0.016 mm. (With robot noise of 0.005° / 0.02 mm
 // added, which then dominates, the two are within 10% of each other on one set (40 draws), the
-// reprojection ahead in rotation and 8% behind in eye-to-hand translation — README, "Calibrating
+// reprojection ahead in rotation and 8% behind in eye-to-hand translation — docs/images.md, "Calibrating
 // from images".)
 TEST_F(CalibrateImagesTest, ReprojectionIsAtLeastAsAccurateAsPoseLevelOnRenderedSets) {
   constexpr int kSets = 4;

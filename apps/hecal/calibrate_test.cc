@@ -42,7 +42,7 @@ double AngleBetween(const Pose& a, const Pose& b) {
 }
 
 // covariance.method is the method asked for, with "+model_check" appended exactly when the model
-// check inflated the covariance (covariance.model_check.used; README "Uncertainty").
+// check inflated the covariance (covariance.model_check.used; docs/uncertainty.md).
 void ExpectCovarianceMethod(const json& result, const std::string& method) {
   const json& covariance = result["covariance"];
   const bool used =

@@ -1,9 +1,12 @@
-// docs/cli.md against `hecal --help`: every subcommand the help lists (recursively, through the
-// "Subcommands:" sections) has a section "## `hecal <command>`" in docs/cli.md, every flag its
-// --help lists appears in that section as `--flag`, and every flag the section's table lists
-// exists in the --help. So the reference cannot fall behind the command line.
+// docs/cli.md against `hecal --help-all`: every subcommand the help lists (recursively, through
+// the "Subcommands:" sections) has a section "## `hecal <command>`" in docs/cli.md, every flag its
+// --help-all lists appears in that section as `--flag`, and every flag the section's table lists
+// exists in the --help-all. So the reference cannot fall behind the command line. And `--help`
+// of the top level and of every command fits a screen: at most 40 lines, the last pointing to
+// docs/cli.md, its flags a subset of --help-all's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -64,28 +67,36 @@ std::string Section(const std::string& doc, const std::string& command) {
   return doc.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
 }
 
-// Every leaf command, by walking the help from `hecal --help` down.
-void CollectLeaves(const std::string& command, std::vector<std::string>* leaves) {
+// `hecal <command> <help_flag>`.
+cli_test::Outcome RunHelp(const std::string& command, const std::string& help_flag) {
   std::vector<std::string> args;
   std::istringstream words(command);
   for (std::string word; words >> word;) args.push_back(word);
-  args.push_back("--help");
-  const cli_test::Outcome help = Hecal(args);
+  args.push_back(help_flag);
+  return Hecal(args);
+}
+
+// Every command ("" is the top level) and every leaf command, by walking the help from
+// `hecal --help` down.
+void CollectCommands(const std::string& command, std::vector<std::string>* leaves,
+                     std::vector<std::string>* all) {
+  const cli_test::Outcome help = RunHelp(command, "--help");
   ASSERT_EQ(help.code, 0) << command << ": " << help.err;
+  all->push_back(command);
   const Help parsed = ParseHelp(help.out);
   if (parsed.subcommands.empty()) {
     leaves->push_back(command);
     return;
   }
   for (const std::string& sub : parsed.subcommands)
-    CollectLeaves(command.empty() ? sub : command + " " + sub, leaves);
+    CollectCommands(command.empty() ? sub : command + " " + sub, leaves, all);
 }
 
 TEST(CliDocs, EverySubcommandAndFlagIsInDocsCliMd) {
   const std::string doc = ReadFile(std::string(HECAL_SOURCE_DIR) + "/docs/cli.md");
   ASSERT_FALSE(doc.empty()) << "docs/cli.md is missing";
-  std::vector<std::string> leaves;
-  CollectLeaves("", &leaves);
+  std::vector<std::string> leaves, all;
+  CollectCommands("", &leaves, &all);
   // poses convert, import, detect, calibrate, pose, simulate, bench, contour pose/study/track/
   // render: the walk must have found the command table, not an empty help.
   ASSERT_GE(leaves.size(), 11u);
@@ -94,11 +105,7 @@ TEST(CliDocs, EverySubcommandAndFlagIsInDocsCliMd) {
     SCOPED_TRACE("hecal " + command);
     const std::string section = Section(doc, command);
     ASSERT_FALSE(section.empty()) << "docs/cli.md has no section \"## `hecal " << command << "`\"";
-    std::vector<std::string> args;
-    std::istringstream words(command);
-    for (std::string word; words >> word;) args.push_back(word);
-    args.push_back("--help");
-    const Help help = ParseHelp(Hecal(args).out);
+    const Help help = ParseHelp(RunHelp(command, "--help-all").out);
     EXPECT_FALSE(help.flags.empty());
     for (const std::string& flag : help.flags) {
       EXPECT_NE(section.find("`" + flag + "`"), std::string::npos)
@@ -112,6 +119,25 @@ TEST(CliDocs, EverySubcommandAndFlagIsInDocsCliMd) {
             << (*it)[group] << " is in docs/cli.md but not in --help";
       }
     }
+  }
+}
+
+TEST(CliDocs, EveryHelpFitsAScreenAndEndsPointingToDocsCliMd) {
+  std::vector<std::string> leaves, all;
+  CollectCommands("", &leaves, &all);
+  ASSERT_GE(all.size(), 14u);  // the top level, poses, contour and at least 11 leaves
+  for (const std::string& command : all) {
+    SCOPED_TRACE("hecal " + command + " --help");
+    const cli_test::Outcome help = RunHelp(command, "--help");
+    ASSERT_EQ(help.code, 0) << help.err;
+    EXPECT_LE(std::count(help.out.begin(), help.out.end(), '\n'), 40) << help.out;
+    std::string text = help.out;
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    const std::string last = text.substr(text.rfind('\n') + 1);
+    EXPECT_NE(last.find("docs/cli.md"), std::string::npos) << last;
+    const std::set<std::string> every = ParseHelp(RunHelp(command, "--help-all").out).flags;
+    for (const std::string& flag : ParseHelp(help.out).flags)
+      EXPECT_TRUE(every.contains(flag)) << flag << " is in --help but not in --help-all";
   }
 }
 

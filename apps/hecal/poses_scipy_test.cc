@@ -176,7 +176,7 @@ TEST_P(ScipyTest, ConvertReproducesScipy) {
     } else {  // Euler angles
       const auto lock = GimbalLockRows().find({id, target.stem});
       // Inside scipy's 1e-7 lock band but a distance δ off the lock, a3 = 0 costs up to δ·|a3|
-      // (≤ δ·π) in the reconstruction (README "Band rows"); δ = 0 at an exact lock.
+      // (≤ δ·π) in the reconstruction (tests/data/scipy/README.md, "Band rows"); δ = 0 at an exact lock.
       double band = 0.0;
       if (lock != GimbalLockRows().end()) {
         ++locked;

@@ -233,7 +233,7 @@ TEST_F(PosesConvertTest, HeaderlessMatrixInput) {
   EXPECT_NEAR(csv.Number(1, "w_deg"), 0, 1e-12);
 }
 
-// The output may not be the input (README "Reliability"): refused, the file untouched.
+// The output may not be the input (docs/reliability.md): refused, the file untouched.
 TEST_F(PosesConvertTest, TheInputIsNeverTheOutput) {
   const std::string path = Write("robot.csv", kKukaMillimetres);
   EXPECT_EQ(Run({"--input", path, "--output", path, "--to", "abb"}), 2);

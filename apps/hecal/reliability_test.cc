@@ -1,4 +1,4 @@
-// The output rules and the recorded seed of README "Reliability", on the commands' success
+// The output rules and the recorded seed of docs/reliability.md, on the commands' success
 // paths (the refusals are the corpus of robustness_test.cc): an output through a symbolic link
 // replaces the file it points to and keeps the link; a multi-output command that fails after its
 // first file was staged leaves nothing (contour render removes the folder it created); every

@@ -3,7 +3,7 @@
 // exit with its code, print one line on stderr ("hecal: …") holding its text, and leave the
 // folder exactly as it was — every entry's name, kind, link target and contents (a snapshot
 // before and after each case), and /dev/null and /dev/full still character devices. The cases
-// are bad input of every class (README "Reliability"): outputs that are inputs, devices, pipes,
+// are bad input of every class (docs/reliability.md): outputs that are inputs, devices, pipes,
 // folders or in missing folders; inputs that are not files; numbers out of range; images that
 // are too small, too large or corrupt; inputs that drive a solver to non-finite values.
 //

@@ -1,4 +1,4 @@
-// The scale measurement (label "slow"; README "Speed", Scale): `hecal calibrate` with default
+// The scale measurement (label "slow"; docs/speed.md, Scale): `hecal calibrate` with default
 // options on 10³, 10⁴ and 10⁵ synthetic stations, once per method (ml and every closed form),
 // each run a separate process under /usr/bin/time -v, so the peak memory is the whole
 // program's: reading the pose files, the convention check, the outlier rejection, the solve,
@@ -7,7 +7,7 @@
 // robot and camera, written as pose tables (quaternions) by this driver; X is known.
 // Asserts, at every n: the run succeeds, X is within 10× the first-order bound (bound.h, at the
 // true poses and sigmas) for ml and within 100× for the closed forms (they are not efficient:
-// README "Methods"), under 5 s of CPU time at 10⁴ and 60 s at 10⁵ (user + system: the wall clock
+// docs/accuracy.md), under 5 s of CPU time at 10⁴ and 60 s at 10⁵ (user + system: the wall clock
 // depends on what else the machine runs), and 2 GB per run at 10⁵. Prints the table. The CPU
 // limits catch a return of the noise estimation's O(n) cost to a large constant (`ml` took 9.95 s
 // CPU at 10⁴ and over 120 s at 10⁵ when each estimate fitted four models on all stations with

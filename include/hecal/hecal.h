@@ -3,7 +3,7 @@
 // options (IsValid names the first bad field) and a typed result; the headers below are that
 // layer, the vocabulary its options and results speak (poses, rotations, units, methods, setups,
 // errors) and the formatting of its results (report/). Every other header under include/hecal is
-// implementation: installed so that these compile, but free to change (docs/README.md#layers).
+// implementation: installed so that these compile, but free to change (docs/architecture.md#layers).
 //
 // Conventions (docs/conventions.md): T_a_b maps coordinates in frame b to frame a; lengths in
 // metres and angles in radians inside the library, files in the units they name; covariances

@@ -1,12 +1,12 @@
 // Calibrate at 2·10⁴ stations (thesis protocol, eye-in-hand, σ = 1 mm / 1° per component on
-// robot and camera, sigmas given, no outlier rejection), the linear-memory paths of README
-// "Speed" (Scale): a motion-based closed form on the subsampled station pairs (motion.h),
+// robot and camera, sigmas given, no outlier rejection), the linear-memory paths of
+// docs/speed.md (Scale): a motion-based closed form on the subsampled station pairs (motion.h),
 // shah on the absolute poses, and ml started from closed forms on 500 stations
 // (initialization.h). Each X is compared with the first-order bound at the true poses
 // (bound.h: ~0.015° / 0.03 mm here). The factors are what the methods attain, with margin:
 // ml is efficient (its error is a draw of about the bound); tsai-lenz's translation is ~3× less
 // efficient and shah's ~20× (it weights every station's translation equally, whatever its
-// lever arm: README "Methods"). The closed forms get the information covariance (no solves).
+// lever arm: docs/accuracy.md). The closed forms get the information covariance (no solves).
 #include <gtest/gtest.h>
 
 #include <cstdio>

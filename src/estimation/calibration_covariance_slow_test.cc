@@ -3,7 +3,7 @@
 // ml and park-martin, n = 5, 10, 15, 20 stations, 3 data sets each. Prints the largest per-axis
 // |σ_UT/σ_MC − 1| of X and Z per case; asserts it below 10% (+ 3 standard errors of σ_MC, about
 // 1% each) for n ≥ 10, the criterion of docs/uncertainty.md. n = 5 is printed as well (in the
-// README's run it agrees as closely: ≤ 2.5%).
+// run of docs/uncertainty.md it agrees as closely: ≤ 2.5%).
 #include <gtest/gtest.h>
 
 #include <cstdio>

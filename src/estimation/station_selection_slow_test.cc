@@ -6,7 +6,7 @@
 //    the robot noise (0.5° / 2 mm) estimated — the regime of `calibrate --images` with 8 views.
 // Asserted: at most 3% of the sets lose a station in every row (1% expected; 6 of 200 is the
 // binomial 95% bound). Before the F reference and the level per data set, the same rows lost a
-// station in up to 6% of the sets (README "Uncertainty", "Outlier test at few stations").
+// station in up to 6% of the sets (docs/uncertainty.md, "Outlier test at few stations").
 // Run time: about 5 min on one core.
 #include <gtest/gtest.h>
 

@@ -254,7 +254,7 @@ TEST(ScipyReference, EulerAnglesMatchScipy) {
 
       // Read back through hecal, our angles reproduce the input rotation to rounding, and so do
       // the reference angles — except that (a) inside the lock band but off the lock by δ
-      // (README: band rows) the a3 = 0 convention costs O(δ |a3|) ≤ 1e-8 here, and (b) near the
+      // (tests/data/scipy/README.md: band rows) the a3 = 0 convention costs O(δ |a3|) ≤ 1e-8 here, and (b) near the
       // lock scipy's arccos middle angle is only good to ~1e-16 / (distance from the lock),
       // e.g. 2e-10 at 1e-6 rad from it, which the reconstruction of its angles inherits.
       const double distance =

@@ -8,7 +8,7 @@
 //
 // Per axis, the mean of z² = error² / variance over the scenes, read two ways: in the
 // covariance's own axes (the right perturbation δ = (ω, v) in X̂'s frame, here the camera's:
-// README "Uncertainty") and for t in the gripper frame (Cov t = R̂ Cov(v) R̂ᵀ). Both must be
+// docs/uncertainty.md) and for t in the gripper frame (Cov t = R̂ Cov(v) R̂ᵀ). Both must be
 // near 1 (χ²₁) and the mean NEES near 6, for the polish with the estimated noise (what the CLI
 // writes) and with the true noise levels (the linearised model and its weighting alone). The
 // premises, asserted too: the independent-match covariance is far too small here; and the

@@ -1,11 +1,11 @@
-// The oracle covariance (oracle_covariance.h) of the cells of README "Uncertainty", "Heavy-tailed
+// The oracle covariance (oracle_covariance.h) of the cells of docs/uncertainty.md, "Heavy-tailed
 // noise": Student-t(3) noise at 8 stations eye-in-hand (the one cell that misses the coverage
 // target), and as controls Gaussian noise eye-in-hand and Student-t(3) eye-to-hand, all at
 // σ = 1 mm / 1° on robot and camera, `ml` with the noise estimated and its linear covariance
 // (`hecal simulate --stations 8 --sigma 1 --estimate-noise --method ml --covariance linear
 // --noise student-t3|gaussian`, seed 1): the study's trials 0–99 (controls 0–24), 100 noise
-// redraws each, and an exactly Gaussian error read the same way. Prints the table of the README
-// and checks what the README concludes from it (label "slow": about 12 CPU minutes, 150 × 101
+// redraws each, and an exactly Gaussian error read the same way. Prints the table of docs/uncertainty.md
+// and checks what it concludes from it (label "slow": about 12 CPU minutes, 150 × 101
 // solves of ~45 ms at 8 stations with the noise estimated).
 #include <gtest/gtest.h>
 

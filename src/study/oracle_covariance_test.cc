@@ -1,6 +1,6 @@
 // The oracle covariance (oracle_covariance.h) against independent truth: the study's own trial
 // (RunStudy's NEES of the same data set), a covariance known to be right (`ml` with the true
-// sigmas of Gaussian noise: its C matches the spread of its estimates, README "Uncertainty"), the
+// sigmas of Gaussian noise: its C matches the spread of its estimates, docs/uncertainty.md), the
 // leave-one-out NEES recomputed from the M − 1 other redraws directly, and the χ²₆ coverages of
 // an exactly Gaussian error.
 #include "hecal/study/oracle_covariance.h"

@@ -1,6 +1,6 @@
 // The figures of docs/thesis-study.md on the thesis protocol, as a slow test (label "slow"; a
 // few seconds on 2 cores in Release, much longer under sanitizers). `hecal simulate` produces
-// the same numbers for the README's tables.
+// the same numbers for the tables of docs/accuracy.md.
 #include <gtest/gtest.h>
 
 

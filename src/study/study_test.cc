@@ -212,7 +212,7 @@ TEST(StudyCsv, HeaderAndOneRowPerTrialAndMethod) {
 // mm / 1° on both, 200 trials, the default seed), for ml with its linear covariance in both setups:
 // the mean NEES lies in the 95% χ² band for 6 dof × 200 trials, and the 1σ/2σ ellipsoid coverage is
 // within 5 points of 68.3/95.4% (the sampling standard deviation of a 200-trial coverage is
-// 3.3 / 1.5 points; the README reports the exact figures and larger runs).
+// 3.3 / 1.5 points; docs/uncertainty.md reports the exact figures and larger runs).
 StudyOptions MlLinearStudy(std::vector<Setting> settings, int trials) {
   StudyOptions options;
   options.settings = std::move(settings);
@@ -262,7 +262,7 @@ TEST(RunStudy, MlLinearCovarianceIsConsistent) {
 // 100 trials give a binomial sd of 4.7 points — 2σ ≥ 90%, every σ ratio ≥ 0.85) and the check
 // rarely needs to inflate (≤ 20 of 100). Student-t with the Gaussian models only covered 56 / 87
 // (model only) and needed the check on 25 of 100; now the model alone covers 66 / 92 and the
-// check fired 3 times. The README has the 200-trial table.
+// check fired 3 times. docs/uncertainty.md has the 200-trial table.
 TEST(RunStudy, RicherNoiseModelsCoverWhenTheIsotropicGaussianModelIsWrong) {
   Setting pnp = MakeSetting(handeye::Setup::kEyeToHand, 15, 1.0, 1.0, NoiseOn::kBoth,
                             sim::NoiseModel::Kind::kPnp);
@@ -287,7 +287,7 @@ TEST(RunStudy, RicherNoiseModelsCoverWhenTheIsotropicGaussianModelIsWrong) {
   }
 }
 
-// The data set on which the estimated translation noise collapsed (README "Uncertainty"): trial
+// The data set on which the estimated translation noise collapsed (docs/uncertainty.md): trial
 // 182 of `hecal simulate --stations 8 --setup eye-in-hand --sigma 0.2 --robot-scale 5
 // --estimate-noise --method ml` (seed 1), robot 1 mm / 1°, camera 0.2 mm / 0.2°. The model with
 // the camera's tilt/depth excess and the robot's rotation apart was chosen there, its shared
@@ -299,7 +299,7 @@ TEST(RunStudy, RicherNoiseModelsCoverWhenTheIsotropicGaussianModelIsWrong) {
 // data sets (χ²₂/2 < 1/16), a factor 5 in ~4%, so no tighter factor is honest (measured: 0.174
 // mm, 4.1 low) — and X's NEES under the reported covariance below 100 (measured 72.8; it is
 // still far above χ²(6)'s 3σ quantile 20.06: the isotropic translation sigma is itself 4× low
-// on this data set, which no rule here corrects — README "Uncertainty", "Out of reach").
+// on this data set, which no rule here corrects — docs/uncertainty.md, "Out of reach").
 TEST(RunStudy, TheTranslationNoiseOfTrial182DoesNotCollapse) {
   std::mt19937_64 rng(TrialSeed(1, handeye::Setup::kEyeInHand, 8, 182));
   sim::ProtocolOptions protocol;

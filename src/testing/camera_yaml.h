@@ -1,4 +1,4 @@
-// Test support (not installed): a camera file in hecal's YAML form (README "Images": fx, fy, cx,
+// Test support (not installed): a camera file in hecal's YAML form (docs/targets.md: fx, fy, cx,
 // cy, width, height and the plumb_bob coefficients k1, k2, p1, p2, k3), written here without the
 // library's writer so that the tests read hecal's reader against an independent file.
 #pragma once

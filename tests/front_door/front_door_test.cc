@@ -1,6 +1,6 @@
 // The front door is the only door: the command line (apps/hecal, its tests aside), the examples
 // and the Python module's C++ include nothing of hecal but the umbrella hecal/hecal.h
-// (docs/README.md#layers), so everything they reach is the public API.
+// (docs/architecture.md#layers), so everything they reach is the public API.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -22,7 +22,7 @@
 //    robot and camera covariances (StationNoise, station_covariance.h; bound.h's formula; for
 //    ml the same as its kLinear, whatever noise model was chosen). It is the first-order covariance
 //    of an efficient estimator, so for the closed forms and strobl it is a lower bound
-//    (Cramér–Rao): their actual covariance is larger by their inefficiency (README "Methods": 1–3×
+//    (Cramér–Rao): their actual covariance is larger by their inefficiency (docs/accuracy.md: 1–3×
 //    in RMSE on the thesis protocol). O(n) time and memory, the only one that stays cheap at
 //    10⁴–10⁵ stations.
 // The solver at a perturbed data set (Resolve): the closed-form methods exactly as on the data;
@@ -30,7 +30,7 @@
 // (the sigmas used, given or estimated; the perturbations are small, so the start is in the
 // right basin and re-running every closed-form start would only cost time).
 // Default per method (DefaultCovarianceMethod): kLinear for ml (validated: NEES and coverage in
-// the README); for the others kUnscented (a numeric linearisation costs the same solves) up to
+// docs/uncertainty.md); for the others kUnscented (a numeric linearisation costs the same solves) up to
 // kMaxUnscentedStations stations and kInformation above, where the UT would need 24n + 1 solves
 // and a 12n × 12n input covariance.
 // Limits: the noise model is Gaussian and is the one used by the calibration (given or

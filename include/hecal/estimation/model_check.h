@@ -53,7 +53,7 @@
 // strong signal is kept almost whole (ρ = 2, e = 0.16: D = 1.93). Otherwise the model's
 // covariance is reported unchanged (when the model is right its σ is less noisy than the
 // check's). The level
-// was chosen on the thesis protocol (README "Uncertainty"): at level 1 the check fired on
+// was chosen on the thesis protocol (docs/uncertainty.md): at level 1 the check fired on
 // nearly every data set and over-covered; at 2 it fires where the model-only covariance
 // undercovers — which, with the noise estimated from 8 or 15 stations, includes data whose
 // noise IS Gaussian and equally split (the estimated sigma is itself uncertain).

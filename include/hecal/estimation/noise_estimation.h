@@ -54,7 +54,7 @@
 // 1σ coverage 78% at n = 8 eye-in-hand, σ_t twice the truth on average); for a well-determined
 // group with ν degrees of freedom E[σ]² ≈ θ̂ (1 + 2.9/ν) (an inverse-gamma posterior; 1.16 at
 // ν = 18), close to the Student-t factor ν/(ν − 2) that makes the expected NEES 6. Measured
-// (README "Uncertainty"): mean NEES in its 95% band at n = 8 and 15, both setups, with the model
+// (docs/uncertainty.md): mean NEES in its 95% band at n = 8 and 15, both setups, with the model
 // right. The REML point is kept (NoiseEstimate::reml_variances). Above 100 stations (588
 // residual degrees of freedom; the correction is then ≈ 1%) the REML point is used as it is: the
 // grids cost 16² + 24² likelihood evaluations of O(n) each per estimate (`hecal calibrate` on
@@ -95,9 +95,9 @@
 // Var = 2θ²/ν). Below 2 the inverse-gamma posterior of that variance has no mean: the data
 // cannot bound it, and the REML point sits on a boundary that the likelihood-ratio test then
 // rewards. The extra variances themselves are not held to it: a small robot rotation variance
-// beside a large camera one (camodocal-artag, README "Uncertainty") has few effective degrees of
+// beside a large camera one (camodocal-artag, docs/uncertainty.md) has few effective degrees of
 // freedom because it is near zero, and that is what the model says. Measured: on the 8-station data
-// set whose translation sigma collapsed (README "Uncertainty", trial 182 of (b)) the model with the
+// set whose translation sigma collapsed (docs/uncertainty.md, trial 182 of (b)) the model with the
 // camera excess and the robot's rotation apart had ν = 0.00 for the shared translation variance
 // (the depth excess takes the same residuals) and 0.11 for the depth excess; it gave σ_t = 0.062 mm
 // for a translation-equivalent truth of 0.72 mm and X's NEES 509. Without it the isotropic model is
@@ -109,7 +109,7 @@
 // the isotropic ones: with more than two groups a joint grid is too costly (16⁵ points), so each
 // group's posterior mean is taken with the others held at their REML values (a conditional
 // posterior mean, narrower than the marginal). Where that matters was measured: on the 8-station
-// data set whose translation sigma collapsed with a richer model (README "Uncertainty": 0.062 mm
+// data set whose translation sigma collapsed with a richer model (docs/uncertainty.md: 0.062 mm
 // for a translation-equivalent truth of ≈ 0.7 mm), the joint mean over a 16³ + 24³ grid was 0.071
 // mm — the posterior itself sat there (that model is now ineligible, above), so the joint grid, 7×
 // the cost, is not used. NoiseEstimate::richer says a
@@ -125,7 +125,7 @@
 // station noise model (the data do not determine a variance, e.g. poses of a wrong target).
 //
 // Heavy tails (student_t.h; fitted by ml, ml.h, on top of the model chosen here). The models
-// above are Gaussian. Heavy-tailed noise (Student-t(3) per pose component: README "Uncertainty",
+// above are Gaussian. Heavy-tailed noise (Student-t(3) per pose component: docs/uncertainty.md,
 // (c)) is taken by a multivariate Student-t model of the station residuals, a Gaussian scale
 // mixture on these same variance components: given the EM weights w_i, EstimateNoise runs
 // unchanged on the components Q_ik / w_i and returns the t model's scale; ν by profile
@@ -152,7 +152,7 @@
 // stations only 30–36 — and the χ² quantile is too small: a good station left out by the
 // consensus (which leaves out the largest residuals) and tested against the scale of the 7
 // others made 4.5% of clean 8-station sets lose a station instead of the 2.1% that 0.27% per
-// station gives (README "Uncertainty", "Outlier test at few stations"; with F and a level of 1%
+// station gives (docs/uncertainty.md, "Outlier test at few stations"; with F and a level of 1%
 // per set, station_selection.h: 2.0%). With one common scale factor the exact reference is
 // Fisher's F (Koch 1999; Pope's τ test, A. J. Pope, "The statistics of residuals and the detection
 // of outliers", NOAA TR NOS 65 NGS 1, 1976): with Ω = Σ_included r̂ᵀ Σ⁻¹ r̂ the weighted residual

@@ -41,7 +41,7 @@
 // estimated noise. With 8 stations each robot group rests on ν ≈ 3n − 6 = 18 degrees of freedom,
 // and a covariance that takes σ̂² as known makes the NEES of X about 6·F(6, ν) instead of χ²(6):
 // expected 2σ coverage 90.0% and 1σ 63% at ν = 18 (measured on 100 rendered 8-image sets: 88.0%
-// and 71.0%; with the posterior means 92.0% and 79.0%, README "Uncertainty"). The factor is 1.16 at
+// and 71.0%; with the posterior means 92.0% and 79.0%, docs/uncertainty.md). The factor is 1.16 at
 // ν = 18, 1.04 at 28 stations (ν = 78), ≈ 1 for the pixel sigma (thousands of residuals). X and Z
 // are the solution at the point estimates, and robot_sigma reports the point estimate (median
 // ratio to the truth 0.93 / 0.99 there; the posterior mean sits ≈ 8% above it at 8 stations).

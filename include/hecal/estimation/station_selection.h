@@ -24,8 +24,8 @@
 // estimated from the candidate set (a sigma not given) the statistic is judged against F, not
 // χ² (noise_estimation.h, "Estimated variances"): the scale of 7 other stations is itself
 // uncertain, and the χ² reference rejected a good station in 4.5% of clean 8-station sets
-// (measured: README "Uncertainty", "Outlier test at few stations"). Gross outliers are far beyond
-// either threshold (README "Gross outliers": all found, k = 1, 2, 4 of 20). Guards: at most ⌊(n −
+// (measured: docs/uncertainty.md, "Outlier test at few stations"). Gross outliers are far beyond
+// either threshold (docs/troubleshooting.md, "Gross outliers": all found, k = 1, 2, 4 of 20). Guards: at most ⌊(n −
 // 3)/2⌋ stations are rejected. When the test flags more, the data as a whole do not fit one rigid
 // setup under the noise model (wrong conventions, wrong pairing, noise far from the model): nothing
 // is rejected, `too_many` is set and the caller warns. A degeneracy verdict

@@ -34,8 +34,7 @@
 // medians floored at 1e-9 rad and 1e-9 of the length scale. For correct data every
 // alternative is far worse (a wrong inversion leaves residuals of the order of the rotations
 // between stations), so this never fires on them: 0 false alarms in 1200 simulated correct data
-// sets, and 1077 of 1080 mistaken ones named (convention_diagnosis_test; README, "When your data
-// will not calibrate").
+// sets, and 1077 of 1080 mistaken ones named (convention_diagnosis_test; docs/troubleshooting.md).
 #pragma once
 
 #include <optional>

@@ -10,7 +10,7 @@
 //
 // Which pairs (StationPairs, what the dispatcher closed_form.h uses):
 //  - every pair i < j while there are at most kMaxAllPairs of them (n ≤ 632 stations; the
-//    README's accuracy tables, n ≤ 50, and `hecal bench` are all-pairs exactly);
+//    tables of docs/accuracy.md, n ≤ 50, and `hecal bench` are all-pairs exactly);
 //  - above, a subsample linear in n: every station i draws k = max(kMinPartners,
 //    ⌈kMaxAllPairs / n⌉) distinct partners j ≠ i uniformly from a SplitMix64 stream keyed by i
 //    (fixed, so the closed forms stay deterministic functions of the data), and each unordered
@@ -21,8 +21,8 @@
 // average of its gains over all partners; k random partners estimate that average with a
 // relative error ~1/√k, which adds a variance fraction of about 1/k on top of an estimate whose
 // variance already falls as 1/n — on a 10⁴-station data set (σ = 1 mm / 1°) the eight
-// subsampled closed forms are within 1.4–1.9× the first-order bound in rotation (README
-// "Speed", Scale). A rule that preferred large relative
+// subsampled closed forms are within 1.4–1.9× the first-order bound in rotation (docs/speed.md,
+// Scale). A rule that preferred large relative
 // rotations would need the rotations of all n² pairs to rank, and a rule tied to the station
 // order (neighbours i ± 1 …) could be fooled by a periodic or drifting station sequence.
 #pragma once

@@ -1,5 +1,5 @@
 // Files in and out of a command: never a partial output file, never an input or a device
-// overwritten, several outputs all or nothing (docs/cli.md; README "Reliability").
+// overwritten, several outputs all or nothing (docs/cli.md; docs/reliability.md).
 //
 // Output paths (CheckOutputs, and every write below):
 //   - the directory must exist ("the directory 'x' does not exist");

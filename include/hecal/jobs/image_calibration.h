@@ -1,4 +1,4 @@
-// Calibration from target images as one job (`hecal calibrate --images DIR`, docs/README.md
+// Calibration from target images as one job (`hecal calibrate --images DIR`, docs/architecture.md
 // "The data flow of hecal calibrate", from images), beside CalibrateFromPoses
 // (pose_calibration.h): the images the front end used (vision/image_set.h; one
 // estimation::ImageStation each, paired with its robot pose) go through

@@ -1,5 +1,5 @@
 // Calibration from a folder of target images as one job (`hecal calibrate --images DIR`;
-// docs/README.md, "The data flow of hecal calibrate", from images): everything between the
+// docs/architecture.md, "The data flow of hecal calibrate", from images): everything between the
 // caller's options and the result document, printing nothing (progress, notes and warnings go to
 // JobCallbacks, job_callbacks.h).
 //

@@ -1,5 +1,5 @@
 // How a job of this layer tells its caller what happens while it runs, printing nothing itself
-// (docs/README.md#layers: jobs above report and vision). Three kinds of text, each handed out as
+// (docs/architecture.md#layers: jobs above report and vision). Three kinds of text, each handed out as
 // it arises, in the order the job meets it; each callback may be empty (that text is dropped):
 //   progress  text for the reader, whole lines each ending in '\n' (a command line prints it on
 //             standard output: the folder read, the intrinsics, the per-image table);

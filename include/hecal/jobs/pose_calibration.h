@@ -1,4 +1,4 @@
-// Calibration from paired poses (docs/README.md "The data flow of hecal calibrate", steps 3–8),
+// Calibration from paired poses (docs/architecture.md "The data flow of hecal calibrate", steps 3–8),
 // the front door's job for poses already in memory (`hecal.calibrate` in Python) and the common
 // tail of the pose-file job (pose_file_calibration.h).
 //
@@ -104,7 +104,7 @@ report::ResultDocument CalibrateFromPoses(const PoseCalibrationInput& input,
                                           estimation::CalibrateOptions options, bool all_methods);
 
 // A result about to be printed and written: X, Z, the residual RMS and the covariance must be
-// finite (README "Reliability"); DegenerateError otherwise.
+// finite (docs/reliability.md); DegenerateError otherwise.
 void CheckFiniteResult(const estimation::CalibrationResult& result);
 
 }  // namespace hecal::jobs

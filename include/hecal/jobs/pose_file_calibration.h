@@ -1,4 +1,4 @@
-// Calibration from two pose tables as one job (`hecal calibrate --camera FILE`; docs/README.md,
+// Calibration from two pose tables as one job (`hecal calibrate --camera FILE`; docs/architecture.md,
 // "The data flow of hecal calibrate", from poses): everything between the caller's options and
 // the result document, printing nothing.
 //

@@ -1,6 +1,6 @@
 // OpenCV 4.6's hand–eye functions as PEERS of hecal's solvers, on hecal's Problem data (for the
 // bench, `hecal bench` and comparison tests only — the core libraries never link OpenCV,
-// docs/README.md#layers). Nothing here fixes OpenCV; it calls it exactly as a user would.
+// docs/architecture.md#layers). Nothing here fixes OpenCV; it calls it exactly as a user would.
 //
 // Method mapping (docs/bench.md):
 //   cv::calibrateHandEye            CALIB_HAND_EYE_TSAI → tsai-lenz, _PARK → park-martin,

@@ -29,7 +29,7 @@
 // Why Eigen and not Ceres (used by the estimation layer): speed and footprint. With 6 unknowns
 // the 6×6 normal equations are solved directly; a plain loop has no problem set-up, no
 // allocation per residual block and no sparse machinery, and keeps this module Eigen-only
-// (small machines: docs/README.md#layers): measured 10–20 µs for 6–20 points and 20–50 µs for 50
+// (small machines: docs/architecture.md#layers): measured 10–20 µs for 6–20 points and 20–50 µs for 50
 // points (4–5 iterations from a closed-form start; one core of the shared development machine).
 //
 // Errors: InputError for mismatched or non-finite inputs, fewer than 3 points, invalid options;

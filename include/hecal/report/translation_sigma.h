@@ -1,5 +1,5 @@
 // The 1σ of a pose's translation along its PARENT frame's axes — the axes its translation is
-// printed and written in — from the pose's right-perturbation covariance (README "Uncertainty",
+// printed and written in — from the pose's right-perturbation covariance (docs/uncertainty.md,
 // docs/result-file.md).
 //
 // Why: every covariance hecal reports is of δ = (ω, v) in T = T̂ · Exp(δ), expressed in T̂'s own

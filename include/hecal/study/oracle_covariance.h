@@ -27,7 +27,7 @@
 // Gaussian error read the same way (OracleGaussianReference) is the yardstick for the coverages.
 // Failures: a solve that throws or returns a non-finite X is left out (counted); a trial whose
 // own solve fails has ok = false.
-// Measured (README "Uncertainty", "Is the target attainable at 8 stations?";
+// Measured (docs/uncertainty.md, "Is the target attainable at 8 stations?";
 // oracle_covariance_slow_test): at 8 stations, σ = 1 mm / 1°, `ml` with the noise estimated,
 // X̂'s error is leptokurtic with Student-t(3) AND with Gaussian noise — against an exactly
 // Gaussian error read the same way the oracle covers 2.7–4.1 points more at 1σ and 1.5–2.9 less

@@ -1,5 +1,5 @@
 // One image file read (the image front end, vision/image_set.h; `hecal contour track`), bounded
-// and with hecal's own reasons instead of the codecs' (README "Reliability"):
+// and with hecal's own reasons instead of the codecs' (docs/reliability.md):
 //   1. the file is read whole with io::ReadFile (a regular file of at most 256 MiB);
 //   2. its size is taken from the file header before any pixel is decoded — PNG (IHDR, ISO/IEC
 //      15948 §11.2.2), JPEG (the first SOFn segment, ITU-T T.81 §B.2.2), BMP
