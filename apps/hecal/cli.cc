@@ -11,9 +11,10 @@ namespace hecal::cli {
 namespace {
 
 constexpr Registrar kRegistrars[] = {
-    &RegisterPosesCommand,     &RegisterImportCommand,  &RegisterDetectCommand,
-    &RegisterCalibrateCommand, &RegisterReportCommand,  &RegisterPoseCommand,
-    &RegisterSimulateCommand,  &RegisterBenchCommand,   &RegisterContourCommand,
+    &RegisterPosesCommand,     &RegisterImportCommand,   &RegisterDetectCommand,
+    &RegisterCalibrateCommand, &RegisterPivotCommand,    &RegisterReportCommand,
+    &RegisterPoseCommand,      &RegisterSimulateCommand, &RegisterBenchCommand,
+    &RegisterContourCommand,
 };
 
 }  // namespace
