@@ -10,13 +10,13 @@
 
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
+#include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/skew.h"
 #include "hecal/handeye/observability.h"
 
 namespace hecal::estimation {
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 constexpr double kChiSquare3Median = 2.365974;  // χ²₃(0.5)
 
 using Vector6 = Vector6d;
