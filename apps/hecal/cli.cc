@@ -14,10 +14,10 @@ namespace hecal::cli {
 namespace {
 
 constexpr Registrar kRegistrars[] = {
-    &RegisterPosesCommand,     &RegisterImportCommand,  &RegisterDetectCommand,
-    &RegisterCalibrateCommand, &RegisterReportCommand,  &RegisterPoseCommand,
-    &RegisterSimulateCommand,  &RegisterBenchCommand,   &RegisterContourCommand,
-    &RegisterPlanCommand,
+    &RegisterPosesCommand,     &RegisterImportCommand,   &RegisterDetectCommand,
+    &RegisterCalibrateCommand, &RegisterPivotCommand,    &RegisterPlanCommand,
+    &RegisterReportCommand,    &RegisterPoseCommand,     &RegisterSimulateCommand,
+    &RegisterBenchCommand,     &RegisterContourCommand,
 };
 
 // `hecal COMMAND --help` lists the flags most runs need, the ones below; `--help-all` lists every

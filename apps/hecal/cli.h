@@ -29,6 +29,7 @@ void RegisterPosesCommand(CLI::App& app, const Io& io);
 void RegisterImportCommand(CLI::App& app, const Io& io);
 void RegisterDetectCommand(CLI::App& app, const Io& io);
 void RegisterCalibrateCommand(CLI::App& app, const Io& io);
+void RegisterPivotCommand(CLI::App& app, const Io& io);
 void RegisterReportCommand(CLI::App& app, const Io& io);
 void RegisterPoseCommand(CLI::App& app, const Io& io);
 void RegisterSimulateCommand(CLI::App& app, const Io& io);

@@ -10,6 +10,12 @@ namespace {
 // flag (CalibrateOptions.robust_scale, TargetSpec.* from a target file) is not listed.
 constexpr auto kFieldFlags = std::to_array<std::pair<std::string_view, std::string_view>>({
     {"CalibrateOptions.robot_sigma", "--robot-sigma"},
+    {"PivotOptions.sigma", "--robot-sigma"},
+    {"PivotFileOptions.robot", "--robot"},
+    {"PivotStudyOptions.sigmas", "--sigma"},
+    {"PivotStudyOptions.stations", "--stations"},
+    {"PivotStudyOptions.trials", "--trials"},
+    {"PivotStudyOptions.max_tilt_deg", "--max-tilt"},
     {"CalibrateOptions.camera_sigma", "--camera-sigma"},
     {"CalibrateOptions.fix", "--fix"},
     {"ConventionCheckOptions.setup", "--setup"},

@@ -4,9 +4,9 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 
-#include "choice_flags.h"
 #include "cli.h"
 #include "hecal/hecal.h"
+#include "pose_read_flags.h"
 
 namespace hecal::cli {
 
@@ -23,14 +23,7 @@ void RegisterReportCommand(CLI::App& app, const Io& io) {
                       "The robot poses the result was calibrated from, for the 3D scene");
   command->add_option("--images", options->images,
                       "The image folder of a result of calibrate --images, for the thumbnails");
-  AddLengthUnitFlag(*command, "--units", options->robot_read.units,
-                    "With --robot: length unit of columns without a suffix (m or mm)");
-  command->add_flag("--degrees", options->robot_read.degrees,
-                    "With --robot: angles without a suffix are in degrees");
-  AddEulerFlag(*command, "--euler", options->robot_read.euler,
-               "With --robot: Euler sequence of a1,a2,a3 columns");
-  command->add_flag("--robot-inverse", options->robot_read.invert,
-                    "With --robot: the file holds T_gripper_base");
+  AddRobotReadFlags(*command, options->robot_read, "With --robot: ", "T_gripper_base");
   command->callback([options, io] {
     io::CheckOutputs({{"--output", options->output}},
                      {{"RESULT", options->result}, {"--robot", options->robot}});

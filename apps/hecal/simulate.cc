@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "bounds.h"
 #include "cli.h"
 #include "hecal/hecal.h"
 #include "list_flags.h"
+#include "simulate_pivot.h"
 #include "simulate_streams.h"
 
 namespace hecal::cli {
@@ -34,7 +36,9 @@ Bound: first-order (Cramer-Rao-type) RMSE of the ml estimate at the truth, RMS o
   data set without them (the clean reference). --reject-outliers: every method runs through
   calibrate's outlier rejection; the table adds the fraction of gross outliers found, of good
   stations rejected, and the RMSE over the clean reference's RMSE.
-Same --seed, same CSV files whatever --threads.)";
+Same --seed, same CSV files whatever --threads.
+--pivot: the pivot study instead (docs/pivot.md): --sigma, --stations, --trials and --seed
+  (defaults 0.1, 20, 200), RMSE, NEES and coverage of hecal pivot's fit.)";
 
 struct SimulateCommand {
   jobs::SimulateOptions options;
@@ -42,9 +46,27 @@ struct SimulateCommand {
   std::string summary;
   std::string report;
   StreamStudyFlags streams;  // --streams and its flags
+  PivotStudyFlags pivot;     // --pivot and its flags
+  bool stations_given = false;
+  bool trials_given = false;
 };
 
 void RunSimulate(const SimulateCommand& command, const Io& io) {
+  if (command.pivot.pivot) {
+    const std::pair<const char*, bool> other[] = {{"--streams", command.streams.streams},
+                                                  {"--output", !command.output.empty()},
+                                                  {"--summary", !command.summary.empty()},
+                                                  {"--report", !command.report.empty()}};
+    for (const auto& [flag, given] : other) {
+      if (given) {
+        throw InputError(flag, 0, std::string(flag) + " does not apply to the pivot study",
+                         "leave it out with --pivot (--write-pivot writes a pose file)");
+      }
+    }
+    return RunSimulatePivot({command.options, command.streams.sigma_given, command.stations_given,
+                             command.trials_given},
+                            command.pivot, io);
+  }
   if (command.streams.streams) {
     if (!command.report.empty()) {
       throw InputError("--report", 0, "--report has no page for the stream study",
@@ -176,7 +198,12 @@ void RegisterSimulateCommand(CLI::App& app, const Io& io) {
                        "HTML page of the results with figures (docs/report.md; opens offline)");
   AddStreamStudyFlags(*simulate, command->streams);
   simulate->footer(kFooter);
-  simulate->callback([command, io] { RunSimulate(*command, io); });
+  AddPivotStudyFlags(*simulate, command->pivot);
+  simulate->callback([command, io, simulate] {
+    command->stations_given = simulate->count("--stations") > 0;
+    command->trials_given = simulate->count("--trials") > 0;
+    RunSimulate(*command, io);
+  });
 }
 
 }  // namespace hecal::cli

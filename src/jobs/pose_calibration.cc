@@ -14,27 +14,6 @@
 namespace hecal::jobs {
 namespace {
 
-// CalibratePoses step 1: a pose the solver can use (finite, a proper rotation).
-void CheckPoseList(const std::vector<Pose>& poses, const std::string& source) {
-  for (size_t i = 0; i < poses.size(); ++i) {
-    const Eigen::Matrix3d R = poses[i].linear();
-    const std::string pose = "pose at index " + std::to_string(i);
-    if (!poses[i].matrix().allFinite()) {
-      throw InputError(source, 0, pose + " is not finite (NaN or infinity)",
-                       "remove the station or give its measured pose");
-    }
-    const double orthogonality =
-        (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    if (orthogonality > 1e-6 || R.determinant() <= 0.0) {
-      throw InputError(
-          source, 0,
-          pose + " has no proper rotation (|R^T R - I| = " + std::to_string(orthogonality) +
-              ", det R = " + std::to_string(R.determinant()) + ")",
-          "give 4x4 homogeneous transforms whose upper-left 3x3 is a rotation");
-    }
-  }
-}
-
 // CalibratePairedPoses step 1: the same poses as robot and camera fit every X.
 void RefuseSamePoses(const PairedPoses& poses) {
   const std::vector<Pose>& robot = poses.data.T_base_gripper;
@@ -55,6 +34,26 @@ void RefuseSamePoses(const PairedPoses& poses) {
 }
 
 }  // namespace
+
+void CheckPoseList(const std::vector<Pose>& poses, const std::string& source) {
+  for (size_t i = 0; i < poses.size(); ++i) {
+    const Eigen::Matrix3d R = poses[i].linear();
+    const std::string pose = "pose at index " + std::to_string(i);
+    if (!poses[i].matrix().allFinite()) {
+      throw InputError(source, 0, pose + " is not finite (NaN or infinity)",
+                       "remove the station or give its measured pose");
+    }
+    const double orthogonality =
+        (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (orthogonality > 1e-6 || R.determinant() <= 0.0) {
+      throw InputError(
+          source, 0,
+          pose + " has no proper rotation (|R^T R - I| = " + std::to_string(orthogonality) +
+              ", det R = " + std::to_string(R.determinant()) + ")",
+          "give 4x4 homogeneous transforms whose upper-left 3x3 is a rotation");
+    }
+  }
+}
 
 bool PoseCalibrationOptions::IsValid(std::string* why) const {
   if (!calibrate.IsValid(why)) return false;

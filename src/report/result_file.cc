@@ -1,7 +1,5 @@
 #include "hecal/report/result_file.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -10,6 +8,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/report/json_matrix.h"
 #include "hecal/report/translation_sigma.h"
+#include "hecal/report/yaml_tree.h"
 #include "hecal/version.h"
 
 namespace hecal::report {
@@ -331,35 +330,6 @@ std::string CompactPixelLists(const std::string& text) {
   return out;
 }
 
-void EmitYaml(const json& value, YAML::Emitter& out) {
-  if (value.is_object()) {
-    out << YAML::BeginMap;
-    for (const auto& [key, item] : value.items()) {
-      out << YAML::Key << key << YAML::Value;
-      EmitYaml(item, out);
-    }
-    out << YAML::EndMap;
-  } else if (value.is_array()) {
-    // Numeric rows (matrices, vectors) read best as flow sequences.
-    const bool numeric =
-        std::all_of(value.begin(), value.end(), [](const json& item) { return item.is_number(); });
-    if (numeric) out << YAML::Flow;
-    out << YAML::BeginSeq;
-    for (const json& item : value) EmitYaml(item, out);
-    out << YAML::EndSeq;
-  } else if (value.is_string()) {
-    out << value.get<std::string>();
-  } else if (value.is_boolean()) {
-    out << value.get<bool>();
-  } else if (value.is_number_integer()) {
-    out << value.get<long long>();
-  } else if (value.is_number()) {
-    out << YAML::Precision(17) << value.get<double>();
-  } else {
-    out << YAML::Null;
-  }
-}
-
 }  // namespace
 
 std::vector<std::string> UsedStationIds(const ResultDocument& document) {
@@ -397,9 +367,7 @@ std::string FormatResult(const ResultDocument& document, ResultFormat format) {
     root = ResultJson(document, document.results.at(0));
   }
   if (format == ResultFormat::kJson) return CompactPixelLists(root.dump(2)) + "\n";
-  YAML::Emitter out;
-  EmitYaml(root, out);
-  return std::string(out.c_str()) + "\n";
+  return YamlText(root);
 }
 
 void WriteResult(const std::string& path, const ResultDocument& document) {

@@ -103,6 +103,10 @@ struct PoseCalibrationInput {
 report::ResultDocument CalibrateFromPoses(const PoseCalibrationInput& input,
                                           estimation::CalibrateOptions options, bool all_methods);
 
+// CalibratePoses step 1 for one list: every pose finite with a proper rotation, else InputError
+// naming `source` and the pose's index.
+void CheckPoseList(const std::vector<Pose>& poses, const std::string& source);
+
 // A result about to be printed and written: X, Z, the residual RMS and the covariance must be
 // finite (docs/reliability.md); DegenerateError otherwise.
 void CheckFiniteResult(const estimation::CalibrationResult& result);
