@@ -4,9 +4,6 @@
 #include "calibrate.h"
 #include "hecal/hecal.h"
 #include "job_output.h"
-#if defined(HECAL_HAVE_OPENCV_PEERS)
-#include "hecal/jobs/image_stream_calibration.h"
-#endif
 
 namespace hecal::cli {
 
