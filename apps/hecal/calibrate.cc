@@ -106,6 +106,13 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
       throw InputError("--fix", 0, "--method all runs every method, and only ml takes --fix",
                        "use --method ml (the default) with --fix");
     }
+    if (!flags.images.empty()) {
+      // The joint reprojection refinement of the image form has no constraint (planar.h).
+      throw InputError("--fix", 0, "--fix works on camera poses, not yet with --images",
+                       "detect the camera poses first (hecal detect --images DIR --target "
+                       "target.yaml --output camera.csv), then calibrate --camera camera.csv "
+                       "--fix ...");
+    }
   }
   // Once, before any file is read: the job checks the same again (core/options_check.h).
   RequireValid(options);

@@ -100,6 +100,11 @@ TEST_F(CalibratePlanarTest, TheFlagsMistakesAreRefused) {
   refused({"--fix", "tz=6mm", "--method", "park-martin"}, "ml");
   refused({"--fix", "tz=6mm", "--method", "all"}, "ml");
   refused({"--fix", "tz=six"}, "a number");
+  const cli_test::Outcome images =
+      Hecal({"calibrate", "--robot", Path("robot.csv"), "--images", Path("."), "--target",
+             Path("target.yaml"), "--setup", "eye-in-hand", "--fix", "tz=6mm"});
+  EXPECT_EQ(images.code, 2);
+  EXPECT_THAT(images.err, HasSubstr("hecal detect"));
 }
 
 }  // namespace
