@@ -24,40 +24,7 @@ estimation::PoseSigma ParseSigma(const std::string& flag, const std::string& tex
 }
 
 handeye::TranslationFix ParseFix(const std::string& text, io::LengthUnit units) {
-  const auto bad = [&](const std::string& what) {
-    return InputError("--fix", 0, what + ", got '" + text + "'",
-                      "write the component of X's translation and its value, e.g. --fix tz=0.12 "
-                      "(in --units) or --fix tz=120mm");
-  };
-  const size_t equals = text.find('=');
-  if (equals == std::string::npos) throw bad("expected tx=VALUE, ty=VALUE or tz=VALUE");
-  const std::string name = text.substr(0, equals);
-  handeye::TranslationFix fix;
-  if (name == "tx") fix.axis = 0;
-  else if (name == "ty") fix.axis = 1;
-  else if (name == "tz") fix.axis = 2;
-  else throw bad("only a translation component of X can be given (tx, ty or tz)");
-  const char* begin = text.data() + equals + 1;
-  const char* end = text.data() + text.size();
-  double value = 0.0;
-  const auto [rest, error] = std::from_chars(begin, end, value);
-  if (error != std::errc() || rest == begin || !std::isfinite(value))
-    throw bad("expected a number after '='");
-  const std::string unit(rest, end);
-  double metres_per = io::MetresPer(units);
-  if (unit == "m") metres_per = 1.0;
-  else if (unit == "cm") metres_per = 0.01;
-  else if (unit == "mm") metres_per = 1e-3;
-  else if (!unit.empty()) throw bad("unknown unit '" + unit + "' (m, cm or mm)");
-  fix.value = value * metres_per;
-  if (std::abs(fix.value) > 5.0) {
-    throw InputError("--fix", 0,
-                     name + " = " + std::to_string(fix.value) +
-                         " m is not a hand-eye offset (read in " +
-                         (unit.empty() ? std::string(io::UnitName(units)) : unit) + ")",
-                     "give the unit, e.g. --fix " + name + "=" + std::string(begin, rest) + "mm");
-  }
-  return fix;
+  return handeye::ParseTranslationFix(text, io::MetresPer(units), io::UnitName(units), "--fix");
 }
 
 std::optional<double> ParsePixelSigma(const std::string& text) {

@@ -109,6 +109,7 @@ def calibrate(
     seed: int = 1,
     threads: int = 0,
     station_ids: Optional[Sequence[str]] = None,
+    fix: Optional[str] = None,
 ) -> CalibrationResult:
     """robot T_base_gripper, camera T_camera_target: (N,4,4) arrays or pose files."""
 

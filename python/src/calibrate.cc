@@ -211,6 +211,9 @@ covariance  Covariance of X and Z: "linear" | "unscented" | "montecarlo" | "info
 covariance_samples  Monte Carlo samples (2 to 100000). seed: random seed (Monte Carlo, the
           outlier consensus). threads: threads for covariance solves (0 = every core).
 station_ids  One id per station (arrays only; default "0", "1", ...).
+fix       Planar robots (every rotation about one axis: SCARA, mobile base, turntable): X's
+          translation component along that axis, given, as "tz=0.09" (in units) or "tz=90mm";
+          method ml only (docs/planar.md).
 
 Returns a CalibrationResult: X, Z (4x4), covariance (12x12, right perturbation,
 (rx, ry, rz, tx, ty, tz) of X then Z), sigma, residuals, rejected, noise, model_check,
@@ -360,9 +363,10 @@ void RegisterCalibrate(py::module_& m) {
          bool degrees, std::optional<std::string> euler, bool robot_inverse, bool camera_inverse,
          bool keep_outliers, bool all_methods, std::string robust,
          std::optional<std::string> covariance, int covariance_samples, std::uint64_t seed,
-         int threads, std::optional<std::vector<std::string>> station_ids) {
+         int threads, std::optional<std::vector<std::string>> station_ids,
+         std::optional<std::string> fix) {
         const bool all = all_methods || method == "all";
-        const estimation::CalibrateOptions options = CalibrateOptionsFromArguments(
+        estimation::CalibrateOptions options = CalibrateOptionsFromArguments(
             all ? "all" : method, robot_sigma, camera_sigma, keep_outliers, robust, covariance,
             covariance_samples, seed, threads);
         if (units && unit && *units != *unit) {
@@ -370,6 +374,13 @@ void RegisterCalibrate(py::module_& m) {
                         "give one of them");
         }
         const std::optional<std::string> both = unit ? unit : units;
+        if (fix) {
+          const io::LengthUnit fix_unit =
+              ParseUnitArgument("units", both).value_or(io::LengthUnit::kMetre);
+          options.fix = handeye::ParseTranslationFix(*fix, io::MetresPer(fix_unit),
+                                                     io::UnitName(fix_unit), "fix");
+          if (all) ThrowArgument("fix", "every method is run, and only ml takes fix", "use method=\"ml\"");
+        }
 
         const auto robot_path = AsPath(robot);
         const auto camera_path = AsPath(camera);
@@ -444,7 +455,7 @@ void RegisterCalibrate(py::module_& m) {
       py::arg("all_methods") = false, py::arg("robust") = "none",
       py::arg("covariance") = py::none(), py::arg("covariance_samples") = 5000,
       py::arg("seed") = 1, py::arg("threads") = 0, py::arg("station_ids") = py::none(),
-      kCalibrateDoc);
+      py::arg("fix") = py::none(), kCalibrateDoc);
 }
 
 // For calibrate_images (images.cc): the same result object.

@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -19,12 +20,64 @@ namespace {
 // |cos| between the fixed coordinate axis and d_X below this: the coordinate does not pick a
 // member of the family (the shift would be 10× the coordinate's change or more).
 constexpr double kMinFixCosine = 0.1;
+// A fixed component above this many metres is a unit mistake, not a hand-eye offset.
+constexpr double kLargestFix = 5.0;
 
 }  // namespace
 
 std::string ComponentName(int axis) {
   static const char* const kNames[] = {"tx", "ty", "tz"};
   return kNames[axis];
+}
+
+TranslationFix ParseTranslationFix(std::string_view text, double metres_per_unit,
+                                   std::string_view unit_name, const std::string& source) {
+  const std::string written(text);
+  const std::string flag = source == "--fix" ? "--fix " : source + "=";
+  const auto bad = [&](const std::string& what) {
+    return InputError(source, 0, what + ", got '" + written + "'",
+                      "write the component of X's translation and its value, e.g. " + flag +
+                          "tz=0.12 (in " + std::string(unit_name) + ") or " + flag + "tz=120mm");
+  };
+  const size_t equals = written.find('=');
+  if (equals == std::string::npos) throw bad("expected tx=VALUE, ty=VALUE or tz=VALUE");
+  const std::string name = written.substr(0, equals);
+  TranslationFix fix;
+  if (name == "tx") {
+    fix.axis = 0;
+  } else if (name == "ty") {
+    fix.axis = 1;
+  } else if (name == "tz") {
+    fix.axis = 2;
+  } else {
+    throw bad("only a translation component of X can be given (tx, ty or tz)");
+  }
+  const char* begin = written.data() + equals + 1;
+  const char* end = written.data() + written.size();
+  double value = 0.0;
+  const auto [rest, error] = std::from_chars(begin, end, value);
+  if (error != std::errc() || rest == begin || !std::isfinite(value))
+    throw bad("expected a number after '='");
+  const std::string unit(rest, end);
+  double metres_per = metres_per_unit;
+  if (unit == "m") {
+    metres_per = 1.0;
+  } else if (unit == "cm") {
+    metres_per = 0.01;
+  } else if (unit == "mm") {
+    metres_per = 1e-3;
+  } else if (!unit.empty()) {
+    throw bad("unknown unit '" + unit + "' (m, cm or mm)");
+  }
+  fix.value = value * metres_per;
+  if (std::abs(fix.value) > kLargestFix) {
+    throw InputError(source, 0,
+                     name + " = " + std::to_string(fix.value) +
+                         " m is not a hand-eye offset (read in " +
+                         (unit.empty() ? std::string(unit_name) : unit) + ")",
+                     "give the unit, e.g. " + flag + name + "=" + std::string(begin, rest) + "mm");
+  }
+  return fix;
 }
 
 Eigen::Vector3d LeastObservedTranslation(const Problem& problem) {

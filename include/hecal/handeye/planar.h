@@ -28,6 +28,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <string_view>
 
 #include "hecal/handeye/problem.h"
 
@@ -41,6 +42,13 @@ struct TranslationFix {
 
 // "tx" | "ty" | "tz" for axis 0, 1, 2.
 std::string ComponentName(int axis);
+
+// "tx|ty|tz=VALUE[m|cm|mm]" (`--fix`, Python's fix=) → the fix in metres; a VALUE without a unit
+// is in the caller's default unit (metres_per_unit, named unit_name in messages). Throws
+// hecal::InputError with `source` when it does not parse, or when the value is above 5 m (a unit
+// mistake: the message asks for the unit).
+TranslationFix ParseTranslationFix(std::string_view text, double metres_per_unit,
+                                   std::string_view unit_name, const std::string& source);
 
 // A fix resolved on a problem: the directions (P1) along which a solution is moved onto it.
 struct FixedTranslation {
