@@ -48,9 +48,9 @@ TEST(StreamCalibration, FitsTheOffsetWithXAndZ) {
     ASSERT_TRUE(s.offset_sigma);
     const double error = s.offset - data.time_offset;
     EXPECT_LT(std::abs(error), 1e-3);
-    // The reported σ is honest to a factor of about 1.5 at this noise (the stream study's NEES,
-    // docs/streams.md): 6σ here.
-    EXPECT_LT(std::abs(error), 6.0 * *s.offset_sigma) << error << " " << *s.offset_sigma;
+    // The reported σ is honest at this noise (the stream study's NEES 0.9–1.1, docs/streams.md):
+    // within 3σ here, in 99.7% of recordings.
+    EXPECT_LT(std::abs(error), 3.0 * *s.offset_sigma) << error << " " << *s.offset_sigma;
     const estimation::CalibrationResult& result = document.results.at(0);
     EXPECT_LT(so3::Log(data.X.linear().transpose() * result.X.linear()).norm(), 0.002);
     EXPECT_LT((data.X.translation() - result.X.translation()).norm(), 0.002);
@@ -61,6 +61,50 @@ TEST(StreamCalibration, FitsTheOffsetWithXAndZ) {
                                   s.dropped_fast - s.thinned));
     EXPECT_THAT(document.station_ids.front(), HasSubstr("t="));
   }
+}
+
+// Two ways the offset's σ was too small (docs/streams.md#the-study), each checked on recordings
+// with known offsets:
+// - A given sigma of the denser stream is per sample; its smoothed poses are less noisy, by the
+//   factor the result reports, and the noise model at the stations is scaled by it.
+// - The offset must not be fitted only on the stations kept by outlier tests made at the coarse
+//   offset: it then leaned toward the coarse value (camera noise only, 0.1 mm / 0.1°, 60
+//   recordings: NEES 4.5; with the scan on every station and the refit rounds 0.98; here 2.7
+//   and 0.82).
+TEST(StreamCalibration, OffsetSigmaIsHonestOverRecordings) {
+  const double rotation = 0.1 * M_PI / 180, translation = 0.1e-3;
+  double nees = 0;
+  const int recordings = 16;
+  for (int k = 0; k < recordings; ++k) {
+    std::mt19937_64 rng(100 + k);
+    sim::StreamSimulationOptions simulation;
+    simulation.duration = 30;
+    simulation.time_offset = std::uniform_real_distribution<double>(-0.2, 0.2)(rng);
+    const sim::NoiseModel none{
+        .kind = sim::NoiseModel::Kind::kGaussian, .rotation_sigma = 0, .translation_sigma = 0};
+    const sim::NoiseModel camera{.kind = sim::NoiseModel::Kind::kGaussian,
+                                 .rotation_sigma = rotation,
+                                 .translation_sigma = translation};
+    const sim::SimulatedStreams data = sim::SimulateStreams(simulation, none, camera, rng);
+    PoseCalibrationOptions calibration;
+    calibration.setup = handeye::Setup::kEyeInHand;
+    calibration.calibrate.robot_sigma = estimation::PoseSigma{1e-3 * rotation, 1e-3 * translation};
+    calibration.calibrate.camera_sigma = estimation::PoseSigma{rotation, translation};
+    calibration.calibrate.model_check = false;
+    const report::ResultDocument document = CalibrateStreams(
+        Stream(data.robot_stamps, data.T_base_gripper, "robot"),
+        Stream(data.camera_stamps, data.T_camera_target, "camera"), StreamOptions{}, calibration);
+    const report::StreamReport& s = *document.streams;
+    // ±0.1 s of 50 Hz samples under tricube weights: about half one sample's noise.
+    EXPECT_NEAR(s.smoothed_noise_factor, 0.53, 0.03);
+    EXPECT_NEAR(document.results.at(0).robot_sigma.rotation,
+                1e-3 * rotation * s.smoothed_noise_factor, 1e-9 * rotation);
+    ASSERT_TRUE(s.offset_sigma);
+    const double z = (s.offset - data.time_offset) / *s.offset_sigma;
+    nees += z * z / recordings;
+  }
+  EXPECT_GT(nees, 0.3);
+  EXPECT_LT(nees, 2.0);
 }
 
 TEST(StreamCalibration, AGivenOffsetIsUsedAsIs) {

@@ -194,6 +194,7 @@ json StreamsJson(const StreamReport& report, double scale, json* time_offset) {
           {"stations_from", report.camera_gives_stations ? "camera" : "robot"},
           {"interpolation", "local quadratic regression (LOESS, tricube weights)"},
           {"smoothing_seconds", report.smoothing},
+          {"smoothed_noise_factor", report.smoothed_noise_factor},
           {"max_gap_seconds", report.max_gap},
           {"max_angular_speed_deg_per_s", report.max_angular_speed * kDegreesPerRadian},
           {"max_linear_speed_per_s", report.max_linear_speed * scale},

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/so3.h"
@@ -85,8 +87,18 @@ std::optional<Pose> PoseAt(const PoseStream& stream, double t, double max_gap) {
   return T;
 }
 
-std::optional<Pose> SmoothPoseAt(const PoseStream& stream, double t, double max_gap,
-                                 double bandwidth) {
+namespace {
+
+// The local regression's equivalent kernel at t: the smoothed value is Σ_j weight_j y_j over the
+// samples first, first + 1, …; y_j in the tangent space at sample `nearest`.
+struct SmoothingKernel {
+  size_t first = 0;
+  size_t nearest = 0;
+  std::vector<double> weights;
+};
+
+std::optional<SmoothingKernel> KernelAt(const PoseStream& stream, double t, double max_gap,
+                                        double bandwidth) {
   const std::vector<double>& s = stream.stamps;
   const auto first =
       static_cast<size_t>(std::upper_bound(s.begin(), s.end(), t - bandwidth) - s.begin());
@@ -98,28 +110,56 @@ std::optional<Pose> SmoothPoseAt(const PoseStream& stream, double t, double max_
     (s[j] <= t ? before : after) += 1;
   }
   if (before < 2 || after < 2) return std::nullopt;
-  size_t nearest = first;
+  SmoothingKernel kernel{.first = first, .nearest = first, .weights = {}};
   for (size_t j = first; j < end; ++j)
-    if (std::abs(s[j] - t) < std::abs(s[nearest] - t)) nearest = j;
-  const Eigen::Matrix3d R_nearest = stream.poses[nearest].linear();
-  // Weighted least squares of y_j = a + b τ_j + c τ_j², τ_j = (t_j − t) / bandwidth.
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Matrix<double, 3, 6> right = Eigen::Matrix<double, 3, 6>::Zero();
-  for (size_t j = first; j < end; ++j) {
+    if (std::abs(s[j] - t) < std::abs(s[kernel.nearest] - t)) kernel.nearest = j;
+  // Weighted least squares of y_j = a + b τ_j + c τ_j², τ_j = (t_j − t) / bandwidth: â is
+  // Σ_j w_j e₁ᵀ N⁻¹ β_j y_j with N = Σ_j w_j β_j β_jᵀ, β_j = (1, τ_j, τ_j²).
+  const auto basis = [&](size_t j) {
     const double tau = (s[j] - t) / bandwidth;
     const double u = 1.0 - std::abs(tau * tau * tau);
-    const double weight = u * u * u;
-    const Eigen::Vector3d basis(1.0, tau, tau * tau);
-    Vector6d y;
-    y << so3::Log(R_nearest.transpose() * stream.poses[j].linear()), stream.poses[j].translation();
-    normal += weight * basis * basis.transpose();
-    right += weight * basis * y.transpose();
+    return std::pair<double, Eigen::Vector3d>(u * u * u, Eigen::Vector3d(1.0, tau, tau * tau));
+  };
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  for (size_t j = first; j < end; ++j) {
+    const auto [weight, beta] = basis(j);
+    normal += weight * beta * beta.transpose();
   }
-  const Eigen::Matrix<double, 3, 6> coefficients = normal.ldlt().solve(right);
+  const Eigen::Vector3d row = normal.ldlt().solve(Eigen::Vector3d::UnitX());
+  for (size_t j = first; j < end; ++j) {
+    const auto [weight, beta] = basis(j);
+    kernel.weights.push_back(weight * row.dot(beta));
+  }
+  return kernel;
+}
+
+}  // namespace
+
+std::optional<Pose> SmoothPoseAt(const PoseStream& stream, double t, double max_gap,
+                                 double bandwidth) {
+  const std::optional<SmoothingKernel> kernel = KernelAt(stream, t, max_gap, bandwidth);
+  if (!kernel) return std::nullopt;
+  const Eigen::Matrix3d R_nearest = stream.poses[kernel->nearest].linear();
+  Vector6d smoothed = Vector6d::Zero();
+  for (size_t i = 0; i < kernel->weights.size(); ++i) {
+    const Pose& sample = stream.poses[kernel->first + i];
+    Vector6d y;
+    y << so3::Log(R_nearest.transpose() * sample.linear()), sample.translation();
+    smoothed += kernel->weights[i] * y;
+  }
   Pose T = Pose::Identity();
-  T.linear() = R_nearest * so3::Exp(coefficients.row(0).head<3>().transpose());
-  T.translation() = coefficients.row(0).tail<3>().transpose();
+  T.linear() = R_nearest * so3::Exp(smoothed.head<3>());
+  T.translation() = smoothed.tail<3>();
   return T;
+}
+
+std::optional<double> SmoothingNoiseFactor(const PoseStream& stream, double t, double max_gap,
+                                           double bandwidth) {
+  const std::optional<SmoothingKernel> kernel = KernelAt(stream, t, max_gap, bandwidth);
+  if (!kernel) return std::nullopt;
+  double sum = 0.0;
+  for (const double weight : kernel->weights) sum += weight * weight;
+  return std::sqrt(sum);
 }
 
 std::optional<Speed> SpeedAt(const PoseStream& stream, double t, double max_gap, double baseline) {

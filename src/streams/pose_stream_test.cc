@@ -107,6 +107,28 @@ TEST(PoseStream, SmoothedPoseReproducesQuadraticMotionAndAveragesNoise) {
   EXPECT_GT(n, 1000);
 }
 
+// The factor against the smoothed poses' own spread: many noisy recordings of one motion, the
+// smoothed position's error at fixed times, its RMS per axis over the noise per sample.
+TEST(PoseStream, SmoothingNoiseFactorIsTheSmoothedPosesSpread) {
+  const double sigma = 1e-3;
+  for (const double t : {0.5, 0.513, 0.5299}) {
+    const double factor = *SmoothingNoiseFactor(Sampled(50, 1), t, 0.1, 0.1);
+    // 9–10 samples inside ±0.1 s with tricube weights under a quadratic: about 0.5.
+    EXPECT_GT(factor, 0.35);
+    EXPECT_LT(factor, 0.7);
+    double sum2 = 0;
+    const int recordings = 3000;
+    for (int r = 0; r < recordings; ++r) {
+      const PoseStream noisy = Sampled(50, 1, sigma, static_cast<unsigned>(r + 7));
+      sum2 +=
+          (SmoothPoseAt(noisy, t, 0.1, 0.1)->translation() - Motion(t).translation()).squaredNorm();
+    }
+    const double measured = std::sqrt(sum2 / (3.0 * recordings)) / sigma;
+    EXPECT_NEAR(measured, factor, 0.04 * factor) << t;  // 9000 draws: ±1.5% (1σ)
+  }
+  EXPECT_FALSE(SmoothingNoiseFactor(Sampled(50, 1), 0.01, 0.1, 0.1));
+}
+
 TEST(PoseStream, SpeedOverABaseline) {
   const PoseStream stream = Sampled(100, 2);
   const std::optional<Speed> speed = SpeedAt(stream, 0.0 + 0.5, 0.1, 0.05);

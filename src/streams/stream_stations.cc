@@ -137,4 +137,21 @@ PairedStreamPoses PosesAt(const PoseStream& robot, const PoseStream& camera,
   return out;
 }
 
+double SmoothedNoiseFactor(const PoseStream& robot, const PoseStream& camera,
+                           const StreamStations& stations, double offset) {
+  double sum = 0.0;
+  int n = 0;
+  for (const size_t k : stations.samples) {
+    const std::optional<double> factor =
+        stations.camera_gives_stations ? SmoothingNoiseFactor(robot, camera.stamps[k] + offset,
+                                                              stations.max_gap, stations.smoothing)
+                                       : SmoothingNoiseFactor(camera, robot.stamps[k] - offset,
+                                                              stations.max_gap, stations.smoothing);
+    if (!factor) continue;
+    sum += *factor * *factor;
+    ++n;
+  }
+  return n > 0 ? std::sqrt(sum / n) : 1.0;
+}
+
 }  // namespace hecal::streams

@@ -12,11 +12,17 @@
 //      the denser smoothed at their times; never across a gap; not in fast motion; thinned to
 //      max_stations well spread in rotation). Station ids: the sparser table's id, or its stamp.
 //   4. Calibration at that offset as from paired pose files (pose_file_calibration.h steps 4–5:
-//      the convention check, the method, outlier rejection, covariance).
+//      the convention check, the method, outlier rejection, covariance). A given sigma of the
+//      denser stream is its noise per sample: scaled by the smoothing's factor
+//      (stream_stations.h SmoothedNoiseFactor) for its smoothed poses at the stations.
 //   5. Unless the offset was given: the offset fitted jointly with X and Z (streams/time_offset.h)
-//      on the stations step 4 used, with its noise model; then step 4 again at the fitted offset,
-//      and the offset's σ and its covariance with (X, Z) at that result's noise model; (X, Z)'s
-//      covariance gains the offset's share (time_offset.h).
+//      with step 4's noise model on every station (not only those step 4 kept: its outlier tests
+//      ran at the coarse offset, and keeping the stations whose noise hides the coarse offset's
+//      error pulls the fit back toward it); then, until the offset moves by less than 2e-5 s
+//      (at most 3 rounds), step 4 at the fitted offset (noise model, outlier tests) and the
+//      offset again on the stations it kept, within one grid step; then step 4 at the final
+//      offset, the offset's σ and its covariance with (X, Z) at that result's noise model;
+//      (X, Z)'s covariance gains the offset's share (time_offset.h).
 // The document's `streams` (report::StreamReport) says what was used and the offset.
 //
 // Errors: InputError for invalid options, a table without stamps, bad stamps, streams that do not

@@ -64,8 +64,11 @@ struct StreamReport {
   bool camera_gives_stations = true;  // the camera stream is the sparser one
   double max_gap = 0.0;               // seconds
   double smoothing = 0.0;             // seconds, ± of the denser stream's local regression
-  double max_angular_speed = 0.0;     // rad/s
-  double max_linear_speed = 0.0;      // m/s
+  // The denser stream's noise at the stations over its noise per sample (a given sigma of that
+  // stream is scaled by it; streams/stream_stations.h SmoothedNoiseFactor).
+  double smoothed_noise_factor = 1.0;
+  double max_angular_speed = 0.0;  // rad/s
+  double max_linear_speed = 0.0;   // m/s
   int max_stations = 0;
   int candidates = 0;
   int dropped_outside = 0;

@@ -65,6 +65,13 @@ std::optional<Pose> PoseAt(const PoseStream& stream, double t, double max_gap);
 std::optional<Pose> SmoothPoseAt(const PoseStream& stream, double t, double max_gap,
                                  double bandwidth);
 
+// The smoothed pose's noise over one sample's, for independent noise of one spread on every
+// sample: √(Σ_j ℓ_j²), ℓ_j the regression's weight of sample j in the pose at t (the smoothed
+// pose is Σ_j ℓ_j y_j in the tangent space). About 0.5 for the 10 samples of ±0.1 s at 50 Hz;
+// nullopt where SmoothPoseAt gives no pose.
+std::optional<double> SmoothingNoiseFactor(const PoseStream& stream, double t, double max_gap,
+                                           double bandwidth);
+
 struct Speed {
   double angular = 0.0;  // rad/s
   double linear = 0.0;   // m/s

@@ -68,4 +68,9 @@ struct PairedStreamPoses {
 PairedStreamPoses PosesAt(const PoseStream& robot, const PoseStream& camera,
                           const StreamStations& stations, double offset);
 
+// The denser stream's noise at the stations over its noise per sample: the RMS over the stations
+// of pose_stream.h's SmoothingNoiseFactor at `offset` (1 when it has no station there).
+double SmoothedNoiseFactor(const PoseStream& robot, const PoseStream& camera,
+                           const StreamStations& stations, double offset);
+
 }  // namespace hecal::streams
