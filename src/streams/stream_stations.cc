@@ -114,24 +114,38 @@ StreamStations ChooseStations(const PoseStream& robot, const PoseStream& camera,
   return out;
 }
 
+namespace {
+
+// The denser stream and the time on its own clock of station sample k (the sparser stream's).
+struct DenseTime {
+  const PoseStream& stream;
+  double t;
+};
+
+DenseTime DenseTimeOf(const PoseStream& robot, const PoseStream& camera,
+                      const StreamStations& stations, size_t k, double offset) {
+  if (stations.camera_gives_stations) return {.stream = robot, .t = camera.stamps[k] + offset};
+  return {.stream = camera, .t = robot.stamps[k] - offset};
+}
+
+}  // namespace
+
 PairedStreamPoses PosesAt(const PoseStream& robot, const PoseStream& camera,
                           const StreamStations& stations, double offset) {
   PairedStreamPoses out;
   for (const size_t k : stations.samples) {
+    const DenseTime dense = DenseTimeOf(robot, camera, stations, k, offset);
+    const std::optional<Pose> smoothed =
+        SmoothPoseAt(dense.stream, dense.t, stations.max_gap, stations.smoothing);
+    if (!smoothed) return {};
     if (stations.camera_gives_stations) {
-      const std::optional<Pose> A =
-          SmoothPoseAt(robot, camera.stamps[k] + offset, stations.max_gap, stations.smoothing);
-      if (!A) return {};
-      out.T_base_gripper.push_back(*A);
+      out.T_base_gripper.push_back(*smoothed);
       out.T_camera_target.push_back(camera.poses[k]);
       out.camera_stamps.push_back(camera.stamps[k]);
     } else {
-      const double t = robot.stamps[k] - offset;
-      const std::optional<Pose> B = SmoothPoseAt(camera, t, stations.max_gap, stations.smoothing);
-      if (!B) return {};
       out.T_base_gripper.push_back(robot.poses[k]);
-      out.T_camera_target.push_back(*B);
-      out.camera_stamps.push_back(t);
+      out.T_camera_target.push_back(*smoothed);
+      out.camera_stamps.push_back(dense.t);
     }
   }
   return out;
@@ -142,11 +156,9 @@ double SmoothedNoiseFactor(const PoseStream& robot, const PoseStream& camera,
   double sum = 0.0;
   int n = 0;
   for (const size_t k : stations.samples) {
+    const DenseTime dense = DenseTimeOf(robot, camera, stations, k, offset);
     const std::optional<double> factor =
-        stations.camera_gives_stations ? SmoothingNoiseFactor(robot, camera.stamps[k] + offset,
-                                                              stations.max_gap, stations.smoothing)
-                                       : SmoothingNoiseFactor(camera, robot.stamps[k] - offset,
-                                                              stations.max_gap, stations.smoothing);
+        SmoothingNoiseFactor(dense.stream, dense.t, stations.max_gap, stations.smoothing);
     if (!factor) continue;
     sum += *factor * *factor;
     ++n;
