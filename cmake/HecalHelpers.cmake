@@ -16,17 +16,22 @@ endif()
 install(TARGETS hecal_compile_options EXPORT hecalTargets)
 
 # hecal_add_module(<name> [DEPENDS <public targets>...] [PRIVATE_DEPENDS <targets>...]
-#                  [TEST_DEPENDS <targets>...] [ONLY <stems>...])
+#                  [TEST_DEPENDS <targets>...] [ONLY <stems>...] [UNITY_BATCH <n>]
+#                  [TEST_UNITY_BATCH <n>])
 # Builds library hecal_<name> (alias hecal::<name>) from src/<name>/*.cc (an INTERFACE library
-# when the module has headers only) and one GoogleTest
-# executable per src/<name>/*_test.cc, registered with CTest under the label "unit".
-# A test file named *_slow_test.cc gets the label "slow" instead (kept out of the default run).
-# A test file named *_opencv_test.cc uses OpenCV as a peer and is built only with
-# HECAL_BUILD_VISION (the core libraries themselves never link OpenCV).
+# when the module has headers only) and the module's test executables from src/<name>/*_test.cc
+# (hecal_add_tests: label "unit"; *_slow_test.cc files get the label "slow" instead and are kept
+# out of the default run). A test file named *_opencv_test.cc uses OpenCV as a peer and is built
+# only with HECAL_BUILD_VISION (the core libraries themselves never link OpenCV).
 # ONLY keeps the sources <stem>.cc and <stem>_test.cc of the stems listed (a module whose other
 # sources need a layer that is not built).
+# UNITY_BATCH and TEST_UNITY_BATCH: source files per unity batch of the library and of its test
+# executables where the default (HECAL_UNITY_BATCH, HECAL_TEST_UNITY_BATCH) would make a batch
+# take more than about 15 s to compile (docs/build.md#build-time); ignored when that default is 0
+# (one batch per target, for builds where parsing the headers dominates, such as -O0).
 function(hecal_add_module name)
-  cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS;TEST_DEPENDS;ONLY" ${ARGN})
+  cmake_parse_arguments(ARG "" "UNITY_BATCH;TEST_UNITY_BATCH"
+                        "DEPENDS;PRIVATE_DEPENDS;TEST_DEPENDS;ONLY" ${ARGN})
   set(dir ${PROJECT_SOURCE_DIR}/src/${name})
   file(GLOB all_sources CONFIGURE_DEPENDS ${dir}/*.cc)
   file(GLOB test_sources CONFIGURE_DEPENDS ${dir}/*_test.cc)
@@ -53,6 +58,12 @@ function(hecal_add_module name)
   if(lib_sources)
     add_library(${target} ${lib_sources})
     set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    if(ARG_UNITY_BATCH AND NOT HECAL_UNITY_BATCH EQUAL 0)
+      set_target_properties(${target} PROPERTIES UNITY_BUILD_BATCH_SIZE ${ARG_UNITY_BATCH})
+    endif()
+    if(HECAL_SANITIZE AND name IN_LIST HECAL_SANITIZE_OPTIMISED_MODULES)
+      target_compile_options(${target} PRIVATE -O1)  # after the build type's level: it wins
+    endif()
     set(scope PUBLIC)
     target_link_libraries(${target} PRIVATE ${ARG_PRIVATE_DEPENDS} hecal_compile_options)
   else()  # a header-only module
@@ -69,13 +80,18 @@ function(hecal_add_module name)
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
   if(HECAL_BUILD_TESTS)
+    set(kept_tests)
     foreach(test_source ${test_sources})
       get_filename_component(stem ${test_source} NAME_WE)
       if(stem MATCHES "_opencv_test$" AND NOT HECAL_BUILD_VISION)
         continue()
       endif()
-      hecal_add_test(${name}_${stem} ${test_source} DEPENDS ${target} ${ARG_TEST_DEPENDS})
+      list(APPEND kept_tests ${test_source})
     endforeach()
+    if(kept_tests)
+      hecal_add_tests(${name} PREFIX ${name}_ SOURCES ${kept_tests}
+                      DEPENDS ${target} ${ARG_TEST_DEPENDS} UNITY_BATCH ${ARG_TEST_UNITY_BATCH})
+    endif()
   endif()
 endfunction()
 
@@ -119,34 +135,125 @@ function(hecal_test_optimisation target)
   endif()
 endfunction()
 
-# hecal_add_test(<name> <sources>... DEPENDS <targets>...)
-# One GoogleTest executable, run from the source tree so tests find data/ by relative path
-# through HECAL_SOURCE_DIR. Label "slow" for *_slow_test names; "unit" and "robustness" for
-# *_robustness_test names and the fuzz corpora (*_fuzz_*), which also join the target
-# robustness_checks; else "unit".
-function(hecal_add_test name)
-  cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
-  add_executable(test_${name} ${ARG_UNPARSED_ARGUMENTS})
-  target_link_libraries(test_${name} PRIVATE ${ARG_DEPENDS} hecal_testing GTest::gtest
-    GTest::gmock GTest::gtest_main hecal_compile_options)
-  target_compile_definitions(test_${name} PRIVATE HECAL_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  hecal_test_optimisation(test_${name})
-  if(TARGET hecal_test_pch)
-    target_precompile_headers(test_${name} REUSE_FROM hecal_test_pch)
+# hecal_add_tests(<group> [PREFIX <prefix>] SOURCES <test files>... DEPENDS <targets>...
+#                 [UNITY_BATCH <n>])
+# The test files of one module (or of the CLI, or of tests/) as one GoogleTest executable per
+# kind instead of one per file: bin/test_<group> (label "unit"), bin/test_<group>_robustness
+# (*_robustness_test and *_fuzz_* files: labels "unit;robustness" and the target
+# robustness_checks, so that a sanitized build can build just those) and bin/test_<group>_slow
+# (*_slow_test files: label "slow", built on demand by the target slow_checks). Each executable
+# is a unity build (HECAL_UNITY_BUILD: the files of a batch share one parse of GoogleTest, Eigen
+# and hecal's headers and one instantiation of their templates) on the shared precompiled header.
+# Each test file stays one CTest test, <prefix><stem>, that runs the file's own test suites
+# (--gtest_filter from its TEST, TEST_F, TEST_P and TYPED_TEST lines), so a suite name belongs to
+# one file of its executable: checked here, and by the CTest test <executable>_partition against
+# the executable's own list of tests (docs/build.md#tests). A suite under #if counts as the file's
+# as well; each file must have at least one suite in the executable as built.
+function(hecal_add_tests group)
+  cmake_parse_arguments(ARG "" "PREFIX;UNITY_BATCH" "SOURCES;DEPENDS" ${ARGN})
+  if(NOT ARG_UNITY_BATCH OR HECAL_TEST_UNITY_BATCH EQUAL 0)
+    set(ARG_UNITY_BATCH ${HECAL_TEST_UNITY_BATCH})
   endif()
-  add_test(NAME ${name} COMMAND test_${name})
-  if(name MATCHES "_slow_test$")
+  set(unit)
+  set(robustness)
+  set(slow)
+  foreach(source ${ARG_SOURCES})
+    get_filename_component(stem ${source} NAME_WE)
+    if(stem MATCHES "_slow_test$")
+      list(APPEND slow ${source})
+    elseif(stem MATCHES "(^|_)robustness_test$" OR stem MATCHES "_fuzz_")
+      list(APPEND robustness ${source})
+    else()
+      list(APPEND unit ${source})
+    endif()
+  endforeach()
+  foreach(kind unit robustness slow)
+    if(NOT ${kind})
+      continue()
+    endif()
+    set(executable test_${group})
+    if(NOT kind STREQUAL "unit")
+      string(APPEND executable _${kind})
+    endif()
+    hecal_test_executable(${executable} ${kind} "${ARG_PREFIX}" ${ARG_UNITY_BATCH}
+                          SOURCES ${${kind}} DEPENDS ${ARG_DEPENDS})
+  endforeach()
+endfunction()
+
+# hecal_test_suites(<source> <out>): the test suites a test file defines or instantiates, from
+# the lines that begin with TEST(, TEST_F(, TEST_P(, TYPED_TEST( or TYPED_TEST_P( followed by the
+# suite's name, or with INSTANTIATE_TEST_SUITE_P(Prefix, or INSTANTIATE_TYPED_TEST_SUITE_P(Prefix,
+# followed by it (a suite of a shared header, src/testing/lie_group_suite.h).
+function(hecal_test_suites source out)
+  file(STRINGS ${source} lines
+       REGEX "^(TEST|TEST_F|TEST_P|TYPED_TEST|TYPED_TEST_P|INSTANTIATE_[A-Z_]*TEST_SUITE_P)\\(")
+  set(suites)
+  foreach(line ${lines})
+    if(line MATCHES "^INSTANTIATE_[A-Z_]+\\( *[A-Za-z0-9_]+ *, *([A-Za-z_][A-Za-z0-9_]*)")
+      list(APPEND suites ${CMAKE_MATCH_1})
+    elseif(line MATCHES "^[A-Z_]+\\( *([A-Za-z_][A-Za-z0-9_]*) *,")
+      list(APPEND suites ${CMAKE_MATCH_1})
+    endif()
+  endforeach()
+  list(REMOVE_DUPLICATES suites)
+  set(${out} ${suites} PARENT_SCOPE)
+endfunction()
+
+# hecal_test_executable(<executable> unit|robustness|slow <prefix> <unity batch> SOURCES ...
+#                       DEPENDS ...): the executable of hecal_add_tests and one CTest test per
+# source file.
+function(hecal_test_executable executable kind prefix batch)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  add_executable(${executable} ${ARG_SOURCES})
+  target_link_libraries(${executable} PRIVATE ${ARG_DEPENDS} hecal_testing GTest::gtest
+    GTest::gmock GTest::gtest_main hecal_compile_options)
+  target_compile_definitions(${executable} PRIVATE HECAL_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  hecal_test_optimisation(${executable})
+  if(TARGET hecal_test_pch)
+    target_precompile_headers(${executable} REUSE_FROM hecal_test_pch)
+  endif()
+  set_target_properties(${executable} PROPERTIES UNITY_BUILD_BATCH_SIZE ${batch})
+  if(kind STREQUAL "slow")
     # Built on demand (cmake --build build --target slow_checks), not by the default build that
-    # CI runs: the ~30 slow test files take about 4 CPU-minutes to compile.
-    set_target_properties(test_${name} PROPERTIES EXCLUDE_FROM_ALL ON)
-    add_dependencies(slow_checks test_${name})
-    set_tests_properties(${name} PROPERTIES LABELS slow)
-  elseif(name MATCHES "_robustness_test$" OR name MATCHES "_fuzz_")
+    # CI runs.
+    set_target_properties(${executable} PROPERTIES EXCLUDE_FROM_ALL ON)
+    add_dependencies(slow_checks ${executable})
+    set(labels slow)
+  elseif(kind STREQUAL "robustness")
     # The bad-input corpus (tests/data/robustness) and the fuzzers' kept inputs: their own label,
     # and part of every unit run.
-    set_tests_properties(${name} PROPERTIES LABELS "unit;robustness")
-    add_dependencies(robustness_checks test_${name})
+    add_dependencies(robustness_checks ${executable})
+    set(labels unit robustness)
   else()
-    set_tests_properties(${name} PROPERTIES LABELS unit)
+    set(labels unit)
   endif()
+  set(all_suites)
+  foreach(source ${ARG_SOURCES})
+    get_filename_component(stem ${source} NAME_WE)
+    hecal_test_suites(${source} suites)
+    if(NOT suites)
+      message(FATAL_ERROR "${source}: no line begins with TEST(Suite, …) or TEST_F(Suite, …) "
+                          "(fix: begin each test's first line with its macro and suite)")
+    endif()
+    set(filter)
+    foreach(suite ${suites})
+      get_property(owner GLOBAL PROPERTY HECAL_TEST_SUITE_${executable}_${suite})
+      if(owner AND NOT owner STREQUAL source)
+        message(FATAL_ERROR "${source}: test suite ${suite} is also defined in ${owner}, and both "
+                            "are in ${executable} (fix: give each file's suites their own names)")
+      endif()
+      set_property(GLOBAL PROPERTY HECAL_TEST_SUITE_${executable}_${suite} ${source})
+      list(APPEND filter "${suite}.*" "*/${suite}.*" "${suite}/*" "*/${suite}/*")
+    endforeach()
+    list(JOIN suites "|" file_suites)
+    list(APPEND all_suites ${file_suites})
+    list(JOIN filter ":" filter)
+    add_test(NAME ${prefix}${stem} COMMAND ${executable} --gtest_filter=${filter})
+    set_tests_properties(${prefix}${stem} PROPERTIES LABELS "${labels}")
+  endforeach()
+  list(JOIN all_suites "," all_suites)
+  add_test(NAME ${executable}_partition
+    COMMAND ${CMAKE_COMMAND} -DEXECUTABLE=$<TARGET_FILE:${executable}> -DSUITES=${all_suites}
+            -P ${PROJECT_SOURCE_DIR}/cmake/check_test_partition.cmake)
+  set_tests_properties(${executable}_partition PROPERTIES LABELS "${labels}")
 endfunction()

@@ -1,4 +1,4 @@
-// libFuzzer target for the image loader's own part (apps/hecal/image_read.h): the PNG, JPEG, BMP
+// libFuzzer target for the image loader's own part (vision/image_read.h): the PNG, JPEG, BMP
 // and TIFF header parsers that size an image before any pixel is decoded. The whole input is the
 // file. A finding is a crash, an exception other than hecal::InputError, or an accepted header
 // with a negative size. Headers accepted as small images (at most 10^6 pixels) are also decoded
@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "hecal/core/error.h"
-#include "image_read.h"
+#include "hecal/vision/image_read.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
-  hecal::cli::ImageSize image;
+  hecal::vision::ImageSize image;
   try {
-    image = hecal::cli::ImageHeaderSize("fuzz", bytes);
+    image = hecal::vision::ImageHeaderSize("fuzz", bytes);
   } catch (const hecal::InputError&) {
     return 0;  // refused with a reason: the expected outcome for most inputs
   }

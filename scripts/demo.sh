@@ -17,7 +17,7 @@ build=${HECAL_BUILD_DIR:-build}
 module=$(ls "$build"/python/hecal/_hecal*.so 2>/dev/null | head -1 || true)
 if [[ ! -x "$build/bin/hecal" || -z "$module" ]] ||
    [[ -n "$(find src apps include python web -newer "$build/bin/hecal" -print -quit)" ]]; then
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  scripts/configure.sh "$build" -DCMAKE_BUILD_TYPE=Release
   cmake --build "$build" -j2 --target hecal hecal_python
 fi
 hecal="$build/bin/hecal"

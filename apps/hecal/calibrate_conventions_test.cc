@@ -25,8 +25,9 @@ namespace hecal::cli {
 namespace {
 
 using cli_test::Hecal;
+using cli_test::kData;
+using cli_test::PoseOf;
 using nlohmann::json;
-const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
 
 // How a pose file is written.
 struct Layout {
@@ -65,13 +66,6 @@ std::string PoseCsv(const std::vector<Pose>& poses, const Layout& layout) {
     }
   }
   return csv.str();
-}
-
-Pose PoseOf(const json& object) {
-  Eigen::Matrix4d M;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) M(r, c) = object["matrix"][r][c].get<double>();
-  return Pose(M);
 }
 
 bool Contains(const std::string& text, const std::string& part) {

@@ -55,13 +55,13 @@ constexpr double kImageNoise = 20.0;             // grey levels
 constexpr double kBlack = 80.0, kWhite = 180.0;  // grey levels of the print
 
 // X (camera 12 cm off the flange, looking sideways) and Z (board 70 cm in front of the base).
-Pose TrueX() {
+Pose NoiseTrueX() {
   return MakePose(
       Eigen::AngleAxisd(80 * kRadiansPerDegree, Eigen::Vector3d(-0.3, 1.0, 0.2).normalized())
           .toRotationMatrix(),
       Eigen::Vector3d(0.05, 0.02, 0.12));
 }
-Pose TrueZ() {
+Pose NoiseTrueZ() {
   return MakePose(
       Eigen::AngleAxisd(160 * kRadiansPerDegree, Eigen::Vector3d(1.0, -0.2, 0.1).normalized())
           .toRotationMatrix(),
@@ -73,9 +73,13 @@ Pose RandomView(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const pose::CameraModel camera = hecal::testing::RenderCamera();
   while (true) {
-    const Pose view = hecal::testing::LookAtView(
-        0.36 + 0.08 * unit(rng), (10.0 + 25.0 * unit(rng)) * kRadiansPerDegree,
-        360.0 * kRadiansPerDegree * unit(rng), 0.2 * (unit(rng) - 0.5), 0.2 * (unit(rng) - 0.5));
+    // Drawn last to first: the order these tests' data were generated in.
+    const double pan_y = 0.2 * (unit(rng) - 0.5);
+    const double pan_x = 0.2 * (unit(rng) - 0.5);
+    const double azimuth = 360.0 * kRadiansPerDegree * unit(rng);
+    const double tilt = (10.0 + 25.0 * unit(rng)) * kRadiansPerDegree;
+    const double distance = 0.36 + 0.08 * unit(rng);
+    const Pose view = hecal::testing::LookAtView(distance, tilt, azimuth, pan_x, pan_y);
     const Pose roll = MakePose(
         Eigen::AngleAxisd(120.0 * kRadiansPerDegree * (unit(rng) - 0.5), Eigen::Vector3d::UnitZ())
             .toRotationMatrix(),
@@ -124,7 +128,8 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
       cv::imwrite(
           (images / (std::string(name) + ".png")).string(),
           vision::RenderTarget(hecal::testing::Board(), hecal::testing::RenderCamera(), B, render));
-      const Pose A = sim::AddNoise(TrueZ() * B.inverse() * TrueX().inverse(), robot_noise, rng);
+      const Pose A =
+          sim::AddNoise(NoiseTrueZ() * B.inverse() * NoiseTrueX().inverse(), robot_noise, rng);
       const Eigen::Quaterniond q(A.linear());
       csv << name << "," << A.translation().x() << "," << A.translation().y() << ","
           << A.translation().z() << "," << q.w() << "," << q.x() << "," << q.y() << "," << q.z()
@@ -152,7 +157,7 @@ class CalibrateImagesNoiseTest : public cli_test::CliTest {
       }
     }
     outcome.ok = true;
-    outcome.nees = uncertainty::Nees(se3::Log(Pose(M).inverse() * TrueX()), covariance);
+    outcome.nees = uncertainty::Nees(se3::Log(Pose(M).inverse() * NoiseTrueX()), covariance);
     outcome.robot_rotation =
         result["noise"]["robot_sigma"]["rotation_deg"].get<double>() * kRadiansPerDegree;
     outcome.robot_translation = result["noise"]["robot_sigma"]["translation"].get<double>();

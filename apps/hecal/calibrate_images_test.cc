@@ -37,6 +37,7 @@ using cli_test::Hecal;
 
 #if defined(HECAL_HAVE_OPENCV_PEERS)
 
+using cli_test::PoseOf;
 using nlohmann::json;
 
 constexpr int kViews = 8;
@@ -107,14 +108,6 @@ class CalibrateImagesTest : public hecal::testing::RenderOnce<CalibrateImagesTes
             Path("result.json")};
   }
 };
-
-Pose PoseOf(const json& object) {
-  Eigen::Matrix4d M;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) M(r, c) = object["matrix"][r][c].get<double>();
-  }
-  return Pose(M);
-}
 
 // Both setups, robot poses exact: X and Z from the rendered images within what sub-pixel
 // corners (≈0.03 px) allow: measured ≤ 0.01° and ≤ 0.05 mm; asserted at 0.05° and 0.3 mm. The
@@ -241,8 +234,8 @@ TEST_F(CalibrateImagesTest, RefinesIntrinsicsThatAreOff) {
 // sets. Measured: eye-in-hand pose-level 0.0040° / 0.018 mm RMS, reprojection 0.0020° / 0.016 mm;
 // eye-to-hand 0.0041° / 0.019 mm and 0.0020° / 0.016 mm. (With robot noise of 0.005° / 0.02 mm
 // added, which then dominates, the two are within 10% of each other on one set (40 draws), the
-// reprojection ahead in rotation and 8% behind in eye-to-hand translation — docs/images.md, "Calibrating
-// from images".)
+// reprojection ahead in rotation and 8% behind in eye-to-hand translation — docs/images.md,
+// "Calibrating from images".)
 TEST_F(CalibrateImagesTest, ReprojectionIsAtLeastAsAccurateAsPoseLevelOnRenderedSets) {
   constexpr int kSets = 4;
   std::vector<std::vector<Pose>> sets;

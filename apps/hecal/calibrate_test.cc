@@ -24,18 +24,11 @@ namespace hecal::cli {
 namespace {
 
 using cli_test::Hecal;
+using cli_test::PoseOf;
 using nlohmann::json;
 using testing::PoseCsv;
 
 const std::string kMoveIt = std::string(HECAL_SOURCE_DIR) + "/data/moveit-calibration/";
-
-Pose PoseOf(const json& object) {
-  Eigen::Matrix4d M;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) M(r, c) = object["matrix"][r][c].get<double>();
-  }
-  return Pose(M);
-}
 
 double AngleBetween(const Pose& a, const Pose& b) {
   return so3::Log(a.linear().transpose() * b.linear()).norm();

@@ -31,7 +31,7 @@ namespace {
 
 using cli_test::Hecal;
 
-constexpr int kViews = 6;
+constexpr int kCameraFileViews = 6;
 
 // rendered_scene.h's RenderCamera with k1 only, the model ViSP's kud describes.
 pose::CameraModel KudCamera() {
@@ -73,10 +73,11 @@ class CameraFileImagesTest
  public:
   static constexpr const char* kRenderFolder = "camera_file_images_test_renders";
   static void Render(const std::filesystem::path& dir) {
-    hecal::testing::MakeRenderedScene({.camera = KudCamera(),
-                                       .views = hecal::testing::SpreadViews({.count = kViews}),
-                                       .first_seed = 200,
-                                       .folder = dir});
+    hecal::testing::MakeRenderedScene(
+        {.camera = KudCamera(),
+         .views = hecal::testing::SpreadViews({.count = kCameraFileViews}),
+         .first_seed = 200,
+         .folder = dir});
   }
 
  protected:
@@ -94,7 +95,7 @@ TEST_F(CameraFileImagesTest, DetectReadsVispXml) {
             std::string::npos)
       << run.out;
   const csv_test::Csv poses = csv_test::ReadCsv(Path("camera.csv"));
-  const std::vector<Pose> truth = hecal::testing::SpreadViews({.count = kViews});
+  const std::vector<Pose> truth = hecal::testing::SpreadViews({.count = kCameraFileViews});
   ASSERT_EQ(poses.rows.size(), truth.size());
   for (std::size_t i = 0; i < truth.size(); ++i) {
     const Eigen::Quaterniond q(poses.Number(i, "qw"), poses.Number(i, "qx"), poses.Number(i, "qy"),
@@ -121,8 +122,8 @@ TEST_F(CameraFileImagesTest, DetectReadsVispXml) {
 TEST_F(CameraFileImagesTest, CalibrateImagesReadsVispXml) {
   std::ostringstream robot;
   robot << std::setprecision(17) << "id,x,y,z,qw,qx,qy,qz\n";
-  const std::vector<Pose> views = hecal::testing::SpreadViews({.count = kViews});
-  for (int i = 0; i < kViews; ++i) {
+  const std::vector<Pose> views = hecal::testing::SpreadViews({.count = kCameraFileViews});
+  for (int i = 0; i < kCameraFileViews; ++i) {
     const Pose G = TrueZ() * views[static_cast<size_t>(i)].inverse() * TrueX().inverse();
     const Eigen::Quaterniond q(G.linear());
     robot << "view_0" << i << "," << G.translation().x() << "," << G.translation().y() << ","

@@ -1,12 +1,15 @@
 // Test support for the CLI tests: run `hecal` in-process through RunHecal (capturing stdout,
-// stderr and the exit code) inside a fresh per-test temporary directory.
+// stderr and the exit code) inside a fresh per-test temporary directory; the repository's data/
+// folder; a pose read back from a result file.
 #pragma once
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +18,18 @@
 #include "hecal/hecal.h"
 
 namespace hecal::cli::cli_test {
+
+// The repository's data/ folder (the public datasets and examples), with its trailing slash.
+inline const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
+
+// The pose of a result file's transform object (docs/result-file.md): its 4×4 "matrix".
+inline Pose PoseOf(const nlohmann::json& object) {
+  Eigen::Matrix4d M;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) M(r, c) = object["matrix"][r][c].get<double>();
+  }
+  return Pose(M);
+}
 
 struct Outcome {
   int code = 0;

@@ -34,13 +34,13 @@ Matrix6d ParseShapeCovariance(const std::string& text) {
 }
 
 // `contour pose`: the shape vector and the library's options, typed.
-struct PoseCommand {
+struct ContourPoseCommand {
   Vector6d shape = Vector6d::Zero();
   contour::ShapePoseOptions options;
   bool json = false;
 };
 
-void RunContourPose(const PoseCommand& command, const Io& io) {
+void RunContourPose(const ContourPoseCommand& command, const Io& io) {
   const contour::ShapePose result = contour::EstimateShapePose(command.shape, command.options);
   if (command.json) {
     io.out << report::ContourPoseJson(result);
@@ -73,7 +73,7 @@ void RegisterContourCommand(CLI::App& app, const Io& io) {
       "contour", "Camera motion from the affine deformation of a planar contour (docs/contour.md)");
   contour->require_subcommand(1);
 
-  auto command = std::make_shared<PoseCommand>();
+  auto command = std::make_shared<ContourPoseCommand>();
   contour::ShapePoseOptions& o = command->options;
   CLI::App* pose = contour->add_subcommand("pose", "The camera motion of one shape vector");
   pose->add_option_function<std::string>(

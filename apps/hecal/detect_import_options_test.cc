@@ -16,9 +16,9 @@ namespace hecal::cli {
 namespace {
 
 using cli_test::Hecal;
+using cli_test::kData;
 using cli_test::Outcome;
 
-const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
 const std::string kMoveit = kData + "moveit-calibration/pose_samples.json";
 
 class DetectImportOptions : public cli_test::CliTest {

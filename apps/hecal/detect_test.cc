@@ -543,7 +543,9 @@ TEST_F(DetectTest, CameraSizeAgainstImageSize) {
 
 #else
 
-TEST_F(CliTest, DetectNeedsTheVisionLayer) {
+using DetectWithoutVision = CliTest;
+
+TEST_F(DetectWithoutVision, DetectNeedsTheVisionLayer) {
   const cli_test::Outcome run = Hecal({"detect", "--images", Path("."), "--target", Path("t.yaml"),
                                        "--output", Path("camera.csv")});
   EXPECT_EQ(run.code, 2);

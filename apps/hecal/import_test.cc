@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "cli.h"
+#include "cli_test_util.h"
 #include "hecal/core/error.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/pose_table.h"
@@ -27,7 +28,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
+using cli_test::kData;
 const std::string kFixtures = std::string(HECAL_SOURCE_DIR) + "/src/io/testdata/";
 
 Pose RotationTranslation(const Eigen::Matrix3d& R, const Eigen::Vector3d& t) {

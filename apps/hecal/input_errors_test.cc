@@ -19,9 +19,8 @@ namespace hecal::cli {
 namespace {
 
 using cli_test::Hecal;
+using cli_test::kData;
 using cli_test::Outcome;
-
-const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
 
 class InputErrors : public cli_test::CliTest {
  protected:

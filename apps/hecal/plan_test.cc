@@ -14,17 +14,23 @@ namespace {
 
 using cli_test::CliTest;
 using cli_test::Hecal;
+using cli_test::kData;
 using ::testing::HasSubstr;
-
-const std::string kData = std::string(HECAL_SOURCE_DIR) + "/data/";
 
 class PlanTest : public CliTest {
  protected:
   std::vector<std::string> Plan(const std::string& workspace) {
-    return {"plan",         "--setup",    "eye-in-hand",
-            "--target",     kData + "rwhe-kuka2/target.yaml",
-            "--intrinsics", kData + "plan-example/camera.yaml",
-            "--workspace",  workspace,    "--output", Path("plan.csv")};
+    return {"plan",
+            "--setup",
+            "eye-in-hand",
+            "--target",
+            kData + "rwhe-kuka2/target.yaml",
+            "--intrinsics",
+            kData + "plan-example/camera.yaml",
+            "--workspace",
+            workspace,
+            "--output",
+            Path("plan.csv")};
   }
 };
 

@@ -25,7 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using csv_test::Csv;
-constexpr double kPi = std::numbers::pi;
 constexpr double kTolerance = 1e-9;
 
 const std::string kDataDir = std::string(HECAL_SOURCE_DIR) + "/tests/data/scipy";
@@ -74,7 +73,7 @@ Eigen::Matrix3d ComposeEuler(const std::string& sequence, const Eigen::Vector3d&
 }
 
 double AngleDifference(double a, double b) {
-  return std::abs(std::remainder(a - b, 2 * kPi));
+  return std::abs(std::remainder(a - b, 2 * std::numbers::pi));
 }
 
 // Exact angles (radians) for the rows scipy reports as gimbal-locked, by (id, target stem).
@@ -83,7 +82,7 @@ const std::map<std::pair<std::string, std::string>, Eigen::Vector3d>& GimbalLock
     auto* map = new std::map<std::pair<std::string, std::string>, Eigen::Vector3d>;
     const Csv csv = csv_test::ReadCsv(kDataDir + "/gimbal_lock_exact.csv");
     for (size_t i = 0; i < csv.rows.size(); ++i) {
-      const double scale = csv.Text(i, "unit") == "deg" ? kPi / 180.0 : 1.0;
+      const double scale = csv.Text(i, "unit") == "deg" ? std::numbers::pi / 180.0 : 1.0;
       (*map)[{csv.Text(i, "id"), csv.Text(i, "target")}] =
           scale * Eigen::Vector3d(csv.Number(i, "a1"), csv.Number(i, "a2"), csv.Number(i, "a3"));
     }
@@ -139,7 +138,7 @@ TEST_P(ScipyTest, ConvertReproducesScipy) {
   ASSERT_EQ(actual.rows.size(), expected.rows.size());
   ASSERT_EQ(actual.rows.size(), input.rows.size());
   const std::vector<std::string> columns(expected.header.begin() + 4, expected.header.end());
-  const double scale = target.degrees ? kPi / 180.0 : 1.0;
+  const double scale = target.degrees ? std::numbers::pi / 180.0 : 1.0;
   double worst = 0.0;
   int locked = 0;
   for (size_t i = 0; i < actual.rows.size(); ++i) {
@@ -170,20 +169,21 @@ TEST_P(ScipyTest, ConvertReproducesScipy) {
         plus = std::max(plus, std::abs(a[k] - e[k]));
         minus = std::max(minus, std::abs(a[k] + e[k]));
       }
-      error = std::abs(norm - kPi) < 1e-9 ? std::min(plus, minus) : plus;
+      error = std::abs(norm - std::numbers::pi) < 1e-9 ? std::min(plus, minus) : plus;
     } else if (target.sequence.empty()) {  // matrix
       for (size_t k = 0; k < 9; ++k) error = std::max(error, std::abs(a[k] - e[k]));
     } else {  // Euler angles
       const auto lock = GimbalLockRows().find({id, target.stem});
       // Inside scipy's 1e-7 lock band but a distance δ off the lock, a3 = 0 costs up to δ·|a3|
-      // (≤ δ·π) in the reconstruction (tests/data/scipy/README.md, "Band rows"); δ = 0 at an exact lock.
+      // (≤ δ·π) in the reconstruction (tests/data/scipy/README.md, "Band rows"); δ = 0 at an exact
+      // lock.
       double band = 0.0;
       if (lock != GimbalLockRows().end()) {
         ++locked;
         e = {lock->second[0], lock->second[1], lock->second[2]};
         const bool proper = target.sequence[0] == target.sequence[2];
-        band = proper ? std::min(std::abs(e[1]), std::abs(kPi - e[1]))
-                      : std::abs(std::abs(e[1]) - kPi / 2);
+        band = proper ? std::min(std::abs(e[1]), std::abs(std::numbers::pi - e[1]))
+                      : std::abs(std::abs(e[1]) - std::numbers::pi / 2);
         EXPECT_LT(band, 1e-7);
       }
       error = std::max(
@@ -192,7 +192,7 @@ TEST_P(ScipyTest, ConvertReproducesScipy) {
       const Eigen::Matrix3d R = ComposeEuler(target.sequence, Eigen::Vector3d(a[0], a[1], a[2]));
       const double recomposed =
           (R - quaternions[i].normalized().toRotationMatrix()).cwiseAbs().maxCoeff();
-      EXPECT_LT(recomposed, kTolerance + kPi * band)
+      EXPECT_LT(recomposed, kTolerance + std::numbers::pi * band)
           << "angles " << a[0] << " " << a[1] << " " << a[2];
     }
     EXPECT_LT(error, kTolerance);

@@ -23,7 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
-constexpr double kPi = std::numbers::pi;
 
 // Independent definitions (not the library's Euler code): elementary rotations composed by hand.
 using testing::Rx;
@@ -204,7 +203,7 @@ TEST_F(PosesConvertTest, InputFlagsForUnsuffixedFiles) {
   EXPECT_EQ(csv.header, (std::vector<std::string>{"x_mm", "y_mm", "z_mm", "rx", "ry", "rz"}));
   EXPECT_EQ(csv.Number(0, "x_mm"), 1000);
   EXPECT_EQ(csv.Number(0, "z_mm"), -500);
-  EXPECT_NEAR(csv.Number(0, "rz"), kPi / 2, 1e-15);
+  EXPECT_NEAR(csv.Number(0, "rz"), std::numbers::pi / 2, 1e-15);
   // Header suffixes win over the input flags.
   const std::string suffixed =
       Write("suffixed.csv", "x_m,y_m,z_m,rx_rad,ry_rad,rz_rad\n1,2,3,0,0,1\n");

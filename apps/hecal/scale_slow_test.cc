@@ -13,7 +13,7 @@
 // CPU at 10⁴ and over 120 s at 10⁵ when each estimate fitted four models on all stations with
 // 12×12 GEMM products per station). Run before a merge that touches a solver or the noise
 // estimation (scripts/test.sh, header): the 10⁴ check of `ml` alone takes ~4 s:
-// HECAL_SCALE_STATIONS=10000 HECAL_SCALE_METHODS=ml build/bin/test_cli_scale_slow_test
+// HECAL_SCALE_STATIONS=10000 HECAL_SCALE_METHODS=ml ctest --test-dir build -R cli_scale_slow_test
 // HECAL_SCALE_STATIONS (e.g. "1000,10000") overrides the station counts, HECAL_SCALE_METHODS
 // (e.g. "ml,shah") picks methods. Needs the hecal executable built next to this test (build/bin)
 // and /usr/bin/time.

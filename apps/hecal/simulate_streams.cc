@@ -83,7 +83,7 @@ void RunSimulateStreams(const jobs::SimulateOptions& simulate, StreamStudyFlags 
   std::vector<io::OutputFile> outputs;
   if (!flags.write_streams.empty()) outputs = RecordingFiles(o, flags.write_streams);
   std::vector<io::PathArgument> checked = {{"--output", output}, {"--summary", summary}};
-  for (const io::OutputFile& file : outputs) checked.emplace_back(file.flag, file.path);
+  for (const io::OutputFile& file : outputs) checked.push_back({file.flag, file.path});
   io::CheckOutputs(checked, {});
   const jobs::StreamStudyResult result = jobs::RunStreamStudy(o);
   const std::string text = jobs::StreamStudyText(result);

@@ -3,11 +3,11 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <string>
 
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/core/number_text.h"
 #include "hecal/core/options_check.h"
 #include "hecal/geometry/euler.h"
 
@@ -47,12 +47,6 @@ ContourPose Finish(const Eigen::Matrix3d& R_zxz, const Eigen::Vector3d& zxz_angl
     pose.euler = EulerAngles(pose.rotation, RotationForm::kZyx);
   }
   return pose;
-}
-
-std::string Number(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
 }
 
 }  // namespace
@@ -107,7 +101,7 @@ ContourPose PoseFromShape(const Vector6d& shape, const ContourCamera& camera, Ro
             ? "the camera motion: the affinity M is singular (det M = 0), so M Mᵀ is not "
               "positive definite: the plane is seen edge-on, a tilt of 90°, beyond the "
               "range [0°, 90°)"
-            : "the camera motion: the affinity reverses orientation (det M = " + Number(det) +
+            : "the camera motion: the affinity reverses orientation (det M = " + NumberText(det) +
                   " < 0), which no rigid motion of a plane seen from the front gives",
         "check the shape vector's order (tx, ty, M11 − 1, M22 − 1, M21, M12) and signs");
   }
@@ -150,13 +144,13 @@ Vector6d ShapeFromPose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& t
                        const ContourCamera& camera) {
   if (!(rotation(2, 2) > 0.0)) {
     throw DegenerateError("the contour: the target plane is edge-on or seen from behind (R33 = " +
-                              Number(rotation(2, 2)) + "), a tilt of 90° or more",
+                              NumberText(rotation(2, 2)) + "), a tilt of 90° or more",
                           "keep the out-of-plane rotation below 90°");
   }
   const double depth = camera.z0 + translation.z();
   if (!(depth > 0.0)) {
     throw DegenerateError(
-        "the contour: the target is behind the camera (Z0 + Tz = " + Number(depth) + ")",
+        "the contour: the target is behind the camera (Z0 + Tz = " + NumberText(depth) + ")",
         "keep Tz > −Z0");
   }
   const Eigen::Matrix2d M = camera.z0 / depth * rotation.topLeftCorner<2, 2>();
@@ -173,7 +167,7 @@ ContourPose CanonicalPose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d
                           RotationForm form) {
   if (!(rotation(2, 2) > 0.0)) {
     throw DegenerateError("the contour: the target plane is edge-on or seen from behind (R33 = " +
-                              Number(rotation(2, 2)) + ")",
+                              NumberText(rotation(2, 2)) + ")",
                           "keep the out-of-plane rotation below 90°");
   }
   // The ZXZ angles of R, with θ ∈ (0, π/2) and φ ∈ [0, π) choosing the mirror member.

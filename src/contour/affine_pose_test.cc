@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 
+#include "contour/contour_test_util.h"
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
@@ -17,7 +18,6 @@
 
 namespace hecal::contour {
 namespace {
-const ContourCamera kCamera{6024.0, 5000.0};  // the paper's setting in px and mm
 
 Eigen::Matrix3d Zxz(double phi, double theta, double psi) {
   return MatrixFromEuler(Eigen::Vector3d(phi, theta, psi), *EulerSequence::Parse("ZXZ"));
@@ -78,12 +78,16 @@ TEST(AffinePose, CombinedMotionsInRangeAreExactZyx) {
   std::uniform_real_distribution<double> tilt(0.0, 85.0), spin(0.0, 360.0), lateral(-400, 400),
       depth(-3500, 3000);
   for (int trial = 0; trial < 500; ++trial) {
-    const Eigen::Matrix3d R =
-        RotationZyx(tilt(rng) * kRadiansPerDegree, tilt(rng) * kRadiansPerDegree,
-                    spin(rng) * kRadiansPerDegree);
+    // Drawn last to first: the order these tests' data were generated in.
+    const double rz = spin(rng) * kRadiansPerDegree;
+    const double ry = tilt(rng) * kRadiansPerDegree;
+    const double rx = tilt(rng) * kRadiansPerDegree;
+    const Eigen::Matrix3d R = RotationZyx(rx, ry, rz);
     if (!(R(2, 2) > 0.05)) continue;
-    ExpectRecovered(R, Eigen::Vector3d(lateral(rng), lateral(rng), depth(rng)), RotationForm::kZyx,
-                    true);
+    const double tz = depth(rng);
+    const double ty = lateral(rng);
+    const double tx = lateral(rng);
+    ExpectRecovered(R, Eigen::Vector3d(tx, ty, tz), RotationForm::kZyx, true);
   }
 }
 
@@ -92,10 +96,13 @@ TEST(AffinePose, CombinedMotionsInRangeAreExactZxz) {
   std::uniform_real_distribution<double> phi(0.0, 179.9), theta(0.0, 87.0), psi(0.0, 359.9),
       lateral(-400, 400), depth(-3500, 3000);
   for (int trial = 0; trial < 500; ++trial) {
-    ExpectRecovered(Zxz(phi(rng) * kRadiansPerDegree, theta(rng) * kRadiansPerDegree,
-                        psi(rng) * kRadiansPerDegree),
-                    Eigen::Vector3d(lateral(rng), lateral(rng), depth(rng)), RotationForm::kZxz,
-                    true);
+    const double tz = depth(rng);
+    const double ty = lateral(rng);
+    const double tx = lateral(rng);
+    const double c = psi(rng) * kRadiansPerDegree;
+    const double b = theta(rng) * kRadiansPerDegree;
+    const double a = phi(rng) * kRadiansPerDegree;
+    ExpectRecovered(Zxz(a, b, c), Eigen::Vector3d(tx, ty, tz), RotationForm::kZxz, true);
   }
 }
 
@@ -105,9 +112,10 @@ TEST(AffinePose, OutOfRangeGivesTheNeckerMirror) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> tilt(-85.0, 85.0), spin(0.0, 360.0);
   for (int trial = 0; trial < 300; ++trial) {
-    const Eigen::Matrix3d R =
-        RotationZyx(tilt(rng) * kRadiansPerDegree, tilt(rng) * kRadiansPerDegree,
-                    spin(rng) * kRadiansPerDegree);
+    const double rz = spin(rng) * kRadiansPerDegree;
+    const double ry = tilt(rng) * kRadiansPerDegree;
+    const double rx = tilt(rng) * kRadiansPerDegree;
+    const Eigen::Matrix3d R = RotationZyx(rx, ry, rz);
     if (!(R(2, 2) > 0.05)) continue;
     const Eigen::Vector3d T(10, -20, 300);
     ExpectRecovered(R, T, RotationForm::kZyx, false);

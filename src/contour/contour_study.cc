@@ -6,12 +6,12 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/core/number_text.h"
 #include "hecal/core/options_check.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/geometry/angle_units.h"
@@ -30,13 +30,6 @@ constexpr std::array<MotionInfo, 6> kMotions = {{{StudyMotion::kTx, "tx"},
                                                  {StudyMotion::kRx, "rx"},
                                                  {StudyMotion::kRy, "ry"},
                                                  {StudyMotion::kRz, "rz"}}};
-
-// A number for a message: shortest of %g's forms ("100", "1e+09").
-std::string Number(double x) {
-  std::ostringstream text;
-  text << x;
-  return text.str();
-}
 
 bool Finite(double x) {
   return std::isfinite(x);
@@ -86,9 +79,10 @@ bool ContourStudyOptions::IsValid(std::string* why) const {
     return false;
   }
   if (!(pixel_noise >= 0.0 && pixel_noise <= kMaxPixelNoise)) {
-    return Invalid(why, "ContourStudyOptions.pixel_noise",
-                   "must be 0 to " + Number(kMaxPixelNoise) + " px, got " + Number(pixel_noise),
-                   "give the noise of one image coordinate in pixels, e.g. 0.5");
+    return Invalid(
+        why, "ContourStudyOptions.pixel_noise",
+        "must be 0 to " + NumberText(kMaxPixelNoise) + " px, got " + NumberText(pixel_noise),
+        "give the noise of one image coordinate in pixels, e.g. 0.5");
   }
   if (!Finite(from) || !Finite(to)) {
     return Invalid(why, "ContourStudyOptions.from", "the motion range must be finite numbers",

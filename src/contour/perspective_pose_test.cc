@@ -24,10 +24,15 @@ TEST(PerspectivePose, RecoversTheMotionOfAPerspectiveViewExactly) {
   std::uniform_real_distribution<double> tilt(0.0, 40.0), spin(0.0, 360.0), lateral(-150, 150),
       depth(-2500, 1500);
   for (int trial = 0; trial < 40; ++trial) {
-    const Eigen::Matrix3d R =
-        RotationZyx((5 + tilt(rng)) * kRadiansPerDegree, tilt(rng) * kRadiansPerDegree,
-                    spin(rng) * kRadiansPerDegree);
-    const Eigen::Vector3d T(lateral(rng), lateral(rng), depth(rng));
+    // Drawn last to first: the order these tests' data were generated in.
+    const double rz = spin(rng) * kRadiansPerDegree;
+    const double ry = tilt(rng) * kRadiansPerDegree;
+    const double rx = (5 + tilt(rng)) * kRadiansPerDegree;
+    const Eigen::Matrix3d R = RotationZyx(rx, ry, rz);
+    const double tz = depth(rng);
+    const double ty = lateral(rng);
+    const double tx = lateral(rng);
+    const Eigen::Vector3d T(tx, ty, tz);
     const Vector6d S = model.PerspectiveShape(R, T);
     for (RotationForm form : {RotationForm::kZyx, RotationForm::kZxz}) {
       const ContourPose truth = CanonicalPose(R, T, form);

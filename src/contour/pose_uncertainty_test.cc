@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "contour/contour_test_util.h"
 #include "hecal/contour/contour_study.h"
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
@@ -16,7 +17,6 @@
 
 namespace hecal::contour {
 namespace {
-const ContourCamera kCamera{6024.0, 5000.0};
 
 struct Input {
   Vector6d shape;

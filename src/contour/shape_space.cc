@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/dense_decompositions.h"
 
 namespace hecal::contour {
 namespace {

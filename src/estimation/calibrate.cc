@@ -12,6 +12,7 @@
 #include "hecal/estimation/ml.h"
 #include "hecal/estimation/noise_estimation.h"
 #include "hecal/estimation/robust_loss.h"
+#include "hecal/estimation/station_selection.h"
 #include "hecal/estimation/strobl.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
@@ -90,13 +91,6 @@ std::string StationList(const std::vector<int>& stations, const CalibrateOptions
   return text;
 }
 
-std::vector<int> Indices(const std::vector<bool>& flags) {
-  std::vector<int> indices;
-  for (size_t i = 0; i < flags.size(); ++i)
-    if (flags[i]) indices.push_back(static_cast<int>(i));
-  return indices;
-}
-
 // Checks the options and what the problem asks of them.
 void ValidateOptions(const handeye::Problem& problem, const CalibrateOptions& options) {
   RequireValid(options);
@@ -129,14 +123,16 @@ bool CalibrateOptions::IsValid(std::string* why) const {
                    "use e.g. 1.83 (whitened units per component: the 3-sigma outlier level)");
   }
   if (fix && (fix->axis < 0 || fix->axis > 2 || !std::isfinite(fix->value))) {
-    return Invalid(why, "CalibrateOptions.fix", "the fixed component must be tx, ty or tz with a "
-                   "finite value", "give e.g. tz=0.12 (metres)");
+    return Invalid(why, "CalibrateOptions.fix",
+                   "the fixed component must be tx, ty or tz with a "
+                   "finite value",
+                   "give e.g. tz=0.12 (metres)");
   }
   if (fix && method != Method::kMl) {
-    return Invalid(why, "CalibrateOptions.fix",
-                   "a fixed translation component needs the method ml, not " +
-                       std::string(Info(method).name),
-                   "use --method ml (the default)");
+    return Invalid(
+        why, "CalibrateOptions.fix",
+        "a fixed translation component needs the method ml, not " + std::string(Info(method).name),
+        "use --method ml (the default)");
   }
   return covariance.IsValid(why) && consensus.IsValid(why);
 }
@@ -256,7 +252,7 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
       result.rejected_ids.push_back(options.station_ids[static_cast<size_t>(i)]);
   }
   // Flagged stations by their index in the whole problem.
-  const std::vector<int> used_index = Indices(selection.used);
+  const std::vector<int> used_index = TrueIndices(selection.used);
   for (int& i : flagged) i = used_index[i];
   result.robot_sigma = noise.robot();
   result.camera_sigma = noise.camera();
@@ -286,9 +282,8 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
   }
   // Now that the robot noise is known (given or estimated): is every direction of X's
   // translation observed by more than noise? (observability.h)
-  if (std::string weak =
-          handeye::CheckObservabilityUnderNoise(problem, result.robot_sigma.rotation,
-                                                result.fixed.has_value());
+  if (std::string weak = handeye::CheckObservabilityUnderNoise(problem, result.robot_sigma.rotation,
+                                                               result.fixed.has_value());
       !weak.empty()) {
     result.warnings.push_back(std::move(weak));
   }

@@ -114,7 +114,7 @@ TEST(PropagateCovariance, UnscentedMatchesMonteCarloAndTheInformationBoundsIt) {
 // first-order quantity as ml's linear one (its inverse Gauss–Newton information, with the same
 // station covariances): within 1% per axis (measured: equal to 6 digits); from the isotropic
 // sigmas alone it is 1.5–17% below linear per axis, so that comparison can tell too.
-TEST(Calibrate, EveryCovariancePathUsesTheStudentTStationCovariances) {
+TEST(CalibrateCovariance, EveryCovariancePathUsesTheStudentTStationCovariances) {
   std::mt19937_64 rng(3);
   sim::ProtocolOptions protocol;
   protocol.setup = handeye::Setup::kEyeInHand;
@@ -172,7 +172,7 @@ TEST(Calibrate, EveryCovariancePathUsesTheStudentTStationCovariances) {
 // anisotropic model). The information covariance takes the excess from the station noise: within
 // 1% of ml's linear per axis of X (measured: equal to 6 digits); from the isotropic sigmas alone
 // it is 2–74% below linear per axis.
-TEST(Calibrate, InformationCovarianceUsesTheCameraExcess) {
+TEST(CalibrateCovariance, InformationCovarianceUsesTheCameraExcess) {
   const PoseSigma robot{0.05 * kRadiansPerDegree, 0.05e-3};
   std::mt19937_64 rng(25);
   sim::ProtocolOptions protocol;
@@ -230,7 +230,7 @@ TEST(PropagateCovariance, NoneAndBadNoise) {
 
 // Calibrate attaches the default covariance: ml's analytic information (no solves), the UT for
 // other methods; --covariance overrides it, and every method accepts every kind.
-TEST(Calibrate, AttachesTheDefaultOrRequestedCovariance) {
+TEST(CalibrateCovariance, AttachesTheDefaultOrRequestedCovariance) {
   const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, 10, 9, kSigma.rotation, kSigma.translation);
   const handeye::Problem problem = data.MeasuredProblem();
@@ -254,7 +254,7 @@ TEST(Calibrate, AttachesTheDefaultOrRequestedCovariance) {
 
 // Above kMaxUnscentedStations the closed forms default to the information covariance (no
 // solves); ml keeps its analytic one at every n.
-TEST(Calibrate, DefaultCovarianceByStationCount) {
+TEST(CalibrateCovariance, DefaultCovarianceByStationCount) {
   for (Method method : {Method::kTsaiLenz, Method::kShah, Method::kStrobl}) {
     EXPECT_EQ(DefaultCovarianceMethod(method, kMaxUnscentedStations), CovarianceMethod::kUnscented);
     EXPECT_EQ(DefaultCovarianceMethod(method, kMaxUnscentedStations + 1),
@@ -280,7 +280,7 @@ TEST(Calibrate, DefaultCovarianceByStationCount) {
 // A propagated covariance needs the dense 12n × 12n input: above kMaxPropagatedStations an
 // explicit request is refused before solving, naming the option and the limit; ml's analytic
 // linear covariance and the information covariance have no such limit.
-TEST(Calibrate, PropagatedCovarianceRefusedAboveItsStationLimit) {
+TEST(CalibrateCovariance, PropagatedCovarianceRefusedAboveItsStationLimit) {
   const int n = static_cast<int>(kMaxPropagatedStations) + 1;
   const testing::Scene data =
       testing::ThesisCase(handeye::Setup::kEyeInHand, n, 11, kSigma.rotation, kSigma.translation);

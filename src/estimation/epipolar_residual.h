@@ -1,6 +1,7 @@
 // The angular Sampson residual of one bearing pair of the target-free problem as a function of
-// the perturbations of X and of the two hand poses (used by epipolar_polish.cc and
-// epipolar_robot_noise.cc; not installed). Notation as in global/epipolar_problem.h.
+// the perturbations of X and of the two hand poses (used by epipolar_polish.cc,
+// epipolar_jacobians.cc and epipolar_robot_noise.cc; not installed). Notation as in
+// global/epipolar_problem.h.
 //
 //   r = v·(R_A u × t_A) / sqrt(|P_v (R_A u × t_A)|² + |P_u R_Aᵀ(t_A × v)|²),   P_x = I − x xᵀ,
 //

@@ -1,33 +1,16 @@
 #include "hecal/estimation/epipolar_robot_noise.h"
 
-#include <ceres/ceres.h>
-
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
 
+#include "epipolar_jacobians.h"
 #include "epipolar_residual.h"
 #include "hecal/core/error.h"
 
 namespace hecal::estimation {
 namespace {
-
-// r as a function of δ (X) and the two stations' η.
-struct StationPairCost {
-  StationPairCost(const Pose& X0, const Pose& B, const global::BearingPair& pair)
-      : X0_(X0), B_(B), pair_(pair) {}
-
-  template <typename T>
-  bool operator()(const T* delta, const T* eta_first, const T* eta_second, T* residual) const {
-    residual[0] = detail::SampsonResidual<T>(X0_, B_, pair_, delta, eta_first, eta_second);
-    return true;
-  }
-
-  Pose X0_, B_;
-  global::BearingPair pair_;
-};
 
 // The model linearised at X, reduced to the products the likelihood and the GLS step need.
 struct Linearisation {
@@ -39,69 +22,8 @@ struct Linearisation {
   Eigen::VectorXd Gr;      // p
 };
 
-int CheckedPairCount(const global::EpipolarProblem& problem) {
-  const int n = global::PairCount(problem);
-  if (n < 7) {
-    throw DegenerateError(
-        "the hand–eye transform (6 unknowns) from " + std::to_string(n) + " bearing pairs",
-        "give at least 7 point matches");
-  }
-  return n;
-}
-
-std::map<int, int> StationIndex(const global::EpipolarProblem& problem) {
-  std::map<int, int> index;
-  for (const global::EpipolarMotion& motion : problem.motions) {
-    for (int station : {motion.first_station, motion.second_station}) {
-      index.emplace(station, int(index.size()));
-    }
-  }
-  return index;
-}
-
-// The residuals r̂ at X and their Jacobians J (in δ) and G (in every station's η), one row per
-// pair in the order of the motions.
-struct Jacobians {
-  Eigen::MatrixXd J, G;
-  Eigen::VectorXd r;
-};
-
-Jacobians Differentiate(const global::EpipolarProblem& problem, const Pose& X) {
-  const std::map<int, int> station = StationIndex(problem);
-  const int p = 6 * int(station.size());
-  const int n = CheckedPairCount(problem);
-  Jacobians out;
-  out.G = Eigen::MatrixXd::Zero(n, p);
-  out.J.resize(n, 6);
-  out.r.resize(n);
-  Eigen::MatrixXd& G = out.G;
-  Eigen::MatrixXd& J = out.J;
-  Eigen::VectorXd& r = out.r;
-  const double zero[6] = {0, 0, 0, 0, 0, 0};
-  const double* parameters[3] = {zero, zero, zero};
-  int row = 0;
-  for (const global::EpipolarMotion& motion : problem.motions) {
-    const int f = 6 * station.at(motion.first_station);
-    const int s = 6 * station.at(motion.second_station);
-    for (const global::BearingPair& pair : motion.pairs) {
-      ceres::AutoDiffCostFunction<StationPairCost, 1, 6, 6, 6> cost(
-          new StationPairCost(X, motion.hand, pair));
-      double d_delta[6], d_first[6], d_second[6];
-      double* jacobians[3] = {d_delta, d_first, d_second};
-      cost.Evaluate(parameters, &r[row], jacobians);
-      for (int k = 0; k < 6; ++k) {
-        J(row, k) = d_delta[k];
-        G(row, f + k) += d_first[k];
-        G(row, s + k) += d_second[k];
-      }
-      ++row;
-    }
-  }
-  return out;
-}
-
 Linearisation Linearise(const global::EpipolarProblem& problem, const Pose& X) {
-  const Jacobians d = Differentiate(problem, X);
+  const detail::EpipolarJacobians d = detail::DifferentiateEpipolar(problem, X);
   const Eigen::MatrixXd& G = d.G;
   const Eigen::MatrixXd& J = d.J;
   const Eigen::VectorXd& r = d.r;
@@ -246,7 +168,7 @@ RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& pr
                                                const Pose& start, double reach,
                                                const std::optional<PoseSigma>& robot) {
   RobotNoisePolish result;
-  result.stations = int(StationIndex(problem).size());
+  result.stations = int(detail::EpipolarStationIndex(problem).size());
   result.robot_given = robot.has_value();
   result.noise = EstimateEpipolarNoise(problem, start, robot);
   result.polish = PolishWithRobotNoise(problem, start, result.noise);
@@ -266,7 +188,7 @@ RobotNoisePolish PolishWithEstimatedRobotNoise(const global::EpipolarProblem& pr
 EpipolarJackknife ExpectedEpipolarJackknife(const global::EpipolarProblem& problem, const Pose& X,
                                             const EpipolarNoise& noise,
                                             const std::vector<std::vector<bool>>& kept) {
-  const Jacobians d = Differentiate(problem, X);
+  const detail::EpipolarJacobians d = detail::DifferentiateEpipolar(problem, X);
   const int n = int(d.r.size());
   const int p = int(d.G.cols());
   const int groups = int(kept.size());

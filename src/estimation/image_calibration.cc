@@ -11,6 +11,7 @@
 #include "hecal/core/options_check.h"
 #include "hecal/estimation/image_monte_carlo.h"
 #include "hecal/estimation/model_check.h"
+#include "hecal/estimation/station_selection.h"
 
 namespace hecal::estimation {
 namespace {
@@ -56,13 +57,6 @@ std::string FlaggedImagesWarning(const std::vector<bool>& flags, const std::vect
                    : std::string(": still used (more could not be rejected)")) +
          "; check the detection (blur, glare, a partly hidden target) and the robot pose of " +
          (count == 1 ? "that image" : "those images");
-}
-
-std::vector<int> Indices(const std::vector<bool>& flags) {
-  std::vector<int> indices;
-  for (size_t i = 0; i < flags.size(); ++i)
-    if (flags[i]) indices.push_back(static_cast<int>(i));
-  return indices;
 }
 
 // The robot noise's effect at the scene, √(σ_t² + (σ_r L)²) (header, step 4).
@@ -177,7 +171,7 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   Pose X0 = out.pose_level.X, Z0 = out.pose_level.Z;
   std::vector<std::string> image_warnings;
   while (true) {
-    const std::vector<int> used_index = Indices(used);
+    const std::vector<int> used_index = TrueIndices(used);
     std::vector<Pose> used_robot;
     std::vector<ImagePoints> used_points;
     for (int i : used_index) {
@@ -185,7 +179,7 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
       used_points.push_back(stations[static_cast<size_t>(i)].points);
     }
     out.reprojection = RefineReprojection(used_robot, used_points, X0, Z0, reprojection);
-    const std::vector<int> flagged = Indices(out.reprojection.image_outlier);
+    const std::vector<int> flagged = TrueIndices(out.reprojection.image_outlier);
     if (flagged.empty()) break;
     const size_t rejected = static_cast<size_t>(std::count(used.begin(), used.end(), false));
     const bool reject = rejected + flagged.size() <= max_rejected;
@@ -204,7 +198,7 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   }
   std::vector<Pose> used_robot;
   std::vector<ImagePoints> used_points;
-  for (int i : Indices(used)) {
+  for (int i : TrueIndices(used)) {
     used_robot.push_back(robot[static_cast<size_t>(i)]);
     used_points.push_back(stations[static_cast<size_t>(i)].points);
   }
@@ -280,7 +274,7 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
       EstimateNoise(LinearizeStations(used_problem, result.X, result.Z), known, length_scale);
   SetStationResiduals(used_problem, noise, &result);
   if (out.reprojection.robot_sigma_estimated) {
-    const std::vector<int> used_index = Indices(used);
+    const std::vector<int> used_index = TrueIndices(used);
     size_t largest = 0;
     for (size_t k = 0; k < result.residuals.size(); ++k)
       if (result.residuals[k].rotation > result.residuals[largest].rotation) largest = k;

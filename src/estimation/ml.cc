@@ -11,6 +11,7 @@
 #include "hecal/estimation/initialization.h"
 #include "hecal/estimation/station_covariance.h"
 #include "hecal/estimation/student_t.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/uncertainty/consistency.h"
 #include "loop_solver.h"
 #include "multi_start.h"
@@ -100,14 +101,13 @@ class MlSolver {
     if (fixed_) return handeye::ConstrainedInverse(information, solution, *fixed_);
     const Eigen::LLT<Matrix12d> llt(information);
     if (llt.info() == Eigen::Success) return llt.solve(Matrix12d::Identity());
-    return information.completeOrthogonalDecomposition().pseudoInverse();
+    return PseudoInverse12(information);
   }
 
  private:
   handeye::Solution SolveOnce(const handeye::Solution& start, const std::vector<Matrix6d>& W) {
     ++solves_;
-    return internal::MinimizeLoopCost(problem_, W, loss_.get(), start,
-                                      fixed_ ? &*fixed_ : nullptr);
+    return internal::MinimizeLoopCost(problem_, W, loss_.get(), start, fixed_ ? &*fixed_ : nullptr);
   }
 
   const handeye::Problem& problem_;
@@ -117,15 +117,6 @@ class MlSolver {
   std::optional<handeye::FixedTranslation> fixed_;
   int solves_ = 0;
 };
-
-double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
-  double change = 0.0;
-  for (int k = 0; k < kNumNoiseComponents; ++k) {
-    const double scale = std::max(std::abs(a[k]), std::abs(b[k]));
-    if (scale > 0.0) change = std::max(change, std::abs(a[k] - b[k]) / scale);
-  }
-  return change;
-}
 
 // The multi-start with one common whitening, Σ_i at the start of lowest negative log-likelihood
 // (Σ_i depends on X only through lever arms, so the minima are where they would be with per-start
@@ -255,7 +246,8 @@ MlResult RefineMl(const handeye::Problem& problem, const std::vector<handeye::So
   MlResult result;
   handeye::Solution best = RefineStarts(solver, starts, theta, &result);
   // With a fixed component the closed forms do not apply (parallel axes): the caller's starts.
-  if (options.starts_on_demand && !options.fixed && MayBeWrongMinimum(solver, starts, best, theta, spec, options)) {
+  if (options.starts_on_demand && !options.fixed &&
+      MayBeWrongMinimum(solver, starts, best, theta, spec, options)) {
     std::vector<handeye::Solution> more = starts;
     for (const handeye::Solution& start : Solutions(InitialSolutions(problem)))
       more.push_back(start);

@@ -7,6 +7,7 @@
 
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/calibration_covariance.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/geometry/se3.h"
 
 namespace hecal::estimation {
@@ -111,10 +112,9 @@ Matrix12d ExpectedJackknife(const std::vector<StationLinearization>& stations,
   const GroupTerms terms = SumByGroup(stations, variances, groups);
   const std::vector<Matrix12d>& information = terms.information;
   const Matrix12d& total = terms.total_information;
-  const Matrix12d total_inverse = total.completeOrthogonalDecomposition().pseudoInverse();
+  const Matrix12d total_inverse = PseudoInverse12(total);
   std::vector<Matrix12d> A(G);
-  for (size_t g = 0; g < G; ++g)
-    A[g] = (total - information[g]).completeOrthogonalDecomposition().pseudoInverse();
+  for (size_t g = 0; g < G; ++g) A[g] = PseudoInverse12(total - information[g]);
   // Σ_g E[d_g d_gᵀ] − G E[d̄ d̄ᵀ] with Cov(b_g, b_h) = δ_gh N_g − N_g N⁻¹ N_h.
   Matrix12d expected = Matrix12d::Zero();
   for (size_t g = 0; g < G; ++g) {
@@ -135,9 +135,8 @@ std::vector<handeye::Solution> LinearizedWithoutGroups(
   std::vector<handeye::Solution> solutions;
   for (size_t g = 0; g < groups.size(); ++g) {
     // J_i = ∂r_i/∂δ (loop_residual.h), so the least-squares step is −N⁻¹ b.
-    const Vector12d delta = -(terms.total_information - terms.information[g])
-                                 .completeOrthogonalDecomposition()
-                                 .solve(terms.total_gradient - terms.gradient[g]);
+    const Vector12d delta = -PseudoSolve12(terms.total_information - terms.information[g],
+                                           terms.total_gradient - terms.gradient[g]);
     solutions.push_back({X * se3::Exp(delta.head<6>()), Z * se3::Exp(delta.tail<6>())});
   }
   return solutions;

@@ -11,6 +11,7 @@
 #include "fixed_size_kernels.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/uncertainty/consistency.h"
 
 namespace hecal::estimation {
@@ -93,7 +94,7 @@ Refit LinearRefit(const std::vector<StationLinearization>& stations,
     const double log_det_N = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
     refit.log_likelihood = -0.5 * (log_det_sigma + log_det_N + quadratic - b.dot(refit.delta));
   } else {
-    refit.N_inverse = N.completeOrthogonalDecomposition().pseudoInverse();
+    refit.N_inverse = PseudoInverse12(N);
     refit.delta = refit.N_inverse * b;
     refit.log_likelihood = -std::numeric_limits<double>::infinity();
   }
@@ -230,8 +231,7 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
   if (dof != nullptr) {
     // Var(θ̂_g) = 2 (S⁻¹)_gg (REML's Fisher information is S / 2); a χ²(ν) estimate has
     // Var = 2 θ² / ν, so ν_g = θ_g² / (S⁻¹)_gg.
-    const Eigen::MatrixXd S_inverse =
-        Eigen::MatrixXd(S.topLeftCorner(G, G)).completeOrthogonalDecomposition().pseudoInverse();
+    const Eigen::MatrixXd S_inverse = PseudoInverse(S.topLeftCorner(G, G));
     for (int g = 0; g < G; ++g) {
       double value = 0.0;
       for (int k = 0; k < kNumNoiseComponents; ++k)
@@ -240,7 +240,7 @@ NoiseVariances VarianceStep(const std::vector<StationLinearization>& stations,
     }
   }
   GroupVector solution = GroupVector::Zero();
-  solution.head(G) = S.topLeftCorner(G, G).colPivHouseholderQr().solve(rhs.head(G));
+  solution.head(G) = ColPivQrSolve(S.topLeftCorner(G, G), rhs.head(G));
   NoiseVariances next = theta;
   for (int g = 0; g < G; ++g) {
     int first = -1;
@@ -390,15 +390,6 @@ NoiseVariances PosteriorMean(const std::vector<StationLinearization>& stations,
   return posterior;
 }
 
-double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
-  double change = 0.0;
-  for (int k = 0; k < kNumNoiseComponents; ++k) {
-    if (a[k] == b[k]) continue;
-    change = std::max(change, std::abs(a[k] - b[k]) / std::max(std::abs(a[k]), std::abs(b[k])));
-  }
-  return change;
-}
-
 // r_wᵀ C_w⁺ r_w over the eigen-directions of C_w with eigenvalue above kRankFloor, and their
 // count. Almost always C_w has full rank: then its Cholesky factor C_w = K Kᵀ gives the statistic
 // ‖K⁻¹ r_w‖² directly, and ‖K⁻¹‖²_F < 1 / kRankFloor proves every eigenvalue above the floor
@@ -429,6 +420,15 @@ Statistic WhitenedStatistic(const Matrix6d& C_white, const Vector6d& r_white) {
 }
 
 }  // namespace
+
+double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b) {
+  double change = 0.0;
+  for (int k = 0; k < kNumNoiseComponents; ++k) {
+    if (a[k] == b[k]) continue;
+    change = std::max(change, std::abs(a[k] - b[k]) / std::max(std::abs(a[k]), std::abs(b[k])));
+  }
+  return change;
+}
 
 bool StationTestOptions::IsValid(std::string* why) const {
   if (false_alarm > 0.0 && false_alarm < 1.0) return true;

@@ -11,6 +11,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/geometry/angle_units.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/geometry/skew.h"
 #include "hecal/handeye/observability.h"
 
@@ -49,7 +50,7 @@ Vector6 AlgebraicFit(const std::vector<Pose>& poses, const std::vector<int>& use
     A.block<3, 3>(3 * k, 3) = -Eigen::Matrix3d::Identity();
     b.segment<3>(3 * k) = -T.translation();
   }
-  return A.colPivHouseholderQr().solve(b);
+  return ColPivQrSolve(A, b);
 }
 
 struct Fit {

@@ -154,10 +154,11 @@ TEST(StationCovarianceOf, EqualsTheCombinedComponents) {
   std::mt19937_64 rng(41);
   std::normal_distribution<double> normal;
   const auto random_pose = [&](double angle) {
-    const Eigen::Vector3d axis =
-        Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
-    return MakePose(Eigen::AngleAxisd(angle, axis).toRotationMatrix(),
-                    Eigen::Vector3d(normal(rng), normal(rng), normal(rng)));
+    // Drawn last to first: the order these tests' data were generated in.
+    const double az = normal(rng), ay = normal(rng), ax = normal(rng);
+    const Eigen::Vector3d axis = Eigen::Vector3d(ax, ay, az).normalized();
+    const double tz = normal(rng), ty = normal(rng), tx = normal(rng);
+    return MakePose(Eigen::AngleAxisd(angle, axis).toRotationMatrix(), Eigen::Vector3d(tx, ty, tz));
   };
   for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
     for (double angle : {1e-9, 0.7, 3.14159}) {

@@ -106,9 +106,9 @@ StationSelection SelectStations(const handeye::Problem& problem,
     if (options.fix) ml_options.fixed = handeye::ResolveFix(set, *options.fix);
     // Later rounds change the set by a few stations: the last fit is in the right basin.
     if (round == 0) {
-      starts = options.fix ? std::vector<handeye::Solution>{handeye::FixedStart(
-                                 set, *ml_options.fixed)}
-                           : StartingSolutions(set);
+      starts = options.fix
+                   ? std::vector<handeye::Solution>{handeye::FixedStart(set, *ml_options.fixed)}
+                   : StartingSolutions(set);
     }
     const MlResult fit = RefineMl(set, starts, ml_options);
     starts = {{fit.X, fit.Z}};
@@ -139,6 +139,13 @@ StationSelection SelectStations(const handeye::Problem& problem,
     candidate = next;
   }
   return selection;
+}
+
+std::vector<int> TrueIndices(const std::vector<bool>& flags) {
+  std::vector<int> indices;
+  for (size_t i = 0; i < flags.size(); ++i)
+    if (flags[i]) indices.push_back(static_cast<int>(i));
+  return indices;
 }
 
 }  // namespace hecal::estimation

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "geometry/geometry_test_util.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "testing/random_poses.h"
@@ -19,16 +20,9 @@
 namespace hecal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr int kSamples = 3000;
+constexpr int kDualQuaternionSamples = 3000;
 using Vector8d = Eigen::Matrix<double, 8, 1>;
 
-double PoseError(const Pose& A, const Pose& B) {
-  return (A.matrix() - B.matrix()).cwiseAbs().maxCoeff();
-}
-double MaxAbs(const Vector8d& v) {
-  return v.cwiseAbs().maxCoeff();
-}
 // Distance between the 8-vectors up to the overall sign.
 double SignFreeDistance(const DualQuaternion& a, const DualQuaternion& b) {
   return std::min(MaxAbs(a.ToVector() - b.ToVector()), MaxAbs(a.ToVector() + b.ToVector()));
@@ -36,15 +30,16 @@ double SignFreeDistance(const DualQuaternion& a, const DualQuaternion& b) {
 
 Eigen::Quaterniond RandomQuaternion(std::mt19937_64& rng) {  // not unit
   std::normal_distribution<double> normal;
-  return Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng));
+  // Drawn last to first: the order these tests' data were generated in.
+  const double z = normal(rng);
+  const double y = normal(rng);
+  const double x = normal(rng);
+  const double w = normal(rng);
+  return Eigen::Quaterniond(w, x, y, z);
 }
 
 Eigen::Quaterniond Pure(const Eigen::Vector3d& v) {
   return {0.0, v.x(), v.y(), v.z()};
-}
-
-Eigen::Vector4d Wxyz(const Eigen::Quaterniond& q) {
-  return {q.w(), q.x(), q.y(), q.z()};
 }
 
 // Pure dual quaternion ½ (ω + ε v): ω in the real vector part, v in the dual vector part.
@@ -56,7 +51,7 @@ DualQuaternion HalfTwist(const Vector6d& xi) {
 // tiny angles, near π, gimbal-lock orientations.
 std::vector<Pose> TestPoses(std::mt19937_64& rng) {
   std::vector<Pose> poses;
-  for (int i = 0; i < kSamples; ++i) poses.push_back(testing::RandomPose(rng, 2.0));
+  for (int i = 0; i < kDualQuaternionSamples; ++i) poses.push_back(testing::RandomPose(rng, 2.0));
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
     poses.push_back(MakePose(so3::Exp(omega), testing::RandomGaussianVector(rng)));
   }
@@ -73,7 +68,7 @@ std::vector<Pose> TestPoses(std::mt19937_64& rng) {
                              Eigen::Vector3d(0.3, 0.2, -0.1)));
   }
   const Eigen::Matrix3d pitch90 =
-      Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   poses.push_back(MakePose(pitch90, Eigen::Vector3d(0.5, 0.5, 0.5)));
   return poses;
 }
@@ -94,7 +89,7 @@ TEST(DualQuaternion, ConstructorsAndConstants) {
 
 TEST(DualQuaternion, RotationTranslationConstructorIsHalfTQ) {
   std::mt19937_64 rng(501);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kDualQuaternionSamples; ++i) {
     const Eigen::Quaterniond q = RandomQuaternion(rng);  // normalised by the constructor
     const Eigen::Vector3d t = testing::RandomGaussianVector(rng);
     const DualQuaternion dq(q, t);
@@ -130,7 +125,7 @@ TEST(DualQuaternion, ProductIsPoseComposition) {
   std::mt19937_64 rng(503);
   const std::vector<Pose> poses = TestPoses(rng);
   std::uniform_int_distribution<size_t> pick(0, poses.size() - 1);
-  for (int i = 0; i < 2 * kSamples; ++i) {
+  for (int i = 0; i < 2 * kDualQuaternionSamples; ++i) {
     const Pose& A = poses[pick(rng)];
     const Pose& B = poses[pick(rng)];
     const Pose AB = A * B;
@@ -149,9 +144,9 @@ TEST(DualQuaternion, NegativeRealPartStillGivesThePose) {
   std::mt19937_64 rng(504);
   for (int i = 0; i < 200; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const Pose A = MakePose(Eigen::AngleAxisd(0.9 * kPi, n).toRotationMatrix(),
+    const Pose A = MakePose(Eigen::AngleAxisd(0.9 * std::numbers::pi, n).toRotationMatrix(),
                             testing::RandomGaussianVector(rng));
-    const Pose B = MakePose(Eigen::AngleAxisd(0.9 * kPi, n).toRotationMatrix(),
+    const Pose B = MakePose(Eigen::AngleAxisd(0.9 * std::numbers::pi, n).toRotationMatrix(),
                             testing::RandomGaussianVector(rng));
     const DualQuaternion product = DualQuaternion::FromPose(A) * DualQuaternion::FromPose(B);
     ASSERT_LT(product.real().w(), 0.0);
@@ -195,8 +190,9 @@ TEST(DualQuaternion, ConjugateAndInverse) {
     EXPECT_LT(PoseError(conj.ToPose(), T.inverse()), 4e-15 * scale);
   }
   // Not unit: q̌ q̌⁻¹ = q̌⁻¹ q̌ = 1 for any q̌ with non-zero real part.
-  for (int i = 0; i < kSamples; ++i) {
-    const DualQuaternion dq(RandomQuaternion(rng), RandomQuaternion(rng));
+  for (int i = 0; i < kDualQuaternionSamples; ++i) {
+    const Eigen::Quaterniond dual_part = RandomQuaternion(rng);  // drawn first
+    const DualQuaternion dq(RandomQuaternion(rng), dual_part);
     const DualQuaternion inv = dq.Inverse();
     const double scale = (1 + dq.dual().norm() / dq.real().norm());
     const double conditioning = scale * scale;
@@ -207,9 +203,10 @@ TEST(DualQuaternion, ConjugateAndInverse) {
 
 TEST(DualQuaternion, NormAndNormalize) {
   std::mt19937_64 rng(506);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kDualQuaternionSamples; ++i) {
     // General q̌: |q̌| = |q| + ε (q·q')/|q|, from the 4-vectors.
-    const DualQuaternion dq(RandomQuaternion(rng), RandomQuaternion(rng));
+    const Eigen::Quaterniond dual_part = RandomQuaternion(rng);
+    const DualQuaternion dq(RandomQuaternion(rng), dual_part);
     const Eigen::Vector4d q = Wxyz(dq.real()), qd = Wxyz(dq.dual());
     const DualNumber norm = dq.Norm();
     EXPECT_NEAR(norm.real, q.norm(), 1e-15 * q.norm());
@@ -266,7 +263,8 @@ TEST(DualQuaternion, LogIsHalfTheSe3Twist) {
 TEST(DualQuaternion, ExpMatchesSe3Exp) {
   // Exp(½ (ω + ε v)) = DQ(se3::Exp(ω, v)) up to sign, for any angle (Exp is total).
   std::mt19937_64 rng(508);
-  std::vector<Vector6d> twists = testing::RandomTwists(rng, kSamples, 3.0 * kPi);
+  std::vector<Vector6d> twists =
+      testing::RandomTwists(rng, kDualQuaternionSamples, 3.0 * std::numbers::pi);
   twists.push_back(testing::Twist(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3)));
   twists.push_back(Vector6d::Zero());
   for (const Vector6d& xi : twists) {
@@ -291,19 +289,20 @@ TEST(DualQuaternion, ExpLogRoundTrips) {
     const DualQuaternion root = (dq.Log() * 0.5).Exp();
     EXPECT_LT(SignFreeDistance(root * root, dq), 1e-14 * scale);
   }
-  std::uniform_real_distribution<double> angle(0.0, kPi);
-  for (int i = 0; i < kSamples; ++i) {
-    const Vector6d xi = testing::Twist(testing::RandomRotationVector(rng, angle(rng)),
-                                       testing::RandomGaussianVector(rng));
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  for (int i = 0; i < kDualQuaternionSamples; ++i) {
+    const Eigen::Vector3d v = testing::RandomGaussianVector(rng);  // drawn first
+    const Vector6d xi = testing::Twist(testing::RandomRotationVector(rng, angle(rng)), v);
     const DualQuaternion p = HalfTwist(xi);
     const double scale = 1 + xi.tail<3>().norm();
     EXPECT_LT(MaxAbs(p.Exp().Log().ToVector() - p.ToVector()), 1e-14 * scale) << xi.transpose();
   }
   // Tiny and near-π angles, around the series switches (σ at 1e-4, κ at 1e-2 half-angles).
-  for (double theta : {1e-12, 1e-9, 1.99e-4, 2.01e-4, 1.99e-2, 2.01e-2, kPi - 1e-6, kPi - 1e-9}) {
+  for (double theta : {1e-12, 1e-9, 1.99e-4, 2.01e-4, 1.99e-2, 2.01e-2, std::numbers::pi - 1e-6,
+                       std::numbers::pi - 1e-9}) {
     for (int i = 0; i < 20; ++i) {
-      const Vector6d xi = testing::Twist(testing::RandomRotationVector(rng, theta),
-                                         testing::RandomGaussianVector(rng));
+      const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
+      const Vector6d xi = testing::Twist(testing::RandomRotationVector(rng, theta), v);
       const DualQuaternion p = HalfTwist(xi);
       EXPECT_LT(MaxAbs(p.Exp().Log().ToVector() - p.ToVector()), 1e-14) << theta;
       EXPECT_LT(PoseError(p.Exp().ToPose(), se3::Exp(xi)), 1e-14) << theta;
@@ -391,8 +390,8 @@ TEST(DualQuaternion, RotationTranslationAccessors) {
 
 TEST(DualQuaternion, ScrewConversions) {
   std::mt19937_64 rng(514);
-  std::uniform_real_distribution<double> angle(0.0, kPi);
-  for (int i = 0; i < kSamples; ++i) {
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  for (int i = 0; i < kDualQuaternionSamples; ++i) {
     // Daniilidis: q̌ = (cos(θ̌/2), sin(θ̌/2) ľ), θ̌ = θ + εd, ľ = l + εm, expanded here.
     Screw screw;
     screw.l = testing::RandomUnitVector(rng);

@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/geometry_test_util.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/euler.h"
 #include "hecal/geometry/rotation.h"
@@ -32,8 +33,6 @@
 
 namespace hecal {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Agreement with scipy away from gimbal lock, and with the exact angles at the lock.
 constexpr double kAngleTolerance = 1e-9;
@@ -141,25 +140,9 @@ const std::map<std::pair<std::string, std::string>, LockRow>& LockRows() {
   return *rows;
 }
 
-double AngleDifference(double a, double b) {
-  return std::abs(std::remainder(a - b, 2.0 * kPi));
-}
-
 double MaxAngleDifference(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::max(
       {AngleDifference(a(0), b(0)), std::abs(a(1) - b(1)), AngleDifference(a(2), b(2))});
-}
-
-std::vector<std::string> AllSequences() {
-  std::vector<std::string> sequences;
-  for (const char* lower :
-       {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz"}) {
-    sequences.emplace_back(lower);
-    std::string upper(lower);
-    for (char& c : upper) c = static_cast<char>(c - 'a' + 'A');
-    sequences.push_back(upper);
-  }
-  return sequences;
 }
 
 struct EulerTarget {
@@ -254,14 +237,15 @@ TEST(ScipyReference, EulerAnglesMatchScipy) {
 
       // Read back through hecal, our angles reproduce the input rotation to rounding, and so do
       // the reference angles — except that (a) inside the lock band but off the lock by δ
-      // (tests/data/scipy/README.md: band rows) the a3 = 0 convention costs O(δ |a3|) ≤ 1e-8 here, and (b) near the
-      // lock scipy's arccos middle angle is only good to ~1e-16 / (distance from the lock),
-      // e.g. 2e-10 at 1e-6 rad from it, which the reconstruction of its angles inherits.
-      const double distance =
-          sequence->proper() ? std::min(ours(1), kPi - ours(1)) : kPi / 2 - std::abs(ours(1));
+      // (tests/data/scipy/README.md: band rows) the a3 = 0 convention costs O(δ |a3|) ≤ 1e-8 here,
+      // and (b) near the lock scipy's arccos middle angle is only good to ~1e-16 / (distance from
+      // the lock), e.g. 2e-10 at 1e-6 rad from it, which the reconstruction of its angles inherits.
+      const double distance = sequence->proper() ? std::min(ours(1), std::numbers::pi - ours(1))
+                                                 : std::numbers::pi / 2 - std::abs(ours(1));
       const bool in_band = distance < kGimbalLockTolerance;
-      const bool at_lock = sequence->proper() ? reference(1) == 0.0 || reference(1) == kPi
-                                              : std::abs(reference(1)) == kPi / 2;
+      const bool at_lock = sequence->proper()
+                               ? reference(1) == 0.0 || reference(1) == std::numbers::pi
+                               : std::abs(reference(1)) == std::numbers::pi / 2;
       const double band_cost = in_band && !at_lock ? 1e-8 : 0.0;
       const double ours_back = (MatrixFromEuler(ours, *sequence) - R).cwiseAbs().maxCoeff();
       EXPECT_LT(ours_back, kReconstructionTolerance + band_cost) << "id " << input.ids[r];
@@ -329,7 +313,7 @@ TEST(ScipyReference, MatrixQuaternionAndRotationVectorMatchScipy) {
          {RotationVectorFromQuaternion(input.quaternions[r]), so3::Log(R)}) {
       const double direct = (w - w_expected).norm();
       const double flipped = (w + w_expected).norm();
-      const bool at_pi = w_expected.norm() > kPi - 1e-9;
+      const bool at_pi = w_expected.norm() > std::numbers::pi - 1e-9;
       EXPECT_LT(at_pi ? std::min(direct, flipped) : direct, 1e-12)
           << w.transpose() << " vs " << w_expected.transpose();
     }

@@ -18,12 +18,11 @@
 #include <string>
 #include <vector>
 
+#include "geometry/geometry_test_util.h"
 #include "testing/random_poses.h"
 
 namespace hecal {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // --- independent reference ---------------------------------------------------------------------
 
@@ -84,25 +83,6 @@ Eigen::Matrix3d RefEulerProduct(const std::string& seq, const Eigen::Vector3d& a
   return intrinsic ? Eigen::Matrix3d(E1 * E2 * E3) : Eigen::Matrix3d(E3 * E2 * E1);
 }
 
-std::vector<std::string> AllSequences() {
-  std::vector<std::string> sequences;
-  for (const bool upper : {false, true}) {
-    for (const char a : {'x', 'y', 'z'}) {
-      for (const char b : {'x', 'y', 'z'}) {
-        for (const char c : {'x', 'y', 'z'}) {
-          if (a == b || b == c) continue;
-          std::string s{a, b, c};
-          if (upper) {
-            for (char& ch : s) ch = static_cast<char>(std::toupper(ch));
-          }
-          sequences.push_back(s);
-        }
-      }
-    }
-  }
-  return sequences;
-}
-
 bool IsProper(const std::string& seq) {
   return std::tolower(static_cast<unsigned char>(seq[0])) ==
          std::tolower(static_cast<unsigned char>(seq[2]));
@@ -112,16 +92,6 @@ EulerSequence Seq(const std::string& text) {
   const std::optional<EulerSequence> parsed = EulerSequence::Parse(text);
   EXPECT_TRUE(parsed.has_value()) << text;
   return parsed.value_or(*EulerSequence::Parse("xyz"));
-}
-
-// |a − b| modulo 2π, in [0, π].
-double AngleDifference(double a, double b) {
-  const double d = std::remainder(a - b, 2.0 * kPi);
-  return std::abs(d);
-}
-
-double MaxAbs(const Eigen::Matrix3d& M) {
-  return M.cwiseAbs().maxCoeff();
 }
 
 // The a1 that carries the rotation at gimbal lock when a3 is set to 0, derived in the test from
@@ -139,16 +109,16 @@ double LockedFirstAngle(const std::string& seq, const Eigen::Vector3d& a) {
 
 // Asserts the documented output ranges.
 void ExpectInRange(const std::string& seq, const Eigen::Vector3d& a) {
-  EXPECT_GT(a(0), -kPi) << seq;
-  EXPECT_LE(a(0), kPi) << seq;
-  EXPECT_GT(a(2), -kPi) << seq;
-  EXPECT_LE(a(2), kPi) << seq;
+  EXPECT_GT(a(0), -std::numbers::pi) << seq;
+  EXPECT_LE(a(0), std::numbers::pi) << seq;
+  EXPECT_GT(a(2), -std::numbers::pi) << seq;
+  EXPECT_LE(a(2), std::numbers::pi) << seq;
   if (IsProper(seq)) {
     EXPECT_GE(a(1), 0.0) << seq;
-    EXPECT_LE(a(1), kPi) << seq;
+    EXPECT_LE(a(1), std::numbers::pi) << seq;
   } else {
-    EXPECT_GE(a(1), -kPi / 2) << seq;
-    EXPECT_LE(a(1), kPi / 2) << seq;
+    EXPECT_GE(a(1), -std::numbers::pi / 2) << seq;
+    EXPECT_LE(a(1), std::numbers::pi / 2) << seq;
   }
 }
 
@@ -157,10 +127,12 @@ void ExpectInRange(const std::string& seq, const Eigen::Vector3d& a) {
 TEST(EulerReference, GeometricAndProductDefinitionsAgree) {
   // Guards the test's own two definitions against each other (moving vs fixed axes).
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
   for (const std::string& seq : AllSequences()) {
     for (int n = 0; n < 50; ++n) {
-      const Eigen::Vector3d a(angle(rng), angle(rng), angle(rng));
+      // Drawn last to first: the order these tests' data were generated in.
+      const double a3 = angle(rng), a2 = angle(rng), a1 = angle(rng);
+      const Eigen::Vector3d a(a1, a2, a3);
       EXPECT_LT(MaxAbs(RefEulerGeometric(seq, a) - RefEulerProduct(seq, a)), 1e-14) << seq;
     }
   }
@@ -174,7 +146,7 @@ TEST(Euler, ElementaryRotationsAreRightHanded) {
   EXPECT_LT(MaxAbs(ElementaryRotation(1, a) - RefRy(a)), 1e-16);
   EXPECT_LT(MaxAbs(ElementaryRotation(2, a) - RefRz(a)), 1e-16);
   // A quarter turn about z takes x to y, about x takes y to z, about y takes z to x.
-  const double h = kPi / 2;
+  const double h = std::numbers::pi / 2;
   EXPECT_LT((ElementaryRotation(2, h) * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitY()).norm(),
             1e-15);
   EXPECT_LT((ElementaryRotation(0, h) * Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitZ()).norm(),
@@ -189,7 +161,8 @@ TEST(Euler, MatrixFromEulerMatchesIndependentDefinition) {
   for (const std::string& seq : AllSequences()) {
     const EulerSequence sequence = Seq(seq);
     for (int n = 0; n < 200; ++n) {
-      const Eigen::Vector3d a(angle(rng), angle(rng), angle(rng));
+      const double a3 = angle(rng), a2 = angle(rng), a1 = angle(rng);
+      const Eigen::Vector3d a(a1, a2, a3);
       EXPECT_LT(MaxAbs(MatrixFromEuler(a, sequence) - RefEulerGeometric(seq, a)), 1e-14)
           << seq << " " << a.transpose();
     }
@@ -209,13 +182,14 @@ TEST(Euler, KnownClosedForms) {
   EXPECT_LT(MaxAbs(MatrixFromEuler({g, b, al}, Seq("xyz")) - R), 1e-15);
   EXPECT_LT(MaxAbs(MatrixFromEuler({al, b, g}, Seq("ZYX")) - R), 1e-15);
   // Extrinsic xyz with a quarter turn about x only: y goes to z.
-  EXPECT_LT((MatrixFromEuler({kPi / 2, 0, 0}, Seq("xyz")) * Eigen::Vector3d::UnitY() -
+  EXPECT_LT((MatrixFromEuler({std::numbers::pi / 2, 0, 0}, Seq("xyz")) * Eigen::Vector3d::UnitY() -
              Eigen::Vector3d::UnitZ())
                 .norm(),
             1e-15);
   // Intrinsic ZYX (KUKA A, B, C) = Rz(A) Ry(B) Rx(C): with A = B = 90° the tool x axis points
   // down: Ry(90°) takes x to −z, which Rz leaves alone.
-  const Eigen::Matrix3d K = MatrixFromEuler({kPi / 2, kPi / 2, 0}, Seq("ZYX"));
+  const Eigen::Matrix3d K =
+      MatrixFromEuler({std::numbers::pi / 2, std::numbers::pi / 2, 0}, Seq("ZYX"));
   EXPECT_LT((K * Eigen::Vector3d::UnitX() - Eigen::Vector3d(0, 0, -1)).norm(), 1e-15);
 }
 
@@ -225,16 +199,18 @@ TEST(Euler, RecoversGeneratingAnglesAwayFromLock) {
   // Uniqueness: inside the documented ranges and away from the lock the angles are unique, so
   // EulerFromMatrix must return exactly the angles the rotation was built from.
   std::mt19937_64 rng(23);
-  std::uniform_real_distribution<double> outer(-kPi, kPi);
+  std::uniform_real_distribution<double> outer(-std::numbers::pi, std::numbers::pi);
   for (const std::string& seq : AllSequences()) {
     const EulerSequence sequence = Seq(seq);
-    const double lo = IsProper(seq) ? 0.0 : -kPi / 2;
-    const double hi = IsProper(seq) ? kPi : kPi / 2;
+    const double lo = IsProper(seq) ? 0.0 : -std::numbers::pi / 2;
+    const double hi = IsProper(seq) ? std::numbers::pi : std::numbers::pi / 2;
     std::uniform_real_distribution<double> middle(lo, hi);
     double worst = 0.0;
     for (int n = 0; n < 2000; ++n) {
-      const Eigen::Vector3d a(outer(rng), middle(rng), outer(rng));
-      const double distance = IsProper(seq) ? std::min(a(1), kPi - a(1)) : kPi / 2 - std::abs(a(1));
+      const double a3 = outer(rng), a2 = middle(rng), a1 = outer(rng);
+      const Eigen::Vector3d a(a1, a2, a3);
+      const double distance = IsProper(seq) ? std::min(a(1), std::numbers::pi - a(1))
+                                            : std::numbers::pi / 2 - std::abs(a(1));
       if (distance < 1e-4) continue;  // angle error grows as 1e-16 / distance
       const Eigen::Vector3d b = EulerFromMatrix(RefEulerProduct(seq, a), sequence);
       ExpectInRange(seq, b);
@@ -274,8 +250,8 @@ TEST(Euler, RoundTripOnEdgeCaseRotations) {
       ExpectInRange(seq, a);
       // Tiny rotations fall inside the lock band of the proper sequences (middle angle ≈ 0),
       // where a3 = 0 costs O(middle angle · |a3|) ≤ 1e-7 · π; elsewhere the round trip is exact.
-      const bool in_band =
-          IsProper(seq) && (a(1) < kGimbalLockTolerance || a(1) > kPi - kGimbalLockTolerance);
+      const bool in_band = IsProper(seq) && (a(1) < kGimbalLockTolerance ||
+                                             a(1) > std::numbers::pi - kGimbalLockTolerance);
       EXPECT_LT(MaxAbs(RefEulerProduct(seq, a) - R), in_band ? 4e-7 : 1e-14)
           << seq << " " << omega.transpose();
     }
@@ -292,13 +268,13 @@ TEST(Euler, IdentityAndQuarterTurnsGiveExactAngles) {
   // Exactly representable: π about x as diag(1, −1, −1) in extrinsic xyz is (π, 0, 0), never −π.
   const Eigen::Matrix3d Rx_pi = Eigen::Vector3d(1, -1, -1).asDiagonal();
   const Eigen::Vector3d a = EulerFromMatrix(Rx_pi, Seq("xyz"));
-  EXPECT_EQ(a(0), kPi);
+  EXPECT_EQ(a(0), std::numbers::pi);
   EXPECT_EQ(a(1), 0.0);
   EXPECT_EQ(a(2), 0.0);
   EXPECT_FALSE(std::signbit(a(1))) << "no negative zero";
   const Eigen::Vector3d b = EulerFromMatrix(Rx_pi, Seq("ZYX"));
   EXPECT_EQ(b(0), 0.0);
-  EXPECT_EQ(b(2), kPi);
+  EXPECT_EQ(b(2), std::numbers::pi);
 }
 
 TEST(Euler, AnglesNearPlusMinusPiWrapIntoRange) {
@@ -306,8 +282,11 @@ TEST(Euler, AnglesNearPlusMinusPiWrapIntoRange) {
   for (const std::string& seq : AllSequences()) {
     const EulerSequence sequence = Seq(seq);
     const double mid = IsProper(seq) ? 1.1 : 0.4;
-    for (const double a1 : {kPi, -kPi, kPi - 1e-12, -kPi + 1e-12, kPi - 1e-9, -kPi + 1e-9}) {
-      for (const double a3 : {kPi, -kPi, kPi - 1e-10, -kPi + 1e-10, 0.5}) {
+    for (const double a1 :
+         {std::numbers::pi, -std::numbers::pi, std::numbers::pi - 1e-12, -std::numbers::pi + 1e-12,
+          std::numbers::pi - 1e-9, -std::numbers::pi + 1e-9}) {
+      for (const double a3 : {std::numbers::pi, -std::numbers::pi, std::numbers::pi - 1e-10,
+                              -std::numbers::pi + 1e-10, 0.5}) {
         const Eigen::Vector3d a(a1, mid, a3);
         const Eigen::Matrix3d R = RefEulerProduct(seq, a);
         const Eigen::Vector3d b = EulerFromMatrix(R, sequence);
@@ -323,14 +302,16 @@ TEST(Euler, AnglesNearPlusMinusPiWrapIntoRange) {
 
 TEST(Euler, GimbalLockExactlyAtTheLock) {
   std::mt19937_64 rng(41);
-  std::uniform_real_distribution<double> outer(-kPi, kPi);
+  std::uniform_real_distribution<double> outer(-std::numbers::pi, std::numbers::pi);
   for (const std::string& seq : AllSequences()) {
     const EulerSequence sequence = Seq(seq);
     const std::vector<double> locks =
-        IsProper(seq) ? std::vector<double>{0.0, kPi} : std::vector<double>{kPi / 2, -kPi / 2};
+        IsProper(seq) ? std::vector<double>{0.0, std::numbers::pi}
+                      : std::vector<double>{std::numbers::pi / 2, -std::numbers::pi / 2};
     for (const double lock : locks) {
       for (int n = 0; n < 200; ++n) {
-        const Eigen::Vector3d a(outer(rng), lock, outer(rng));
+        const double a3 = outer(rng), a1 = outer(rng);
+        const Eigen::Vector3d a(a1, lock, a3);
         const Eigen::Matrix3d R = RefEulerProduct(seq, a);
         const Eigen::Vector3d b = EulerFromMatrix(R, sequence);
         ExpectInRange(seq, b);
@@ -348,7 +329,7 @@ TEST(Euler, GimbalLockIsDeterministicAcrossEquivalentInputs) {
   // Many (a1, a3) pairs give the same locked rotation; all must map to one answer.
   for (const std::string& seq : AllSequences()) {
     const EulerSequence sequence = Seq(seq);
-    const double lock = IsProper(seq) ? kPi : -kPi / 2;
+    const double lock = IsProper(seq) ? std::numbers::pi : -std::numbers::pi / 2;
     const Eigen::Vector3d first = EulerFromMatrix(RefEulerProduct(seq, {0.9, lock, 0.0}), sequence);
     for (const double shift : {-2.0, -0.5, 0.25, 1.0, 3.0}) {
       // The same combined angle 0.9: a1 + k·a3 = 0.9 with a3 = shift (k = ±1 from the identity).
@@ -363,16 +344,18 @@ TEST(Euler, CloseToTheLockOutsideTheBandIsExact) {
   // 1e-6 and 1e-5 from the lock: no lock handling, all three angles are recovered, and the
   // reconstruction is exact because a3 is extracted after removing a1.
   std::mt19937_64 rng(43);
-  std::uniform_real_distribution<double> outer(-kPi, kPi);
+  std::uniform_real_distribution<double> outer(-std::numbers::pi, std::numbers::pi);
   for (const std::string& seq : AllSequences()) {
     const EulerSequence sequence = Seq(seq);
     for (const double delta : {1e-6, 1e-5, 1e-7 * 1.5}) {
       const std::vector<double> middles =
-          IsProper(seq) ? std::vector<double>{delta, kPi - delta}
-                        : std::vector<double>{kPi / 2 - delta, -kPi / 2 + delta};
+          IsProper(seq)
+              ? std::vector<double>{delta, std::numbers::pi - delta}
+              : std::vector<double>{std::numbers::pi / 2 - delta, -std::numbers::pi / 2 + delta};
       for (const double mid : middles) {
         for (int n = 0; n < 100; ++n) {
-          const Eigen::Vector3d a(outer(rng), mid, outer(rng));
+          const double a3 = outer(rng), a1 = outer(rng);
+          const Eigen::Vector3d a(a1, mid, a3);
           const Eigen::Matrix3d R = RefEulerProduct(seq, a);
           const Eigen::Vector3d b = EulerFromMatrix(R, sequence);
           ExpectInRange(seq, b);
@@ -392,13 +375,14 @@ TEST(Euler, InsideTheLockBand) {
   // rotation with a3 = 0 there is reproduced exactly; in general only to O(δ · |a3|), which is
   // the cost of the convention (no (a1, a2, 0) reproduces such a rotation better).
   std::mt19937_64 rng(47);
-  std::uniform_real_distribution<double> outer(-kPi, kPi);
+  std::uniform_real_distribution<double> outer(-std::numbers::pi, std::numbers::pi);
   const double delta = 1e-8;
   for (const std::string& seq : AllSequences()) {
     const EulerSequence sequence = Seq(seq);
     const std::vector<double> middles =
-        IsProper(seq) ? std::vector<double>{delta, kPi - delta}
-                      : std::vector<double>{kPi / 2 - delta, -kPi / 2 + delta};
+        IsProper(seq)
+            ? std::vector<double>{delta, std::numbers::pi - delta}
+            : std::vector<double>{std::numbers::pi / 2 - delta, -std::numbers::pi / 2 + delta};
     for (const double mid : middles) {
       for (int n = 0; n < 100; ++n) {
         const Eigen::Vector3d on_manifold(outer(rng), mid, 0.0);
@@ -408,7 +392,8 @@ TEST(Euler, InsideTheLockBand) {
         EXPECT_LT((b0 - on_manifold).cwiseAbs().maxCoeff(), 1e-12) << seq;
         EXPECT_LT(MaxAbs(RefEulerProduct(seq, b0) - R0), 1e-12) << seq;
 
-        const Eigen::Vector3d a(outer(rng), mid, outer(rng));
+        const double a3 = outer(rng), a1 = outer(rng);
+        const Eigen::Vector3d a(a1, mid, a3);
         const Eigen::Matrix3d R = RefEulerProduct(seq, a);
         const Eigen::Vector3d b = EulerFromMatrix(R, sequence);
         ExpectInRange(seq, b);
@@ -458,7 +443,7 @@ TEST(EulerSequence, ParseRejectsInvalidText) {
 
 TEST(EulerSequence, ReversedIsTheSameRotation) {
   std::mt19937_64 rng(53);
-  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
   EXPECT_EQ(Seq("xyz").Reversed(), Seq("ZYX"));
   EXPECT_EQ(Seq("ZYX").Reversed(), Seq("xyz"));
   EXPECT_EQ(Seq("zxz").Reversed(), Seq("ZXZ"));
@@ -468,14 +453,16 @@ TEST(EulerSequence, ReversedIsTheSameRotation) {
     EXPECT_EQ(s.Reversed().Reversed(), s);
     EXPECT_NE(s.Reversed().intrinsic(), s.intrinsic());
     for (int n = 0; n < 100; ++n) {
-      const Eigen::Vector3d a(angle(rng), angle(rng), angle(rng));
+      const double a3 = angle(rng), a2 = angle(rng), a1 = angle(rng);
+      const Eigen::Vector3d a(a1, a2, a3);
       const Eigen::Vector3d reversed(a(2), a(1), a(0));
       EXPECT_LT(MaxAbs(MatrixFromEuler(a, s) - MatrixFromEuler(reversed, s.Reversed())), 1e-15);
       // Away from the lock the decomposition is unique, so both read the same three angles.
       const Eigen::Matrix3d R = RefEulerProduct(seq, a);
       const Eigen::Vector3d b = EulerFromMatrix(R, s);
       const Eigen::Vector3d c = EulerFromMatrix(R, s.Reversed());
-      const double distance = IsProper(seq) ? std::min(b(1), kPi - b(1)) : kPi / 2 - std::abs(b(1));
+      const double distance = IsProper(seq) ? std::min(b(1), std::numbers::pi - b(1))
+                                            : std::numbers::pi / 2 - std::abs(b(1));
       if (distance < 1e-4) continue;
       for (int i = 0; i < 3; ++i) EXPECT_LT(AngleDifference(b(i), c(2 - i)), 1e-11) << seq;
     }
@@ -501,8 +488,9 @@ TEST(Euler, ContourPaperZxzForm) {
   // M Mᵀ = Rz(φ) diag(L, L cos²θ) Rz(φ)⁻¹ with L = s²; eigenvector of the larger eigenvalue
   // (cos φ, sin φ), cos θ = sqrt(λ2/λ1). Check hecal's ZXZ against these relations.
   std::mt19937_64 rng(59);
-  std::uniform_real_distribution<double> outer(-kPi, kPi);
-  std::uniform_real_distribution<double> tilt(0.05, kPi / 2 - 0.05);  // the paper's θ ∈ (0, π/2)
+  std::uniform_real_distribution<double> outer(-std::numbers::pi, std::numbers::pi);
+  std::uniform_real_distribution<double> tilt(
+      0.05, std::numbers::pi / 2 - 0.05);  // the paper's θ ∈ (0, π/2)
   const EulerSequence ZXZ = Seq("ZXZ");
   for (int n = 0; n < 500; ++n) {
     const double phi = outer(rng), theta = tilt(rng), psi = outer(rng);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include "geometry/geometry_test_util.h"
 #include "hecal/geometry/dual_quaternion.h"
 #include "hecal/geometry/screw.h"
 #include "hecal/geometry/se3.h"
@@ -15,10 +16,6 @@
 
 namespace hecal {
 namespace {
-
-double MaxAbs(const Eigen::MatrixXd& M) {
-  return M.cwiseAbs().maxCoeff();
-}
 
 struct So3Group {
   using Element = Eigen::Matrix3d;

@@ -83,7 +83,9 @@ TEST(NearestRotation, FormsAgreeOnPerturbedRotations) {
   std::mt19937_64 rng(7);
   for (const double sigma : {1e-9, 1e-6, 1e-3, 0.1, 0.3}) {
     for (int n = 0; n < 500; ++n) {
-      const Eigen::Matrix3d M = testing::RandomRotation(rng) + RandomGaussianMatrix(rng, sigma);
+      // Drawn right to left: the order these tests' data were generated in.
+      const Eigen::Matrix3d noise = RandomGaussianMatrix(rng, sigma);
+      const Eigen::Matrix3d M = testing::RandomRotation(rng) + noise;
       ExpectBothNearest(M, 1e-10, "perturbed rotation");
     }
   }
@@ -142,10 +144,9 @@ TEST(NearestRotation, IsNoFartherThanOtherRotations) {
   std::mt19937_64 rng(17);
   for (int n = 0; n < 200; ++n) {
     const double sigma = n % 2 == 0 ? 0.2 : 1.0;
+    const Eigen::Matrix3d noise = RandomGaussianMatrix(rng, sigma);  // before the rotation
     const Eigen::Matrix3d M =
-        n % 2 == 0
-            ? Eigen::Matrix3d(testing::RandomRotation(rng) + RandomGaussianMatrix(rng, sigma))
-            : RandomGaussianMatrix(rng, sigma);
+        n % 2 == 0 ? Eigen::Matrix3d(testing::RandomRotation(rng) + noise) : noise;
     if (Conditioning(M) < 1e-2) continue;
     for (const Eigen::Matrix3d& best : {NearestRotationSvd(M), NearestRotationQuaternion(M)}) {
       const double d_best = (M - best).norm();
@@ -180,12 +181,14 @@ TEST(NearestRotation, QuaternionFormMinimisesTheSeedObjective) {
     return sum;
   };
   for (int n = 0; n < 200; ++n) {
-    const Eigen::Matrix3d M = testing::RandomRotation(rng) + RandomGaussianMatrix(rng, 0.3);
+    const Eigen::Matrix3d noise = RandomGaussianMatrix(rng, 0.3);  // before the rotation
+    const Eigen::Matrix3d M = testing::RandomRotation(rng) + noise;
     const Eigen::Quaterniond q(NearestRotationQuaternion(M));
     const double f = objective(M, q);
     EXPECT_NEAR(f, (M - q.toRotationMatrix()).squaredNorm(), 1e-12);
     for (int k = 0; k < 50; ++k) {
-      const Eigen::Vector4d step(normal(rng), normal(rng), normal(rng), normal(rng));
+      const double s3 = normal(rng), s2 = normal(rng), s1 = normal(rng), s0 = normal(rng);
+      const Eigen::Vector4d step(s0, s1, s2, s3);
       const Eigen::Quaterniond other(Eigen::Vector4d(q.coeffs() + 1e-3 * step).normalized());
       EXPECT_LE(f, objective(M, other) + 1e-14);
     }

@@ -9,12 +9,14 @@
 namespace hecal {
 namespace {
 
-constexpr int kSamples = 2000;
+constexpr int kQuaternionMatrixSamples = 2000;
 
 // Not unit on purpose: the product matrices are linear, so they must hold for any 4-vector.
 Eigen::Vector4d RandomWxyz(std::mt19937_64& rng) {
   std::normal_distribution<double> normal(0.0, 2.0);
-  return Eigen::Vector4d(normal(rng), normal(rng), normal(rng), normal(rng));
+  // Drawn last to first: the order these tests' data were generated in.
+  const double z = normal(rng), y = normal(rng), x = normal(rng), w = normal(rng);
+  return Eigen::Vector4d(w, x, y, z);
 }
 
 // Hamilton product written out from its definition (w1w2 − v1·v2, w1v2 + w2v1 + v1 × v2),
@@ -46,7 +48,7 @@ TEST(QuaternionMatrices, WxyzHelpersUseScalarFirstOrder) {
 
 TEST(QuaternionMatrices, LeftMatrixIsLeftHamiltonProduct) {
   std::mt19937_64 rng(22);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kQuaternionMatrixSamples; ++i) {
     const Eigen::Vector4d r = RandomWxyz(rng);
     const Eigen::Vector4d q = RandomWxyz(rng);
     const Eigen::Vector4d eigen_product = ToWxyz(FromWxyz(r) * FromWxyz(q));
@@ -58,7 +60,7 @@ TEST(QuaternionMatrices, LeftMatrixIsLeftHamiltonProduct) {
 
 TEST(QuaternionMatrices, RightMatrixIsRightHamiltonProduct) {
   std::mt19937_64 rng(23);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kQuaternionMatrixSamples; ++i) {
     const Eigen::Vector4d r = RandomWxyz(rng);
     const Eigen::Vector4d q = RandomWxyz(rng);
     const Eigen::Vector4d eigen_product = ToWxyz(FromWxyz(q) * FromWxyz(r));
@@ -84,7 +86,7 @@ TEST(QuaternionMatrices, BasisProductsFollowHamiltonRule) {
 
 TEST(QuaternionMatrices, UnitQuaternionMatricesAreOrthogonalAndCommute) {
   std::mt19937_64 rng(24);
-  for (int n = 0; n < kSamples; ++n) {
+  for (int n = 0; n < kQuaternionMatrixSamples; ++n) {
     const Eigen::Vector4d r = RandomWxyz(rng).normalized();
     const Eigen::Vector4d s = RandomWxyz(rng).normalized();
     const Eigen::Matrix4d Q = QuaternionLeftMatrix(r);

@@ -13,22 +13,14 @@
 #include <random>
 #include <vector>
 
+#include "geometry/geometry_test_util.h"
 #include "hecal/geometry/skew.h"
 #include "testing/random_poses.h"
 
 namespace hecal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr int kSamples = 4000;
-
-double MaxAbs(const Eigen::Matrix3d& M) {
-  return M.cwiseAbs().maxCoeff();
-}
-
-Eigen::Vector4d Wxyz(const Eigen::Quaterniond& q) {
-  return {q.w(), q.x(), q.y(), q.z()};
-}
+constexpr int kRotationSamples = 4000;
 
 // q = (cos(θ/2), sin(θ/2) n): the definition, not the code under test.
 Eigen::Quaterniond QuaternionOf(const Eigen::Vector3d& n, double theta) {
@@ -52,17 +44,6 @@ Eigen::Matrix3d ExplicitRodrigues(const Eigen::Vector3d& n, double theta) {
   return Eigen::Matrix3d::Identity() + std::sin(theta) * K + (1.0 - std::cos(theta)) * K * K;
 }
 
-Eigen::Matrix3d Elementary(int axis, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-  R(i, i) = c;
-  R(i, j) = -s;
-  R(j, i) = s;
-  R(j, j) = c;
-  return R;
-}
-
 struct KnownRotation {
   Eigen::Vector3d axis;  // unit
   double angle;          // [0, π]
@@ -71,12 +52,13 @@ struct KnownRotation {
 // Rotations with a known axis and angle: random (angle uniform in [0, π]) and the edge cases.
 std::vector<KnownRotation> KnownRotations(std::mt19937_64& rng) {
   std::vector<KnownRotation> result;
-  std::uniform_real_distribution<double> angle(0.0, kPi);
-  for (int i = 0; i < kSamples; ++i) result.push_back({testing::RandomUnitVector(rng), angle(rng)});
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  for (int i = 0; i < kRotationSamples; ++i)
+    result.push_back({testing::RandomUnitVector(rng), angle(rng)});
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
     const double theta = omega.norm();
     result.push_back({theta == 0.0 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d(omega / theta),
-                      std::min(theta, kPi)});
+                      std::min(theta, std::numbers::pi)});
   }
   return result;
 }
@@ -87,9 +69,9 @@ std::vector<Eigen::Matrix3d> TestMatrices(std::mt19937_64& rng) {
   for (const KnownRotation& k : KnownRotations(rng)) {
     result.push_back(ExplicitQuaternionMatrix(QuaternionOf(k.axis, k.angle)));
   }
-  for (double pitch : {kPi / 2, -kPi / 2}) {
-    for (double roll : {0.0, 0.3, -2.0, kPi}) {
-      for (double yaw : {0.0, 1.1, -kPi / 2, kPi}) {
+  for (double pitch : {std::numbers::pi / 2, -std::numbers::pi / 2}) {
+    for (double roll : {0.0, 0.3, -2.0, std::numbers::pi}) {
+      for (double yaw : {0.0, 1.1, -std::numbers::pi / 2, std::numbers::pi}) {
         result.push_back(Elementary(2, yaw) * Elementary(1, pitch) * Elementary(0, roll));
       }
     }
@@ -119,7 +101,7 @@ TEST(CanonicalQuaternion, SignRules) {
   EXPECT_EQ(canon(0.0, 0.6, -0.8, 0.0), Eigen::Vector4d(0.0, 0.6, -0.8, 0.0));
   EXPECT_EQ(canon(1e-300, -1.0, 0.0, 0.0), Eigen::Vector4d(1e-300, -1.0, 0.0, 0.0));  // w > 0
   std::mt19937_64 rng(201);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kRotationSamples; ++i) {
     const Eigen::Quaterniond q(testing::RandomRotation(rng));
     const Eigen::Quaterniond c = CanonicalQuaternion(q);
     EXPECT_TRUE(IsCanonical(c));
@@ -141,7 +123,7 @@ TEST(QuaternionFromMatrix, MatchesKnownQuaternionEverywhere) {
     // At exactly π the computed w is ±rounding, so only ±q is determined.
     const double error = std::min((Wxyz(q) - Wxyz(truth)).norm(), (Wxyz(q) + Wxyz(truth)).norm());
     EXPECT_LT(error, 1e-15) << k.angle << " " << k.axis.transpose();
-    if (k.angle < kPi - 1e-12) {
+    if (k.angle < std::numbers::pi - 1e-12) {
       EXPECT_LT((Wxyz(q) - Wxyz(truth)).norm(), 1e-15) << k.angle;
     }
   }
@@ -152,7 +134,7 @@ TEST(QuaternionFromMatrix, NearPiAgreesToRoundingAndBeatsTraceFormula) {
   for (double eps : {1e-3, 1e-6, 1e-9, 1e-12}) {
     for (int i = 0; i < 200; ++i) {
       const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-      const Eigen::Quaterniond truth = QuaternionOf(n, kPi - eps);
+      const Eigen::Quaterniond truth = QuaternionOf(n, std::numbers::pi - eps);
       const Eigen::Quaterniond q = QuaternionFromMatrix(ExplicitQuaternionMatrix(truth));
       // The vector part is the rotation axis to full precision; w = cos(θ/2) ≈ ε/2 to ~1e-16
       // absolute (it is a difference of O(1) matrix entries).
@@ -176,9 +158,10 @@ TEST(QuaternionFromMatrix, AgreesWithEigenPeer) {
 TEST(MatrixFromQuaternion, MatchesExplicitFormulaAndNormalises) {
   std::mt19937_64 rng(205);
   std::normal_distribution<double> normal;
-  for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Quaterniond q =
-        Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+  for (int i = 0; i < kRotationSamples; ++i) {
+    // Drawn last to first: the order these tests' data were generated in.
+    const double z = normal(rng), y = normal(rng), x = normal(rng), w = normal(rng);
+    const Eigen::Quaterniond q = Eigen::Quaterniond(w, x, y, z).normalized();
     const Eigen::Matrix3d expected = ExplicitQuaternionMatrix(q);
     EXPECT_LT(MaxAbs(MatrixFromQuaternion(q) - expected), 2e-15);
     // Not unit: normalised first; −q is the same rotation.
@@ -205,7 +188,7 @@ TEST(QuaternionRotationVector, MatchesDefinitionAndRoundTrips) {
     // |ω| rounds to θ(1 ± 3ε), and w = cos(|ω|/2) inherits ½ sin(θ/2) of that: ≤ 1e-15.
     EXPECT_NEAR(q.w(), truth.w(), 1e-15);
     const Eigen::Vector3d back = RotationVectorFromQuaternion(q);
-    if (k.angle < kPi) {
+    if (k.angle < std::numbers::pi) {
       EXPECT_LT((back - omega).norm(), 2e-15 * std::min(1.0, k.angle) + 1e-300) << k.angle;
     } else {
       EXPECT_LT(std::min((back - omega).norm(), (back + omega).norm()), 2e-15);
@@ -215,8 +198,8 @@ TEST(QuaternionRotationVector, MatchesDefinitionAndRoundTrips) {
 
 TEST(QuaternionRotationVector, AgreesWithEigenAngleAxis) {
   std::mt19937_64 rng(207);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
-  for (int i = 0; i < kSamples; ++i) {
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi);
+  for (int i = 0; i < kRotationSamples; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
     const double theta = angle(rng);
     const Eigen::Quaterniond eigen(Eigen::AngleAxisd(theta, n));
@@ -226,22 +209,22 @@ TEST(QuaternionRotationVector, AgreesWithEigenAngleAxis) {
 
 TEST(QuaternionRotationVector, NegativeAndNonUnitQuaternionsGiveShortRotation) {
   std::mt19937_64 rng(208);
-  std::uniform_real_distribution<double> angle(0.0, kPi - 1e-6);
-  for (int i = 0; i < kSamples; ++i) {
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi - 1e-6);
+  for (int i = 0; i < kRotationSamples; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
     const double theta = angle(rng);
     const Eigen::Quaterniond q = QuaternionOf(n, theta);
     // −q (w < 0, i.e. "rotation by 2π − θ about −n") is the same rotation: still ω = θ n.
     const Eigen::Quaterniond negated(-2.0 * q.w(), -2.0 * q.x(), -2.0 * q.y(), -2.0 * q.z());
     const Eigen::Vector3d omega = RotationVectorFromQuaternion(negated);
-    EXPECT_LE(omega.norm(), kPi);
+    EXPECT_LE(omega.norm(), std::numbers::pi);
     EXPECT_LT((omega - theta * n).norm(), 4e-15) << theta;
   }
   // Exactly π (w = 0): the largest-magnitude component comes out positive.
   EXPECT_EQ(RotationVectorFromQuaternion(Eigen::Quaterniond(0, -1, 0, 0)),
-            Eigen::Vector3d(kPi, 0, 0));
+            Eigen::Vector3d(std::numbers::pi, 0, 0));
   const Eigen::Vector3d omega = RotationVectorFromQuaternion(Eigen::Quaterniond(0, 0.6, -0.8, 0));
-  EXPECT_LT((omega - kPi * Eigen::Vector3d(-0.6, 0.8, 0)).norm(), 2e-15);
+  EXPECT_LT((omega - std::numbers::pi * Eigen::Vector3d(-0.6, 0.8, 0)).norm(), 2e-15);
 }
 
 TEST(QuaternionRotationVector, ContinuousAcrossSmallAngleBranch) {
@@ -267,9 +250,9 @@ TEST(AxisAngle, RoundTripsAndMatchesRodrigues) {
     const AxisAngle back = AxisAngleFromMatrix(R);
     EXPECT_NEAR(back.axis.norm(), 1.0, 2.3e-16);
     EXPECT_GE(back.angle, 0.0);
-    EXPECT_LE(back.angle, kPi);
+    EXPECT_LE(back.angle, std::numbers::pi);
     EXPECT_NEAR(back.angle, k.angle, 2e-15 * std::min(1.0, k.angle) + 1e-300) << k.angle;
-    if (k.angle > 1e-12 && k.angle < kPi - 1e-9) {
+    if (k.angle > 1e-12 && k.angle < std::numbers::pi - 1e-9) {
       // Axis accuracy degrades as 1/θ only through the rounding of R itself.
       EXPECT_LT((back.axis - k.axis).norm(), 1e-15 / std::min(1.0, k.angle) + 1e-15) << k.angle;
     }
@@ -282,12 +265,12 @@ TEST(AxisAngle, IdentityAndHalfTurnConventions) {
   EXPECT_EQ(identity.angle, 0.0);
   EXPECT_EQ(identity.axis, Eigen::Vector3d::UnitX());
   const AxisAngle half_z = AxisAngleFromMatrix(Eigen::Vector3d(-1, -1, 1).asDiagonal());
-  EXPECT_EQ(half_z.angle, kPi);
+  EXPECT_EQ(half_z.angle, std::numbers::pi);
   EXPECT_EQ(half_z.axis, Eigen::Vector3d::UnitZ());
   // Axis (0.6, −0.8, 0) at π: the largest-magnitude component (y) is made positive.
   const Eigen::Vector3d n(0.6, -0.8, 0.0);
   const AxisAngle half = AxisAngleFromMatrix(2.0 * n * n.transpose() - Eigen::Matrix3d::Identity());
-  EXPECT_NEAR(half.angle, kPi, 1e-15);
+  EXPECT_NEAR(half.angle, std::numbers::pi, 1e-15);
   EXPECT_LT((half.axis + n).norm(), 1e-15);
 }
 
@@ -297,7 +280,7 @@ TEST(AxisAngle, AgreesWithEigenAngleAxis) {
     const Eigen::AngleAxisd eigen(R);
     const AxisAngle ours = AxisAngleFromMatrix(R);
     EXPECT_NEAR(ours.angle, eigen.angle(), 2e-15);
-    if (eigen.angle() > 1e-6 && eigen.angle() < kPi - 1e-6) {
+    if (eigen.angle() > 1e-6 && eigen.angle() < std::numbers::pi - 1e-6) {
       EXPECT_LT((ours.axis - eigen.axis()).norm(), 1e-9);  // Eigen's axis is less exact
     }
   }
@@ -309,7 +292,7 @@ TEST(TsaiRodrigues, NormIsTwiceSinHalfAngleAlongAxis) {
     const Eigen::Matrix3d R = ExplicitRodrigues(k.axis, k.angle);
     const Eigen::Vector3d P = TsaiRodriguesFromMatrix(R);
     const Eigen::Vector3d expected = 2.0 * std::sin(0.5 * k.angle) * k.axis;
-    if (k.angle < kPi - 1e-12) {
+    if (k.angle < std::numbers::pi - 1e-12) {
       EXPECT_LT((P - expected).norm(), 2e-15 * std::min(1.0, k.angle) + 1e-300) << k.angle;
     } else {
       EXPECT_LT(std::min((P - expected).norm(), (P + expected).norm()), 2e-15);
@@ -322,8 +305,9 @@ TEST(TsaiRodrigues, MatrixMatchesTsaiLenzFormula) {
   // Tsai & Lenz (1989) eq. 10: R = (1 − |P|²/2) I + ½ (P Pᵀ + √(4 − |P|²) [P]×).
   std::mt19937_64 rng(213);
   std::uniform_real_distribution<double> radius(0.0, 2.0);
-  for (int i = 0; i < kSamples; ++i) {
-    const Eigen::Vector3d P = radius(rng) * testing::RandomUnitVector(rng);
+  for (int i = 0; i < kRotationSamples; ++i) {
+    const Eigen::Vector3d axis = testing::RandomUnitVector(rng);  // drawn before the radius
+    const Eigen::Vector3d P = radius(rng) * axis;
     const double p2 = P.squaredNorm();
     const Eigen::Matrix3d expected = (1.0 - 0.5 * p2) * Eigen::Matrix3d::Identity() +
                                      0.5 * (P * P.transpose() + std::sqrt(4.0 - p2) * Skew(P));
@@ -379,7 +363,7 @@ TEST(TsaiRodrigues, ConditioningNearPiIsBoundedBySqrtEpsilon) {
   for (double eps : {0.0, 1e-12, 1e-9, 1e-6, 1e-3}) {
     for (int i = 0; i < 50; ++i) {
       const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-      const Eigen::Matrix3d R = ExplicitRodrigues(n, kPi - eps);
+      const Eigen::Matrix3d R = ExplicitRodrigues(n, std::numbers::pi - eps);
       const double error = MaxAbs(MatrixFromTsaiRodrigues(TsaiRodriguesFromMatrix(R)) - R);
       EXPECT_LT(error, TsaiTolerance(R)) << eps;
       EXPECT_LT(error, 1e-7) << eps;

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "geometry/geometry_test_util.h"
 #include "hecal/geometry/se3.h"
 #include "testing/random_poses.h"
 #include "testing/screw_motions.h"
@@ -17,19 +18,14 @@
 namespace hecal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr int kSamples = 3000;
-
-double PoseError(const Pose& A, const Pose& B) {
-  return (A.matrix() - B.matrix()).cwiseAbs().maxCoeff();
-}
+constexpr int kScrewSamples = 3000;
 
 // The invariants every Screw from ScrewFromPose satisfies.
 void ExpectValidScrew(const Screw& s) {
   EXPECT_NEAR(s.l.norm(), 1.0, 4e-16);
   EXPECT_LE(std::abs(s.l.dot(s.m)), 4e-15 * (1 + s.m.norm()));
   EXPECT_GE(s.theta, 0.0);
-  EXPECT_LE(s.theta, kPi);
+  EXPECT_LE(s.theta, std::numbers::pi);
 }
 
 // The point of the axis line nearest the origin, p = l × m, is moved only along l, by d; every
@@ -46,8 +42,8 @@ void ExpectDescribesMotion(const Screw& s, const Pose& T, double tolerance) {
 
 TEST(Screw, RecoversConstructedScrewMotion) {
   std::mt19937_64 rng(401);
-  for (int i = 0; i < kSamples; ++i) {
-    const auto [n, c, theta, d] = testing::RandomScrewLine(rng, 1e-3, kPi - 1e-3);
+  for (int i = 0; i < kScrewSamples; ++i) {
+    const auto [n, c, theta, d] = testing::RandomScrewLine(rng, 1e-3, std::numbers::pi - 1e-3);
     const Pose T = testing::ScrewMotion(n, c, theta, d);
     const Screw s = ScrewFromPose(T);
     ExpectValidScrew(s);
@@ -63,19 +59,19 @@ TEST(Screw, RecoversConstructedScrewMotion) {
 
 TEST(Screw, KnownExample) {
   // Quarter turn about the vertical line through (1, 2, 0), then 0.5 up: l = z, m = c × z.
-  const Pose T =
-      testing::ScrewMotion(Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 2, 0), kPi / 2, 0.5);
+  const Pose T = testing::ScrewMotion(Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 2, 0),
+                                      std::numbers::pi / 2, 0.5);
   const Screw s = ScrewFromPose(T);
   EXPECT_LT((s.l - Eigen::Vector3d::UnitZ()).norm(), 1e-16);
   EXPECT_LT((s.m - Eigen::Vector3d(2, -1, 0)).norm(), 1e-15);
-  EXPECT_NEAR(s.theta, kPi / 2, 1e-16);
+  EXPECT_NEAR(s.theta, std::numbers::pi / 2, 1e-16);
   EXPECT_NEAR(s.d, 0.5, 1e-16);
 }
 
 TEST(Screw, RoundTripsRandomPoses) {
   std::mt19937_64 rng(402);
   std::vector<Pose> poses;
-  for (int i = 0; i < kSamples; ++i) poses.push_back(testing::RandomPose(rng, 2.0));
+  for (int i = 0; i < kScrewSamples; ++i) poses.push_back(testing::RandomPose(rng, 2.0));
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
     const double theta = omega.norm();
     const Eigen::Matrix3d R = theta == 0.0
@@ -94,8 +90,8 @@ TEST(Screw, RoundTripsRandomPoses) {
 
 TEST(Screw, RoundTripsScrewParameters) {
   std::mt19937_64 rng(403);
-  std::uniform_real_distribution<double> angle(1e-6, kPi - 1e-6);
-  for (int i = 0; i < kSamples; ++i) {
+  std::uniform_real_distribution<double> angle(1e-6, std::numbers::pi - 1e-6);
+  for (int i = 0; i < kScrewSamples; ++i) {
     Screw s;
     s.l = testing::RandomUnitVector(rng);
     const Eigen::Vector3d point = testing::RandomGaussianVector(rng);
@@ -113,7 +109,7 @@ TEST(Screw, RoundTripsScrewParameters) {
 TEST(Screw, PoseFromScrewMatchesGeometry) {
   // Non-unit l is normalised; a component of m along l is ignored.
   std::mt19937_64 rng(404);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kScrewSamples; ++i) {
     const auto [n, c, theta, d] = testing::RandomScrewLine(rng);
     Screw s;
     s.l = 3.0 * n;
@@ -150,7 +146,7 @@ TEST(Screw, HalfTurn) {
   const Pose T = MakePose(R, c - R * c + 0.25 * Eigen::Vector3d::UnitX());
   const Screw s = ScrewFromPose(T);
   EXPECT_EQ(s.l, Eigen::Vector3d::UnitX());
-  EXPECT_EQ(s.theta, kPi);
+  EXPECT_EQ(s.theta, std::numbers::pi);
   EXPECT_NEAR(s.d, 0.25, 1e-16);
   EXPECT_LT((s.m - c.cross(Eigen::Vector3d::UnitX())).norm(), 1e-15);
   ExpectDescribesMotion(s, T, 1e-15);
@@ -182,7 +178,7 @@ TEST(Screw, TinyAngleMomentGrowsAsOneOverTheta) {
 TEST(Screw, AgreesWithTwist) {
   // se3::Log(T) = (θ l, θ m + d l): two independent derivations must agree.
   std::mt19937_64 rng(405);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kScrewSamples; ++i) {
     const Pose T = testing::RandomPose(rng, 2.0);
     const Screw s = ScrewFromPose(T);
     const Vector6d xi = se3::Log(T);

@@ -15,6 +15,7 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
+#include "geometry/geometry_test_util.h"
 #include "hecal/geometry/skew.h"
 #include "hecal/geometry/so3.h"
 #include "testing/random_poses.h"
@@ -23,15 +24,7 @@
 namespace hecal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr int kSamples = 3000;
-
-double MaxAbs(const Eigen::MatrixXd& M) {
-  return M.cwiseAbs().maxCoeff();
-}
-double PoseError(const Pose& A, const Pose& B) {
-  return MaxAbs(A.matrix() - B.matrix());
-}
+constexpr int kSe3Samples = 3000;
 
 // exp of the 4×4 twist matrix [[ω]× v; 0 0]: a peer that knows nothing about Jacobians.
 Eigen::Matrix4d MatrixExponential(const Vector6d& xi) {
@@ -43,10 +36,21 @@ Eigen::Matrix4d MatrixExponential(const Vector6d& xi) {
 
 // Rotation angles for Jacobian checks: tiny, both sides of 1e-2 (so3 series) and of 0.1 (the
 // coupling block's series), generic, near π.
-const std::vector<double>& JacobianTestAngles() {
-  static const std::vector<double> angles = {0.0,     1e-9,   1e-6,       1e-4,      0.99e-2,
-                                             1.01e-2, 0.0999, 0.1001,     0.5,       1.0,
-                                             2.0,     3.0,    kPi - 1e-2, kPi - 1e-3};
+const std::vector<double>& Se3JacobianTestAngles() {
+  static const std::vector<double> angles = {0.0,
+                                             1e-9,
+                                             1e-6,
+                                             1e-4,
+                                             0.99e-2,
+                                             1.01e-2,
+                                             0.0999,
+                                             0.1001,
+                                             0.5,
+                                             1.0,
+                                             2.0,
+                                             3.0,
+                                             std::numbers::pi - 1e-2,
+                                             std::numbers::pi - 1e-3};
   return angles;
 }
 
@@ -70,7 +74,7 @@ TEST(Se3, TangentOrderIsRotationFirst) {
 
 TEST(Se3Exp, MatchesMatrixExponential) {
   std::mt19937_64 rng(301);
-  std::vector<Vector6d> twists = testing::RandomTwists(rng, kSamples, 3.0 * kPi);
+  std::vector<Vector6d> twists = testing::RandomTwists(rng, kSe3Samples, 3.0 * std::numbers::pi);
   for (const Vector6d& xi : twists) {
     const double scale = 1.0 + xi.tail<3>().norm();
     EXPECT_LT(MaxAbs(se3::Exp(xi).matrix() - MatrixExponential(xi)), 1e-14 * scale)
@@ -81,7 +85,7 @@ TEST(Se3Exp, MatchesMatrixExponential) {
 TEST(Se3Exp, GivesTheConstructedScrewMotion) {
   // Chasles: Exp(θ n, θ c × n + d n) is rotation θ about the line through c along n, then d.
   std::mt19937_64 rng(302);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSe3Samples; ++i) {
     const auto [n, c, theta, d] = testing::RandomScrewLine(rng);
     const Pose expected = testing::ScrewMotion(n, c, theta, d);
     const Vector6d xi = testing::Twist(theta * n, theta * c.cross(n) + d * n);
@@ -91,7 +95,7 @@ TEST(Se3Exp, GivesTheConstructedScrewMotion) {
 
 TEST(Se3Adjoint, MatchesExplicitBlocksAndConjugation) {
   std::mt19937_64 rng(305);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSe3Samples; ++i) {
     const Pose T = testing::RandomPose(rng, 2.0);
     const Matrix6d Ad = se3::Adjoint(T);
     // (ω, v) order: [R 0; [t]× R  R].
@@ -103,8 +107,9 @@ TEST(Se3Adjoint, MatchesExplicitBlocksAndConjugation) {
       EXPECT_LT((Ad.col(j).tail<3>() - T.translation().cross(R.col(j))).norm(), 1e-15 * 8);
     }
     // T Exp(δ) T⁻¹ = Exp(Ad(T) δ), checked with the matrix exponential peer.
-    const Vector6d delta =
-        testing::Twist(testing::RandomRotationVector(rng, 2.0), testing::RandomGaussianVector(rng));
+    // v drawn before ω: the order these tests' data were generated in.
+    const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
+    const Vector6d delta = testing::Twist(testing::RandomRotationVector(rng, 2.0), v);
     const Eigen::Matrix4d lhs = T.matrix() * MatrixExponential(delta) * T.inverse().matrix();
     EXPECT_LT(MaxAbs(lhs - se3::Exp(Ad * delta).matrix()), 4e-14);
   }
@@ -112,7 +117,7 @@ TEST(Se3Adjoint, MatchesExplicitBlocksAndConjugation) {
 
 TEST(Se3Adjoint, IsAHomomorphism) {
   std::mt19937_64 rng(306);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSe3Samples; ++i) {
     const Pose T1 = testing::RandomPose(rng, 2.0);
     const Pose T2 = testing::RandomPose(rng, 2.0);
     EXPECT_LT(MaxAbs(se3::Adjoint(T1 * T2) - se3::Adjoint(T1) * se3::Adjoint(T2)), 1e-14);
@@ -124,10 +129,10 @@ TEST(Se3Adjoint, IsAHomomorphism) {
 // For each test angle: 10 twists with that rotation angle and v of norm ~1.
 std::vector<Vector6d> JacobianTwists(std::mt19937_64& rng) {
   std::vector<Vector6d> result;
-  for (double theta : JacobianTestAngles()) {
+  for (double theta : Se3JacobianTestAngles()) {
     for (int i = 0; i < 10; ++i) {
-      result.push_back(testing::Twist(testing::RandomRotationVector(rng, theta),
-                                      testing::RandomGaussianVector(rng)));
+      const Eigen::Vector3d v = testing::RandomGaussianVector(rng);  // drawn before ω
+      result.push_back(testing::Twist(testing::RandomRotationVector(rng, theta), v));
     }
   }
   return result;
@@ -135,11 +140,11 @@ std::vector<Vector6d> JacobianTwists(std::mt19937_64& rng) {
 
 TEST(Se3Jacobians, InversesAndLeftRightRelations) {
   std::mt19937_64 rng(310);
-  std::uniform_real_distribution<double> angle(0.0, kPi);
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
   std::vector<Vector6d> twists = JacobianTwists(rng);
-  for (int i = 0; i < kSamples; ++i) {
-    twists.push_back(testing::Twist(testing::RandomRotationVector(rng, angle(rng)),
-                                    testing::RandomGaussianVector(rng)));
+  for (int i = 0; i < kSe3Samples; ++i) {
+    const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
+    twists.push_back(testing::Twist(testing::RandomRotationVector(rng, angle(rng)), v));
   }
   for (const Vector6d& xi : twists) {
     const double scale = 1 + xi.tail<3>().norm();
@@ -189,8 +194,8 @@ TEST(Se3Jacobians, MatchLongDoubleSeriesToRounding) {
   }
   std::uniform_real_distribution<double> angle(0.05, 0.6);  // where the closed forms cancel most
   for (int i = 0; i < 500; ++i) {
-    twists.push_back(testing::Twist(testing::RandomRotationVector(rng, angle(rng)),
-                                    testing::RandomGaussianVector(rng)));
+    const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
+    twists.push_back(testing::Twist(testing::RandomRotationVector(rng, angle(rng)), v));
   }
   for (const Vector6d& xi : twists) {
     const Matrix6d reference = LeftJacobianBySeries(xi);
@@ -230,7 +235,7 @@ TEST(Se3Interpolate, EndpointsAndScrewGeodesic) {
   std::mt19937_64 rng(312);
   for (int i = 0; i < 1000; ++i) {
     const Pose T0 = testing::RandomPose(rng, 2.0);
-    const auto [n, c, theta, d] = testing::RandomScrewLine(rng, 0.0, kPi - 1e-6);
+    const auto [n, c, theta, d] = testing::RandomScrewLine(rng, 0.0, std::numbers::pi - 1e-6);
     const Pose T1 = T0 * testing::ScrewMotion(n, c, theta, d);
     EXPECT_LT(PoseError(se3::Interpolate(T0, T1, 0.0), T0), 1e-15);
     EXPECT_LT(PoseError(se3::Interpolate(T0, T1, 1.0), T1), 1e-14);

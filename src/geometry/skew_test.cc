@@ -10,7 +10,7 @@
 namespace hecal {
 namespace {
 
-constexpr int kSamples = 2000;
+constexpr int kSkewSamples = 2000;
 
 TEST(Skew, EntriesAreTheStandardHatMatrix) {
   Eigen::Matrix3d expected;
@@ -22,7 +22,7 @@ TEST(Skew, EntriesAreTheStandardHatMatrix) {
 
 TEST(Skew, TimesVectorIsCrossProduct) {
   std::mt19937_64 rng(11);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSkewSamples; ++i) {
     const Eigen::Vector3d a = testing::RandomGaussianVector(rng, 3.0);
     const Eigen::Vector3d b = testing::RandomGaussianVector(rng, 3.0);
     const Eigen::Vector3d cross = a.cross(b);  // Eigen's cross product: independent peer
@@ -34,7 +34,7 @@ TEST(Skew, TimesVectorIsCrossProduct) {
 
 TEST(Skew, IsAntisymmetricAndSquaresToProjector) {
   std::mt19937_64 rng(12);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSkewSamples; ++i) {
     const Eigen::Vector3d a = testing::RandomGaussianVector(rng, 3.0);
     const Eigen::Matrix3d S = Skew(a);
     EXPECT_EQ(S.transpose(), -S);
@@ -47,7 +47,7 @@ TEST(Skew, IsAntisymmetricAndSquaresToProjector) {
 
 TEST(Skew, VeeInvertsSkewExactly) {
   std::mt19937_64 rng(13);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSkewSamples; ++i) {
     const Eigen::Vector3d a = testing::RandomGaussianVector(rng, 3.0);
     EXPECT_EQ(Vee(Skew(a)), a);
   }
@@ -56,7 +56,7 @@ TEST(Skew, VeeInvertsSkewExactly) {
 TEST(Skew, VeeOfGeneralMatrixIsVeeOfAntisymmetricPart) {
   std::mt19937_64 rng(14);
   std::normal_distribution<double> normal;
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSkewSamples; ++i) {
     Eigen::Matrix3d M;
     for (int k = 0; k < 9; ++k) M(k / 3, k % 3) = normal(rng);
     const Eigen::Matrix3d A = 0.5 * (M - M.transpose());
@@ -72,7 +72,7 @@ TEST(Skew, VeeOfGeneralMatrixIsVeeOfAntisymmetricPart) {
 TEST(Skew, VeeOfRotationIsSinTimesAxis) {
   // For R = Exp(θ n), the antisymmetric part of R is sin θ [n]×: Vee(R) = sin θ n.
   std::mt19937_64 rng(15);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSkewSamples; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
     const double theta = std::uniform_real_distribution<double>(0.0, 3.14)(rng);
     const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, n).toRotationMatrix();

@@ -13,18 +13,14 @@
 #include <random>
 #include <vector>
 
+#include "geometry/geometry_test_util.h"
 #include "hecal/geometry/skew.h"
 #include "testing/random_poses.h"
 
 namespace hecal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr int kSamples = 4000;
-
-double MaxAbs(const Eigen::Matrix3d& M) {
-  return M.cwiseAbs().maxCoeff();
-}
+constexpr int kSo3Samples = 4000;
 
 // R = I + sinθ/θ K + (1 − cosθ)/θ² K², written here independently of so3.cc (θ ≥ 1e-3 so the
 // closed form is exact to rounding).
@@ -35,24 +31,12 @@ Eigen::Matrix3d RodriguesFormula(const Eigen::Vector3d& omega) {
          (1.0 - std::cos(theta)) / (theta * theta) * K * K;
 }
 
-// Elementary rotation about coordinate axis `axis` (0, 1, 2), written out from cos/sin.
-Eigen::Matrix3d Elementary(int axis, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-  R(i, i) = c;
-  R(i, j) = -s;
-  R(j, i) = s;
-  R(j, j) = c;
-  return R;
-}
-
 // Gimbal-lock rotations of the xyz / ZYX Euler sequences: pitch exactly ±π/2.
 std::vector<Eigen::Matrix3d> GimbalLockRotations() {
   std::vector<Eigen::Matrix3d> result;
-  for (double pitch : {kPi / 2, -kPi / 2}) {
-    for (double roll : {0.0, 0.3, -2.0, kPi}) {
-      for (double yaw : {0.0, 1.1, -kPi / 2}) {
+  for (double pitch : {std::numbers::pi / 2, -std::numbers::pi / 2}) {
+    for (double roll : {0.0, 0.3, -2.0, std::numbers::pi}) {
+      for (double yaw : {0.0, 1.1, -std::numbers::pi / 2}) {
         result.push_back(Elementary(2, yaw) * Elementary(1, pitch) * Elementary(0, roll));
       }
     }
@@ -63,7 +47,7 @@ std::vector<Eigen::Matrix3d> GimbalLockRotations() {
 // Random rotations, the edge-case rotation vectors' rotations and the gimbal-lock rotations.
 std::vector<Eigen::Matrix3d> TestRotations(std::mt19937_64& rng) {
   std::vector<Eigen::Matrix3d> result;
-  for (int i = 0; i < kSamples; ++i) result.push_back(testing::RandomRotation(rng));
+  for (int i = 0; i < kSo3Samples; ++i) result.push_back(testing::RandomRotation(rng));
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
     const double theta = omega.norm();
     result.push_back(theta == 0.0 ? Eigen::Matrix3d::Identity()
@@ -77,26 +61,38 @@ std::vector<Eigen::Matrix3d> TestRotations(std::mt19937_64& rng) {
 std::vector<Eigen::Vector3d> TestRotationVectors(std::mt19937_64& rng, double max_angle) {
   std::vector<Eigen::Vector3d> result;
   std::uniform_real_distribution<double> angle(0.0, max_angle);
-  for (int i = 0; i < kSamples; ++i)
+  for (int i = 0; i < kSo3Samples; ++i)
     result.push_back(testing::RandomRotationVector(rng, angle(rng)));
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
-    if (omega.norm() < kPi) result.push_back(omega);
+    if (omega.norm() < std::numbers::pi) result.push_back(omega);
   }
   return result;
 }
 
 // Angles at which the Jacobians are checked: tiny, both sides of the series threshold (1e-2),
 // generic, and near π.
-const std::vector<double>& JacobianTestAngles() {
-  static const std::vector<double> angles = {0.0, 1e-9, 1e-6, 1e-4, 0.99e-2,    1.01e-2,   0.1,
-                                             0.5, 1.0,  2.0,  3.0,  kPi - 1e-2, kPi - 1e-3};
+const std::vector<double>& So3JacobianTestAngles() {
+  static const std::vector<double> angles = {0.0,
+                                             1e-9,
+                                             1e-6,
+                                             1e-4,
+                                             0.99e-2,
+                                             1.01e-2,
+                                             0.1,
+                                             0.5,
+                                             1.0,
+                                             2.0,
+                                             3.0,
+                                             std::numbers::pi - 1e-2,
+                                             std::numbers::pi - 1e-3};
   return angles;
 }
 
 TEST(So3Exp, MatchesRodriguesFormulaAndEigenAngleAxis) {
   std::mt19937_64 rng(101);
-  std::uniform_real_distribution<double> angle(1e-3, 3.0 * kPi);  // Exp is total: beyond π too
-  for (int i = 0; i < kSamples; ++i) {
+  std::uniform_real_distribution<double> angle(
+      1e-3, 3.0 * std::numbers::pi);  // Exp is total: beyond π too
+  for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Vector3d omega = testing::RandomRotationVector(rng, angle(rng));
     const Eigen::Matrix3d R = so3::Exp(omega);
     EXPECT_LT(MaxAbs(R - RodriguesFormula(omega)), 2e-15) << omega.transpose();
@@ -128,7 +124,7 @@ TEST(So3Exp, TinyAnglesMatchTaylorSeries) {
 TEST(So3Exp, IsOrthonormalForAllAngles) {
   std::mt19937_64 rng(103);
   std::uniform_real_distribution<double> angle(0.0, 20.0);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Matrix3d R = so3::Exp(testing::RandomRotationVector(rng, angle(rng)));
     // A few ulps: the products in RᵀR and det R round (Eigen's AngleAxisd peaks at 1.6e-15 too).
     EXPECT_LT(so3::OrthonormalityError(R), 3e-15);
@@ -152,10 +148,11 @@ TEST(So3ExpLog, ExpOfLogIsIdentity) {
 TEST(So3ExpLog, LogOfExpAtPiIsPlusOrMinus) {
   std::mt19937_64 rng(106);
   std::vector<Eigen::Vector3d> cases;
-  for (int i = 0; i < 500; ++i) cases.push_back(testing::RandomRotationVector(rng, kPi));
+  for (int i = 0; i < 500; ++i)
+    cases.push_back(testing::RandomRotationVector(rng, std::numbers::pi));
   for (int axis = 0; axis < 3; ++axis) {
-    cases.push_back(kPi * Eigen::Vector3d::Unit(axis));
-    cases.push_back(-kPi * Eigen::Vector3d::Unit(axis));
+    cases.push_back(std::numbers::pi * Eigen::Vector3d::Unit(axis));
+    cases.push_back(-std::numbers::pi * Eigen::Vector3d::Unit(axis));
   }
   for (const Eigen::Vector3d& omega : cases) {
     const Eigen::Vector3d log = so3::Log(so3::Exp(omega));
@@ -165,26 +162,30 @@ TEST(So3ExpLog, LogOfExpAtPiIsPlusOrMinus) {
 
 TEST(So3Log, NormIsAtMostPiAndWrapsLargerAngles) {
   std::mt19937_64 rng(107);
-  std::uniform_real_distribution<double> angle(kPi + 1e-6, 2.0 * kPi - 1e-6);
-  for (int i = 0; i < kSamples; ++i) {
+  std::uniform_real_distribution<double> angle(std::numbers::pi + 1e-6,
+                                               2.0 * std::numbers::pi - 1e-6);
+  for (int i = 0; i < kSo3Samples; ++i) {
     // A rotation by α ∈ (π, 2π) about n is a rotation by 2π − α about −n.
     const double alpha = angle(rng);
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
     const Eigen::Vector3d log = so3::Log(so3::Exp(alpha * n));
-    EXPECT_LE(log.norm(), kPi * (1.0 + 1e-15));
-    EXPECT_LT((log - (alpha - 2.0 * kPi) * n).norm(), 1e-14) << alpha;
+    EXPECT_LE(log.norm(), std::numbers::pi * (1.0 + 1e-15));
+    EXPECT_LT((log - (alpha - 2.0 * std::numbers::pi) * n).norm(), 1e-14) << alpha;
   }
   for (const Eigen::Matrix3d& R : TestRotations(rng)) {
-    EXPECT_LE(so3::Log(R).norm(), kPi * (1.0 + 1e-15));
+    EXPECT_LE(so3::Log(R).norm(), std::numbers::pi * (1.0 + 1e-15));
   }
 }
 
 TEST(So3Log, ExactlyPiHasDeterministicSign) {
   // Exact half-turn matrices R = 2 n nᵀ − I: ±ω are both valid; so3.h promises the one whose
   // largest-magnitude component is positive.
-  EXPECT_EQ(so3::Log(Eigen::Vector3d(1, -1, -1).asDiagonal()), Eigen::Vector3d(kPi, 0, 0));
-  EXPECT_EQ(so3::Log(Eigen::Vector3d(-1, 1, -1).asDiagonal()), Eigen::Vector3d(0, kPi, 0));
-  EXPECT_EQ(so3::Log(Eigen::Vector3d(-1, -1, 1).asDiagonal()), Eigen::Vector3d(0, 0, kPi));
+  EXPECT_EQ(so3::Log(Eigen::Vector3d(1, -1, -1).asDiagonal()),
+            Eigen::Vector3d(std::numbers::pi, 0, 0));
+  EXPECT_EQ(so3::Log(Eigen::Vector3d(-1, 1, -1).asDiagonal()),
+            Eigen::Vector3d(0, std::numbers::pi, 0));
+  EXPECT_EQ(so3::Log(Eigen::Vector3d(-1, -1, 1).asDiagonal()),
+            Eigen::Vector3d(0, 0, std::numbers::pi));
   for (const Eigen::Vector3d& n :
        {Eigen::Vector3d(0.6, -0.8, 0.0), Eigen::Vector3d(-0.6, 0.8, 0.0),
         Eigen::Vector3d(1, 1, 0).normalized(), Eigen::Vector3d(-2, 1, 2).normalized(),
@@ -192,7 +193,7 @@ TEST(So3Log, ExactlyPiHasDeterministicSign) {
     const Eigen::Matrix3d R = 2.0 * n * n.transpose() - Eigen::Matrix3d::Identity();
     Eigen::Index largest;
     n.cwiseAbs().maxCoeff(&largest);
-    const Eigen::Vector3d expected = (n(largest) > 0 ? kPi : -kPi) * n;
+    const Eigen::Vector3d expected = (n(largest) > 0 ? std::numbers::pi : -std::numbers::pi) * n;
     const Eigen::Vector3d log = so3::Log(R);
     EXPECT_LT((log - expected).norm(), 2e-15) << n.transpose() << " got " << log.transpose();
     EXPECT_GT(log(largest), 0.0);
@@ -201,8 +202,9 @@ TEST(So3Log, ExactlyPiHasDeterministicSign) {
 
 TEST(So3Angle, MatchesConstructedAngleNearZeroAndPi) {
   std::mt19937_64 rng(108);
-  for (double theta : {0.0, 1e-15, 1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 0.5, 2.0, kPi - 1e-2, kPi - 1e-6,
-                       kPi - 1e-9, kPi - 1e-12, kPi}) {
+  for (double theta : {0.0, 1e-15, 1e-12, 1e-9, 1e-6, 1e-4, 1e-2, 0.5, 2.0, std::numbers::pi - 1e-2,
+                       std::numbers::pi - 1e-6, std::numbers::pi - 1e-9, std::numbers::pi - 1e-12,
+                       std::numbers::pi}) {
     for (int i = 0; i < 50; ++i) {
       const Eigen::Vector3d n = testing::RandomUnitVector(rng);
       const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, n).toRotationMatrix();
@@ -215,7 +217,7 @@ TEST(So3Angle, MatchesConstructedAngleNearZeroAndPi) {
 
 TEST(So3Angle, AgreesWithAcosOfTraceWhereWellConditioned) {
   std::mt19937_64 rng(109);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Matrix3d R = testing::RandomRotation(rng);
     const double cos_theta = 0.5 * (R.trace() - 1.0);
     if (std::abs(cos_theta) > 0.9) continue;  // acos loses digits there; covered above
@@ -225,8 +227,8 @@ TEST(So3Angle, AgreesWithAcosOfTraceWhereWellConditioned) {
 
 TEST(So3Distance, IsConstructedAngleSymmetricAndInvariant) {
   std::mt19937_64 rng(110);
-  std::uniform_real_distribution<double> angle(0.0, kPi);
-  for (int i = 0; i < kSamples; ++i) {
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Matrix3d R_a = testing::RandomRotation(rng);
     const double theta = angle(rng);
     const Eigen::Matrix3d delta =
@@ -246,7 +248,7 @@ TEST(So3Jacobians, MatchExplicitFormulas) {
   // Solà et al. (2018) eqs. (143)–(146), written out here; θ ≥ 0.1 and ≤ 3 keeps them exact.
   std::mt19937_64 rng(111);
   std::uniform_real_distribution<double> angle(0.1, 3.0);
-  for (int i = 0; i < kSamples; ++i) {
+  for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Vector3d omega = testing::RandomRotationVector(rng, angle(rng));
     const double t = omega.norm();
     const Eigen::Matrix3d K = Skew(omega);
@@ -278,8 +280,8 @@ Eigen::Matrix3d LeftJacobianBySeries(const Eigen::Vector3d& omega) {
 
 TEST(So3Jacobians, MatchLongDoubleSeriesToRounding) {
   std::mt19937_64 rng(120);
-  std::vector<Eigen::Vector3d> cases = TestRotationVectors(rng, kPi);
-  for (double theta : JacobianTestAngles()) {
+  std::vector<Eigen::Vector3d> cases = TestRotationVectors(rng, std::numbers::pi);
+  for (double theta : So3JacobianTestAngles()) {
     for (int i = 0; i < 20; ++i) cases.push_back(testing::RandomRotationVector(rng, theta));
   }
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
@@ -295,7 +297,7 @@ TEST(So3Jacobians, MatchLongDoubleSeriesToRounding) {
 TEST(So3Jacobians, InversesAndLeftRightRelations) {
   std::mt19937_64 rng(115);
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-  for (const Eigen::Vector3d& omega : TestRotationVectors(rng, kPi)) {
+  for (const Eigen::Vector3d& omega : TestRotationVectors(rng, std::numbers::pi)) {
     const Eigen::Matrix3d R = so3::Exp(omega);
     EXPECT_LT(MaxAbs(so3::RightJacobian(omega) * so3::RightJacobianInverse(omega) - I), 1e-14);
     EXPECT_LT(MaxAbs(so3::LeftJacobian(omega) * so3::LeftJacobianInverse(omega) - I), 1e-14);
@@ -323,7 +325,7 @@ TEST(So3Jacobians, ContinuousAcrossSeriesThreshold) {
 
 TEST(So3Interpolate, EndpointsMidpointAndConstantSpeed) {
   std::mt19937_64 rng(118);
-  std::uniform_real_distribution<double> angle(0.0, kPi - 1e-6);
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi - 1e-6);
   for (int i = 0; i < 1000; ++i) {
     const Eigen::Matrix3d R0 = testing::RandomRotation(rng);
     const double theta = angle(rng);

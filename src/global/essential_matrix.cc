@@ -3,6 +3,8 @@
 #include <Eigen/SVD>
 #include <cmath>
 
+#include "hecal/geometry/dense_decompositions.h"
+
 namespace hecal::global {
 
 double SampsonError(const Eigen::Matrix3d& E, const BearingPair& pair) {

@@ -112,8 +112,11 @@ TEST(SolveGlobalRobust, KeepsCorrectMatchesWhenTheRobotNoiseExceedsThePixelThres
   std::mt19937_64 rng(17);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (EpipolarMotion& motion : scene.problem.motions) {
-    const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
-    const Eigen::Vector3d shift(normal(rng), normal(rng), normal(rng));
+    // Drawn last to first: the order these tests' data were generated in.
+    const double omega_z = normal(rng), omega_y = normal(rng), omega_x = normal(rng);
+    const Eigen::Vector3d omega(omega_x, omega_y, omega_z);
+    const double shift_z = normal(rng), shift_y = normal(rng), shift_x = normal(rng);
+    const Eigen::Vector3d shift(shift_x, shift_y, shift_z);
     motion.hand = motion.hand * MakePose(so3::Exp(3e-3 * omega), 2e-3 * shift);
   }
   SearchOptions search;

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "handeye/handeye_test_util.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
@@ -15,11 +16,6 @@
 
 namespace hecal::handeye {
 namespace {
-
-Motion MotionFor(const Pose& X, const Eigen::Vector3d& rotation_vector, std::mt19937_64& rng) {
-  const Pose B = MakePose(so3::Exp(rotation_vector), testing::RandomPose(rng).translation());
-  return {X * B * X.inverse(), B, 0, 1};
-}
 
 // Unit axes weigh every motion equally, so motions that barely rotate — their axes are noise —
 // must not enter: with 30 noisy motions of 0.05°–0.5° (axes essentially random) next to 10 good
@@ -34,12 +30,14 @@ TEST(ChouKamel, NearZeroRotationsDoNotEnterTheUnitAxisSystem) {
     std::uniform_real_distribution<double> large(0.5, 3.0),
         small(0.05 * kRadiansPerDegree, 0.5 * kRadiansPerDegree);
     for (int k = 0; k < 10; ++k) {
-      motions.push_back(MotionFor(X, large(rng) * testing::RandomUnitVector(rng), rng));
+      const Eigen::Vector3d axis = testing::RandomUnitVector(rng);  // drawn before the angle
+      motions.push_back(MotionFor(X, large(rng) * axis, rng));
     }
     for (Motion& m : motions) m.A = testing::AddPoseNoise(m.A, noise, rng);
     worst_good = std::max(worst_good, testing::Error(SolveChouKamel(motions), X).rotation);
     for (int k = 0; k < 30; ++k) {
-      Motion m = MotionFor(X, small(rng) * testing::RandomUnitVector(rng), rng);
+      const Eigen::Vector3d axis = testing::RandomUnitVector(rng);
+      Motion m = MotionFor(X, small(rng) * axis, rng);
       m.A = testing::AddPoseNoise(m.A, noise, rng);
       motions.push_back(m);
     }

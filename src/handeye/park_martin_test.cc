@@ -54,10 +54,13 @@ TEST(ParkMartin, NearHalfTurnMotionsWithTinyNoise) {
   std::normal_distribution<double> noise(0.0, 1e-6);
   std::vector<Motion> motions;
   for (int k = 0; k < 12; ++k) {
-    const Pose B = MakePose(so3::Exp((std::numbers::pi - 1e-7) * testing::RandomUnitVector(rng)),
-                            testing::RandomPose(rng).translation());
+    // Drawn last to first: the order these tests' data were generated in.
+    const Eigen::Vector3d t = testing::RandomPose(rng).translation();
+    const Eigen::Vector3d axis = testing::RandomUnitVector(rng);
+    const Pose B = MakePose(so3::Exp((std::numbers::pi - 1e-7) * axis), t);
     Pose A = X * B * X.inverse();
-    A.linear() = A.linear() * so3::Exp(Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+    const double dz = noise(rng), dy = noise(rng), dx = noise(rng);
+    A.linear() = A.linear() * so3::Exp(Eigen::Vector3d(dx, dy, dz));
     motions.push_back({A, B, 0, 1});
   }
   EXPECT_LT(testing::Error(SolveParkMartin(motions), X).rotation, 1e-5);

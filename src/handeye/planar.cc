@@ -1,14 +1,15 @@
 // Planar robots: the fixed translation component (planar.h).
 #include "hecal/handeye/planar.h"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/handeye/andreff.h"
 #include "hecal/handeye/motion.h"
@@ -147,7 +148,7 @@ Eigen::Matrix<double, 12, 12> ConstrainedInverse(const Eigen::Matrix<double, 12,
   const Eigen::Matrix<double, 11, 11> inverse =
       llt.info() == Eigen::Success
           ? Eigen::Matrix<double, 11, 11>(llt.solve(Eigen::Matrix<double, 11, 11>::Identity()))
-          : Eigen::Matrix<double, 11, 11>(reduced.completeOrthogonalDecomposition().pseudoInverse());
+          : Eigen::Matrix<double, 11, 11>(PseudoInverse(reduced));
   return U * inverse * U.transpose();
 }
 

@@ -48,8 +48,8 @@ TEST_P(RotationThenTranslation, ExactFromTwoMotionsWithHalfTurnX) {
   X.linear() = so3::Exp(std::numbers::pi * testing::RandomUnitVector(rng));
   std::vector<Motion> motions;
   for (double angle : {0.7, 2.9}) {
-    const Pose B = MakePose(so3::Exp(angle * testing::RandomUnitVector(rng)),
-                            testing::RandomPose(rng).translation());
+    const Eigen::Vector3d t = testing::RandomPose(rng).translation();  // drawn before the axis
+    const Pose B = MakePose(so3::Exp(angle * testing::RandomUnitVector(rng)), t);
     motions.push_back({X * B * X.inverse(), B, 0, 1});
   }
   testing::ExpectPoseNear(GetParam().solve(motions), X, 1e-9, "X");

@@ -15,13 +15,13 @@ namespace {
 using testing::Degrees;
 using testing::Error;
 
-struct Peer {
+struct ShahLiPeer {
   const char* name;
   Solution (*hecal)(const Problem&);
   cv::RobotWorldHandEyeCalibrationMethod opencv;
 };
 
-const Peer kPeers[] = {
+const ShahLiPeer kShahLiPeers[] = {
     {"shah", SolveShah, cv::CALIB_ROBOT_WORLD_HAND_EYE_SHAH},
     {"li", SolveLi, cv::CALIB_ROBOT_WORLD_HAND_EYE_LI},
 };
@@ -34,7 +34,7 @@ testing::PoseError Difference(const Solution& a, const Solution& b) {
 }
 
 TEST(ShahLiOpenCvPeer, AgreeOnNoiseFreeBenignData) {
-  for (const Peer& peer : kPeers) {
+  for (const ShahLiPeer& peer : kShahLiPeers) {
     double worst_rotation = 0.0, worst_translation = 0.0;
     for (handeye::Setup setup : {handeye::Setup::kEyeInHand, handeye::Setup::kEyeToHand}) {
       for (uint64_t seed = 1; seed <= 10; ++seed) {
@@ -57,7 +57,7 @@ TEST(ShahLiOpenCvPeer, AgreeOnNoiseFreeBenignData) {
 // LI's joint-system translations), so compare accuracy against the truth: hecal at least as
 // accurate, within 10%.
 TEST(ShahLiOpenCvPeer, AtLeastAsAccurateOnNoisyBenignData) {
-  for (const Peer& peer : kPeers) {
+  for (const ShahLiPeer& peer : kShahLiPeers) {
     const testing::PeerAccuracy accuracy = testing::ComparePeerAccuracy(
         [&peer](const Problem& problem, bool use_opencv) {
           return use_opencv ? testing::OpenCvRobotWorldHandEye(problem, peer.opencv)
@@ -74,7 +74,7 @@ TEST(ShahLiOpenCvPeer, TabbDatasetCloseToOpenCv) {
   const testing::TabbDataset tabb = testing::LoadTabbDataset();
   const Problem problem = MakeProblem(Setup::kEyeInHand, tabb.T_base_gripper, tabb.T_camera_target);
   const Solution reference{tabb.X, tabb.Z};
-  for (const Peer& peer : kPeers) {
+  for (const ShahLiPeer& peer : kShahLiPeers) {
     const Solution ours = peer.hecal(problem);
     const Solution theirs = testing::OpenCvRobotWorldHandEye(problem, peer.opencv);
     const testing::PoseError ours_vs_tabb = Difference(ours, reference);

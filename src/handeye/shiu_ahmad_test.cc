@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "handeye/handeye_test_util.h"
 #include "hecal/core/error.h"
 #include "hecal/geometry/skew.h"
 #include "hecal/geometry/so3.h"
@@ -13,11 +14,6 @@
 
 namespace hecal::handeye {
 namespace {
-
-Motion MotionFor(const Pose& X, const Eigen::Vector3d& rotation_vector, std::mt19937_64& rng) {
-  const Pose B = MakePose(so3::Exp(rotation_vector), testing::RandomPose(rng).translation());
-  return {X * B * X.inverse(), B, 0, 1};
-}
 
 // X maps the camera-side axis of the first motion to its negative (k_A = −k_B): the rotation
 // R_0 taking k_B to k_A is not the minimal one, which is where an implementation built on

@@ -24,9 +24,13 @@ testing::Scene NoisyCaseWithXAngle(double x_angle, int stations, uint64_t seed) 
   std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
   std::vector<Pose> T_target_camera;
   for (int i = 0; i < stations; ++i) {
-    const Eigen::Matrix3d R = so3::Exp(tilt(rng) * Eigen::Vector3d::UnitX()) *
-                              so3::Exp(tilt(rng) * Eigen::Vector3d::UnitY()) *
-                              so3::Exp(spin(rng) * Eigen::Vector3d::UnitZ());
+    // Drawn last to first: the order these tests' data were generated in.
+    const double rz = spin(rng);
+    const double ry = tilt(rng);
+    const double rx = tilt(rng);
+    const Eigen::Matrix3d R = so3::Exp(rx * Eigen::Vector3d::UnitX()) *
+                              so3::Exp(ry * Eigen::Vector3d::UnitY()) *
+                              so3::Exp(rz * Eigen::Vector3d::UnitZ());
     T_target_camera.push_back(
         MakePose(R, Eigen::Vector3d(0.0, 0.0, -1.0) + testing::RandomPose(rng, 0.5).translation()));
   }

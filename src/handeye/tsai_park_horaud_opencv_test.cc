@@ -71,9 +71,10 @@ TEST(TsaiParkHoraudOpenCvPeer, AtLeastAsAccurateOnNoisyBenignData) {
   for (const auto& [form, method] : peers) {
     const std::string name(Info(form).name);
     const testing::PeerAccuracy accuracy = testing::ComparePeerAccuracy(
-        [form, method](const Problem& problem, bool use_opencv) {
-          return use_opencv ? Solution{testing::OpenCvHandEye(problem, method), Pose::Identity()}
-                            : SolveClosedForm(form, problem);
+        [peer_form = form, peer_method = method](const Problem& problem, bool use_opencv) {
+          return use_opencv
+                     ? Solution{testing::OpenCvHandEye(problem, peer_method), Pose::Identity()}
+                     : SolveClosedForm(peer_form, problem);
         },
         40, /*check_z=*/false, name.c_str());
     EXPECT_LE(accuracy.hecal_rotation_deg, 1.1 * accuracy.opencv_rotation_deg) << name;

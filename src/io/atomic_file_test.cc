@@ -120,7 +120,7 @@ TEST_F(AtomicFileTest, ReadingADirectoryIsAnInputError) {
 
 // The message of the InputError `write` throws ("" when it throws none).
 template <typename F>
-std::string ErrorOf(F write) {
+std::string AtomicFileError(F write) {
   try {
     write();
   } catch (const InputError& error) {
@@ -144,20 +144,20 @@ TEST_F(AtomicFileTest, ASymbolicLinkIsWrittenThroughAndStaysALink) {
 
 TEST_F(AtomicFileTest, ABrokenLinkAFifoAndADeviceAreRefusedAndKept) {
   fs::create_symlink("nowhere.csv", dir_ / "broken.csv");
-  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically((dir_ / "broken.csv").string(), "x"); }),
+  EXPECT_THAT(AtomicFileError([&] { WriteFileAtomically((dir_ / "broken.csv").string(), "x"); }),
               HasSubstr("broken link"));
   ASSERT_EQ(mkfifo((dir_ / "pipe").c_str(), 0600), 0);
-  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically((dir_ / "pipe").string(), "x"); }),
+  EXPECT_THAT(AtomicFileError([&] { WriteFileAtomically((dir_ / "pipe").string(), "x"); }),
               HasSubstr("FIFO"));
   EXPECT_TRUE(fs::is_fifo(dir_ / "pipe"));
-  EXPECT_THAT(ErrorOf([&] { ReadFile((dir_ / "pipe").string()); }), HasSubstr("FIFO"));
+  EXPECT_THAT(AtomicFileError([&] { ReadFile((dir_ / "pipe").string()); }), HasSubstr("FIFO"));
   fs::create_symlink("/dev/null", dir_ / "null");
-  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically((dir_ / "null").string(), "x"); }),
+  EXPECT_THAT(AtomicFileError([&] { WriteFileAtomically((dir_ / "null").string(), "x"); }),
               HasSubstr("character device"));
-  EXPECT_THAT(ErrorOf([&] { WriteFileAtomically("/dev/null", "x"); }),
+  EXPECT_THAT(AtomicFileError([&] { WriteFileAtomically("/dev/null", "x"); }),
               HasSubstr("character device"));
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
-  EXPECT_THAT(ErrorOf([&] { ReadFile("/dev/zero"); }), HasSubstr("character device"));
+  EXPECT_THAT(AtomicFileError([&] { ReadFile("/dev/zero"); }), HasSubstr("character device"));
   EXPECT_EQ(Entries(), (std::vector<std::string>{"broken.csv", "null", "pipe"}));
 }
 
@@ -167,19 +167,19 @@ TEST_F(AtomicFileTest, AnOutputThatIsAnInputIsRefusedHardLinksIncluded) {
   fs::create_hard_link(input, dir_ / "alias.csv");
   for (const std::string& output :
        {input, (dir_ / "." / "in.csv").string(), (dir_ / "alias.csv").string()}) {
-    EXPECT_THAT(ErrorOf([&] {
+    EXPECT_THAT(AtomicFileError([&] {
                   CheckOutputs({{"--output", output}}, {{"--robot", input}});
                 }),
                 HasSubstr("names the input --robot"))
         << output;
   }
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(AtomicFileError([&] {
                 CheckOutputs({{"--output", (dir_ / "a.csv").string()},
                               {"--summary", (dir_ / "." / "a.csv").string()}},
                              {});
               }),
               HasSubstr("same file as --output"));
-  EXPECT_EQ(ErrorOf([&] {
+  EXPECT_EQ(AtomicFileError([&] {
               CheckOutputs({{"--output", (dir_ / "new.csv").string()}, {"--x", ""}},
                            {{"--robot", input}});
             }),
@@ -191,7 +191,7 @@ TEST_F(AtomicFileTest, SeveralFilesAreWrittenAllOrNone) {
   const std::string kept = (dir_ / "kept.csv").string();
   WriteFileAtomically(kept, "previous\n");
   // The second target's directory is missing: nothing is written, the first file keeps its text.
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(AtomicFileError([&] {
                 WriteFilesAtomically({{"--output", kept, "new\n"},
                                       {"--summary", (dir_ / "no" / "s.csv").string(), "s\n"}});
               }),
@@ -265,7 +265,7 @@ TEST_F(AtomicFileTest, AFolderPathThatIsAFileIsRefused) {
   const std::string file = (dir_ / "file").string();
   WriteFileAtomically(file, "kept\n");
   StagedFolder staged("--output", file, "the frames");
-  const std::string error = ErrorOf([&] { staged.Stage("x.txt", "x"); });
+  const std::string error = AtomicFileError([&] { staged.Stage("x.txt", "x"); });
   EXPECT_THAT(error, HasSubstr("cannot write the frames: it exists and is not a folder"));
   EXPECT_THAT(error, HasSubstr("give --output a folder"));
   EXPECT_EQ(ReadFile(file), "kept\n");

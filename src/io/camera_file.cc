@@ -28,7 +28,7 @@ YAML::Node Require(const internal::YamlMap& entries, const std::string& key,
   return *node;
 }
 
-double Number(const YAML::Node& node, const std::string& source, const std::string& what) {
+double CameraNumber(const YAML::Node& node, const std::string& source, const std::string& what) {
   return import_internal::ScalarNumber(node, source, what).value;
 }
 
@@ -140,7 +140,7 @@ pose::CameraModel ParseHecal(const internal::YamlMap& entries, const std::string
   for (const auto& [key, target] : values) {
     const YAML::Node node =
         Require(entries, key, source, 0, std::string("add ") + key + ": ... (pixels); " + kLayouts);
-    *target.first = Number(node, source, key);
+    *target.first = CameraNumber(node, source, key);
     *target.second = entries.Line(key);
   }
   CheckIntrinsics(camera, lines, source);

@@ -11,6 +11,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_tabb.h"
 #include "hecal/io/import_types.h"
+#include "io_test_util.h"
 #include "testing/thrown.h"
 
 namespace hecal::io {
@@ -18,19 +19,17 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kSource = std::string(HECAL_SOURCE_DIR);
-
-pose::CameraModel Parse(const std::string& text) {
+pose::CameraModel ParseCamera(const std::string& text) {
   return ParseCameraFile(text, "camera.yaml").camera;
 }
 
-InputError ErrorOf(const std::string& text) {
+InputError CameraErrorOf(const std::string& text) {
   SCOPED_TRACE(text);
-  return testing::Thrown<InputError>([&] { Parse(text); });
+  return testing::Thrown<InputError>([&] { ParseCamera(text); });
 }
 
-void ExpectError(const std::string& text, int line, const std::string& problem) {
-  testing::ExpectInputError(ErrorOf(text), "camera.yaml", line, problem);
+void ExpectCameraError(const std::string& text, int line, const std::string& problem) {
+  testing::ExpectInputError(CameraErrorOf(text), "camera.yaml", line, problem);
 }
 
 // The moveit ChArUco camera (data/moveit-calibration/SOURCE.md).
@@ -86,13 +85,13 @@ TEST(CameraFile, WritesHecalLayout) {
 }
 
 TEST(CameraFile, HecalLayout) {
-  ExpectSame(Parse("fx: 590.6972346\nfy: 592.84676713\ncx: 322.33104773\ncy: 247.40030325\n"
-                   "width: 640\nheight: 480\n"
-                   "distortion: {model: plumb_bob, coefficients: [0.15405498, -0.24916842, "
-                   "0.00350791, -0.00110041, 0.0]}\n"),
+  ExpectSame(ParseCamera("fx: 590.6972346\nfy: 592.84676713\ncx: 322.33104773\ncy: 247.40030325\n"
+                         "width: 640\nheight: 480\n"
+                         "distortion: {model: plumb_bob, coefficients: [0.15405498, -0.24916842, "
+                         "0.00350791, -0.00110041, 0.0]}\n"),
              Moveit());
   // Four coefficients: k3 = 0; no image size: 0 (unknown).
-  const pose::CameraModel four = Parse(
+  const pose::CameraModel four = ParseCamera(
       "fx: 500\nfy: 500\ncx: 320\ncy: 240\ndistortion:\n  model: plumb_bob\n"
       "  coefficients: [0.1, -0.2, 0.001, 0.002]\n");
   EXPECT_EQ(four.distortion, (std::array<double, 5>{0.1, -0.2, 0.001, 0.002, 0.0}));
@@ -101,11 +100,12 @@ TEST(CameraFile, HecalLayout) {
 }
 
 TEST(CameraFile, ReadsWhatTheTabbImporterWrites) {
-  const std::string dir = kSource + "/data/tabb-rwhe-dataset1/";
+  const std::string dir = test_util::kSource + "/data/tabb-rwhe-dataset1/";
   const ImportedPoses tabb = ParseTabb(ReadFile(dir + "robot_cali.txt"), "robot_cali.txt",
                                        ReadFile(dir + "cali.txt"), "cali.txt");
   ASSERT_TRUE(tabb.intrinsics.has_value());
-  const pose::CameraModel camera = Parse(FormatIntrinsicsYaml(*tabb.intrinsics, {"from cali.txt"}));
+  const pose::CameraModel camera =
+      ParseCamera(FormatIntrinsicsYaml(*tabb.intrinsics, {"from cali.txt"}));
   EXPECT_EQ(camera.fx, tabb.intrinsics->fx);
   EXPECT_EQ(camera.cy, tabb.intrinsics->cy);
   ASSERT_EQ(tabb.intrinsics->distortion.size(), 5u);
@@ -135,9 +135,9 @@ avg_reprojection_error: 3.1000000000000000e-01
 )";
 
 TEST(CameraFile, OpenCvFileStorageLayout) {
-  ExpectSame(Parse(kOpenCvFile), Moveit());
+  ExpectSame(ParseCamera(kOpenCvFile), Moveit());
   // OpenCV's rational model with k4..k6 = 0 (CALIB_RATIONAL_MODEL off) is plumb_bob.
-  const pose::CameraModel eight = Parse(
+  const pose::CameraModel eight = ParseCamera(
       "%YAML:1.0\ncamera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n"
       "   data: [500., 0., 320., 0., 510., 240., 0., 0., 1.]\n"
       "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 8\n   dt: d\n"
@@ -171,7 +171,7 @@ projection_matrix:
 )";
 
 TEST(CameraFile, RosCameraInfoLayout) {
-  ExpectSame(Parse(kRosFile), Moveit());
+  ExpectSame(ParseCamera(kRosFile), Moveit());
 }
 
 TEST(CameraFile, ReadsAFile) {
@@ -186,49 +186,52 @@ TEST(CameraFile, ReadsAFile) {
 const std::string kDistortion = "distortion: {model: plumb_bob, coefficients: [0, 0, 0, 0, 0]}\n";
 
 TEST(CameraFile, HecalLayoutErrors) {
-  ExpectError("", 0, "empty");
-  ExpectError("[1, 2]\n", 1, "not a map");
-  ExpectError("fx: 500\nfy: [500\n", 3, "not valid YAML");
-  ExpectError("width: 640\n", 0, "neither fx, fy (hecal) nor camera_matrix");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\n" + kDistortion, 0, "no 'cy'");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nfocal: 3\n" + kDistortion, 5,
-              "unknown key \"focal\"");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidht: 640\n" + kDistortion, 5,
-              "(did you mean 'width'?)");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nfx: 501\n" + kDistortion, 5,
-              "key 'fx' is given twice");
-  ExpectError("fx: 0\nfy: 500\ncx: 320\ncy: 240\n" + kDistortion, 1, "fx is 0.0e+00");
-  ExpectError("fx: 500\nfy: -500\ncx: 320\ncy: 240\n" + kDistortion, 2, "not a positive focal");
-  ExpectError("fx: .inf\nfy: 500\ncx: 320\ncy: 240\n" + kDistortion, 1, "not a positive focal");
-  ExpectError("fx: 500\nfy: 500\ncx: .nan\ncy: 240\n" + kDistortion, 3, "not finite");
-  ExpectError("fx: 500\nfy: 500\ncx: abc\ncy: 240\n" + kDistortion, 3, "not a number");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidth: 640\n" + kDistortion, 5,
-              "has width but no height");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidth: 640\nheight: 0\n" + kDistortion, 6,
-              "the image size is 640 x 0");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidth: 640.5\nheight: 480\n" + kDistortion, 5,
-              "not a whole number");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\ndistortion: [0, 0, 0, 0, 0]\n", 5,
-              "distortion is not a map");
-  ExpectError(
+  ExpectCameraError("", 0, "empty");
+  ExpectCameraError("[1, 2]\n", 1, "not a map");
+  ExpectCameraError("fx: 500\nfy: [500\n", 3, "not valid YAML");
+  ExpectCameraError("width: 640\n", 0, "neither fx, fy (hecal) nor camera_matrix");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\n" + kDistortion, 0, "no 'cy'");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nfocal: 3\n" + kDistortion, 5,
+                    "unknown key \"focal\"");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidht: 640\n" + kDistortion, 5,
+                    "(did you mean 'width'?)");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nfx: 501\n" + kDistortion, 5,
+                    "key 'fx' is given twice");
+  ExpectCameraError("fx: 0\nfy: 500\ncx: 320\ncy: 240\n" + kDistortion, 1, "fx is 0.0e+00");
+  ExpectCameraError("fx: 500\nfy: -500\ncx: 320\ncy: 240\n" + kDistortion, 2,
+                    "not a positive focal");
+  ExpectCameraError("fx: .inf\nfy: 500\ncx: 320\ncy: 240\n" + kDistortion, 1,
+                    "not a positive focal");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: .nan\ncy: 240\n" + kDistortion, 3, "not finite");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: abc\ncy: 240\n" + kDistortion, 3, "not a number");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidth: 640\n" + kDistortion, 5,
+                    "has width but no height");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidth: 640\nheight: 0\n" + kDistortion, 6,
+                    "the image size is 640 x 0");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\ncy: 240\nwidth: 640.5\nheight: 480\n" + kDistortion,
+                    5, "not a whole number");
+  ExpectCameraError("fx: 500\nfy: 500\ncx: 320\ncy: 240\ndistortion: [0, 0, 0, 0, 0]\n", 5,
+                    "distortion is not a map");
+  ExpectCameraError(
       "fx: 500\nfy: 500\ncx: 320\ncy: 240\n"
       "distortion: {model: equidistant, coefficients: [0, 0, 0, 0]}\n",
       5, "distortion model is \"equidistant\"; hecal supports plumb_bob only");
-  ExpectError("fx: 500\nfy: 500\ncx: 320\ncy: 240\ndistortion: {coefficients: [0, 0, 0, 0]}\n", 5,
-              "no 'model'");
-  ExpectError(
+  ExpectCameraError(
+      "fx: 500\nfy: 500\ncx: 320\ncy: 240\ndistortion: {coefficients: [0, 0, 0, 0]}\n", 5,
+      "no 'model'");
+  ExpectCameraError(
       "fx: 500\nfy: 500\ncx: 320\ncy: 240\n"
       "distortion:\n  model: plumb_bob\n  coeficients: [0, 0, 0, 0]\n",
       7, "unknown key \"coeficients\" in distortion (did you mean 'coefficients'?)");
-  ExpectError(
+  ExpectCameraError(
       "fx: 500\nfy: 500\ncx: 320\ncy: 240\n"
       "distortion: {model: plumb_bob, coefficients: [0.1, 0.2, 0.3]}\n",
       5, "not a list of 4, 5, 8, 12 or 14 coefficients");
-  ExpectError(
+  ExpectCameraError(
       "fx: 500\nfy: 500\ncx: 320\ncy: 240\n"
       "distortion: {model: plumb_bob, coefficients: [0.1, 0.2, 0, 0, 0, 0.01, 0, 0]}\n",
       5, "has k4 = 1.0e-02");
-  ExpectError(
+  ExpectCameraError(
       "fx: 500\nfy: 500\ncx: 320\ncy: 240\n"
       "distortion: {model: plumb_bob, coefficients: [0.1, .nan, 0, 0, 0]}\n",
       5, "coefficients[1] is not finite");
@@ -236,29 +239,29 @@ TEST(CameraFile, HecalLayoutErrors) {
 
 TEST(CameraFile, MatrixLayoutErrors) {
   const std::string d = "distortion_coefficients: [0, 0, 0, 0, 0]\n";
-  ExpectError("camera_matrix: [[500, 0, 320], [0, 500, 240]]\n" + d, 1, "2x3, not 3x3");
-  ExpectError("camera_matrix: [[500, 0.5, 320], [0, 500, 240], [0, 0, 1]]\n" + d, 1,
-              "it has skew 5.0e-01");
-  ExpectError("camera_matrix: [[500, 0, 320], [0, 500, 240], [0, 0, 2]]\n" + d, 1,
-              "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
-  ExpectError("camera_matrix: [[-500, 0, 320], [0, 500, 240], [0, 0, 1]]\n" + d, 1,
-              "fx is -5.0e+02");
-  ExpectError("camera_matrix: [[500, 0, 320], [0, 500, 240], [0, 0, 1]]\nfx: 500\n" + d, 2,
-              "both camera_matrix and fx");
-  ExpectError(
+  ExpectCameraError("camera_matrix: [[500, 0, 320], [0, 500, 240]]\n" + d, 1, "2x3, not 3x3");
+  ExpectCameraError("camera_matrix: [[500, 0.5, 320], [0, 500, 240], [0, 0, 1]]\n" + d, 1,
+                    "it has skew 5.0e-01");
+  ExpectCameraError("camera_matrix: [[500, 0, 320], [0, 500, 240], [0, 0, 2]]\n" + d, 1,
+                    "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
+  ExpectCameraError("camera_matrix: [[-500, 0, 320], [0, 500, 240], [0, 0, 1]]\n" + d, 1,
+                    "fx is -5.0e+02");
+  ExpectCameraError("camera_matrix: [[500, 0, 320], [0, 500, 240], [0, 0, 1]]\nfx: 500\n" + d, 2,
+                    "both camera_matrix and fx");
+  ExpectCameraError(
       "camera_matrix: [[500, 0, 320], [0, 500, 240], [0, 0, 1]]\n"
       "distortion_coefficients: [[0, 0], [0, 0]]\n",
       2, "2x2, not a list");
-  ExpectError(
+  ExpectCameraError(
       "camera_matrix: [[500, 0, 320], [0, 500, 240], [0, 0, 1]]\n" + d + "image_height: 480\n", 3,
       "has image_height but no image_width");
   std::string rational = kRosFile;
   rational.replace(rational.find("plumb_bob"), 9, "rational_polynomial");
-  ExpectError(rational, 8,
-              "distortion_model is \"rational_polynomial\"; hecal supports plumb_bob only");
+  ExpectCameraError(rational, 8,
+                    "distortion_model is \"rational_polynomial\"; hecal supports plumb_bob only");
   std::string dt = kOpenCvFile;
   dt.replace(dt.find("dt: d"), 5, "dt: u");
-  ExpectError(dt, 9, "camera_matrix has dt \"u\"");
+  ExpectCameraError(dt, 9, "camera_matrix has dt \"u\"");
 }
 
 // A file without distortion reads as no distortion, and says so; a file with it has no note.
@@ -418,11 +421,11 @@ TEST(CameraFile, XmlIsDetectedByContent) {
   std::filesystem::remove(path);
   std::string no_declaration = kVispFranka;
   no_declaration.erase(0, no_declaration.find("<root>"));
-  EXPECT_EQ(Parse(no_declaration).cx, 323.46282958984375);
+  EXPECT_EQ(ParseCamera(no_declaration).cx, 323.46282958984375);
 }
 
 void ExpectXmlError(const std::string& xml, int line, const std::string& problem) {
-  testing::ExpectInputError(ErrorOf(xml), "camera.yaml", line, problem);
+  testing::ExpectInputError(CameraErrorOf(xml), "camera.yaml", line, problem);
 }
 
 std::string Replaced(std::string text, const std::string& from, const std::string& to) {
@@ -470,10 +473,10 @@ TEST(CameraFile, VispXmlWithSeveralCameras) {
   const size_t end = kVispFranka.find("</root>");
   const std::string camera = kVispFranka.substr(begin, end - begin);
   const std::string twice = kVispFranka.substr(0, end) + camera + "</root>\n";
-  EXPECT_EQ(Parse(twice).fx, 607.5931396484375);
+  EXPECT_EQ(ParseCamera(twice).fx, 607.5931396484375);
   const std::string hd = Replaced(Replaced(Replaced(camera, "640", "1280"), "480", "720"),
                                   "<name>Camera</name>", "<name>Camera HD</name>");
-  const InputError error = ErrorOf(kVispFranka.substr(0, end) + hd + "</root>\n");
+  const InputError error = CameraErrorOf(kVispFranka.substr(0, end) + hd + "</root>\n");
   testing::ExpectInputError(error, "camera.yaml", 0,
                             "has 2 different <camera> entries: \"Camera\" 640x480, \"Camera HD\" "
                             "1280x720");

@@ -35,7 +35,7 @@ TEST(CorrespondenceFile, NormalisesBearingsAndNumbersMatchesWithoutAnIdColumn) {
   EXPECT_EQ(file.motions[0].ids, (std::vector<int>{0, 1}));
 }
 
-void ExpectError(const std::string& text, int line, const std::string& words) {
+void ExpectCorrespondenceError(const std::string& text, int line, const std::string& words) {
   try {
     ParseCorrespondenceFile(text, "c.csv");
     ADD_FAILURE() << "accepted: " << text;
@@ -47,21 +47,22 @@ void ExpectError(const std::string& text, int line, const std::string& words) {
 }
 
 TEST(CorrespondenceFile, RefusesMalformedInputNamingTheLine) {
-  ExpectError("", 0, "no header");
-  ExpectError("first,second,u1,v1,u2,v2\n", 1, "no matches");
-  ExpectError("first,second,u1,v1,u2,v2,w\n", 1, "unknown column 'w'");
-  ExpectError("first,first,u1,v1,u2,v2\n", 1, "twice");
-  ExpectError("first,u1,v1,u2,v2\n1,1,2,3,4\n", 1, "missing column 'second'");
-  ExpectError("first,second,u1,v1,u2\n", 1, "incomplete");
-  ExpectError("first,second\n", 1, "no coordinate");
-  ExpectError("first,second,u1,v1,u2,v2,x1,y1,z1,x2,y2,z2\n", 1, "both");
-  ExpectError("first,second,u1,v1,u2,v2\n1,2,3,4,5\n", 2, "5 fields for 6 columns");
-  ExpectError("first,second,u1,v1,u2,v2\n1,2,3,4,5,nan\n", 2, "not a finite number");
-  ExpectError("first,second,u1,v1,u2,v2\n1,2,3,4,5,6,\n", 2, "7 fields");
-  ExpectError("first,second,u1,v1,u2,v2\n1,1,3,4,5,6\n", 2, "do not name a motion");
-  ExpectError("first,second,id,u1,v1,u2,v2\n1,2,0,3,4,5,6\n1,2,0,3,4,5,6\n", 3, "appears twice");
-  ExpectError("first,second,id,u1,v1,u2,v2\n1,2,0.5,3,4,5,6\n", 2, "not an integer");
-  ExpectError("first,second,x1,y1,z1,x2,y2,z2\n1,2,0,0,0,0,0,1\n", 2, "length 0");
+  ExpectCorrespondenceError("", 0, "no header");
+  ExpectCorrespondenceError("first,second,u1,v1,u2,v2\n", 1, "no matches");
+  ExpectCorrespondenceError("first,second,u1,v1,u2,v2,w\n", 1, "unknown column 'w'");
+  ExpectCorrespondenceError("first,first,u1,v1,u2,v2\n", 1, "twice");
+  ExpectCorrespondenceError("first,u1,v1,u2,v2\n1,1,2,3,4\n", 1, "missing column 'second'");
+  ExpectCorrespondenceError("first,second,u1,v1,u2\n", 1, "incomplete");
+  ExpectCorrespondenceError("first,second\n", 1, "no coordinate");
+  ExpectCorrespondenceError("first,second,u1,v1,u2,v2,x1,y1,z1,x2,y2,z2\n", 1, "both");
+  ExpectCorrespondenceError("first,second,u1,v1,u2,v2\n1,2,3,4,5\n", 2, "5 fields for 6 columns");
+  ExpectCorrespondenceError("first,second,u1,v1,u2,v2\n1,2,3,4,5,nan\n", 2, "not a finite number");
+  ExpectCorrespondenceError("first,second,u1,v1,u2,v2\n1,2,3,4,5,6,\n", 2, "7 fields");
+  ExpectCorrespondenceError("first,second,u1,v1,u2,v2\n1,1,3,4,5,6\n", 2, "do not name a motion");
+  ExpectCorrespondenceError("first,second,id,u1,v1,u2,v2\n1,2,0,3,4,5,6\n1,2,0,3,4,5,6\n", 3,
+                            "appears twice");
+  ExpectCorrespondenceError("first,second,id,u1,v1,u2,v2\n1,2,0.5,3,4,5,6\n", 2, "not an integer");
+  ExpectCorrespondenceError("first,second,x1,y1,z1,x2,y2,z2\n1,2,0,0,0,0,0,1\n", 2, "length 0");
 }
 
 }  // namespace

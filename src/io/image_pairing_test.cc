@@ -27,7 +27,7 @@ PoseTable Robot(const std::vector<std::string>& ids) {
   return table;
 }
 
-std::vector<StationImage> Stations(const std::vector<std::string>& ids) {
+std::vector<StationImage> StationsNamed(const std::vector<std::string>& ids) {
   std::vector<StationImage> stations;
   for (const std::string& id : ids) stations.push_back({id, "images/" + id + ".png", id + ".png"});
   return stations;
@@ -42,7 +42,7 @@ std::vector<double> Rows(const std::vector<Pose>& poses) {
 TEST(PairRobotWithStationsTest, ByIdInTheStationsOrderWithSpareRowsNoted) {
   std::vector<std::string> notes;
   const std::vector<Pose> poses = PairRobotWithStations(
-      Robot({"im_2", "im_0", "im_9", "im_1"}), Stations({"im_0", "im_1", "im_2"}), "images",
+      Robot({"im_2", "im_0", "im_9", "im_1"}), StationsNamed({"im_0", "im_1", "im_2"}), "images",
       [&](const std::string& note) { notes.push_back(note); });
   EXPECT_EQ(Rows(poses), (std::vector<double>{1, 3, 0}));
   ASSERT_EQ(notes.size(), 1u);
@@ -50,32 +50,33 @@ TEST(PairRobotWithStationsTest, ByIdInTheStationsOrderWithSpareRowsNoted) {
 }
 
 TEST(PairRobotWithStationsTest, ByOrderWithoutIdsOrWhenNoIdNamesAStation) {
-  EXPECT_EQ(
-      Rows(PairRobotWithStations(Robot({"", "", ""}), Stations({"a", "b", "c"}), "images", {})),
-      (std::vector<double>{0, 1, 2}));
-  std::vector<std::string> notes;
-  EXPECT_EQ(Rows(PairRobotWithStations(Robot({"1", "2", "3"}), Stations({"a", "b", "c"}), "images",
-                                       [&](const std::string& note) { notes.push_back(note); })),
+  EXPECT_EQ(Rows(PairRobotWithStations(Robot({"", "", ""}), StationsNamed({"a", "b", "c"}),
+                                       "images", {})),
             (std::vector<double>{0, 1, 2}));
+  std::vector<std::string> notes;
+  EXPECT_EQ(
+      Rows(PairRobotWithStations(Robot({"1", "2", "3"}), StationsNamed({"a", "b", "c"}), "images",
+                                 [&](const std::string& note) { notes.push_back(note); })),
+      (std::vector<double>{0, 1, 2}));
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_NE(notes[0].find("no id equals an image's file stem"), std::string::npos) << notes[0];
 }
 
 TEST(PairRobotWithStationsTest, ErrorsNameTheRobotFile) {
   InputError error = testing::Thrown<InputError>([] {
-    PairRobotWithStations(Robot({"", ""}), Stations({"a", "b", "c"}), "images", {});
+    PairRobotWithStations(Robot({"", ""}), StationsNamed({"a", "b", "c"}), "images", {});
   });
   EXPECT_EQ(error.source(), "robot.csv");
   EXPECT_EQ(error.problem(), "has 2 poses but images has 3 images");
 
   error = testing::Thrown<InputError>([] {
-    PairRobotWithStations(Robot({"a", "b", "a"}), Stations({"a", "b"}), "images", {});
+    PairRobotWithStations(Robot({"a", "b", "a"}), StationsNamed({"a", "b"}), "images", {});
   });
   EXPECT_EQ(error.line(), 4);
   EXPECT_EQ(error.problem(), "id 'a' repeats (first at line 2)");
 
   error = testing::Thrown<InputError>([] {
-    PairRobotWithStations(Robot({"a", "b"}), Stations({"a", "c"}), "images", {});
+    PairRobotWithStations(Robot({"a", "b"}), StationsNamed({"a", "c"}), "images", {});
   });
   EXPECT_EQ(error.problem(), "no row with id 'c' for the image c.png");
 }

@@ -44,7 +44,7 @@ Pose ReadPose(const YAML::Node& node, const std::string& source, const std::stri
                                            Origin{source, matrix.line, what}, rotations);
 }
 
-ImportedPoses Parse(std::string_view yaml_text, const std::string& source) {
+ImportedPoses ParseCamodocalYaml(std::string_view yaml_text, const std::string& source) {
   const YAML::Node root = import_internal::LoadYaml(yaml_text, source);
   if (!root.IsMap()) {
     Fail(source, 0, "the file is not a YAML map with frameCount, T1_i and T2_i",
@@ -139,7 +139,7 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source) {
 }  // namespace
 
 ImportedPoses ParseCamodocalPairs(std::string_view yaml_text, const std::string& source) {
-  return import_internal::GuardYaml(source, [&] { return Parse(yaml_text, source); });
+  return import_internal::GuardYaml(source, [&] { return ParseCamodocalYaml(yaml_text, source); });
 }
 
 }  // namespace hecal::io

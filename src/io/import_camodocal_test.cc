@@ -20,7 +20,7 @@ const std::string kPairs =
     std::string(HECAL_SOURCE_DIR) + "/data/camodocal-artag/TransformPairsInput.yml";
 
 // SOURCE.md: OpenCV PARK without sample 36, X = T_ee_marker.
-Pose ParkX() {
+Pose CamodocalParkX() {
   Eigen::Matrix3d R;
   R << -0.99685, 0.07272, 0.03158, 0.03145, -0.00292, 0.99950, 0.07277, 0.99735, 0.00062;
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -32,7 +32,7 @@ Pose ParkX() {
 // T_camera_marker_i⁻¹ must be the same for every sample.
 std::vector<Pose> BaseCamera(const ImportedPoses& poses, bool invert_camera) {
   std::vector<Pose> cameras;
-  const Pose X = ParkX();
+  const Pose X = CamodocalParkX();
   for (size_t i = 0; i < poses.robot.rows.size(); ++i) {
     const Pose& camera = poses.camera->rows[i].pose;
     cameras.push_back(poses.robot.rows[i].pose * X * (invert_camera ? camera.inverse() : camera));
@@ -98,7 +98,7 @@ std::string Pairs(int frame_count, int pairs) {
   return text;
 }
 
-void ExpectError(const std::string& text, const std::string& part) {
+void ExpectCamodocalError(const std::string& text, const std::string& part) {
   try {
     ParseCamodocalPairs(text, "pairs.yml");
     ADD_FAILURE() << "no error; expected " << part;
@@ -137,37 +137,37 @@ TEST(ImportCamodocal, ReadsOpenCvFileStorageYaml) {
 }
 
 TEST(ImportCamodocal, RejectsBadInput) {
-  ExpectError("", "not a YAML map");
-  ExpectError("%YAML:1.0\nT1_0: [", "not valid YAML");
-  ExpectError("%YAML:1.0\nfoo: 1\n", "no frameCount");
-  ExpectError(Pairs(3, 2), "pairs.yml:2: frameCount is 3 but the file has 2 T1_i entries");
-  ExpectError(Pairs(1, 2), "frameCount is 1 but the file has 2");
-  ExpectError(Pairs(0, 0), "frameCount is 0");
-  ExpectError("frameCount: -1\n", "not a whole number");
-  ExpectError("frameCount: 2.5\n", "not a whole number");
+  ExpectCamodocalError("", "not a YAML map");
+  ExpectCamodocalError("%YAML:1.0\nT1_0: [", "not valid YAML");
+  ExpectCamodocalError("%YAML:1.0\nfoo: 1\n", "no frameCount");
+  ExpectCamodocalError(Pairs(3, 2), "pairs.yml:2: frameCount is 3 but the file has 2 T1_i entries");
+  ExpectCamodocalError(Pairs(1, 2), "frameCount is 1 but the file has 2");
+  ExpectCamodocalError(Pairs(0, 0), "frameCount is 0");
+  ExpectCamodocalError("frameCount: -1\n", "not a whole number");
+  ExpectCamodocalError("frameCount: 2.5\n", "not a whole number");
   std::string gap = Pairs(2, 2);
   gap.replace(gap.find("T1_1"), 4, "T1_7");
-  ExpectError(gap, "T1_1 is missing");
+  ExpectCamodocalError(gap, "T1_1 is missing");
   std::string missing_t2 = Pairs(1, 1);
   missing_t2.replace(missing_t2.find("T2_0"), 4, "T3_0");
-  ExpectError(missing_t2, "the file has 0 T2_i entries");
+  ExpectCamodocalError(missing_t2, "the file has 0 T2_i entries");
   std::string wrong_count = Pairs(1, 1);
   wrong_count.replace(wrong_count.find("0., 0., 0., 1. ]"), 16, "0., 0., 1. ]");
-  ExpectError(wrong_count, "15 data values but rows x cols = 4 x 4");
+  ExpectCamodocalError(wrong_count, "15 data values but rows x cols = 4 x 4");
   std::string nan = Pairs(1, 1);
   nan.replace(nan.find("0.5"), 3, ".nan");
-  ExpectError(nan, "non-finite");
+  ExpectCamodocalError(nan, "non-finite");
   std::string word = Pairs(1, 1);
   word.replace(word.find("0.5"), 3, "abc");
-  ExpectError(word, "\"abc\", not a number");
+  ExpectCamodocalError(word, "\"abc\", not a number");
   std::string skew = Pairs(1, 1);
   skew.replace(skew.find("1., 0., 0., 0.5"), 15, "1., 0.2, 0., 0.5");
-  ExpectError(skew, "T1_0: the rotation matrix is not orthonormal");
+  ExpectCamodocalError(skew, "T1_0: the rotation matrix is not orthonormal");
   std::string small = Pairs(1, 1);
   small.replace(small.find("rows: 4"), 7, "rows: 3");
-  ExpectError(small, "16 data values but rows x cols = 3 x 4");
-  ExpectError("frameCount: 1\nT1_0: 5\nT2_0: 5\n", "T1_0 is not a matrix");
-  ExpectError("frameCount: 1\nT1_0: {rows: 4}\nT2_0: 5\n", "not an !!opencv-matrix");
+  ExpectCamodocalError(small, "16 data values but rows x cols = 3 x 4");
+  ExpectCamodocalError("frameCount: 1\nT1_0: 5\nT2_0: 5\n", "T1_0 is not a matrix");
+  ExpectCamodocalError("frameCount: 1\nT1_0: {rows: 4}\nT2_0: 5\n", "not an !!opencv-matrix");
 }
 
 }  // namespace

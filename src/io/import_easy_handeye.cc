@@ -158,8 +158,8 @@ std::string_view SetupText(ImportSetup setup) {
   return setup == ImportSetup::kEyeInHand ? "eye_in_hand" : "eye_on_base";
 }
 
-ImportedPoses Parse(std::string_view yaml_text, const std::string& source,
-                    std::optional<ImportSetup> setup_flag) {
+ImportedPoses ParseEasyHandeyeYaml(std::string_view yaml_text, const std::string& source,
+                                   std::optional<ImportSetup> setup_flag) {
   const YAML::Node root = import_internal::LoadYaml(yaml_text, source);
   if (!root.IsMap()) Fail(source, 0, "the file is not a YAML map", kFormatFix);
 
@@ -292,7 +292,8 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source,
 
 ImportedPoses ParseEasyHandeyeSamples(std::string_view yaml_text, const std::string& source,
                                       std::optional<ImportSetup> setup) {
-  return import_internal::GuardYaml(source, [&] { return Parse(yaml_text, source, setup); });
+  return import_internal::GuardYaml(source,
+                                    [&] { return ParseEasyHandeyeYaml(yaml_text, source, setup); });
 }
 
 }  // namespace hecal::io

@@ -7,17 +7,19 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_moveit.h"
 #include "hecal/io/import_tabb.h"
+#include "io_test_util.h"
 
 namespace hecal::io {
 namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kSource = std::string(HECAL_SOURCE_DIR);
 // Hand-made fixtures in easy_handeye2's samples layout, with values from the real data sets
 // (src/io/testdata/README.md): moveit samples 0-9 (eye_on_base) and Tabb poses 0-9 (eye_in_hand).
-const std::string kEyeOnBase = kSource + "/src/io/testdata/easy_handeye_eye_on_base.samples";
-const std::string kEyeInHand = kSource + "/src/io/testdata/easy_handeye_eye_in_hand.samples";
+const std::string kEyeOnBase =
+    test_util::kSource + "/src/io/testdata/easy_handeye_eye_on_base.samples";
+const std::string kEyeInHand =
+    test_util::kSource + "/src/io/testdata/easy_handeye_eye_in_hand.samples";
 
 void ExpectSamePoses(const PoseTable& actual, const PoseTable& expected, size_t count,
                      double tolerance) {
@@ -35,7 +37,7 @@ TEST(ImportEasyHandeye, EyeOnBaseInvertsTheRobotTransform) {
   // imported, they must equal MoveIt's T_base_eef for the same samples, and so keep the MoveIt
   // data set's consistency (import_moveit_test.cc).
   const ImportedPoses poses = ParseEasyHandeyeSamples(ReadFile(kEyeOnBase), kEyeOnBase, {});
-  const std::string moveit_path = kSource + "/data/moveit-calibration/pose_samples.json";
+  const std::string moveit_path = test_util::kSource + "/data/moveit-calibration/pose_samples.json";
   const ImportedPoses moveit = ParseMoveitSamples(ReadFile(moveit_path), moveit_path);
   ExpectSamePoses(poses.robot, moveit.robot, 10, 1e-12);
   ExpectSamePoses(*poses.camera, *moveit.camera, 10, 1e-12);
@@ -49,7 +51,7 @@ TEST(ImportEasyHandeye, EyeOnBaseInvertsTheRobotTransform) {
 
 TEST(ImportEasyHandeye, EyeInHandKeepsTheRobotTransform) {
   const ImportedPoses poses = ParseEasyHandeyeSamples(ReadFile(kEyeInHand), kEyeInHand, {});
-  const std::string dir = kSource + "/data/tabb-rwhe-dataset1/";
+  const std::string dir = test_util::kSource + "/data/tabb-rwhe-dataset1/";
   const ImportedPoses tabb = ParseTabb(ReadFile(dir + "robot_cali.txt"), "robot_cali.txt",
                                        ReadFile(dir + "cali.txt"), "cali.txt");
   // Same poses (the fixture holds them in metres with exact rotations).
@@ -131,7 +133,7 @@ TEST(ImportEasyHandeye, Ros1Variants) {
   EXPECT_FALSE(two.robot.rows[0].stamp.has_value());
 }
 
-void ExpectError(const std::string& text, const std::string& part) {
+void ExpectEasyHandeyeError(const std::string& text, const std::string& part) {
   try {
     ParseEasyHandeyeSamples(text, "s.yaml", ImportSetup::kEyeInHand);
     ADD_FAILURE() << "no error; expected " << part;
@@ -141,33 +143,34 @@ void ExpectError(const std::string& text, const std::string& part) {
 }
 
 TEST(ImportEasyHandeye, RejectsBadInput) {
-  ExpectError("", "not a YAML map");
-  ExpectError("samples: [", "not valid YAML");
-  ExpectError("foo: 1\n", "no samples");
-  ExpectError("parameters: {}\ntransformation: {x: 1}\n", "calibration result");
-  ExpectError("samples: []\n", "empty");
-  ExpectError("samples: 5\n", "samples is not a list");
-  ExpectError("samples:\n- robot: {}\n", "lacks tracking");
-  ExpectError("samples:\n- robot: {}\n  tracking: {}\n", "s.yaml:2: sample 0 robot is not a");
+  ExpectEasyHandeyeError("", "not a YAML map");
+  ExpectEasyHandeyeError("samples: [", "not valid YAML");
+  ExpectEasyHandeyeError("foo: 1\n", "no samples");
+  ExpectEasyHandeyeError("parameters: {}\ntransformation: {x: 1}\n", "calibration result");
+  ExpectEasyHandeyeError("samples: []\n", "empty");
+  ExpectEasyHandeyeError("samples: 5\n", "samples is not a list");
+  ExpectEasyHandeyeError("samples:\n- robot: {}\n", "lacks tracking");
+  ExpectEasyHandeyeError("samples:\n- robot: {}\n  tracking: {}\n",
+                         "s.yaml:2: sample 0 robot is not a");
   const std::string good = Transform("    ", 0.5, 1);
-  ExpectError("samples:\n- robot:\n" + good + "  tracking:\n" + Transform("    ", 2, 0),
-              "zero quaternion");
-  ExpectError("samples:\n- robot:\n" + good + "  tracking:\n" + Transform("    ", 2, 1.5),
-              "norm 1.5");
+  ExpectEasyHandeyeError("samples:\n- robot:\n" + good + "  tracking:\n" + Transform("    ", 2, 0),
+                         "zero quaternion");
+  ExpectEasyHandeyeError(
+      "samples:\n- robot:\n" + good + "  tracking:\n" + Transform("    ", 2, 1.5), "norm 1.5");
   std::string nan = "samples:\n- robot:\n" + good + "  tracking:\n" + good;
   nan.replace(nan.find("0.500000"), 8, ".nan");
-  ExpectError(nan, "non-finite");
+  ExpectEasyHandeyeError(nan, "non-finite");
   std::string text = "samples:\n- robot:\n" + good + "  tracking:\n" + good;
   text.replace(text.find("0.500000"), 8, "zero");
-  ExpectError(text, "s.yaml:3: sample 0 robot translation x is \"zero\", not a number");
-  ExpectError("parameters: {calibration_type: sideways}\nsamples:\n- robot:\n" + good +
-                  "  tracking:\n" + good,
-              "not eye_in_hand or eye_on_base");
-  ExpectError(
+  ExpectEasyHandeyeError(text, "s.yaml:3: sample 0 robot translation x is \"zero\", not a number");
+  ExpectEasyHandeyeError("parameters: {calibration_type: sideways}\nsamples:\n- robot:\n" + good +
+                             "  tracking:\n" + good,
+                         "not eye_in_hand or eye_on_base");
+  ExpectEasyHandeyeError(
       "parameters: {eye_on_hand: maybe}\nsamples:\n- robot:\n" + good + "  tracking:\n" + good,
       "not true or false");
-  ExpectError("hand_world_samples: []\ncamera_marker_samples:\n- {}\n",
-              "hand_world_samples has 0 transforms but camera_marker_samples has 1");
+  ExpectEasyHandeyeError("hand_world_samples: []\ncamera_marker_samples:\n- {}\n",
+                         "hand_world_samples has 0 transforms but camera_marker_samples has 1");
 }
 
 }  // namespace

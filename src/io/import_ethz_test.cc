@@ -15,9 +15,10 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kDir = std::string(HECAL_SOURCE_DIR) + "/data/ethz-robot-arm/";
-const std::string kRobot = kDir + "robot_arm_complete_bag_color_and_ir_base_link_sr300_hinge.csv";
-const std::string kCamera = kDir + "robot_arm_complete_bag_color_and_ir_target_ir.csv";
+const std::string kEthzDir = std::string(HECAL_SOURCE_DIR) + "/data/ethz-robot-arm/";
+const std::string kRobot =
+    kEthzDir + "robot_arm_complete_bag_color_and_ir_base_link_sr300_hinge.csv";
+const std::string kCamera = kEthzDir + "robot_arm_complete_bag_color_and_ir_target_ir.csv";
 
 // SOURCE.md reference (OpenCV PARK): X = T_hinge_camera.
 Pose ReferenceX() {
@@ -102,7 +103,7 @@ TEST(ImportEthz, RealStreamsKeepStampsAndMatchTheReferenceTarget) {
   EXPECT_GT(testing::MaxAxisStd(wrong), 0.05);
 }
 
-void ExpectError(const std::string& robot, const std::string& camera, const std::string& part) {
+void ExpectEthzError(const std::string& robot, const std::string& camera, const std::string& part) {
   try {
     ParseEthzStreams(robot, "robot.csv", camera, "camera.csv");
     ADD_FAILURE() << "no error; expected " << part;
@@ -132,15 +133,15 @@ TEST(ImportEthz, AcceptsTheReadmeHeaderLine) {
 
 TEST(ImportEthz, RejectsBadInput) {
   const std::string good = "1.0, 0, 0, 0, 0, 0, 0, 1\n";
-  ExpectError("", good, "robot.csv: the file has no poses");
-  ExpectError(good, "\n\n", "camera.csv: the file has no poses");
-  ExpectError("t, x, y, z, qw, qx, qy, qz\n" + good, good, "robot.csv:1: field 1");
-  ExpectError(good + "t, x, y, z, q_x, q_y, q_z, q_w\n", good, "robot.csv:2: field 1");
-  ExpectError(good + "2.0, 0, 0, 0, 0, 0, 1\n", good, "robot.csv:2: expected 8 numbers");
-  ExpectError(good, "1.0, 0, 0, 0, 0, 0, 0, 0\n", "zero quaternion");
-  ExpectError(good, "1.0, 0, 0, 0, 0, 0, 0, 2\n", "norm 2");
-  ExpectError("nan, 0, 0, 0, 0, 0, 0, 1\n", good, "stamp is not finite");
-  ExpectError("1.0, inf, 0, 0, 0, 0, 0, 1\n", good, "non-finite");
+  ExpectEthzError("", good, "robot.csv: the file has no poses");
+  ExpectEthzError(good, "\n\n", "camera.csv: the file has no poses");
+  ExpectEthzError("t, x, y, z, qw, qx, qy, qz\n" + good, good, "robot.csv:1: field 1");
+  ExpectEthzError(good + "t, x, y, z, q_x, q_y, q_z, q_w\n", good, "robot.csv:2: field 1");
+  ExpectEthzError(good + "2.0, 0, 0, 0, 0, 0, 1\n", good, "robot.csv:2: expected 8 numbers");
+  ExpectEthzError(good, "1.0, 0, 0, 0, 0, 0, 0, 0\n", "zero quaternion");
+  ExpectEthzError(good, "1.0, 0, 0, 0, 0, 0, 0, 2\n", "norm 2");
+  ExpectEthzError("nan, 0, 0, 0, 0, 0, 0, 1\n", good, "stamp is not finite");
+  ExpectEthzError("1.0, inf, 0, 0, 0, 0, 0, 1\n", good, "non-finite");
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ TEST(ImportInternal, ParseNumberIsStrict) {
 
 const Origin kOrigin{"f.txt", 7, "pose 3"};
 
-std::string ErrorOf(const double* values, int count, double rounding = 0.0) {
+std::string PoseErrorOf(const double* values, int count, double rounding = 0.0) {
   RotationInput rotations("f.txt");
   try {
     PoseFromRowMajor(values, count, rounding, 1.0, kOrigin, &rotations);
@@ -51,21 +51,22 @@ TEST(ImportInternal, PoseChecks) {
                   .isApprox(PoseFromRowMajor(ok, 16, 0.0, 1.0, kOrigin, &rotations)));
 
   double nan[16] = {1, 0, 0, 0, 0, 1, 0, NAN, 0, 0, 1, 0, 0, 0, 0, 1};
-  EXPECT_THAT(ErrorOf(nan, 16), HasSubstr("f.txt:7: pose 3 contains a non-finite number (nan at "
-                                          "row 2, column 4)"));
+  EXPECT_THAT(PoseErrorOf(nan, 16),
+              HasSubstr("f.txt:7: pose 3 contains a non-finite number (nan at "
+                        "row 2, column 4)"));
   const double last[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 1};
-  EXPECT_THAT(ErrorOf(last, 16), HasSubstr("last row of the 4x4 matrix is (0 0 1 1)"));
+  EXPECT_THAT(PoseErrorOf(last, 16), HasSubstr("last row of the 4x4 matrix is (0 0 1 1)"));
   const double transposed[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 4, 5, 6, 1};
-  EXPECT_THAT(ErrorOf(transposed, 16), HasSubstr("looks column-major"));
+  EXPECT_THAT(PoseErrorOf(transposed, 16), HasSubstr("looks column-major"));
   // The rotation rule (rotation_input.h) with the origin's line and name in its messages.
   const double skew[16] = {1, 0.01, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  EXPECT_THAT(ErrorOf(skew, 16),
+  EXPECT_THAT(PoseErrorOf(skew, 16),
               HasSubstr("f.txt:7: pose 3: the rotation matrix is not orthonormal: max(|R^T R - "
                         "I|, |det R - 1|) = 1.0e-02, more than the 1.0e-03 allowed"));
   const double mirror[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1};
-  EXPECT_THAT(ErrorOf(mirror, 16),
+  EXPECT_THAT(PoseErrorOf(mirror, 16),
               HasSubstr("f.txt:7: pose 3: the rotation matrix is a reflection"));
-  EXPECT_THAT(ErrorOf(ok, 9), HasSubstr("9 numbers"));
+  EXPECT_THAT(PoseErrorOf(ok, 9), HasSubstr("9 numbers"));
   EXPECT_TRUE(rotations.Notes().empty());
   // 2e-5 off: projected onto SO(3), with a note.
   const double near[16] = {1.00001, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};

@@ -85,8 +85,8 @@ TEST(ImportMatrix16, UnitsAndCameraFile) {
   EXPECT_THAT(poses.camera_notes[3], HasSubstr("read as T_camera_target"));
 }
 
-void ExpectError(const std::string& robot, const std::optional<std::string>& camera,
-                 const std::string& part) {
+void ExpectMatrix16Error(const std::string& robot, const std::optional<std::string>& camera,
+                         const std::string& part) {
   try {
     if (camera) {
       ParseMatrix16(robot, "r.txt", std::string_view(*camera), "c.txt", {});
@@ -122,15 +122,16 @@ TEST(ImportMatrix16, ControllerMatricesAreProjectedWithANote) {
 
 TEST(ImportMatrix16, RejectsBadInput) {
   const std::string I = "1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n";
-  ExpectError("", std::nullopt, "r.txt: the file has no poses");
-  ExpectError("1 2 3\n", std::nullopt, "r.txt:1: expected 16 numbers");
-  ExpectError(I + "1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 5\n", std::nullopt, "r.txt:2: expected 16");
-  ExpectError("1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 one\n", std::nullopt, "field 16");
-  ExpectError("1 0 0 0 0 1 0 0 0 0 1 nan 0 0 0 1\n", std::nullopt, "non-finite");
-  ExpectError("1 0 0 0 0 1 0 0 0 0 -1 0 0 0 0 1\n", std::nullopt, "a reflection");
-  ExpectError("2 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n", std::nullopt, "not orthonormal");
-  ExpectError("2 0 0 0 0 2 0 0 0 0 2 0 0 0 0 1\n", std::nullopt, "a rotation scaled by 2");
-  ExpectError(I + I, I, "r.txt: has 2 poses but c.txt has 1");
+  ExpectMatrix16Error("", std::nullopt, "r.txt: the file has no poses");
+  ExpectMatrix16Error("1 2 3\n", std::nullopt, "r.txt:1: expected 16 numbers");
+  ExpectMatrix16Error(I + "1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 5\n", std::nullopt,
+                      "r.txt:2: expected 16");
+  ExpectMatrix16Error("1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 one\n", std::nullopt, "field 16");
+  ExpectMatrix16Error("1 0 0 0 0 1 0 0 0 0 1 nan 0 0 0 1\n", std::nullopt, "non-finite");
+  ExpectMatrix16Error("1 0 0 0 0 1 0 0 0 0 -1 0 0 0 0 1\n", std::nullopt, "a reflection");
+  ExpectMatrix16Error("2 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n", std::nullopt, "not orthonormal");
+  ExpectMatrix16Error("2 0 0 0 0 2 0 0 0 0 2 0 0 0 0 1\n", std::nullopt, "a rotation scaled by 2");
+  ExpectMatrix16Error(I + I, I, "r.txt: has 2 poses but c.txt has 1");
 }
 
 }  // namespace

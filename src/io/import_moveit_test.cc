@@ -29,7 +29,7 @@ Pose UpstreamX() {
 }
 
 // SOURCE.md's own check (OpenCV PARK, 0.32 deg / 1 mm from the upstream X).
-Pose ParkX() {
+Pose MoveitParkX() {
   Eigen::Matrix3d R;
   R << 0.30780, 0.76623, -0.56404, 0.95137, -0.23999, 0.19315, 0.01264, -0.59607, -0.80284;
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -75,7 +75,7 @@ TEST(ImportMoveit, RealSamplesMatchTheUpstreamEyeToHandAnswer) {
   EXPECT_LT(spread.max_rotation_deg, 2.0);
 
   // With SOURCE.md's PARK estimate the spread is about 2.5 mm, as SOURCE.md states.
-  const std::vector<Pose> park = GripperTarget(poses, ParkX(), /*invert_robot=*/true);
+  const std::vector<Pose> park = GripperTarget(poses, MoveitParkX(), /*invert_robot=*/true);
   const double park_offset = testing::ChordalMean(park).translation().norm();
   const double park_std = testing::MaxAxisStd(park);
   std::printf("[moveit] with PARK X: |t_gripper_target| = %.1f mm, max-axis std %.2f mm\n",
@@ -96,7 +96,7 @@ TEST(ImportMoveit, AcceptsIntegerNumbersAndReportsTheSample) {
   EXPECT_DOUBLE_EQ(poses.camera->rows[0].pose.translation().z(), 2.0);
 }
 
-void ExpectError(const std::string& text, const std::string& part) {
+void ExpectMoveitError(const std::string& text, const std::string& part) {
   try {
     ParseMoveitSamples(text, "bad.json");
     ADD_FAILURE() << "no error for " << text;
@@ -108,18 +108,20 @@ void ExpectError(const std::string& text, const std::string& part) {
 
 TEST(ImportMoveit, RejectsBadInput) {
   const std::string I = "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]";
-  ExpectError("", "not valid JSON");
-  ExpectError("[[" + I + ",\n" + I + "]", "bad.json:2: not valid JSON");
-  ExpectError("{}", "not an array");
-  ExpectError("[]", "no samples");
-  ExpectError("[[" + I + "]]", "sample 0 is an array of 1 entries");
-  ExpectError("[[" + I + "," + I + "],[" + I + ",[[1,0,0,0]]]]", "sample 1 M_obj");
-  ExpectError("[[" + I + ",[[1,0,0,0],[0,1,0,0],[0,0,1,\"a\"],[0,0,0,1]]]]", "not a number");
-  ExpectError("[[" + I + ",[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,1,1]]]]", "last row");
-  ExpectError("[[[[1,0,0,0],[0,1,0.01,0],[0,0,1,0],[0,0,0,1]]," + I + "]]", "not orthonormal");
-  ExpectError("[[[[1,0,0,1e999],[0,1,0,0],[0,0,1,0],[0,0,0,1]]," + I + "]]", "JSON");
+  ExpectMoveitError("", "not valid JSON");
+  ExpectMoveitError("[[" + I + ",\n" + I + "]", "bad.json:2: not valid JSON");
+  ExpectMoveitError("{}", "not an array");
+  ExpectMoveitError("[]", "no samples");
+  ExpectMoveitError("[[" + I + "]]", "sample 0 is an array of 1 entries");
+  ExpectMoveitError("[[" + I + "," + I + "],[" + I + ",[[1,0,0,0]]]]", "sample 1 M_obj");
+  ExpectMoveitError("[[" + I + ",[[1,0,0,0],[0,1,0,0],[0,0,1,\"a\"],[0,0,0,1]]]]", "not a number");
+  ExpectMoveitError("[[" + I + ",[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,1,1]]]]", "last row");
+  ExpectMoveitError("[[[[1,0,0,0],[0,1,0.01,0],[0,0,1,0],[0,0,0,1]]," + I + "]]",
+                    "not orthonormal");
+  ExpectMoveitError("[[[[1,0,0,1e999],[0,1,0,0],[0,0,1,0],[0,0,0,1]]," + I + "]]", "JSON");
   // Transposed (column-major) matrices are recognised as such.
-  ExpectError("[[[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0.3,0.2,0.1,1]]," + I + "]]", "column-major");
+  ExpectMoveitError("[[[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0.3,0.2,0.1,1]]," + I + "]]",
+                    "column-major");
 }
 
 }  // namespace

@@ -180,7 +180,8 @@ PoseList ReadPoseList(const YAML::Node& root, const Spelling (&spellings)[N],
   return list;
 }
 
-ImportedPoses Parse(std::string_view yaml_text, const std::string& source, LengthUnit unit) {
+ImportedPoses ParseOpenCvYaml(std::string_view yaml_text, const std::string& source,
+                              LengthUnit unit) {
   const YAML::Node root = import_internal::LoadYaml(yaml_text, source);
   if (!root.IsMap()) Fail(source, 0, "the file is not a YAML map", kLayoutFix);
   const double metres_per_unit = MetresPer(unit);
@@ -262,7 +263,8 @@ ImportedPoses Parse(std::string_view yaml_text, const std::string& source, Lengt
 
 ImportedPoses ParseOpenCvHandEyeYaml(std::string_view yaml_text, const std::string& source,
                                      LengthUnit unit) {
-  return import_internal::GuardYaml(source, [&] { return Parse(yaml_text, source, unit); });
+  return import_internal::GuardYaml(source,
+                                    [&] { return ParseOpenCvYaml(yaml_text, source, unit); });
 }
 
 }  // namespace hecal::io

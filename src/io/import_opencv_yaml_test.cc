@@ -7,6 +7,7 @@
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_moveit.h"
 #include "hecal/io/import_tabb.h"
+#include "io_test_util.h"
 #include "testing/elementary_rotations.h"
 #include "testing/nearly_orthonormal.h"
 
@@ -15,13 +16,12 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kSource = std::string(HECAL_SOURCE_DIR);
 // Hand-made fixtures in hecal's opencv-yaml layout (src/io/testdata/README.md).
-const std::string kTabbMm = kSource + "/src/io/testdata/opencv_handeye_tabb_mm.yml";
-const std::string kMoveit = kSource + "/src/io/testdata/opencv_handeye_moveit.yml";
+const std::string kTabbMm = test_util::kSource + "/src/io/testdata/opencv_handeye_tabb_mm.yml";
+const std::string kMoveit = test_util::kSource + "/src/io/testdata/opencv_handeye_moveit.yml";
 
 ImportedPoses Tabb() {
-  const std::string dir = kSource + "/data/tabb-rwhe-dataset1/";
+  const std::string dir = test_util::kSource + "/data/tabb-rwhe-dataset1/";
   return ParseTabb(ReadFile(dir + "robot_cali.txt"), "robot_cali.txt", ReadFile(dir + "cali.txt"),
                    "cali.txt");
 }
@@ -50,7 +50,7 @@ TEST(ImportOpenCvYaml, RotationMatricesAndVectorsInMillimetres) {
 TEST(ImportOpenCvYaml, InverseKeysAreInverted) {
   const ImportedPoses poses =
       ParseOpenCvHandEyeYaml(ReadFile(kMoveit), kMoveit, LengthUnit::kMetre);
-  const std::string path = kSource + "/data/moveit-calibration/pose_samples.json";
+  const std::string path = test_util::kSource + "/data/moveit-calibration/pose_samples.json";
   const ImportedPoses moveit = ParseMoveitSamples(ReadFile(path), path);
   ASSERT_EQ(poses.robot.rows.size(), 10u);
   for (size_t i = 0; i < 10; ++i) {
@@ -68,12 +68,14 @@ std::string List(const std::string& key, const std::string& entry, int count) {
   return text;
 }
 
-const std::string kR = "[1, 0, 0, 0, 1, 0, 0, 0, 1]";
-const std::string kT = "[0.1, 0.2, 0.3]";
+const std::string kRotationYaml = "[1, 0, 0, 0, 1, 0, 0, 0, 1]";
+const std::string kTranslationYaml = "[0.1, 0.2, 0.3]";
 
 std::string Arrays(int robot, int camera) {
-  return List("R_gripper2base", kR, robot) + List("t_gripper2base", kT, robot) +
-         List("R_target2cam", kR, camera) + List("t_target2cam", kT, camera);
+  return List("R_gripper2base", kRotationYaml, robot) +
+         List("t_gripper2base", kTranslationYaml, robot) +
+         List("R_target2cam", kRotationYaml, camera) +
+         List("t_target2cam", kTranslationYaml, camera);
 }
 
 TEST(ImportOpenCvYaml, ControllerMatricesAreProjectedWithANote) {
@@ -89,8 +91,8 @@ TEST(ImportOpenCvYaml, ControllerMatricesAreProjectedWithANote) {
   std::string T = "[";
   T += testing::Digits17(testing::Homogeneous(camera.matrix, Eigen::Vector3d(0, 0, 1)), ", ");
   T += "]";
-  const std::string text =
-      List("R_gripper2base", R, 1) + List("t_gripper2base", kT, 1) + List("T_target2cam", T, 1);
+  const std::string text = List("R_gripper2base", R, 1) +
+                           List("t_gripper2base", kTranslationYaml, 1) + List("T_target2cam", T, 1);
   const ImportedPoses poses = ParseOpenCvHandEyeYaml(text, "h.yml", LengthUnit::kMetre);
   EXPECT_LT((poses.robot.rows[0].pose.linear() - robot.rotation).cwiseAbs().maxCoeff(), 1e-15);
   EXPECT_LT((poses.camera->rows[0].pose.linear() - camera.rotation).cwiseAbs().maxCoeff(), 1e-15);
@@ -103,14 +105,15 @@ TEST(ImportOpenCvYaml, ControllerMatricesAreProjectedWithANote) {
 }
 
 TEST(ImportOpenCvYaml, PlainListsAndCameraInverse) {
-  const std::string text = List("R_gripper2base", kR, 1) + List("t_gripper2base", kT, 1) +
+  const std::string text = List("R_gripper2base", kRotationYaml, 1) +
+                           List("t_gripper2base", kTranslationYaml, 1) +
                            List("T_cam2target", "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 5]]", 1);
   const ImportedPoses poses = ParseOpenCvHandEyeYaml(text, "h.yml", LengthUnit::kMetre);
   EXPECT_TRUE(poses.robot.rows[0].pose.translation().isApprox(Eigen::Vector3d(0.1, 0.2, 0.3)));
   EXPECT_TRUE(poses.camera->rows[0].pose.translation().isApprox(Eigen::Vector3d(0, 0, -5)));
 }
 
-void ExpectError(const std::string& text, const std::string& part) {
+void ExpectOpenCvYamlError(const std::string& text, const std::string& part) {
   try {
     ParseOpenCvHandEyeYaml(text, "h.yml", LengthUnit::kMetre);
     ADD_FAILURE() << "no error; expected " << part;
@@ -120,41 +123,52 @@ void ExpectError(const std::string& text, const std::string& part) {
 }
 
 TEST(ImportOpenCvYaml, RejectsBadInput) {
-  ExpectError("", "not a YAML map");
-  ExpectError("%YAML:1.0\nR_gripper2base: [\n", "not valid YAML");
-  ExpectError("foo: 1\n", "no robot poses");
-  ExpectError(List("R_gripper2base", kR, 1) + List("t_gripper2base", kT, 1), "no camera poses");
-  ExpectError(Arrays(2, 1), "there are 2 robot poses");
-  ExpectError(List("R_gripper2base", kR, 2) + List("t_gripper2base", kT, 1) +
-                  List("R_target2cam", kR, 2) + List("t_target2cam", kT, 2),
-              "R_gripper2base has 2 entries but t_gripper2base has 1");
-  ExpectError(
-      List("R_gripper2base", kR, 1) + List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
-      "R_gripper2base has no matching t_gripper2base");
-  ExpectError(Arrays(1, 1) + List("T_base2gripper", "[1]", 1), "robot poses are given twice");
-  ExpectError("R_gripper2base: []\nt_gripper2base: []\nT_target2cam: []\n", "empty");
-  ExpectError("R_gripper2base:\nt_gripper2base:\n", "R_gripper2base is not a list of matrices");
-  ExpectError("R_gripper2base: 5\nt_gripper2base: []\n", "not a list of matrices");
-  ExpectError(List("R_gripper2base", "[1, 0, 0, 0]", 1) + List("t_gripper2base", kT, 1) +
-                  List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
-              "neither a 3x3 rotation matrix nor a 3x1 rotation vector");
-  ExpectError(List("R_gripper2base", "[1, 0, 0, 0, 1, 0, 0, 0, 1.1]", 1) +
-                  List("t_gripper2base", kT, 1) + List("R_target2cam", kR, 1) +
-                  List("t_target2cam", kT, 1),
-              "not orthonormal");
-  ExpectError(List("R_gripper2base", kR, 1) + List("t_gripper2base", "[1, 2]", 1) +
-                  List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
-              "not a 3-vector");
-  ExpectError(List("R_gripper2base", kR, 1) + List("t_gripper2base", "[.inf, 2, 3]", 1) +
-                  List("R_target2cam", kR, 1) + List("t_target2cam", kT, 1),
-              "non-finite");
-  ExpectError(Arrays(1, 1) + "ids: [a, b]\n", "ids has 2 entries for 1 poses");
-  ExpectError(Arrays(2, 2) + "ids: [a, a]\n", "repeats");
-  ExpectError(List("T_gripper2base", "[[1, 0], [0, 1]]", 1) + List("R_target2cam", kR, 1) +
-                  List("t_target2cam", kT, 1),
-              "not a 4x4 or 3x4 transform");
-  ExpectError(List("T_gripper2base", "[[1, 0, 0, 0], [0, 1]]", 1), "row 1 has 2 values");
-  ExpectError(List("T_gripper2base", "{rows: 4, cols: 4, dt: u, data: []}", 1), "dt");
+  ExpectOpenCvYamlError("", "not a YAML map");
+  ExpectOpenCvYamlError("%YAML:1.0\nR_gripper2base: [\n", "not valid YAML");
+  ExpectOpenCvYamlError("foo: 1\n", "no robot poses");
+  ExpectOpenCvYamlError(
+      List("R_gripper2base", kRotationYaml, 1) + List("t_gripper2base", kTranslationYaml, 1),
+      "no camera poses");
+  ExpectOpenCvYamlError(Arrays(2, 1), "there are 2 robot poses");
+  ExpectOpenCvYamlError(
+      List("R_gripper2base", kRotationYaml, 2) + List("t_gripper2base", kTranslationYaml, 1) +
+          List("R_target2cam", kRotationYaml, 2) + List("t_target2cam", kTranslationYaml, 2),
+      "R_gripper2base has 2 entries but t_gripper2base has 1");
+  ExpectOpenCvYamlError(List("R_gripper2base", kRotationYaml, 1) +
+                            List("R_target2cam", kRotationYaml, 1) +
+                            List("t_target2cam", kTranslationYaml, 1),
+                        "R_gripper2base has no matching t_gripper2base");
+  ExpectOpenCvYamlError(Arrays(1, 1) + List("T_base2gripper", "[1]", 1),
+                        "robot poses are given twice");
+  ExpectOpenCvYamlError("R_gripper2base: []\nt_gripper2base: []\nT_target2cam: []\n", "empty");
+  ExpectOpenCvYamlError("R_gripper2base:\nt_gripper2base:\n",
+                        "R_gripper2base is not a list of matrices");
+  ExpectOpenCvYamlError("R_gripper2base: 5\nt_gripper2base: []\n", "not a list of matrices");
+  ExpectOpenCvYamlError(
+      List("R_gripper2base", "[1, 0, 0, 0]", 1) + List("t_gripper2base", kTranslationYaml, 1) +
+          List("R_target2cam", kRotationYaml, 1) + List("t_target2cam", kTranslationYaml, 1),
+      "neither a 3x3 rotation matrix nor a 3x1 rotation vector");
+  ExpectOpenCvYamlError(List("R_gripper2base", "[1, 0, 0, 0, 1, 0, 0, 0, 1.1]", 1) +
+                            List("t_gripper2base", kTranslationYaml, 1) +
+                            List("R_target2cam", kRotationYaml, 1) +
+                            List("t_target2cam", kTranslationYaml, 1),
+                        "not orthonormal");
+  ExpectOpenCvYamlError(
+      List("R_gripper2base", kRotationYaml, 1) + List("t_gripper2base", "[1, 2]", 1) +
+          List("R_target2cam", kRotationYaml, 1) + List("t_target2cam", kTranslationYaml, 1),
+      "not a 3-vector");
+  ExpectOpenCvYamlError(
+      List("R_gripper2base", kRotationYaml, 1) + List("t_gripper2base", "[.inf, 2, 3]", 1) +
+          List("R_target2cam", kRotationYaml, 1) + List("t_target2cam", kTranslationYaml, 1),
+      "non-finite");
+  ExpectOpenCvYamlError(Arrays(1, 1) + "ids: [a, b]\n", "ids has 2 entries for 1 poses");
+  ExpectOpenCvYamlError(Arrays(2, 2) + "ids: [a, a]\n", "repeats");
+  ExpectOpenCvYamlError(List("T_gripper2base", "[[1, 0], [0, 1]]", 1) +
+                            List("R_target2cam", kRotationYaml, 1) +
+                            List("t_target2cam", kTranslationYaml, 1),
+                        "not a 4x4 or 3x4 transform");
+  ExpectOpenCvYamlError(List("T_gripper2base", "[[1, 0, 0, 0], [0, 1]]", 1), "row 1 has 2 values");
+  ExpectOpenCvYamlError(List("T_gripper2base", "{rows: 4, cols: 4, dt: u, data: []}", 1), "dt");
 }
 
 }  // namespace

@@ -19,11 +19,11 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kDir = std::string(HECAL_SOURCE_DIR) + "/data/tabb-rwhe-dataset1/";
+const std::string kTabbDir = std::string(HECAL_SOURCE_DIR) + "/data/tabb-rwhe-dataset1/";
 
 ImportedPoses LoadTabb() {
-  return ParseTabb(ReadFile(kDir + "robot_cali.txt"), kDir + "robot_cali.txt",
-                   ReadFile(kDir + "cali.txt"), kDir + "cali.txt");
+  return ParseTabb(ReadFile(kTabbDir + "robot_cali.txt"), kTabbDir + "robot_cali.txt",
+                   ReadFile(kTabbDir + "cali.txt"), kTabbDir + "cali.txt");
 }
 
 // Tabb's own result (rwhe_AA_RPI/transformations.txt, mm): X = wTb = T_target_base and
@@ -34,7 +34,7 @@ struct TabbAnswer {
 };
 
 TabbAnswer ReadAnswer() {
-  std::istringstream in(ReadFile(kDir + "rwhe_AA_RPI/transformations.txt"));
+  std::istringstream in(ReadFile(kTabbDir + "rwhe_AA_RPI/transformations.txt"));
   std::string label;
   Eigen::Matrix4d X;
   Eigen::Matrix4d Z;
@@ -127,7 +127,7 @@ TEST(ImportTabb, InvertsTheRobotPoseAndKeepsMillimetres) {
   EXPECT_EQ(poses.robot.rows[0].id, "a");
 }
 
-void ExpectError(const std::string& robot, const std::string& camera, const std::string& part) {
+void ExpectTabbError(const std::string& robot, const std::string& camera, const std::string& part) {
   try {
     ParseTabb(robot, "r.txt", camera, "c.txt");
     ADD_FAILURE() << "no error; expected " << part;
@@ -138,31 +138,31 @@ void ExpectError(const std::string& robot, const std::string& camera, const std:
 
 TEST(ImportTabb, RejectsBadInput) {
   const std::string camera = "1\n" + kCameraLine;
-  ExpectError("", camera, "r.txt: the file is empty");
-  ExpectError("x\n", camera, "r.txt:1: the first line should be the number of poses");
-  ExpectError("2\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera,
-              "r.txt:1: N is 2 but the file has 1 poses");
-  ExpectError("1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n", camera, "has only 3 of its 4 matrix rows");
-  ExpectError("1\n1 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "r.txt:2: expected 4 numbers");
-  ExpectError("1\n1 0 0 0\n0 1 0 nan\n0 0 1 0\n0 0 0 1\n", camera, "non-finite");
-  ExpectError("1\n1 0 0 0\n0 1 0 x\n0 0 1 0\n0 0 0 1\n", camera, "r.txt:3: field 4");
-  ExpectError("1\n1 0 0 0\n0 0.9 0 0\n0 0 1 0\n0 0 0 1\n", camera, "not orthonormal");
-  ExpectError(kRobotOne, "2\n" + kCameraLine, "c.txt:1: N is 2 but the file has 1 image lines");
-  ExpectError(kRobotOne, "1\na.png 1 2 3\n", "c.txt:2: expected 30 fields");
-  ExpectError(kRobotOne, "1\n" + std::string(kCameraLine).replace(0, 5, "12345"),
-              "should be the image name");
-  ExpectError(kRobotOne + "\n" + "1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "N is 1");
-  ExpectError("2\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",
-              camera, "has 2 robot poses but c.txt has 1 camera poses");
-  ExpectError(kRobotOne, "2\n" + kCameraLine + kCameraLine, "appears twice");
+  ExpectTabbError("", camera, "r.txt: the file is empty");
+  ExpectTabbError("x\n", camera, "r.txt:1: the first line should be the number of poses");
+  ExpectTabbError("2\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera,
+                  "r.txt:1: N is 2 but the file has 1 poses");
+  ExpectTabbError("1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n", camera, "has only 3 of its 4 matrix rows");
+  ExpectTabbError("1\n1 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "r.txt:2: expected 4 numbers");
+  ExpectTabbError("1\n1 0 0 0\n0 1 0 nan\n0 0 1 0\n0 0 0 1\n", camera, "non-finite");
+  ExpectTabbError("1\n1 0 0 0\n0 1 0 x\n0 0 1 0\n0 0 0 1\n", camera, "r.txt:3: field 4");
+  ExpectTabbError("1\n1 0 0 0\n0 0.9 0 0\n0 0 1 0\n0 0 0 1\n", camera, "not orthonormal");
+  ExpectTabbError(kRobotOne, "2\n" + kCameraLine, "c.txt:1: N is 2 but the file has 1 image lines");
+  ExpectTabbError(kRobotOne, "1\na.png 1 2 3\n", "c.txt:2: expected 30 fields");
+  ExpectTabbError(kRobotOne, "1\n" + std::string(kCameraLine).replace(0, 5, "12345"),
+                  "should be the image name");
+  ExpectTabbError(kRobotOne + "\n" + "1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "N is 1");
+  ExpectTabbError("2\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",
+                  camera, "has 2 robot poses but c.txt has 1 camera poses");
+  ExpectTabbError(kRobotOne, "2\n" + kCameraLine + kCameraLine, "appears twice");
   // Files given the wrong way round say so.
-  ExpectError(camera, kRobotOne, "looks like cali.txt");
+  ExpectTabbError(camera, kRobotOne, "looks like cali.txt");
   // The rotation tolerance is 1e-3, widened to 6u for 3 decimals (u = 5e-4): 1.002 is 4.0e-3 off.
-  ExpectError("1\n1 0 0 0\n0 1.002 0 0\n0 0 1 0\n0 0 0 1\n", camera,
-              "r.txt:2: pose 0 (B_0): the rotation matrix is not orthonormal: max(|R^T R - I|, "
-              "|det R - 1|) = 4.0e-03, more than the 3.0e-03 allowed for entries printed to "
-              "+-5.0e-04");
-  ExpectError("1\n-1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "a reflection (det R = -1)");
+  ExpectTabbError("1\n1 0 0 0\n0 1.002 0 0\n0 0 1 0\n0 0 0 1\n", camera,
+                  "r.txt:2: pose 0 (B_0): the rotation matrix is not orthonormal: max(|R^T R - I|, "
+                  "|det R - 1|) = 4.0e-03, more than the 3.0e-03 allowed for entries printed to "
+                  "+-5.0e-04");
+  ExpectTabbError("1\n-1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", camera, "a reflection (det R = -1)");
 }
 
 // How many of the printed rotations are more than 1e-6 from orthonormal, by the definition
@@ -180,7 +180,7 @@ TEST(ImportTabb, SixDecimalRotationsAreProjectedWithANote) {
   const ImportedPoses poses = LoadTabb();
   // The printed matrices, read with a plain stream parser: B_i (robot) and R of each image line.
   std::vector<Eigen::Matrix3d> robot;
-  std::istringstream robot_in(ReadFile(kDir + "robot_cali.txt"));
+  std::istringstream robot_in(ReadFile(kTabbDir + "robot_cali.txt"));
   int count = 0;
   robot_in >> count;
   for (int i = 0; i < count; ++i) {
@@ -189,7 +189,7 @@ TEST(ImportTabb, SixDecimalRotationsAreProjectedWithANote) {
     robot.push_back(B.topLeftCorner<3, 3>());
   }
   std::vector<Eigen::Matrix3d> camera;
-  std::istringstream camera_in(ReadFile(kDir + "cali.txt"));
+  std::istringstream camera_in(ReadFile(kTabbDir + "cali.txt"));
   camera_in >> count;
   for (int i = 0; i < count; ++i) {
     std::string name;

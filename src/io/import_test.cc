@@ -27,8 +27,8 @@ TEST(Import, FormatNames) {
   EXPECT_FALSE(ParseImportFormat("MoveIt").has_value());
 }
 
-std::string ErrorOf(ImportFormat format, const std::vector<std::string>& inputs,
-                    const ImportOptions& options = {}) {
+std::string ImportErrorOf(ImportFormat format, const std::vector<std::string>& inputs,
+                          const ImportOptions& options = {}) {
   try {
     ImportFiles(format, inputs, options);
   } catch (const InputError& e) {
@@ -44,35 +44,37 @@ TEST(Import, TabbFromTheDirectoryOrTheTwoFiles) {
       ImportFiles(ImportFormat::kTabb, {dir + "/robot_cali.txt", dir + "/cali.txt"}, {});
   ASSERT_EQ(from_dir.robot.rows.size(), 88u);
   EXPECT_TRUE(from_dir.robot.rows[5].pose.isApprox(from_files.robot.rows[5].pose, 1e-15));
-  EXPECT_THAT(ErrorOf(ImportFormat::kTabb, {dir + "/cali.txt"}), HasSubstr("tabb takes"));
-  EXPECT_THAT(ErrorOf(ImportFormat::kTabb, {kData}), HasSubstr("robot_cali.txt"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kTabb, {dir + "/cali.txt"}), HasSubstr("tabb takes"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kTabb, {kData}), HasSubstr("robot_cali.txt"));
 }
 
 TEST(Import, InputCountsAndUnreadableFiles) {
   const std::string json = kData + "moveit-calibration/pose_samples.json";
-  EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {}), HasSubstr("INPUT: moveit takes one"));
-  EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {json, json}), HasSubstr("got 2 inputs"));
-  EXPECT_THAT(ErrorOf(ImportFormat::kEthz, {json}), HasSubstr("ethz takes two CSV files"));
-  EXPECT_THAT(ErrorOf(ImportFormat::kMatrix16, {json, json, json}), HasSubstr("got 3"));
-  EXPECT_THAT(ErrorOf(ImportFormat::kCamodocal, {kData + "no/such.yml"}), HasSubstr("no/such.yml"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kMoveit, {}), HasSubstr("INPUT: moveit takes one"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kMoveit, {json, json}), HasSubstr("got 2 inputs"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kEthz, {json}), HasSubstr("ethz takes two CSV files"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kMatrix16, {json, json, json}), HasSubstr("got 3"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kCamodocal, {kData + "no/such.yml"}),
+              HasSubstr("no/such.yml"));
 }
 
 TEST(Import, FlagsThatDoNotApplyAreRejected) {
   const std::string json = kData + "moveit-calibration/pose_samples.json";
   ImportOptions units;
   units.units = LengthUnit::kMillimetre;
-  EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {json}, units),
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kMoveit, {json}, units),
               HasSubstr("ImportOptions.units: moveit files fix their own length unit (m)"));
-  EXPECT_THAT(ErrorOf(ImportFormat::kTabb, {kData + "tabb-rwhe-dataset1"}, units),
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kTabb, {kData + "tabb-rwhe-dataset1"}, units),
               HasSubstr("(mm)"));
   ImportOptions setup;
   setup.setup = ImportSetup::kEyeInHand;
-  EXPECT_THAT(ErrorOf(ImportFormat::kMoveit, {json}, setup), HasSubstr("ImportOptions.setup: "));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kMoveit, {json}, setup),
+              HasSubstr("ImportOptions.setup: "));
   ImportOptions camera_inverse;
   camera_inverse.camera_inverse = true;
-  EXPECT_THAT(
-      ErrorOf(ImportFormat::kMatrix16, {kData + "rwhe-kuka2/RobotPosesVec.txt"}, camera_inverse),
-      HasSubstr("ImportOptions.camera_inverse: given without a camera matrix file"));
+  EXPECT_THAT(ImportErrorOf(ImportFormat::kMatrix16, {kData + "rwhe-kuka2/RobotPosesVec.txt"},
+                            camera_inverse),
+              HasSubstr("ImportOptions.camera_inverse: given without a camera matrix file"));
 }
 
 // --robot-inverse / --camera-inverse apply to every format, after its own convention: each side

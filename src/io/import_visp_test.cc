@@ -26,8 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-constexpr double kPi = std::numbers::pi;
-
 // What vpArray2D::saveYAML writes for a vpPoseVector: default stream precision (6 digits),
 // "data: " with a trailing space, two-space indent.
 std::string SaveYaml(const std::array<double, 6>& v, const std::string& header = "") {
@@ -47,14 +45,15 @@ Eigen::Matrix3d FromThetaU(const Eigen::Vector3d& theta_u) {
   return Eigen::AngleAxisd(theta_u.norm(), theta_u.normalized()).toRotationMatrix();
 }
 
-InputError ErrorOf(const std::vector<VispPoseFile>& files) {
+InputError VispErrorOf(const std::vector<VispPoseFile>& files) {
   return testing::Thrown<InputError>([&] { ParseVispPoseFiles(files); });
 }
 
 TEST(ImportVisp, RealFileIsRobotPoseWithRotationVector) {
-  const ImportedPoses poses = ParseVispPoseFiles(
-      {{"data/franka_pose_rPe_1.yaml", kFrankaRobot1},
-       {"data/franka_pose_cPo_1.yaml", SaveYaml({0.01, -0.02, 0.5, 0.0, 0.0, kPi / 2})}});
+  const ImportedPoses poses =
+      ParseVispPoseFiles({{"data/franka_pose_rPe_1.yaml", kFrankaRobot1},
+                          {"data/franka_pose_cPo_1.yaml",
+                           SaveYaml({0.01, -0.02, 0.5, 0.0, 0.0, std::numbers::pi / 2})}});
   ASSERT_EQ(poses.robot.rows.size(), 1u);
   const Pose& robot = poses.robot.rows[0].pose;
   EXPECT_TRUE(robot.translation().isApprox(Eigen::Vector3d(0.335091, -0.0321497, 0.30857), 1e-15));
@@ -135,30 +134,32 @@ TEST(ImportVisp, PairsByIndexInNumericOrder) {
 
 TEST(ImportVisp, PairingErrorsNameTheFiles) {
   const std::string pose = SaveYaml({0, 0, 0, 0, 0, 0});
-  testing::ExpectInputError(ErrorOf({{"d/pose_rPe_1.yaml", pose},
-                                     {"d/pose_cPo_1.yaml", pose},
-                                     {"d/franka_pose_rPe_4.yaml", pose}}),
+  testing::ExpectInputError(VispErrorOf({{"d/pose_rPe_1.yaml", pose},
+                                         {"d/pose_cPo_1.yaml", pose},
+                                         {"d/franka_pose_rPe_4.yaml", pose}}),
                             "d/franka_pose_rPe_4.yaml", 0,
                             "station 4 has no camera pose file (franka_pose_cPo_4.yaml)");
-  testing::ExpectInputError(ErrorOf({{"d/pose_cPo_7.yaml", pose}}), "d/pose_cPo_7.yaml", 0,
+  testing::ExpectInputError(VispErrorOf({{"d/pose_cPo_7.yaml", pose}}), "d/pose_cPo_7.yaml", 0,
                             "station 7 has no robot pose file (pose_rPe_7.yaml)");
-  const InputError both = ErrorOf(
+  const InputError both = VispErrorOf(
       {{"d/pose_fPe_3.yaml", pose}, {"d/pose_rPe_3.yaml", pose}, {"d/pose_cPo_3.yaml", pose}});
   testing::ExpectInputError(both, "d/pose_rPe_3.yaml", 0,
                             "station 3 already has a robot pose file, d/pose_fPe_3.yaml");
   EXPECT_THAT(both.fix(), HasSubstr("before ViSP 3.7"));
-  testing::ExpectInputError(ErrorOf({{"d/pose_cPo_03.yaml", pose}, {"d/pose_cPo_3.yaml", pose}}),
-                            "d/pose_cPo_3.yaml", 0, "station 3 already has a camera pose file");
-  testing::ExpectInputError(ErrorOf({{"d/pose_xPe_3.yaml", pose}}), "d/pose_xPe_3.yaml", 0,
+  testing::ExpectInputError(
+      VispErrorOf({{"d/pose_cPo_03.yaml", pose}, {"d/pose_cPo_3.yaml", pose}}), "d/pose_cPo_3.yaml",
+      0, "station 3 already has a camera pose file");
+  testing::ExpectInputError(VispErrorOf({{"d/pose_xPe_3.yaml", pose}}), "d/pose_xPe_3.yaml", 0,
                             "is not a ViSP pose file name");
-  testing::ExpectInputError(ErrorOf({{"d/pose_cPo_3.txt", pose}}), "d/pose_cPo_3.txt", 0,
+  testing::ExpectInputError(VispErrorOf({{"d/pose_cPo_3.txt", pose}}), "d/pose_cPo_3.txt", 0,
                             "is not a ViSP pose file name");
-  testing::ExpectInputError(ErrorOf({}), "INPUT", 0, "no ViSP pose files");
+  testing::ExpectInputError(VispErrorOf({}), "INPUT", 0, "no ViSP pose files");
 }
 
 // A robot file with `text` and a good camera partner.
 InputError RobotFileError(const std::string& text) {
-  return ErrorOf({{"pose_rPe_1.yaml", text}, {"pose_cPo_1.yaml", SaveYaml({0, 0, 0, 0, 0, 0})}});
+  return VispErrorOf(
+      {{"pose_rPe_1.yaml", text}, {"pose_cPo_1.yaml", SaveYaml({0, 0, 0, 0, 0, 0})}});
 }
 
 void ExpectFileError(const std::string& text, int line, const std::string& problem) {

@@ -3,15 +3,12 @@
 
 #include "hecal/core/error.h"
 #include "hecal/io/pose_table.h"
+#include "testing/elementary_rotations.h"
 
 namespace hecal::io {
 namespace {
 
 using ::testing::HasSubstr;
-
-Eigen::Matrix3d Rz(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).matrix();
-}
 
 // ---- pairing
 // -------------------------------------------------------------------------------------
@@ -21,7 +18,7 @@ PoseTable TableWithIds(const std::string& source, const std::vector<std::string>
   table.source = source;
   for (size_t i = 0; i < ids.size(); ++i) {
     PoseRow row;
-    row.pose = MakePose(Rz(0.1 * static_cast<double>(i)), Eigen::Vector3d::Zero());
+    row.pose = MakePose(testing::Rz(0.1 * static_cast<double>(i)), Eigen::Vector3d::Zero());
     if (!ids[i].empty()) row.id = ids[i];
     row.line = static_cast<int>(i) + 2;
     table.rows.push_back(row);

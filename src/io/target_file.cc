@@ -128,7 +128,7 @@ int ReadWholeNumber(const YAML::Node& node, const std::string& source, const std
   return static_cast<int>(import_internal::ScalarCount(node, source, key, kLargest));
 }
 
-pose::TargetSpec Parse(const YAML::Node& root, const std::string& source) {
+pose::TargetSpec ParseTarget(const YAML::Node& root, const std::string& source) {
   if (!root.IsDefined() || root.IsNull()) {
     Fail(source, 0, "the target file is empty",
          "describe the target: type, cols, rows and its lengths (see docs/targets.md)");
@@ -262,7 +262,7 @@ pose::TargetSpec Parse(const YAML::Node& root, const std::string& source) {
 
 pose::TargetSpec ParseTargetYaml(std::string_view text, const std::string& source) {
   return import_internal::GuardYaml(
-      source, [&] { return Parse(import_internal::LoadYaml(text, source), source); });
+      source, [&] { return ParseTarget(import_internal::LoadYaml(text, source), source); });
 }
 
 pose::TargetSpec ReadTargetFile(const std::string& path) {

@@ -17,9 +17,9 @@ namespace {
 
 using import_internal::Fail;
 
-constexpr std::array<std::string_view, 8> kKeys = {
-    "units",     "position_min", "position_max", "tilt_axis",    "max_tilt_deg",
-    "hand_eye",  "target",       "nominal_error"};
+constexpr std::array<std::string_view, 8> kKeys = {"units",     "position_min", "position_max",
+                                                   "tilt_axis", "max_tilt_deg", "hand_eye",
+                                                   "target",    "nominal_error"};
 
 // A list of `count` finite numbers at `key`.
 std::vector<double> Numbers(const internal::YamlMap& map, const std::string& key, size_t count,
@@ -33,7 +33,8 @@ std::vector<double> Numbers(const internal::YamlMap& map, const std::string& key
   std::vector<double> values;
   for (const YAML::Node& item : node) {
     const double value = import_internal::ScalarNumber(item, source, key).value;
-    if (!std::isfinite(value)) Fail(source, map.Line(key), key + " has a number that is not finite", fix);
+    if (!std::isfinite(value))
+      Fail(source, map.Line(key), key + " has a number that is not finite", fix);
     values.push_back(value);
   }
   return values;
@@ -53,16 +54,16 @@ Pose PoseAt(const internal::YamlMap& map, const std::string& key, double metres,
   const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
   if (std::abs(q.norm() - 1.0) > 1e-3) {
     Fail(source, map.Line(key),
-         key + "'s quaternion (qw, qx, qy, qz) has norm " + std::to_string(q.norm()) +
-             ", not 1",
+         key + "'s quaternion (qw, qx, qy, qz) has norm " + std::to_string(q.norm()) + ", not 1",
          "write x, y, z then a unit quaternion qw, qx, qy, qz");
   }
   return MakePose(q.normalized().toRotationMatrix(), metres * Eigen::Vector3d(v[0], v[1], v[2]));
 }
 
-Workspace Parse(const YAML::Node& root, const std::string& source) {
+Workspace ParseWorkspace(const YAML::Node& root, const std::string& source) {
   if (!root.IsMap()) {
-    Fail(source, import_internal::LineOf(root), "the workspace file is not a map of 'key: value' lines",
+    Fail(source, import_internal::LineOf(root),
+         "the workspace file is not a map of 'key: value' lines",
          "write one 'key: value' per line (see docs/plan.md)");
   }
   const internal::YamlMap map = internal::ReadYamlMap(root, source);
@@ -71,7 +72,8 @@ Workspace Parse(const YAML::Node& root, const std::string& source) {
   if (map.Has("units")) {
     const std::string text = import_internal::ScalarText(*map.Find("units"), source, "units");
     const std::optional<LengthUnit> unit = ParseLengthUnit(text);
-    if (!unit) Fail(source, map.Line("units"), "unknown unit '" + text + "'", "write units: m or units: mm");
+    if (!unit)
+      Fail(source, map.Line("units"), "unknown unit '" + text + "'", "write units: m or units: mm");
     metres = MetresPer(*unit);
   }
   Workspace workspace;
@@ -91,7 +93,8 @@ Workspace Parse(const YAML::Node& root, const std::string& source) {
   if (map.Has("tilt_axis")) {
     const std::vector<double> a = Numbers(map, "tilt_axis", 3, source, "[0, 0, -1]");
     const Eigen::Vector3d axis(a[0], a[1], a[2]);
-    if (!(axis.norm() > 0.0)) Fail(source, map.Line("tilt_axis"), "tilt_axis is zero", "write e.g. tilt_axis: [0, 0, -1]");
+    if (!(axis.norm() > 0.0))
+      Fail(source, map.Line("tilt_axis"), "tilt_axis is zero", "write e.g. tilt_axis: [0, 0, -1]");
     workspace.tilt_axis = axis.normalized();
   }
   if (map.Has("max_tilt_deg")) {
@@ -131,7 +134,7 @@ bool Workspace::Contains(const Pose& T_base_gripper) const {
 
 Workspace ParseWorkspaceYaml(std::string_view text, const std::string& source) {
   return import_internal::GuardYaml(
-      source, [&] { return Parse(import_internal::LoadYaml(text, source), source); });
+      source, [&] { return ParseWorkspace(import_internal::LoadYaml(text, source), source); });
 }
 
 Workspace ReadWorkspaceFile(const std::string& path) {

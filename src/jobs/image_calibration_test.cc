@@ -1,5 +1,5 @@
-// CalibrateFromImages (image_calibration.h) on simulated image stations (testing/image_scene.h): the
-// document's stations, rejections and reasons against the images that were skipped, blurred or
+// CalibrateFromImages (image_calibration.h) on simulated image stations (testing/image_scene.h):
+// the document's stations, rejections and reasons against the images that were skipped, blurred or
 // paired with a wrong robot pose, and X against the known truth.
 #include "hecal/jobs/image_calibration.h"
 
@@ -46,7 +46,9 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   std::mt19937_64 rng(9);
   std::normal_distribution<double> gaussian;
   for (Eigen::Vector2d& pixel : s.images[3].pixels) {
-    pixel += 2.0 * Eigen::Vector2d(gaussian(rng), gaussian(rng));
+    const double dy = gaussian(rng);  // y first: the order the test's data were generated in
+    const double dx = gaussian(rng);
+    pixel += 2.0 * Eigen::Vector2d(dx, dy);
   }
   ImageCalibrationInput input = Input(s);
   Vector6d slip;

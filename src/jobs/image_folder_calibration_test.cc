@@ -26,7 +26,7 @@
 namespace hecal::jobs {
 namespace {
 
-constexpr int kViews = 8;
+constexpr int kFolderViews = 8;
 
 using hecal::testing::RigX;
 using hecal::testing::RigZ;
@@ -36,7 +36,7 @@ void WriteFile(const std::filesystem::path& path, const std::string& text) {
 }
 
 // robot.csv: T_base_gripper = Z B⁻¹ X⁻¹ for the first `rows` spread views, with ids view_0<i>
-// when `ids` (a row beyond kViews has no image).
+// when `ids` (a row beyond kFolderViews has no image).
 std::string RobotCsv(int rows, bool ids) {
   const std::vector<Pose> views = hecal::testing::SpreadViews({.count = rows});
   std::ostringstream csv;
@@ -55,17 +55,18 @@ class ImageFolderCalibrationTest : public hecal::testing::RenderOnce<ImageFolder
  public:
   static constexpr const char* kRenderFolder = "image_folder_calibration_test";
   static void Render(const std::filesystem::path& dir) {
-    hecal::testing::MakeRenderedScene({.views = hecal::testing::SpreadViews({.count = kViews}),
-                                       .first_seed = 100,
-                                       .folder = dir / "images"});
+    hecal::testing::MakeRenderedScene(
+        {.views = hecal::testing::SpreadViews({.count = kFolderViews}),
+         .first_seed = 100,
+         .folder = dir / "images"});
     WriteFile(dir / "target.yaml", hecal::testing::kBoardYaml);
     WriteFile(dir / "camera.yaml", hecal::testing::CameraYaml(hecal::testing::RenderCamera()));
     // cx 20 px off: under the 2 px refusal, a poor fit (vision/intrinsics_fit.h).
     pose::CameraModel off = hecal::testing::RenderCamera();
     off.cx += 20.0;
     WriteFile(dir / "camera_cx_off.yaml", hecal::testing::CameraYaml(off));
-    WriteFile(dir / "robot.csv", RobotCsv(kViews, false));
-    WriteFile(dir / "robot_ids.csv", RobotCsv(kViews + 1, true));
+    WriteFile(dir / "robot.csv", RobotCsv(kFolderViews, false));
+    WriteFile(dir / "robot_ids.csv", RobotCsv(kFolderViews + 1, true));
   }
 
  protected:

@@ -63,17 +63,26 @@ PlanStudyRow RunPlanStudy(const PlanStudyOptions& options) {
     const sim::HandEyeTruth truth = sim::DrawTruth(protocol, rng);
     std::vector<plan::ViewCandidate> pool;
     for (int k = 0; k < options.pool; ++k) {
-      const Pose T_target_camera = sim::CameraInTarget(
-          protocol, tilt(rng), tilt(rng), spin(rng), Eigen::Vector3d(cube(rng), cube(rng), cube(rng)));
-      pool.push_back({sim::RobotPoseFor(options.setup, truth, T_target_camera),
-                      T_target_camera.inverse()});
+      // One draw at a time, last argument first (the order of the study's first generation).
+      const double offset_z = cube(rng);
+      const double offset_y = cube(rng);
+      const double offset_x = cube(rng);
+      const double roll = spin(rng);
+      const double tilt_b = tilt(rng);
+      const double tilt_a = tilt(rng);
+      const Pose T_target_camera =
+          sim::CameraInTarget(protocol, tilt_a, tilt_b, roll, {offset_x, offset_y, offset_z});
+      pool.push_back(
+          {sim::RobotPoseFor(options.setup, truth, T_target_camera), T_target_camera.inverse()});
     }
     // The nominal: the truth moved by the nominal error along a random direction.
-    Eigen::Vector3d direction(normal(rng), normal(rng), normal(rng));
+    const double dz = normal(rng);
+    const double dy = normal(rng);
+    const double dx = normal(rng);
+    Eigen::Vector3d direction(dx, dy, dz);
     direction.normalize();
     Vector6d xi;
-    xi << options.nominal_rotation_error * direction,
-        options.nominal_translation_error * direction;
+    xi << options.nominal_rotation_error * direction, options.nominal_translation_error * direction;
     const plan::Scene nominal{options.setup, truth.X * se3::Exp(xi), truth.Z};
     std::vector<plan::Scene> scenes = {nominal};
     for (double sign : {1.0, -1.0}) {
@@ -85,8 +94,8 @@ PlanStudyRow RunPlanStudy(const PlanStudyOptions& options) {
     const std::vector<plan::ViewCandidate> existing(pool.begin(), pool.begin() + options.existing);
     const std::vector<plan::ViewCandidate> rest(pool.begin() + options.existing, pool.end());
     std::vector<plan::Matrix12d> base(scenes.size(), plan::Matrix12d::Zero());
-    for (const auto& station : plan::CandidateInformation(existing, scenes, options.robot_sigma,
-                                                          options.camera_sigma)) {
+    for (const auto& station :
+         plan::CandidateInformation(existing, scenes, options.robot_sigma, options.camera_sigma)) {
       for (size_t k = 0; k < scenes.size(); ++k) base[k] += station[k];
     }
     const std::vector<int> chosen = plan::ChooseStations(
@@ -98,7 +107,8 @@ PlanStudyRow RunPlanStudy(const PlanStudyOptions& options) {
         const bool added = k >= options.existing;
         const size_t index =
             is_planned && added
-                ? static_cast<size_t>(options.existing + chosen[static_cast<size_t>(k - options.existing)])
+                ? static_cast<size_t>(options.existing +
+                                      chosen[static_cast<size_t>(k - options.existing)])
                 : static_cast<size_t>(k);
         const plan::ViewCandidate& station = pool[index];
         robot_true.push_back(station.T_base_gripper);

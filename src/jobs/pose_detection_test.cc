@@ -23,16 +23,17 @@ namespace {
 
 using ::testing::HasSubstr;
 
-constexpr int kViews = 6;
+constexpr int kDetectionViews = 6;
 constexpr int kCorners = 9 * 6;
 
 class PoseDetectionTest : public hecal::testing::RenderOnce<PoseDetectionTest> {
  public:
   static constexpr const char* kRenderFolder = "pose_detection_test";
   static void Render(const std::filesystem::path& dir) {
-    hecal::testing::MakeRenderedScene({.views = hecal::testing::SpreadViews({.count = kViews}),
-                                       .first_seed = 300,
-                                       .folder = dir / "images"});
+    hecal::testing::MakeRenderedScene(
+        {.views = hecal::testing::SpreadViews({.count = kDetectionViews}),
+         .first_seed = 300,
+         .folder = dir / "images"});
     std::ofstream(dir / "target.yaml") << hecal::testing::kBoardYaml;
     std::ofstream(dir / "camera.yaml")
         << hecal::testing::CameraYaml(hecal::testing::RenderCamera());
@@ -52,10 +53,10 @@ class PoseDetectionTest : public hecal::testing::RenderOnce<PoseDetectionTest> {
   // Every view in the table, in order, at its known pose; every corner of every view in the
   // points, image by image in id order.
   static void ExpectTheViews(const PoseDetection& result, double max_deg, double max_mm) {
-    const std::vector<Pose> views = hecal::testing::SpreadViews({.count = kViews});
-    ASSERT_EQ(result.table.rows.size(), std::size_t(kViews));
-    ASSERT_EQ(result.points.size(), std::size_t(kViews * kCorners));
-    for (int i = 0; i < kViews; ++i) {
+    const std::vector<Pose> views = hecal::testing::SpreadViews({.count = kDetectionViews});
+    ASSERT_EQ(result.table.rows.size(), std::size_t(kDetectionViews));
+    ASSERT_EQ(result.points.size(), std::size_t(kDetectionViews * kCorners));
+    for (int i = 0; i < kDetectionViews; ++i) {
       const io::PoseRow& row = result.table.rows[std::size_t(i)];
       EXPECT_EQ(row.id, "view_0" + std::to_string(i));
       EXPECT_LT(hecal::testing::RotationErrorDeg(row.pose, views[std::size_t(i)]), max_deg) << i;

@@ -27,8 +27,12 @@ Data BenignData(handeye::Setup setup, int stations, uint64_t seed) {
   std::uniform_real_distribution<double> angle(0.1, 0.5);
   std::uniform_real_distribution<double> box(-0.3, 0.3);
   for (int i = 0; i < stations; ++i) {
+    // Drawn last to first: the order these tests' data were generated in.
+    const double z = box(rng);
+    const double y = box(rng);
+    const double x = box(rng);
     const Pose T_target_camera = MakePose(so3::Exp(testing::RandomRotationVector(rng, angle(rng))),
-                                          Eigen::Vector3d(box(rng), box(rng), -1.0 + box(rng)));
+                                          Eigen::Vector3d(x, y, -1.0 + z));
     const Pose A = data.Z * T_target_camera * data.X.inverse();
     data.T_base_gripper.push_back(setup == handeye::Setup::kEyeInHand ? A : A.inverse());
     data.T_camera_target.push_back(T_target_camera.inverse());

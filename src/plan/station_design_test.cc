@@ -24,8 +24,11 @@ Pool ThesisPool(int size, uint64_t seed) {
   std::uniform_real_distribution<double> tilt(-0.7, 0.7), spin(-3.1, 3.1), cube(-0.5, 0.5);
   Pool pool{{protocol.setup, truth.X, truth.Z}, {}};
   for (int k = 0; k < size; ++k) {
-    const Pose T_target_camera = sim::CameraInTarget(
-        protocol, tilt(rng), tilt(rng), spin(rng), Eigen::Vector3d(cube(rng), cube(rng), cube(rng)));
+    // Drawn last to first: the order these tests' data were generated in.
+    const double z = cube(rng), y = cube(rng), x = cube(rng);
+    const double gamma = spin(rng), beta = tilt(rng), alpha = tilt(rng);
+    const Pose T_target_camera =
+        sim::CameraInTarget(protocol, alpha, beta, gamma, Eigen::Vector3d(x, y, z));
     pool.candidates.push_back(
         {sim::RobotPoseFor(protocol.setup, truth, T_target_camera), T_target_camera.inverse()});
   }

@@ -77,8 +77,7 @@ std::vector<ViewCandidate> ViewCandidates(const std::vector<Scene>& scenes,
   const double cap = 1.0 - std::cos(options.max_board_tilt);
   std::vector<ViewCandidate> kept;
   int sample = 0;
-  for (; sample < options.max_samples &&
-                       static_cast<int>(kept.size()) < options.candidates;
+  for (; sample < options.max_samples && static_cast<int>(kept.size()) < options.candidates;
        ++sample) {
     // Uniform on the cap about −z: cos θ uniform in [cos max, 1].
     const double cos_theta = 1.0 - cap * unit(rng);
@@ -87,7 +86,9 @@ std::vector<ViewCandidate> ViewCandidates(const std::vector<Scene>& scenes,
     const Eigen::Vector3d direction(sin_theta * std::cos(phi), sin_theta * std::sin(phi),
                                     -cos_theta);
     const Eigen::Vector3d position = centre + range(rng) * direction;
-    const Eigen::Vector3d aim_point = centre + Eigen::Vector3d(aim(rng), aim(rng), 0.0);
+    const double aim_y = aim(rng);  // drawn before x: the order of the first generation
+    const double aim_x = aim(rng);
+    const Eigen::Vector3d aim_point = centre + Eigen::Vector3d(aim_x, aim_y, 0.0);
     const Pose T_target_camera =
         MakePose(LookAlong((aim_point - position).normalized(), spin(rng)), position);
     const Pose T_camera_target = T_target_camera.inverse();
@@ -103,9 +104,8 @@ std::vector<ViewCandidate> ViewCandidates(const std::vector<Scene>& scenes,
         ok = workspace.Contains(candidate.T_base_gripper);
       }
       if (!ok) break;
-      const Pose A = scene.setup == handeye::Setup::kEyeInHand
-                         ? candidate.T_base_gripper
-                         : candidate.T_base_gripper.inverse();
+      const Pose A = scene.setup == handeye::Setup::kEyeInHand ? candidate.T_base_gripper
+                                                               : candidate.T_base_gripper.inverse();
       ok = TargetInView(camera, target, (A * scene.X).inverse() * scene.Z, margin);
     }
     if (ok) kept.push_back(candidate);

@@ -32,7 +32,9 @@ std::vector<Eigen::Vector3d> RandomPoints(std::mt19937_64& rng, int count) {
   std::vector<Eigen::Vector3d> points;
   for (int k = 0; k < count; ++k) {
     const double z = depth(rng);
-    points.emplace_back(lateral(rng) * z, lateral(rng) * z, z);
+    const double y = lateral(rng) * z;  // y before x: the order the tests' data were generated in
+    const double x = lateral(rng) * z;
+    points.emplace_back(x, y, z);
   }
   return points;
 }

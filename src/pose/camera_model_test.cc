@@ -61,7 +61,9 @@ TEST(CameraModel, JacobianMatchesCentralDifferences) {
   for (const CameraModel& camera : TestCameras()) {
     for (int trial = 0; trial < 200; ++trial) {
       const double z = depth(rng);
-      const Eigen::Vector3d X(lateral(rng) * z, lateral(rng) * z, z);
+      const double y = lateral(rng) * z;  // y before x: the order the tests' data came in
+      const double x = lateral(rng) * z;
+      const Eigen::Vector3d X(x, y, z);
       Eigen::Matrix<double, 2, 3> J;
       const Eigen::Vector2d uv = Project(camera, X, &J);
       EXPECT_EQ(uv, Project(camera, X));
@@ -91,7 +93,9 @@ TEST(CameraModel, IntrinsicsJacobianMatchesCentralDifferences) {
     EXPECT_EQ(same.width, camera.width);
     for (int trial = 0; trial < 50; ++trial) {
       const double z = depth(rng);
-      const Eigen::Vector3d X(lateral(rng) * z, lateral(rng) * z, z);
+      const double y = lateral(rng) * z;
+      const double x = lateral(rng) * z;
+      const Eigen::Vector3d X(x, y, z);
       const Eigen::Matrix<double, 2, kNumIntrinsics> J = ProjectionIntrinsicsJacobian(camera, X);
       for (int i = 0; i < kNumIntrinsics; ++i) {
         const double h = 1e-4 * std::max(1.0, std::abs(k(i)));
@@ -127,7 +131,9 @@ TEST(CameraModel, UndistortOfProjectGivesTheRay) {
   std::uniform_real_distribution<double> lateral(-0.6, 0.6);
   for (const CameraModel& camera : TestCameras()) {
     for (int trial = 0; trial < 200; ++trial) {
-      const Eigen::Vector3d X(lateral(rng), lateral(rng), 1.0);
+      const double y = lateral(rng);
+      const double x = lateral(rng);
+      const Eigen::Vector3d X(x, y, 1.0);
       const std::optional<Eigen::Vector2d> p = Undistort(camera, Project(camera, X));
       ASSERT_TRUE(p.has_value());
       EXPECT_LT((*p - X.head<2>()).norm(), 1e-11) << X.transpose();

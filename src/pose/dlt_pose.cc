@@ -9,6 +9,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/geometry/nearest_rotation.h"
 #include "hecal/pose/linear_pose.h"
 
@@ -64,9 +65,8 @@ template <int C>
 Eigen::Matrix<double, 3 * C, 1> SolveDlt(const std::vector<Eigen::Matrix<double, C, 1>>& object,
                                          const std::vector<Eigen::Vector2d>& image,
                                          const std::string& what) {
-  Eigen::Matrix<double, Eigen::Dynamic, 3 * C> A =
-      Eigen::Matrix<double, Eigen::Dynamic, 3 * C>::Zero(
-          2 * static_cast<Eigen::Index>(object.size()), 3 * C);
+  // Dynamic-size, so that the SVD is the one compiled in dense_decompositions.h.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * static_cast<Eigen::Index>(object.size()), 3 * C);
   for (std::size_t k = 0; k < object.size(); ++k) {
     for (int axis = 0; axis < 2; ++axis) {
       const Eigen::Index row = 2 * static_cast<Eigen::Index>(k) + axis;
@@ -74,7 +74,7 @@ Eigen::Matrix<double, 3 * C, 1> SolveDlt(const std::vector<Eigen::Matrix<double,
       A.row(row).template segment<C>(2 * C) = -image[k](axis) * object[k].transpose();
     }
   }
-  const Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 3 * C>> svd(A, Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
   // Descending; min(2N, 3C) of them: for 4 points on a plane (8 × 9) the ninth, zero, is implicit.
   const auto& sigma = svd.singularValues();
   if (!(sigma(3 * C - 2) > kNullSpaceGap * sigma(0))) {

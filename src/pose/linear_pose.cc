@@ -7,17 +7,18 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/core/number_text.h"
 #include "hecal/core/options_check.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/geometry/nearest_rotation.h"
 
 namespace hecal::pose {
 namespace {
 
-constexpr std::size_t kMinPoints = 6;
+constexpr std::size_t kMinLinearPosePoints = 6;
 // U's reciprocal condition number below which it is numerically singular.
 constexpr double kSingular = 1e-12;
 
@@ -30,8 +31,8 @@ struct SeedSystem {
 SeedSystem SolveSeedSystem(const std::vector<Eigen::Vector3d>& object_points,
                            const std::vector<Eigen::Vector2d>& normalized) {
   const Eigen::Index rows = 2 * static_cast<Eigen::Index>(object_points.size() - 1);
-  Eigen::Matrix<double, Eigen::Dynamic, 9> U =
-      Eigen::Matrix<double, Eigen::Dynamic, 9>::Zero(rows, 9);
+  // Dynamic-size, so that the SVD is the one compiled in dense_decompositions.h.
+  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(rows, 9);
   Eigen::VectorXd B(rows);
   const Eigen::Vector2d& ref = normalized[0];
   Eigen::Index row = 0;
@@ -45,8 +46,7 @@ SeedSystem SolveSeedSystem(const std::vector<Eigen::Vector3d>& object_points,
     U.block<1, 3>(row, 6) = -p.y() * P;
     B(row++) = p.y() - ref.y();
   }
-  const Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 9>> svd(
-      U, Eigen::ComputeThinU | Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(U, Eigen::ComputeThinU | Eigen::ComputeFullV);
   const Eigen::VectorXd& sigma = svd.singularValues();
   SeedSystem system;
   system.reciprocal_condition = sigma(0) > 0.0 ? sigma(8) / sigma(0) : 0.0;
@@ -59,13 +59,6 @@ double Thickness(const Eigen::Matrix3d& scatter) {
   const Eigen::Vector3d eigenvalues =
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter, Eigen::EigenvaluesOnly).eigenvalues();
   return eigenvalues(2) > 0.0 ? std::sqrt(std::max(eigenvalues(0), 0.0) / eigenvalues(2)) : 0.0;
-}
-
-std::string Number(double value) {
-  std::ostringstream text;
-  text.precision(3);
-  text << value;
-  return text.str();
 }
 
 }  // namespace
@@ -127,7 +120,7 @@ void CheckCorrespondences(const std::vector<Eigen::Vector3d>& object_points,
 bool LinearPoseOptions::IsValid(std::string* why) const {
   if (planarity_tolerance > 0.0 && planarity_tolerance < 1.0) return true;
   return Invalid(why, "LinearPoseOptions.planarity_tolerance",
-                 "must be above 0 and below 1, got " + Number(planarity_tolerance),
+                 "must be above 0 and below 1, got " + NumberText(planarity_tolerance, 3),
                  "use e.g. 1e-3 (the smallest spread of a plane relative to the largest)");
 }
 
@@ -137,7 +130,7 @@ LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object
   RequireValid(options);
   CheckCorrespondences(object_points, normalized);
   const std::size_t n = object_points.size();
-  if (n < kMinPoints) {
+  if (n < kMinLinearPosePoints) {
     throw DegenerateError(
         "the camera pose with the linear method (linear): it needs at least 6 "
         "non-coplanar points, got " +
@@ -150,7 +143,7 @@ LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object
     throw DegenerateError(
         "the camera pose with the linear method (linear): it needs non-coplanar object "
         "points, but these lie on one plane (thickness/extent " +
-            Number(spread.singular_values(2) / spread.singular_values(0)) + ")",
+            NumberText(spread.singular_values(2) / spread.singular_values(0), 3) + ")",
         "for a planar target use --method ippe or dlt (homography)");
   }
 
@@ -167,7 +160,7 @@ LinearPoseResult LinearPoseNormalized(const std::vector<Eigen::Vector3d>& object
     throw DegenerateError(
         "the camera pose with the linear method (linear): its system U is numerically "
         "singular (reciprocal condition " +
-            Number(system.reciprocal_condition) +
+            NumberText(system.reciprocal_condition, 3) +
             "): the points and the camera are in a critical configuration",
         "use points spread through a volume, or --method dlt / sqpnp");
   }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "pose/pose_test_util.h"
 #include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
 
@@ -21,10 +22,6 @@ namespace {
 
 using testing::PointShape;
 using testing::RandomScene;
-
-double RotationError(const Pose& a, const Pose& b) {
-  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
-}
 
 template <typename Call>
 std::string DegenerateMessage(Call call) {
@@ -169,7 +166,10 @@ TEST(LinearPose, RefusesAnObjectWithoutExtentInTheImage) {
   std::vector<Eigen::Vector3d> object;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-0.1, 0.1);
-  for (int k = 0; k < 8; ++k) object.emplace_back(u(rng), u(rng), u(rng));
+  for (int k = 0; k < 8; ++k) {
+    const double z = u(rng), y = u(rng), x = u(rng);  // last to first, as the data were generated
+    object.emplace_back(x, y, z);
+  }
   const std::vector<Eigen::Vector2d> same(8, Eigen::Vector2d(0.1, 0.2));
   EXPECT_THROW(LinearPoseNormalized(object, same), DegenerateError);
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "pose/pose_test_util.h"
 #include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
 
@@ -20,10 +21,6 @@ namespace {
 
 using testing::PointShape;
 using testing::RandomScene;
-
-double RotationError(const Pose& a, const Pose& b) {
-  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
-}
 
 TEST(PoseMethod, NamesRoundTrip) {
   ASSERT_EQ(PoseMethods().size(), 3u);

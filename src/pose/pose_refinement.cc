@@ -16,7 +16,7 @@
 namespace hecal::pose {
 namespace {
 
-constexpr std::size_t kMinPoints = 3;
+constexpr std::size_t kMinRefinementPoints = 3;
 // Initial damping μ, relative to diag(JᵀJ) (Marquardt's scaling, so dimensionless; Madsen et
 // al. recommend 1e-6 … 1 depending on trust in the start; the starts here are closed forms).
 constexpr double kInitialDamping = 1e-3;
@@ -53,7 +53,7 @@ bool Linearise(const Pose& T, const std::vector<Eigen::Vector3d>& object_points,
 void CheckInputs(const std::vector<Eigen::Vector3d>& object_points,
                  const std::vector<Eigen::Vector2d>& pixels, const RefinementOptions& options) {
   CheckCorrespondences(object_points, pixels);
-  if (object_points.size() < kMinPoints) {
+  if (object_points.size() < kMinRefinementPoints) {
     throw InputError(
         "image points", 0,
         "pose refinement needs at least 3 points, got " + std::to_string(object_points.size()),

@@ -13,6 +13,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/geometry/se3.h"
+#include "pose/pose_test_util.h"
 #include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
 
@@ -21,10 +22,6 @@ namespace {
 
 using testing::PointShape;
 using testing::RandomScene;
-
-double RotationError(const Pose& a, const Pose& b) {
-  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
-}
 
 // The truth moved by a rotation of `angle` about a random axis and a translation of `offset`
 // in a random direction (built with Eigen, not se3::Exp).

@@ -12,7 +12,7 @@
 namespace hecal::report {
 namespace {
 
-contour::ShapePose Pose(contour::RotationForm form) {
+contour::ShapePose KnownShapePose(contour::RotationForm form) {
   contour::ShapePose result;
   result.pose.translation << 10, -20, 30;
   result.pose.euler << 0.5, 0.25, -0.125;
@@ -27,7 +27,7 @@ std::string Text(const contour::ShapePose& result) {
 }
 
 TEST(ContourPoseText, PoseLines) {
-  EXPECT_EQ(Text(Pose(contour::RotationForm::kZyx)),
+  EXPECT_EQ(Text(KnownShapePose(contour::RotationForm::kZyx)),
             "translation (Tx, Ty, Tz) = ( 10 -20  30)  [unit of --z0]\n"
             "rotation matrix\n"
             "  1 0 0\n"
@@ -37,7 +37,7 @@ TEST(ContourPoseText, PoseLines) {
 }
 
 TEST(ContourPoseText, UncertaintyAndBias) {
-  contour::ShapePose result = Pose(contour::RotationForm::kZxz);
+  contour::ShapePose result = KnownShapePose(contour::RotationForm::kZxz);
   contour::ContourPoseUncertainty ut;
   ut.parameters.setZero();
   ut.mean.setZero();

@@ -83,8 +83,11 @@ void PerturbMotions(global::EpipolarProblem* problem, double rotation, double tr
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (global::EpipolarMotion& motion : problem->motions) {
-    const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
-    const Eigen::Vector3d tau(normal(rng), normal(rng), normal(rng));
+    // Drawn last to first: the order these tests' data were generated in.
+    const double omega_z = normal(rng), omega_y = normal(rng), omega_x = normal(rng);
+    const Eigen::Vector3d omega(omega_x, omega_y, omega_z);
+    const double tau_z = normal(rng), tau_y = normal(rng), tau_x = normal(rng);
+    const Eigen::Vector3d tau(tau_x, tau_y, tau_z);
     motion.hand = motion.hand * MakePose(so3::Exp(rotation * omega), translation * tau);
   }
 }

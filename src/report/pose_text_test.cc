@@ -12,7 +12,7 @@
 namespace hecal::report {
 namespace {
 
-pose::PoseEstimate QuarterTurn() {
+pose::PoseEstimate QuarterTurnEstimate() {
   pose::PoseEstimate estimate;
   estimate.method = "dlt";
   Eigen::Matrix3d R;
@@ -25,7 +25,7 @@ pose::PoseEstimate QuarterTurn() {
 
 TEST(PoseText, UnrefinedInMillimetres) {
   std::ostringstream out;
-  PrintPoseEstimate(out, QuarterTurn(), 12, io::LengthUnit::kMillimetre);
+  PrintPoseEstimate(out, QuarterTurnEstimate(), 12, io::LengthUnit::kMillimetre);
   EXPECT_EQ(out.str(),
             "method dlt (12 points)\n"
             "T_camera_target (x_camera = R x_target + t)\n"
@@ -38,7 +38,7 @@ TEST(PoseText, UnrefinedInMillimetres) {
 }
 
 TEST(PoseText, RefinedWithItsSigma) {
-  pose::PoseEstimate estimate = QuarterTurn();
+  pose::PoseEstimate estimate = QuarterTurnEstimate();
   Vector6d variance;
   variance << std::pow(std::numbers::pi / 180.0, 2), 0, 0, 1e-6, 0, 0;  // 1°, 1 mm
   estimate.covariance = Matrix6d(variance.asDiagonal());

@@ -22,11 +22,19 @@ std::vector<int> InjectGrossOutliers(SimulatedData* data, int count, std::mt1993
   std::normal_distribution<double> gaussian;
   std::uniform_real_distribution<double> box(-1.0, 1.0);
   for (int i : stations) {
+    // One draw at a time, last component first (the order of the data sets' first generation).
     Eigen::Quaterniond q;
     do {
-      q = Eigen::Quaterniond(gaussian(rng), gaussian(rng), gaussian(rng), gaussian(rng));
+      const double z = gaussian(rng);
+      const double y = gaussian(rng);
+      const double x = gaussian(rng);
+      const double w = gaussian(rng);
+      q = Eigen::Quaterniond(w, x, y, z);
     } while (q.norm() < 1e-6);
-    const Eigen::Vector3d t(box(rng), box(rng), box(rng));
+    const double tz = box(rng);
+    const double ty = box(rng);
+    const double tx = box(rng);
+    const Eigen::Vector3d t(tx, ty, tz);
     data->T_base_gripper[static_cast<size_t>(i)] = MakePose(q.normalized().toRotationMatrix(), t);
   }
   return stations;

@@ -31,13 +31,18 @@ PlanarScene DrawPlanarScene(handeye::Setup setup, int stations, const NoiseModel
     scene.X = Translation(0.04, -0.03, 0.06) * Rotation(Eigen::Vector3d(1.0, 2.0, 0.5), 0.06);
     scene.Z = Translation(0.5, 0.0, 0.0) * Rotation(Eigen::Vector3d::UnitZ(), 0.3) * flange_down;
   } else {
-    scene.X = Translation(0.5, 0.05, 1.2) * Rotation(Eigen::Vector3d(0.3, 1.0, 0.0), 0.05) *
-              flange_down;
+    scene.X =
+        Translation(0.5, 0.05, 1.2) * Rotation(Eigen::Vector3d(0.3, 1.0, 0.0), 0.05) * flange_down;
     scene.Z = Translation(0.1, 0.0, 0.05) * Rotation(Eigen::Vector3d::UnitZ(), 0.4);
   }
   for (int i = 0; i < stations; ++i) {
-    const Pose T_base_gripper = Translation(0.5 + lateral(rng), lateral(rng), height(rng)) *
-                                Rotation(Eigen::Vector3d::UnitZ(), turn(rng)) * flange_down;
+    // One draw at a time, in the order of the data sets' first generation (turn first).
+    const double angle = turn(rng);
+    const double z = height(rng);
+    const double y = lateral(rng);
+    const double x = 0.5 + lateral(rng);
+    const Pose T_base_gripper =
+        Translation(x, y, z) * Rotation(Eigen::Vector3d::UnitZ(), angle) * flange_down;
     // Z = A X B with A = T_base_gripper (eye-in-hand) or its inverse (eye-to-hand).
     const Pose A = setup == handeye::Setup::kEyeInHand ? T_base_gripper : T_base_gripper.inverse();
     const Pose T_camera_target = (A * scene.X).inverse() * scene.Z;

@@ -12,21 +12,31 @@
 namespace hecal::sim {
 namespace {
 
+// The draws of each function are made one at a time, last component first: the order in which
+// GCC evaluated the arguments of the one-line forms these replace, so that a seed gives the same
+// data sets as before, with any compiler.
+
 Eigen::Matrix3d UniformRotation(std::mt19937_64& rng) {
   std::normal_distribution<double> normal;
-  return Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng))
-      .normalized()
-      .toRotationMatrix();
+  const double z = normal(rng);
+  const double y = normal(rng);
+  const double x = normal(rng);
+  const double w = normal(rng);
+  return Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
 }
 
 Eigen::Vector3d UniformBox(std::mt19937_64& rng, double half_side) {
   std::uniform_real_distribution<double> uniform(-half_side, half_side);
-  return Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng));
+  const double z = uniform(rng);
+  const double y = uniform(rng);
+  const double x = uniform(rng);
+  return {x, y, z};
 }
 
 // Random pose with uniform rotation and translation in [−offset, offset]³.
 Pose RandomPose(std::mt19937_64& rng, double offset) {
-  return MakePose(UniformRotation(rng), UniformBox(rng, offset));
+  const Eigen::Vector3d translation = UniformBox(rng, offset);
+  return MakePose(UniformRotation(rng), translation);
 }
 
 }  // namespace

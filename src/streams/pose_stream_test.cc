@@ -31,8 +31,11 @@ PoseStream Sampled(double rate, double duration, double noise = 0.0, unsigned se
     const double t = k / rate;
     Pose T = Motion(t);
     if (noise > 0) {
-      T.linear() = T.linear() * so3::Exp(Eigen::Vector3d(normal(rng), normal(rng), normal(rng)));
-      T.translation() += Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+      // Drawn last to first: the order these tests' data were generated in.
+      const double wz = normal(rng), wy = normal(rng), wx = normal(rng);
+      T.linear() = T.linear() * so3::Exp(Eigen::Vector3d(wx, wy, wz));
+      const double tz = normal(rng), ty = normal(rng), tx = normal(rng);
+      T.translation() += Eigen::Vector3d(tx, ty, tz);
     }
     stream.stamps.push_back(t);
     stream.poses.push_back(T);

@@ -54,16 +54,21 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   EpipolarScene scene;
   scene.problem.setup = spec.setup;
-  scene.X = MakePose(RandomRotation(rng),
-                     0.2 * Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)));
+  // Draws within a statement run last to first: the order these tests' data were generated in.
+  const double tz = uniform(rng);
+  const double ty = uniform(rng);
+  const double tx = uniform(rng);
+  scene.X = MakePose(RandomRotation(rng), 0.2 * Eigen::Vector3d(tx, ty, tz));
   const Pose H0 = MakePose(RandomRotation(rng), Eigen::Vector3d(0.5, 0.1, 0.6));
   for (int m = 0; m < spec.motions; ++m) {
     global::EpipolarMotion motion;
     motion.first_station = 2 * m;
     motion.second_station = 2 * m + 1;
+    const double hz = uniform(rng);
+    const double hy = uniform(rng);
+    const double hx = uniform(rng);
     const Pose H_first =
-        H0 * MakePose(so3::Exp(RandomRotationVector(rng, 0.3)),
-                      0.1 * Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)));
+        H0 * MakePose(so3::Exp(RandomRotationVector(rng, 0.3)), 0.1 * Eigen::Vector3d(hx, hy, hz));
     Pose H_second = Pose::Identity();
     std::vector<Eigen::Vector3d> points;  // in the first camera frame
     for (int attempt = 0; attempt < 100; ++attempt) {
@@ -75,7 +80,9 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
       for (int tries = 0; tries < 50 * spec.pairs && int(points.size()) < spec.pairs; ++tries) {
         const double z =
             spec.planar ? spec.depth : spec.depth * (0.6 + 0.8 * std::abs(uniform(rng)));
-        const Eigen::Vector3d p(0.5 * z * uniform(rng), 0.4 * z * uniform(rng), z);
+        const double v = uniform(rng);
+        const double u = uniform(rng);
+        const Eigen::Vector3d p(0.5 * z * u, 0.4 * z * v, z);
         const Eigen::Vector3d q = camera_motion.inverse() * p;  // second camera frame
         if (q.z() > 0.2 && std::abs(q.x() / q.z()) < 0.6 && std::abs(q.y() / q.z()) < 0.5) {
           points.push_back(p);
@@ -87,8 +94,10 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
     const auto measured = [&](const Pose& H) {
       if (spec.robot_rotation_sigma <= 0.0 && spec.robot_translation_sigma <= 0.0) return H;
       std::normal_distribution<double> normal(0.0, 1.0);
-      const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
-      const Eigen::Vector3d tau(normal(rng), normal(rng), normal(rng));
+      const double omega_z = normal(rng), omega_y = normal(rng), omega_x = normal(rng);
+      const Eigen::Vector3d omega(omega_x, omega_y, omega_z);
+      const double tau_z = normal(rng), tau_y = normal(rng), tau_x = normal(rng);
+      const Eigen::Vector3d tau(tau_x, tau_y, tau_z);
       const Pose error =
           MakePose(so3::Exp(spec.robot_rotation_sigma * omega), spec.robot_translation_sigma * tau);
       return spec.setup == handeye::Setup::kEyeInHand ? Pose(H * error)

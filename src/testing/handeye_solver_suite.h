@@ -179,7 +179,9 @@ inline Scene ParallelAxesCase(handeye::Setup setup, int stations, uint64_t seed)
   std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
   std::vector<Pose> poses;
   for (int i = 0; i < stations; ++i) {
-    poses.push_back(MakePose(R0 * so3::Exp(angle(rng) * axis), RandomPose(rng, 0.5).translation()));
+    const Eigen::Vector3d t = RandomPose(rng, 0.5).translation();  // drawn before the angle
+    const double theta = angle(rng);
+    poses.push_back(MakePose(R0 * so3::Exp(theta * axis), t));
   }
   return CaseFromCameraPoses(setup, poses, rng);
 }

@@ -5,7 +5,7 @@
 //
 // MakeImageScene draws, from one std::mt19937_64 seeded with `seed`: first the stations
 // (MakeScene: X, Z, the true poses, then the robot noise), then per station and per grid point
-// two standard normals (x, y), scaled by pixel_sigma — drawn also when pixel_sigma is zero, so
+// two standard normals (y, then x), scaled by pixel_sigma — drawn also when pixel_sigma is zero, so
 // that the noise-free pixels and the stations of a seed do not depend on it. The pixels are the
 // projections through the TRUE camera poses (T_camera_target_true) of the grid points, plus
 // that noise. Frames and units: testing/scene.h and docs/conventions.md; metres, pixels.
@@ -127,7 +127,9 @@ inline ImageScene MakeImageScene(const ImageSceneOptions& options) {
     StationImage image;
     for (const Eigen::Vector3d& P : grid) {
       image.target.push_back(P);
-      const Eigen::Vector2d n(normal(rng), normal(rng));
+      const double ny = normal(rng);
+      const double nx = normal(rng);
+      const Eigen::Vector2d n(nx, ny);
       image.pixels.push_back(pose::Project(options.camera, T_camera_target * P) +
                              options.pixel_sigma * n);
     }

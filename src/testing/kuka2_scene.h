@@ -98,15 +98,20 @@ inline Scene MakeScene(const SceneSpec& spec, std::uint64_t seed) {
       const Eigen::Vector3d p = cameras[j].inverse() * corner;
       const double u = kCx + kFocal * p.x() / p.z(), v = kCy + kFocal * p.y() / p.z();
       const bool seen = p.z() > 0 && u >= 0 && u <= kWidth - 1 && v >= 0 && v <= kHeight - 1;
-      const Eigen::Vector3d noisy(p.x() / p.z() + spec.ray_sigma * normal(rng),
-                                  p.y() / p.z() + spec.ray_sigma * normal(rng), 1.0);
+      // Draws run last to first (y before x): the order the tests' data were generated in.
+      const double noise_y = normal(rng);
+      const double noise_x = normal(rng);
+      const Eigen::Vector3d noisy(p.x() / p.z() + spec.ray_sigma * noise_x,
+                                  p.y() / p.z() + spec.ray_sigma * noise_y, 1.0);
       rays[j].push_back(seen ? Eigen::Vector3d(noisy.normalized()) : Eigen::Vector3d::Zero());
     }
   }
   std::vector<Pose> measured;
   for (const Pose& H : hands) {
-    const Eigen::Vector3d omega(normal(rng), normal(rng), normal(rng));
-    const Eigen::Vector3d tau(normal(rng), normal(rng), normal(rng));
+    const double omega_z = normal(rng), omega_y = normal(rng), omega_x = normal(rng);
+    const Eigen::Vector3d omega(omega_x, omega_y, omega_z);
+    const double tau_z = normal(rng), tau_y = normal(rng), tau_x = normal(rng);
+    const Eigen::Vector3d tau(tau_x, tau_y, tau_z);
     measured.push_back(H * MakePose(so3::Exp(spec.robot_rotation_sigma * omega),
                                     spec.robot_translation_sigma * tau));
   }

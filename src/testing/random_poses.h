@@ -14,21 +14,32 @@
 namespace hecal::testing {
 
 // Uniform on SO(3): a normalised 4-D Gaussian is uniform on S³ (Shoemake's argument).
+// The helpers below draw components last to first: the order the tests' data were generated in.
 inline Eigen::Matrix3d RandomRotation(std::mt19937_64& rng) {
   std::normal_distribution<double> normal;
-  Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
+  const double z = normal(rng);
+  const double y = normal(rng);
+  const double x = normal(rng);
+  const double w = normal(rng);
+  const Eigen::Quaterniond q(w, x, y, z);
   return q.normalized().toRotationMatrix();
 }
 
 // Each component N(0, sigma²).
 inline Eigen::Vector3d RandomGaussianVector(std::mt19937_64& rng, double sigma = 1.0) {
   std::normal_distribution<double> normal(0.0, sigma);
-  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+  const double z = normal(rng);
+  const double y = normal(rng);
+  const double x = normal(rng);
+  return Eigen::Vector3d(x, y, z);
 }
 
 inline Eigen::Vector3d RandomUnitVector(std::mt19937_64& rng) {
   std::normal_distribution<double> normal;
-  return Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+  const double z = normal(rng);
+  const double y = normal(rng);
+  const double x = normal(rng);
+  return Eigen::Vector3d(x, y, z).normalized();
 }
 
 // Rotation vector with the given angle about a random axis.
@@ -39,12 +50,16 @@ inline Eigen::Vector3d RandomRotationVector(std::mt19937_64& rng, double angle) 
 // A point uniform in the cube [−half_side, half_side]³.
 inline Eigen::Vector3d RandomPointInBox(std::mt19937_64& rng, double half_side) {
   std::uniform_real_distribution<double> uniform(-half_side, half_side);
-  return Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng));
+  const double z = uniform(rng);
+  const double y = uniform(rng);
+  const double x = uniform(rng);
+  return Eigen::Vector3d(x, y, z);
 }
 
 // Random pose: uniform rotation, translation uniform in [−scale, scale]³ (metres).
 inline Pose RandomPose(std::mt19937_64& rng, double scale = 1.0) {
-  return MakePose(RandomRotation(rng), RandomPointInBox(rng, scale));
+  const Eigen::Vector3d translation = RandomPointInBox(rng, scale);  // drawn first
+  return MakePose(RandomRotation(rng), translation);
 }
 
 // Rotation vectors at the edges of the domain: zero, 1e-9 rad, 1e-4 rad, exactly π about each
@@ -78,7 +93,9 @@ inline std::vector<Vector6d> RandomTwists(std::mt19937_64& rng, int count, doubl
   std::uniform_real_distribution<double> angle(0.0, max_angle);
   std::vector<Vector6d> twists;
   for (int i = 0; i < count; ++i) {
-    twists.push_back(Twist(RandomRotationVector(rng, angle(rng)), RandomGaussianVector(rng)));
+    const Eigen::Vector3d v = RandomGaussianVector(rng);  // drawn first
+    const Eigen::Vector3d omega = RandomRotationVector(rng, angle(rng));
+    twists.push_back(Twist(omega, v));
   }
   for (const Eigen::Vector3d& omega : EdgeCaseRotationVectors(rng)) {
     twists.push_back(Twist(omega, RandomGaussianVector(rng)));

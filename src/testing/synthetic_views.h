@@ -36,7 +36,11 @@ inline std::vector<Eigen::Vector2d> Project(const std::vector<Eigen::Vector3d>& 
 
 inline void AddNoise(double sigma_px, std::mt19937_64& rng, std::vector<Eigen::Vector2d>* pixels) {
   std::normal_distribution<double> noise(0.0, sigma_px);
-  for (Eigen::Vector2d& p : *pixels) p += Eigen::Vector2d(noise(rng), noise(rng));
+  for (Eigen::Vector2d& p : *pixels) {
+    const double dy = noise(rng);  // y first: the order the tests' data were generated in
+    const double dx = noise(rng);
+    p += Eigen::Vector2d(dx, dy);
+  }
 }
 
 // Rotation angle between two poses (radians) and translation distance (metres).

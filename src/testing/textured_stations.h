@@ -117,10 +117,12 @@ inline TexturedStations MakeTexturedStations(const TexturedStationSpec& spec, st
     if (k > 0) {
       Eigen::Vector3d next_a = a, next_c = c;
       do {
-        next_a = a + (10.0 + 8.0 * uniform(rng)) * M_PI / 180.0 * RandomUnitVector(rng);
+        const Eigen::Vector3d axis = RandomUnitVector(rng);  // drawn before the step's size
+        next_a = a + (10.0 + 8.0 * uniform(rng)) * M_PI / 180.0 * axis;
       } while (next_a.norm() > 13.0 * M_PI / 180.0);
       do {
-        next_c = c + (0.02 + 0.03 * uniform(rng)) * RandomUnitVector(rng);
+        const Eigen::Vector3d direction = RandomUnitVector(rng);  // drawn before the length
+        next_c = c + (0.02 + 0.03 * uniform(rng)) * direction;
       } while (next_c.norm() > 0.06);
       a = next_a;
       c = next_c;

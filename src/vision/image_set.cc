@@ -20,6 +20,7 @@
 #include "hecal/vision/opencv_pnp.h"
 #include "hecal/vision/order_consistency.h"
 #include "hecal/vision/target_mismatch.h"
+#include "size_text.h"
 
 namespace hecal::vision {
 namespace {
@@ -199,18 +200,15 @@ void CheckEnoughViews(const std::vector<ImageRecord>& images, const pose::Target
                      " (a board of the wrong size may be found in part of some images)"));
 }
 
-std::string SizeText(int width, int height) {
-  return std::to_string(width) + "x" + std::to_string(height);
-}
-
 // The camera file's width × height against the images': equal, or an error naming both. Two
 // mismatches are named as what they most likely are: the images turned a quarter turn, or the
 // images resized by one factor (then the scaled intrinsics are given; pixel centres at integers,
 // so c' = (c + ½)·s − ½).
 void CheckIntrinsicsSize(const pose::CameraModel& camera, const std::string& path, cv::Size size) {
   if (camera.width <= 0 || (camera.width == size.width && camera.height == size.height)) return;
-  const std::string sizes = "the intrinsics are for " + SizeText(camera.width, camera.height) +
-                            " images but the images are " + SizeText(size.width, size.height);
+  const std::string sizes =
+      "the intrinsics are for " + internal::SizeText(camera.width, camera.height) +
+      " images but the images are " + internal::SizeText(size.width, size.height);
   if (camera.width == size.height && camera.height == size.width) {
     throw InputError(path, 0, sizes + ": the images are turned a quarter turn",
                      "use the images as the camera delivers them (undo the rotation, e.g. an "
@@ -352,9 +350,9 @@ std::string CorrectionText(const vision::IntrinsicsCorrection& correction,
     case Kind::kScaleResolution:
       return "they look like the intrinsics of images " + FormatFixed(1.0 / correction.scale, 3) +
              " times this size (about " +
-             SizeText(static_cast<int>(std::lround(size.width / correction.scale)),
-                      static_cast<int>(std::lround(size.height / correction.scale))) +
-             "): scaled to these " + SizeText(size.width, size.height) + " images (fx " +
+             internal::SizeText(static_cast<int>(std::lround(size.width / correction.scale)),
+                                static_cast<int>(std::lround(size.height / correction.scale))) +
+             "): scaled to these " + internal::SizeText(size.width, size.height) + " images (fx " +
              FormatFixed(c.fx, 1) + ", fy " + FormatFixed(c.fy, 1) + ", cx " +
              FormatFixed(c.cx, 1) + ", cy " + FormatFixed(c.cy, 1) + ")" + fits;
     case Kind::kNoDistortion:

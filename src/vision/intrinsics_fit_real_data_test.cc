@@ -33,7 +33,7 @@ std::vector<CalibrationView> ViewsOf(const std::vector<Detection>& detections,
 }
 
 cv::Mat MoveItPhoto(const std::string& name) {
-  return cv::imread(testing::MoveItPhotoPath(name), cv::IMREAD_GRAYSCALE);
+  return cv::imread(hecal::testing::MoveItPhotoPath(name), cv::IMREAD_GRAYSCALE);
 }
 
 // Measured (E / H px): reference 0.076 / 0.077; fx, fy 10× 23.5 / 1.65; cx, cy swapped
@@ -68,15 +68,15 @@ TEST(IntrinsicsFitRealData, Kuka2ReferenceFitsAndMistakesAreNamed) {
 // Measured: ChArUco photo 0.25 / 0.20 px; ArUco photo declared 4 × 3: 41.9 / 41.8 px, as the
 // print (3 × 4): 0.55 px.
 TEST(IntrinsicsFitRealData, MoveItPhotos) {
-  const pose::TargetSpec charuco = testing::MoveItCharucoBoard();
-  const pose::CameraModel charuco_camera = testing::MoveItCharucoCamera();
+  const pose::TargetSpec charuco = hecal::testing::MoveItCharucoBoard();
+  const pose::CameraModel charuco_camera = hecal::testing::MoveItCharucoCamera();
   const IntrinsicsFit fit = CheckIntrinsicsFit(
       ViewsOf({DetectTarget(MoveItPhoto("test_charuco_board_detection.jpg"), charuco)}, charuco),
       charuco_camera);
   EXPECT_EQ(fit.verdict, IntrinsicsVerdict::kFits);
 
-  const pose::TargetSpec declared = testing::MoveItArucoGrid();
-  const pose::CameraModel aruco_camera = testing::MoveItArucoCamera();
+  const pose::TargetSpec declared = hecal::testing::MoveItArucoGrid();
+  const pose::CameraModel aruco_camera = hecal::testing::MoveItArucoCamera();
   const cv::Mat photo = MoveItPhoto("test_aruco_marker_detection.png");
   const IntrinsicsFit layout =
       CheckIntrinsicsFit(ViewsOf({DetectTarget(photo, declared)}, declared), aruco_camera);

@@ -29,12 +29,12 @@ bool Mentions(const IntrinsicsPlausibility& result, const std::string& text) {
 // Views of the rendered scene's 9 × 6 board through the detection camera; with `misread`, the
 // odd views pair every pixel with the next grid point in row-major order (the last wraps round).
 std::vector<CalibrationView> RenderedViews(bool misread) {
-  const pose::TargetSpec board = testing::Board();
-  const std::vector<Pose> poses = testing::SpreadViews({.count = 8});
+  const pose::TargetSpec board = hecal::testing::Board();
+  const std::vector<Pose> poses = hecal::testing::SpreadViews({.count = 8});
   std::vector<CalibrationView> views;
   for (std::size_t k = 0; k < poses.size(); ++k) {
-    const testing::StationImage truth =
-        testing::ProjectedTruth(board, testing::DetectionCamera(), poses[k]);
+    const hecal::testing::StationImage truth =
+        hecal::testing::ProjectedTruth(board, hecal::testing::DetectionCamera(), poses[k]);
     CalibrationView view{truth.target, truth.pixels};
     if (misread && k % 2 == 1) {
       std::rotate(view.object_points.begin(), view.object_points.begin() + 1,
@@ -125,9 +125,9 @@ TEST(IntrinsicsPlausibility, FoldRadiusMatchesTheClosedForm) {
 }
 
 TEST(IntrinsicsPlausibilityOptions, IsValidNamesTheField) {
-  using testing::RefusesNaming;
+  using hecal::testing::RefusesNaming;
   const IntrinsicsPlausibilityOptions defaults;
-  EXPECT_TRUE(testing::IsValidOptions(defaults));
+  EXPECT_TRUE(hecal::testing::IsValidOptions(defaults));
   EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsPlausibilityOptions.max_rms_px",
                             [](auto& o) { o.max_rms_px = 0.0; }));
   EXPECT_TRUE(RefusesNaming(defaults, "IntrinsicsPlausibilityOptions.max_principal_offset",

@@ -14,8 +14,8 @@ namespace hecal::vision {
 namespace {
 
 TEST(MarkerProbe, FindsTheKindAndTheIds) {
-  const cv::Mat photo = cv::imread(testing::MoveItPhotoPath("test_charuco_board_detection.jpg"),
-                                   cv::IMREAD_GRAYSCALE);
+  const cv::Mat photo = cv::imread(
+      hecal::testing::MoveItPhotoPath("test_charuco_board_detection.jpg"), cv::IMREAD_GRAYSCALE);
   ASSERT_FALSE(photo.empty());
   const std::optional<MarkersSeen> charuco = ProbeMarkers(photo, 2);
   ASSERT_TRUE(charuco.has_value());
@@ -27,9 +27,9 @@ TEST(MarkerProbe, FindsTheKindAndTheIds) {
   EXPECT_EQ(charuco->max_id, 16);
   EXPECT_FALSE(ProbeMarkers(photo, 18).has_value());
 
-  testing::RenderedSceneOptions options;
-  options.target = testing::AprilTagGrid();
-  options.views = {testing::FrontalView(options.target, 0.5, 15.0, -10.0, 5.0)};
+  hecal::testing::RenderedSceneOptions options;
+  options.target = hecal::testing::AprilTagGrid();
+  options.views = {hecal::testing::FrontalView(options.target, 0.5, 15.0, -10.0, 5.0)};
   const std::optional<MarkersSeen> april = ProbeMarkers(MakeRenderedScene(options).images[0], 2);
   ASSERT_TRUE(april.has_value());
   EXPECT_EQ(april->Kind(), "tag36h11 AprilTags");
@@ -38,7 +38,7 @@ TEST(MarkerProbe, FindsTheKindAndTheIds) {
   EXPECT_EQ(april->min_id, 3);
   EXPECT_EQ(april->max_id, 22);
 
-  options.target = testing::Board();
+  options.target = hecal::testing::Board();
   options.views.resize(1);
   EXPECT_FALSE(ProbeMarkers(MakeRenderedScene(options).images[0], 1).has_value());
 }

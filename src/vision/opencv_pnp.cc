@@ -9,6 +9,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/geometry/dense_decompositions.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::vision {

@@ -32,7 +32,7 @@ pose::CameraModel TestCamera() {
 }
 
 // The inner corners of a 9 × 6 chessboard of 30 mm squares, the first corner the origin.
-std::vector<Eigen::Vector3d> Board() {
+std::vector<Eigen::Vector3d> PnpBoard() {
   return ::hecal::testing::GridPoints({.cols = 9, .rows = 6, .pitch = 0.03, .centred = false});
 }
 
@@ -47,7 +47,10 @@ Pose PlanarTruth() {
 std::vector<Eigen::Vector3d> CubePoints(int n, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-0.15, 0.15);
   std::vector<Eigen::Vector3d> points;
-  for (int k = 0; k < n; ++k) points.emplace_back(u(rng), u(rng), u(rng));
+  for (int k = 0; k < n; ++k) {
+    const double z = u(rng), y = u(rng), x = u(rng);  // last to first, as the data were generated
+    points.emplace_back(x, y, z);
+  }
   return points;
 }
 
@@ -67,7 +70,7 @@ double ReprojectionRms(const std::vector<Eigen::Vector3d>& points,
 
 TEST(OpenCvPnp, EveryMethodRecoversAPlanarPoseExactly) {
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = Board();
+  const std::vector<Eigen::Vector3d> board = PnpBoard();
   const Pose truth = PlanarTruth();
   const std::vector<Eigen::Vector2d> pixels = Project(board, truth, camera);
   for (const PnpMethodInfo& info : OpenCvPnpMethods()) {
@@ -82,7 +85,7 @@ TEST(OpenCvPnp, PoseMapsTargetPointsIntoTheCameraFrame) {
   // Frame convention, independently of any solver: the target's origin lands where the pose's
   // translation says, and the first corner's pixel is that point's projection.
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = Board();
+  const std::vector<Eigen::Vector3d> board = PnpBoard();
   const Pose truth = PlanarTruth();
   const std::vector<Eigen::Vector2d> pixels = Project(board, truth, camera);
   const Pose T = SolvePnPOpenCv(PnpMethod::kIppe, board, pixels, camera);
@@ -97,7 +100,7 @@ TEST(OpenCvPnp, IppeAcceptsAnyPlaneNotOnlyZEqualsZero) {
   const Pose T_board_moved = MakePose(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX()).matrix(),
                                       Eigen::Vector3d(0, 0, 0.1));
   std::vector<Eigen::Vector3d> points;
-  for (const Eigen::Vector3d& p : Board()) points.push_back(T_board_moved * p);
+  for (const Eigen::Vector3d& p : PnpBoard()) points.push_back(T_board_moved * p);
   ASSERT_TRUE(AreCoplanar(points));
   const Pose truth = PlanarTruth() * T_board_moved.inverse();
   const Pose T = SolvePnPOpenCv(PnpMethod::kIppe, points, Project(points, truth, camera), camera);
@@ -140,7 +143,7 @@ TEST(OpenCvPnp, IppeRefusesNonPlanarPoints) {
 
 TEST(OpenCvPnp, RefinedPoseMinimisesTheReprojectionErrorUnderNoise) {
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = Board();
+  const std::vector<Eigen::Vector3d> board = PnpBoard();
   const Pose truth = PlanarTruth();
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 20; ++trial) {
@@ -175,7 +178,7 @@ TEST(OpenCvPnp, MethodNamesRoundTrip) {
 
 TEST(OpenCvPnp, BadInputIsReported) {
   const pose::CameraModel camera = TestCamera();
-  const std::vector<Eigen::Vector3d> board = Board();
+  const std::vector<Eigen::Vector3d> board = PnpBoard();
   std::vector<Eigen::Vector2d> pixels = Project(board, PlanarTruth(), camera);
 
   std::vector<Eigen::Vector2d> short_pixels(pixels.begin(), pixels.end() - 1);

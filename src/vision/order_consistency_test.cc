@@ -97,7 +97,7 @@ TEST(CanonicalGridOrder, DegenerateGridsAreInvalid) {
 
 // The synthetic image turned by 180° in-plane: the same physical corners get the same ids (each
 // moves to (W − 1 − u, H − 1 − v)), whichever corner the detector starts from.
-TEST(DetectTarget, ChessboardTurnedInThePlaneKeepsItsIds) {
+TEST(DetectTargetOrder, ChessboardTurnedInThePlaneKeepsItsIds) {
   const pose::TargetSpec target = hecal::testing::Chessboard(9, 6, 0.03);
   const Pose T = FrontalView(target, 0.45, 15.0, -10.0, 8.0);
   const cv::Mat image = Render(target, T);

@@ -19,13 +19,13 @@ namespace {
 // A camera looking straight at the board's plane so that board point (x, y) lands on pixel
 // (x, y) / metres_per_pixel − ½: pixel (i, j) covers the board square
 // [i, i + 1) × [j, j + 1) × metres_per_pixel, as cv::aruco's draw() maps pixels.
-struct FrontalView {
+struct PixelAlignedView {
   pose::CameraModel camera;
   Pose T_camera_target;
 };
 
-FrontalView Frontal(int width, int height, double metres_per_pixel) {
-  FrontalView view;
+PixelAlignedView Frontal(int width, int height, double metres_per_pixel) {
+  PixelAlignedView view;
   constexpr double kDistance = 1.0;
   view.camera.fx = view.camera.fy = kDistance / metres_per_pixel;
   view.camera.cx = view.camera.cy = -0.5;
@@ -61,7 +61,7 @@ TEST(RenderTarget, CharucoMatchesOpenCvDrawing) {
                           .square = 128 * kPixel,
                           .marker = 98 * kPixel,
                           .dictionary = "DICT_5X5_100"};
-  const FrontalView view = Frontal(640, 512, kPixel);
+  const PixelAlignedView view = Frontal(640, 512, kPixel);
   const cv::Mat ours = RenderTarget(target, view.camera, view.T_camera_target, BlackAndWhite());
   const cv::Ptr<cv::aruco::CharucoBoard> board = cv::aruco::CharucoBoard::create(
       5, 4, static_cast<float>(target.square), static_cast<float>(target.marker),
@@ -80,7 +80,7 @@ TEST(RenderTarget, ArucoGridMatchesOpenCvDrawing) {
   target.spacing = 0.002;  // 20 px
   target.dictionary = "DICT_4X4_250";
   target.first_id = 30;
-  const FrontalView view = Frontal(300, 220, 1e-4);
+  const PixelAlignedView view = Frontal(300, 220, 1e-4);
   const cv::Mat ours = RenderTarget(target, view.camera, view.T_camera_target, BlackAndWhite());
   const cv::Ptr<cv::aruco::GridBoard> board = cv::aruco::GridBoard::create(
       4, 3, 0.006f, 0.002f, cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_250), 30);
@@ -95,7 +95,7 @@ TEST(RenderTarget, SingleArucoMarkerMatchesOpenCvDrawing) {
   pose::TargetSpec target{.type = pose::TargetType::kAruco, .dictionary = "DICT_4X4_250", .id = 17};
   constexpr double kPixel = 1e-4;
   target.size = 60 * kPixel;  // 6 cells of 10 px
-  FrontalView view = Frontal(60, 60, kPixel);
+  PixelAlignedView view = Frontal(60, 60, kPixel);
   view.T_camera_target.translation() += Eigen::Vector3d(target.size / 2, target.size / 2, 0.0);
   const cv::Mat ours = RenderTarget(target, view.camera, view.T_camera_target, BlackAndWhite());
   cv::Mat theirs;

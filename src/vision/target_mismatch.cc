@@ -13,6 +13,7 @@
 #include "hecal/vision/chessboard_size_probe.h"
 #include "hecal/vision/image_set.h"
 #include "hecal/vision/marker_probe.h"
+#include "size_text.h"
 
 namespace hecal::vision {
 namespace {
@@ -21,17 +22,13 @@ constexpr double kLayoutMisfit = 0.10;  // of a marker's side: the described lay
 constexpr double kLayoutFit = 0.05;     // of a marker's side: the transposed layout fits
 constexpr double kLayoutRatio = 0.25;   // and fits this much better
 
-std::string SizeText(int width, int height) {
-  return std::to_string(width) + "x" + std::to_string(height);
-}
-
 TargetMismatch ChessboardMismatch(const cv::Mat& gray, const pose::TargetSpec& target,
                                   const Detection& detection) {
-  const std::string described = SizeText(target.cols, target.rows);
+  const std::string described = internal::SizeText(target.cols, target.rows);
   if (detection.status == DetectionStatus::kNotFound) {
     const std::optional<cv::Size> size = ProbeChessboardSize(gray, target.cols, target.rows);
     if (!size) return {};
-    const std::string shown = SizeText(size->width, size->height);
+    const std::string shown = internal::SizeText(size->width, size->height);
     return {"no " + described + " chessboard found, but a whole " + shown +
                 " one: the images show a " + shown + " chessboard, the file says " + described,
             "set cols: " + std::to_string(size->width) +
@@ -55,8 +52,8 @@ TargetMismatch ChessboardMismatch(const cv::Mat& gray, const pose::TargetSpec& t
   }
   return {"the chessboard continues beyond the " + described + " inner corners described: it has " +
               (extent.out_of_view ? "at least " : "") +
-              SizeText(target.cols + extent.before_x + extent.after_x,
-                       target.rows + extent.before_y + extent.after_y),
+              internal::SizeText(target.cols + extent.before_x + extent.after_x,
+                                 target.rows + extent.before_y + extent.after_y),
           fix};
 }
 
@@ -176,8 +173,8 @@ TargetMismatch GridLayoutMismatch(const pose::TargetSpec& target, const Detectio
       !(*turned <= kLayoutRatio * *given)) {
     return {};
   }
-  const std::string described = SizeText(target.cols, target.rows);
-  const std::string shown = SizeText(target.rows, target.cols);
+  const std::string described = internal::SizeText(target.cols, target.rows);
+  const std::string shown = internal::SizeText(target.rows, target.cols);
   char figures[160];
   std::snprintf(figures, sizeof figures,
                 "(homography RMS %.1f px) but where a %s grid does (%.1f px)", *given,

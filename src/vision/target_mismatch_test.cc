@@ -22,7 +22,7 @@ namespace {
 using ::testing::HasSubstr;
 
 cv::Mat Photo(const std::string& name) {
-  return cv::imread(testing::MoveItPhotoPath(name), cv::IMREAD_GRAYSCALE);
+  return cv::imread(hecal::testing::MoveItPhotoPath(name), cv::IMREAD_GRAYSCALE);
 }
 
 // The mismatch's problem and fix in one line ("nothing" when there is none).
@@ -34,7 +34,7 @@ std::string Mismatch(const cv::Mat& image, const pose::TargetSpec& target) {
 TEST(TargetMismatch, TheMoveItArucoGridIsThreeByFour) {
   const cv::Mat photo = Photo("test_aruco_marker_detection.png");
   ASSERT_FALSE(photo.empty());
-  const pose::TargetSpec declared = testing::MoveItArucoGrid();  // 4 x 3
+  const pose::TargetSpec declared = hecal::testing::MoveItArucoGrid();  // 4 x 3
   EXPECT_THAT(Mismatch(photo, declared),
               HasSubstr("the images show a 3x4 grid, the file says 4x3 (fix: set cols: 3 and "
                         "rows: 4"));
@@ -63,7 +63,7 @@ TEST(TargetMismatch, TheMoveItArucoGridIsThreeByFour) {
 TEST(TargetMismatch, TheMoveItCharucoBoardIsDict5x5) {
   const cv::Mat photo = Photo("test_charuco_board_detection.jpg");
   ASSERT_FALSE(photo.empty());
-  pose::TargetSpec board = testing::MoveItCharucoBoard();
+  pose::TargetSpec board = hecal::testing::MoveItCharucoBoard();
   EXPECT_EQ(Mismatch(photo, board), "nothing");
   board.dictionary = "DICT_4X4_250";
   EXPECT_THAT(Mismatch(photo, board),
@@ -72,9 +72,9 @@ TEST(TargetMismatch, TheMoveItCharucoBoardIsDict5x5) {
 }
 
 TEST(TargetMismatch, ARenderedAprilTagGrid) {
-  testing::RenderedSceneOptions options;
-  options.target = testing::AprilTagGrid();  // 5 x 4 tag36h11, ids 3 to 22
-  options.views = {testing::FrontalView(options.target, 0.5, 15.0, -10.0, 5.0)};
+  hecal::testing::RenderedSceneOptions options;
+  options.target = hecal::testing::AprilTagGrid();  // 5 x 4 tag36h11, ids 3 to 22
+  options.views = {hecal::testing::FrontalView(options.target, 0.5, 15.0, -10.0, 5.0)};
   const cv::Mat image = MakeRenderedScene(options).images[0];
   EXPECT_EQ(Mismatch(image, options.target), "nothing");
   pose::TargetSpec transposed = options.target;
@@ -97,15 +97,16 @@ TEST(TargetMismatch, ARenderedAprilTagGrid) {
 }
 
 TEST(TargetMismatch, ARenderedChessboardOneCornerOff) {
-  testing::RenderedSceneOptions options;
+  hecal::testing::RenderedSceneOptions options;
   options.views.resize(1);
   const cv::Mat image = MakeRenderedScene(options).images[0];  // 9 x 6
-  EXPECT_EQ(Mismatch(image, testing::Chessboard(9, 6, 0.025)), "nothing");
-  EXPECT_EQ(Mismatch(image, testing::Chessboard(6, 9, 0.025)), "nothing");  // swapped: accepted
-  EXPECT_THAT(Mismatch(image, testing::Chessboard(8, 6, 0.025)),
+  EXPECT_EQ(Mismatch(image, hecal::testing::Chessboard(9, 6, 0.025)), "nothing");
+  // Swapped cols and rows: accepted.
+  EXPECT_EQ(Mismatch(image, hecal::testing::Chessboard(6, 9, 0.025)), "nothing");
+  EXPECT_THAT(Mismatch(image, hecal::testing::Chessboard(8, 6, 0.025)),
               HasSubstr("the chessboard continues beyond the 8x6 inner corners described: it has "
                         "9x6"));
-  EXPECT_THAT(Mismatch(image, testing::Chessboard(10, 6, 0.025)),
+  EXPECT_THAT(Mismatch(image, hecal::testing::Chessboard(10, 6, 0.025)),
               HasSubstr("the images show a 9x6 chessboard, the file says 10x6 (fix: set cols: 9 "
                         "and rows: 6"));
 }
@@ -117,7 +118,7 @@ TEST(TargetMismatch, TheKuka2BoardWithRowsAndColsSwappedIsAccepted) {
   const cv::Mat image = cv::imread(kuka2::Directory() + "images/im_01.png", cv::IMREAD_GRAYSCALE);
   ASSERT_FALSE(image.empty());
   for (const pose::TargetSpec& target :
-       {testing::Chessboard(24, 17, 0.015), testing::Chessboard(17, 24, 0.015)}) {
+       {hecal::testing::Chessboard(24, 17, 0.015), hecal::testing::Chessboard(17, 24, 0.015)}) {
     const Detection detection = DetectTarget(image, target);
     EXPECT_EQ(detection.num_points(), 408) << detection.message;
     EXPECT_FALSE(FindTargetMismatch(image, target, detection).found());

@@ -12,7 +12,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kRoot = HECAL_SOURCE_DIR;
+const fs::path kRepositoryRoot = HECAL_SOURCE_DIR;
 
 bool IsSource(const fs::path& path) {
   const std::string extension = path.extension().string();
@@ -38,7 +38,7 @@ std::vector<std::string> SideDoors(const fs::path& folder) {
       ++number;
       std::smatch match;
       if (std::regex_search(line, match, kInclude) && match[1] != "hecal/hecal.h") {
-        found.push_back(fs::relative(entry.path(), kRoot).string() + ":" +
+        found.push_back(fs::relative(entry.path(), kRepositoryRoot).string() + ":" +
                         std::to_string(number) + ": " + line);
       }
     }
@@ -49,8 +49,8 @@ std::vector<std::string> SideDoors(const fs::path& folder) {
 TEST(FrontDoor, CommandLineExamplesAndPythonIncludeOnlyTheUmbrella) {
   int scanned = 0;
   for (const char* folder : {"apps/hecal", "examples", "python"}) {
-    if (fs::exists(kRoot / folder)) ++scanned;
-    for (const std::string& door : SideDoors(kRoot / folder)) ADD_FAILURE() << door;
+    if (fs::exists(kRepositoryRoot / folder)) ++scanned;
+    for (const std::string& door : SideDoors(kRepositoryRoot / folder)) ADD_FAILURE() << door;
   }
   EXPECT_GE(scanned, 2);  // apps/hecal and examples at least
 }

@@ -291,6 +291,11 @@ std::vector<StationTest> TestStations(const std::vector<StationLinearization>& s
 NoiseVariances InitialNoiseGuess(const std::vector<StationLinearization>& stations,
                                  const NoiseSpec& spec, double length_scale);
 
+// The largest relative change of one variance between two estimates, |a_k − b_k| /
+// max(|a_k|, |b_k|) over the components (0 where they are equal): the convergence test of the
+// noise estimation's iterations and of ml's alternation with it.
+double MaxRelativeChange(const NoiseVariances& a, const NoiseVariances& b);
+
 // χ² quantile of the two-sided 3σ level for 1–6 degrees of freedom.
 double ThreeSigmaChiSquare(int dof);
 

@@ -25,12 +25,12 @@
 // χ² (noise_estimation.h, "Estimated variances"): the scale of 7 other stations is itself
 // uncertain, and the χ² reference rejected a good station in 4.5% of clean 8-station sets
 // (measured: docs/uncertainty.md, "Outlier test at few stations"). Gross outliers are far beyond
-// either threshold (docs/troubleshooting.md, "Gross outliers": all found, k = 1, 2, 4 of 20). Guards: at most ⌊(n −
-// 3)/2⌋ stations are rejected. When the test flags more, the data as a whole do not fit one rigid
-// setup under the noise model (wrong conventions, wrong pairing, noise far from the model): nothing
-// is rejected, `too_many` is set and the caller warns. A degeneracy verdict
-// (handeye/observability.h) is reached on the candidate set, so a single gross outlier can neither
-// create nor hide one.
+// either threshold (docs/troubleshooting.md, "Gross outliers": all found, k = 1, 2, 4 of 20).
+// Guards: at most ⌊(n − 3)/2⌋ stations are rejected. When the test flags more, the data as a whole
+// do not fit one rigid setup under the noise model (wrong conventions, wrong pairing, noise far
+// from the model): nothing is rejected, `too_many` is set and the caller warns. A degeneracy
+// verdict (handeye/observability.h) is reached on the candidate set, so a single gross outlier can
+// neither create nor hide one.
 //
 // Reuse: when the last round's fit is ml from every closed-form start on exactly the stations
 // kept (the set did not change after the first round — the usual case, the consensus having
@@ -104,5 +104,8 @@ StationSelection SelectStations(const handeye::Problem& problem,
 
 // Every station used (what --keep-outliers means).
 StationSelection AllStations(size_t n);
+
+// The indices of the true entries of `flags` (the stations used, or those flagged), ascending.
+std::vector<int> TrueIndices(const std::vector<bool>& flags);
 
 }  // namespace hecal::estimation
