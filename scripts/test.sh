@@ -8,7 +8,8 @@
 # The builds (docs/build.md#build-time; scripts/configure.sh): clang (CXX=g++ chooses GCC), Ninja,
 # lld, unity batches (HECAL_UNITY_BUILD), one test executable per module. The sanitized
 # build is its own folder with only what the robustness tests need (the libraries, the CLI, the
-# robustness test executables and the fuzz replays: target robustness_checks), at -O1.
+# robustness test executables and the fuzz replays: target robustness_checks), at -O0 in one
+# unity batch per target, the vision module at -O1 (HECAL_SANITIZE_OPTIMISED_MODULES).
 #
 # Slow studies carry the label "slow", are not built by default, and run with:
 #   cmake --build build --target slow_checks && ctest --test-dir build -L slow
@@ -30,8 +31,9 @@ cmake --build "$build" -j2
 
 robustness=
 if [ "${HECAL_SANITIZED_CHECKS:-1}" != 0 ]; then
-  scripts/configure.sh "$sanitized" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
-    -DHECAL_SANITIZE=ON -DHECAL_WERROR=ON -DHECAL_BUILD_PYTHON=OFF
+  scripts/configure.sh "$sanitized" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" \
+    -DHECAL_SANITIZE=ON -DHECAL_WERROR=ON -DHECAL_BUILD_PYTHON=OFF -DHECAL_UNITY_BATCH=0 \
+    -DHECAL_TEST_UNITY_BATCH=0
   cmake --build "$sanitized" -j2 --target robustness_checks
   ctest --test-dir "$sanitized" -L robustness --output-on-failure >"$sanitized/robustness.log" 2>&1 &
   robustness=$!
