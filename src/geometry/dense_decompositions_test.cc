@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <random>
 
 namespace hecal {
