@@ -15,6 +15,14 @@ if(HECAL_SANITIZE)
 endif()
 install(TARGETS hecal_compile_options EXPORT hecalTargets)
 
+# hecal_unity_batch(<target> <n>): <n> source files per unity batch of <target> instead of
+# HECAL_UNITY_BATCH, unless that is 0 (one batch per target) or <n> is empty.
+function(hecal_unity_batch target size)
+  if(size AND NOT HECAL_UNITY_BATCH EQUAL 0)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD_BATCH_SIZE ${size})
+  endif()
+endfunction()
+
 # hecal_add_module(<name> [DEPENDS <public targets>...] [PRIVATE_DEPENDS <targets>...]
 #                  [TEST_DEPENDS <targets>...] [ONLY <stems>...] [UNITY_BATCH <n>]
 #                  [TEST_UNITY_BATCH <n>] [ALONE <stems>...])
@@ -60,9 +68,7 @@ function(hecal_add_module name)
   if(lib_sources)
     add_library(${target} ${lib_sources})
     set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
-    if(ARG_UNITY_BATCH AND NOT HECAL_UNITY_BATCH EQUAL 0)
-      set_target_properties(${target} PROPERTIES UNITY_BUILD_BATCH_SIZE ${ARG_UNITY_BATCH})
-    endif()
+    hecal_unity_batch(${target} "${ARG_UNITY_BATCH}")
     if(TARGET hecal_library_pch)
       target_precompile_headers(${target} REUSE_FROM hecal_library_pch)
     endif()
