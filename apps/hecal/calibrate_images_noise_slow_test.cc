@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "cli_test_util.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/sim/noise.h"
@@ -70,7 +71,7 @@ Pose NoiseTrueZ() {
 
 // A random view of the board (see the header) with every corner 15 px inside the image.
 Pose RandomView(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  hecal::UniformRealDistribution unit(0.0, 1.0);
   const pose::CameraModel camera = hecal::testing::RenderCamera();
   while (true) {
     // Drawn last to first: the order these tests' data were generated in.

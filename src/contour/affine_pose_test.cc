@@ -12,6 +12,7 @@
 #include "hecal/contour/perspective_view.h"
 #include "hecal/contour/shape_space.h"
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/euler.h"
 #include "testing/options_validity.h"
@@ -75,7 +76,7 @@ TEST(AffinePose, EveryAxisAloneZyx) {
 
 TEST(AffinePose, CombinedMotionsInRangeAreExactZyx) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> tilt(0.0, 85.0), spin(0.0, 360.0), lateral(-400, 400),
+  hecal::UniformRealDistribution tilt(0.0, 85.0), spin(0.0, 360.0), lateral(-400, 400),
       depth(-3500, 3000);
   for (int trial = 0; trial < 500; ++trial) {
     // Drawn last to first: the order these tests' data were generated in.
@@ -93,7 +94,7 @@ TEST(AffinePose, CombinedMotionsInRangeAreExactZyx) {
 
 TEST(AffinePose, CombinedMotionsInRangeAreExactZxz) {
   std::mt19937_64 rng(8);
-  std::uniform_real_distribution<double> phi(0.0, 179.9), theta(0.0, 87.0), psi(0.0, 359.9),
+  hecal::UniformRealDistribution phi(0.0, 179.9), theta(0.0, 87.0), psi(0.0, 359.9),
       lateral(-400, 400), depth(-3500, 3000);
   for (int trial = 0; trial < 500; ++trial) {
     const double tz = depth(rng);
@@ -110,7 +111,7 @@ TEST(AffinePose, OutOfRangeGivesTheNeckerMirror) {
   // Opposite-sign tilts (no rotation has both ≥ 0), negative tilts, φ ∈ [π, 2π) in zxz: the
   // form's member of the mirror pair, which has the same shape vector.
   std::mt19937_64 rng(9);
-  std::uniform_real_distribution<double> tilt(-85.0, 85.0), spin(0.0, 360.0);
+  hecal::UniformRealDistribution tilt(-85.0, 85.0), spin(0.0, 360.0);
   for (int trial = 0; trial < 300; ++trial) {
     const double rz = spin(rng) * kRadiansPerDegree;
     const double ry = tilt(rng) * kRadiansPerDegree;

@@ -10,6 +10,7 @@
 #include "hecal/contour/contour_study.h"
 #include "hecal/contour/perspective_view.h"
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 
 namespace hecal::contour {
@@ -21,7 +22,7 @@ TEST(PerspectivePose, RecoversTheMotionOfAPerspectiveViewExactly) {
   const Eigen::Matrix2Xd template_points = TemplateImage(DefaultTarget(), camera);
   const PerspectivePoseModel model(template_points, camera);
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> tilt(0.0, 40.0), spin(0.0, 360.0), lateral(-150, 150),
+  hecal::UniformRealDistribution tilt(0.0, 40.0), spin(0.0, 360.0), lateral(-150, 150),
       depth(-2500, 1500);
   for (int trial = 0; trial < 40; ++trial) {
     // Drawn last to first: the order these tests' data were generated in.

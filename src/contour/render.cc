@@ -10,6 +10,7 @@
 #include "hecal/contour/perspective_view.h"
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/core/split_mix.h"
 
 namespace hecal::contour {
@@ -118,7 +119,7 @@ void AddGaussianNoise(GrayImage* image, double sigma, std::uint64_t seed) {
   }
   if (sigma == 0.0) return;
   std::mt19937_64 engine(SplitMix64(seed));
-  std::normal_distribution<double> normal(0.0, sigma);
+  hecal::NormalDistribution normal(0.0, sigma);
   for (float& value : image->pixels()) value = static_cast<float>(value + normal(engine));
 }
 

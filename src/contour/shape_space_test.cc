@@ -8,6 +8,7 @@
 
 #include "hecal/contour/contour_study.h"
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 
 namespace hecal::contour {
 namespace {
@@ -36,7 +37,7 @@ TEST(ShapeSpace, WOfTheSeedEncodesTheAffinity) {
 TEST(ShapeSpace, FitCovarianceMatchesSampling) {
   const ShapeSpace space(DefaultTarget());
   std::mt19937_64 rng(3);
-  std::normal_distribution<double> noise(0.0, 0.5);
+  hecal::NormalDistribution noise(0.0, 0.5);
   const int n = 20000;
   Eigen::MatrixXd samples(n, 6);
   for (int k = 0; k < n; ++k) {

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <random>
 
+#include "hecal/core/random_draws.h"
+
 namespace hecal::estimation::internal {
 namespace {
 
 Eigen::Matrix<double, 6, 6> RandomCovariance(std::mt19937_64& rng, double condition) {
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   Eigen::Matrix<double, 6, 6> M;
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 6; ++c) M(r, c) = normal(rng);
@@ -47,7 +49,7 @@ TEST(FixedSizeKernels, LowerTriangularInverseInvertsCholeskyFactors) {
 // H += w · Mᵀ M equals the dynamic-size product, and accumulates.
 TEST(FixedSizeKernels, AddWeightedGramMatchesTheDenseProduct) {
   std::mt19937_64 rng(5);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   Eigen::Matrix<double, 12, 12> H = Eigen::Matrix<double, 12, 12>::Zero();
   Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(12, 12);
   for (int station = 0; station < 4; ++station) {

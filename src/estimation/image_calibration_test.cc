@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/pose/pose_refinement.h"
@@ -179,7 +180,7 @@ TEST(CalibrateFromImages, RejectsABlurredViewAndAWrongRobotPose) {
     testing::ImageScene s =
         testing::MakeImageScene(testing::ImageSceneOptions::For(setup, 12, 31, robot, 0.2));
     std::mt19937_64 rng(9);
-    std::normal_distribution<double> gaussian;
+    hecal::NormalDistribution gaussian;
     for (Eigen::Vector2d& pixel : s.images[3].pixels) {
       const double dy = gaussian(rng);  // y first: the order these tests' data were generated in
       const double dx = gaussian(rng);

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/se3_manifold.h"
 #include "hecal/estimation/station_covariance.h"
@@ -32,7 +33,7 @@ struct Case {
 // when asked), the whitening of a 0.2° / 0.5 mm model on both devices evaluated at the true X.
 Case MakeCase(const std::string& name, const testing::Scene& data, uint64_t seed, bool outlier) {
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const PoseSigma sigma{0.2 * kRadiansPerDegree, 0.5e-3};
   Case c{name, data.MeasuredProblem(), {data.X, data.Z}, {}};
   for (Pose& B : c.problem.B) {

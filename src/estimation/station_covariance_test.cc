@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/estimation/loop_residual.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/types.h"
@@ -152,7 +153,7 @@ TEST(WhiteningMatrix, InvertsTheCovarianceAndRejectsSingularOnes) {
 // half-turn poses, with and without the camera's excess variances.
 TEST(StationCovarianceOf, EqualsTheCombinedComponents) {
   std::mt19937_64 rng(41);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const auto random_pose = [&](double angle) {
     // Drawn last to first: the order these tests' data were generated in.
     const double az = normal(rng), ay = normal(rng), ax = normal(rng);

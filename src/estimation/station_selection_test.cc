@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/estimation/calibrate.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/geometry/angle_units.h"
@@ -110,7 +111,7 @@ TEST(SelectStations, PerStationCameraCovariancesKeepImpreciseViews) {
   std::mt19937_64 rng(44);
   testing::Scene data = testing::ThesisCase(handeye::Setup::kEyeInHand, 12, 44);
   std::vector<Matrix6d> covariances;
-  std::normal_distribution<double> gaussian;
+  hecal::NormalDistribution gaussian;
   for (size_t i = 0; i < data.T_camera_target.size(); ++i) {
     const double sigma_r = (i == 7 ? 1.0 : 0.1) * kRadiansPerDegree,
                  sigma_t = (i == 7 ? 5e-3 : 5e-4);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/estimation/initialization.h"
 #include "hecal/estimation/ml.h"
 #include "hecal/geometry/angle_units.h"
@@ -22,7 +23,7 @@ constexpr int kDimension = 6;
 // root of an independent χ²(ν)/ν (multivariate t with ν degrees of freedom, scale 1).
 std::vector<double> Distances(int n, double dof, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   std::chi_squared_distribution<double> chi2(dof > 0.0 ? dof : 1.0);
   std::vector<double> q(static_cast<size_t>(n));
   for (double& q_i : q) {

@@ -10,13 +10,15 @@
 #include <Eigen/LU>
 #include <random>
 
+#include "hecal/core/random_draws.h"
+
 namespace hecal {
 namespace {
 
 // A rows × cols matrix of rank `rank` from a seeded product of two Gaussian factors.
 Eigen::MatrixXd RankDeficient(int rows, int cols, int rank, unsigned seed) {
   std::mt19937 rng(seed);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   Eigen::MatrixXd left(rows, rank), right(rank, cols);
   for (double& v : left.reshaped()) v = normal(rng);
   for (double& v : right.reshaped()) v = normal(rng);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geometry/geometry_test_util.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 #include "testing/random_poses.h"
@@ -29,7 +30,7 @@ double SignFreeDistance(const DualQuaternion& a, const DualQuaternion& b) {
 }
 
 Eigen::Quaterniond RandomQuaternion(std::mt19937_64& rng) {  // not unit
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   // Drawn last to first: the order these tests' data were generated in.
   const double z = normal(rng);
   const double y = normal(rng);
@@ -222,7 +223,7 @@ TEST(DualQuaternion, NormAndNormalize) {
   }
   // Scaling a unit q̌ by a dual number s + εs' (s > 0) is undone exactly by Normalize, and the
   // pose is unchanged throughout (ToPose / Translation are invariant to that scaling).
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   for (const Pose& T : TestPoses(rng)) {
     const DualQuaternion dq = DualQuaternion::FromPose(T);
     const double s = std::exp(normal(rng));
@@ -289,7 +290,7 @@ TEST(DualQuaternion, ExpLogRoundTrips) {
     const DualQuaternion root = (dq.Log() * 0.5).Exp();
     EXPECT_LT(SignFreeDistance(root * root, dq), 1e-14 * scale);
   }
-  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  hecal::UniformRealDistribution angle(0.0, std::numbers::pi);
   for (int i = 0; i < kDualQuaternionSamples; ++i) {
     const Eigen::Vector3d v = testing::RandomGaussianVector(rng);  // drawn first
     const Vector6d xi = testing::Twist(testing::RandomRotationVector(rng, angle(rng)), v);
@@ -313,7 +314,7 @@ TEST(DualQuaternion, ExpLogRoundTrips) {
 TEST(DualQuaternion, ExpLogWithScalarParts) {
   // log(a + εb) = ln a + ε b/a for the dual norm; Exp(s + εs' + p̌) = eˢ (1 + εs') Exp(p̌).
   std::mt19937_64 rng(510);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   for (int i = 0; i < 500; ++i) {
     const Pose T = testing::RandomPose(rng);
     const DualQuaternion unit = DualQuaternion::FromPose(T);
@@ -390,7 +391,7 @@ TEST(DualQuaternion, RotationTranslationAccessors) {
 
 TEST(DualQuaternion, ScrewConversions) {
   std::mt19937_64 rng(514);
-  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  hecal::UniformRealDistribution angle(0.0, std::numbers::pi);
   for (int i = 0; i < kDualQuaternionSamples; ++i) {
     // Daniilidis: q̌ = (cos(θ̌/2), sin(θ̌/2) ľ), θ̌ = θ + εd, ľ = l + εm, expanded here.
     Screw screw;

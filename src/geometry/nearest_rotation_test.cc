@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "testing/random_poses.h"
 
 namespace hecal {
@@ -23,7 +24,7 @@ double RotationError(const Eigen::Matrix3d& R) {
 }
 
 Eigen::Matrix3d RandomGaussianMatrix(std::mt19937_64& rng, double sigma) {
-  std::normal_distribution<double> normal(0.0, sigma);
+  hecal::NormalDistribution normal(0.0, sigma);
   Eigen::Matrix3d M;
   for (int i = 0; i < 9; ++i) M(i / 3, i % 3) = normal(rng);
   return M;
@@ -168,7 +169,7 @@ TEST(NearestRotation, QuaternionFormMinimisesTheSeedObjective) {
   // The paper's objective Σ_i ‖m_i * q − q * e_i‖² over the columns equals ‖M − R(q)‖_F², so the
   // quaternion answer's objective must not exceed that of nearby unit quaternions.
   std::mt19937_64 rng(19);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   auto objective = [](const Eigen::Matrix3d& M, const Eigen::Quaterniond& q) {
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {

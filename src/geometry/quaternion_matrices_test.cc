@@ -6,6 +6,8 @@
 
 #include <random>
 
+#include "hecal/core/random_draws.h"
+
 namespace hecal {
 namespace {
 
@@ -13,7 +15,7 @@ constexpr int kQuaternionMatrixSamples = 2000;
 
 // Not unit on purpose: the product matrices are linear, so they must hold for any 4-vector.
 Eigen::Vector4d RandomWxyz(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal(0.0, 2.0);
+  hecal::NormalDistribution normal(0.0, 2.0);
   // Drawn last to first: the order these tests' data were generated in.
   const double z = normal(rng), y = normal(rng), x = normal(rng), w = normal(rng);
   return Eigen::Vector4d(w, x, y, z);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "geometry/geometry_test_util.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/skew.h"
 #include "testing/random_poses.h"
 
@@ -52,7 +53,7 @@ struct KnownRotation {
 // Rotations with a known axis and angle: random (angle uniform in [0, π]) and the edge cases.
 std::vector<KnownRotation> KnownRotations(std::mt19937_64& rng) {
   std::vector<KnownRotation> result;
-  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  hecal::UniformRealDistribution angle(0.0, std::numbers::pi);
   for (int i = 0; i < kRotationSamples; ++i)
     result.push_back({testing::RandomUnitVector(rng), angle(rng)});
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
@@ -157,7 +158,7 @@ TEST(QuaternionFromMatrix, AgreesWithEigenPeer) {
 
 TEST(MatrixFromQuaternion, MatchesExplicitFormulaAndNormalises) {
   std::mt19937_64 rng(205);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   for (int i = 0; i < kRotationSamples; ++i) {
     // Drawn last to first: the order these tests' data were generated in.
     const double z = normal(rng), y = normal(rng), x = normal(rng), w = normal(rng);
@@ -198,7 +199,7 @@ TEST(QuaternionRotationVector, MatchesDefinitionAndRoundTrips) {
 
 TEST(QuaternionRotationVector, AgreesWithEigenAngleAxis) {
   std::mt19937_64 rng(207);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi);
+  hecal::UniformRealDistribution angle(0.0, 2.0 * std::numbers::pi);
   for (int i = 0; i < kRotationSamples; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
     const double theta = angle(rng);
@@ -209,7 +210,7 @@ TEST(QuaternionRotationVector, AgreesWithEigenAngleAxis) {
 
 TEST(QuaternionRotationVector, NegativeAndNonUnitQuaternionsGiveShortRotation) {
   std::mt19937_64 rng(208);
-  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi - 1e-6);
+  hecal::UniformRealDistribution angle(0.0, std::numbers::pi - 1e-6);
   for (int i = 0; i < kRotationSamples; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
     const double theta = angle(rng);
@@ -304,7 +305,7 @@ TEST(TsaiRodrigues, NormIsTwiceSinHalfAngleAlongAxis) {
 TEST(TsaiRodrigues, MatrixMatchesTsaiLenzFormula) {
   // Tsai & Lenz (1989) eq. 10: R = (1 − |P|²/2) I + ½ (P Pᵀ + √(4 − |P|²) [P]×).
   std::mt19937_64 rng(213);
-  std::uniform_real_distribution<double> radius(0.0, 2.0);
+  hecal::UniformRealDistribution radius(0.0, 2.0);
   for (int i = 0; i < kRotationSamples; ++i) {
     const Eigen::Vector3d axis = testing::RandomUnitVector(rng);  // drawn before the radius
     const Eigen::Vector3d P = radius(rng) * axis;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geometry/geometry_test_util.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/se3.h"
 #include "testing/random_poses.h"
 #include "testing/screw_motions.h"
@@ -90,7 +91,7 @@ TEST(Screw, RoundTripsRandomPoses) {
 
 TEST(Screw, RoundTripsScrewParameters) {
   std::mt19937_64 rng(403);
-  std::uniform_real_distribution<double> angle(1e-6, std::numbers::pi - 1e-6);
+  hecal::UniformRealDistribution angle(1e-6, std::numbers::pi - 1e-6);
   for (int i = 0; i < kScrewSamples; ++i) {
     Screw s;
     s.l = testing::RandomUnitVector(rng);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "geometry/geometry_test_util.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/skew.h"
 #include "hecal/geometry/so3.h"
 #include "testing/random_poses.h"
@@ -140,7 +141,7 @@ std::vector<Vector6d> JacobianTwists(std::mt19937_64& rng) {
 
 TEST(Se3Jacobians, InversesAndLeftRightRelations) {
   std::mt19937_64 rng(310);
-  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  hecal::UniformRealDistribution angle(0.0, std::numbers::pi);
   std::vector<Vector6d> twists = JacobianTwists(rng);
   for (int i = 0; i < kSe3Samples; ++i) {
     const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
@@ -192,7 +193,7 @@ TEST(Se3Jacobians, MatchLongDoubleSeriesToRounding) {
                                       testing::RandomGaussianVector(rng)));
     }
   }
-  std::uniform_real_distribution<double> angle(0.05, 0.6);  // where the closed forms cancel most
+  hecal::UniformRealDistribution angle(0.05, 0.6);  // where the closed forms cancel most
   for (int i = 0; i < 500; ++i) {
     const Eigen::Vector3d v = testing::RandomGaussianVector(rng);
     twists.push_back(testing::Twist(testing::RandomRotationVector(rng, angle(rng)), v));

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "testing/random_poses.h"
 
 namespace hecal {
@@ -55,7 +56,7 @@ TEST(Skew, VeeInvertsSkewExactly) {
 
 TEST(Skew, VeeOfGeneralMatrixIsVeeOfAntisymmetricPart) {
   std::mt19937_64 rng(14);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   for (int i = 0; i < kSkewSamples; ++i) {
     Eigen::Matrix3d M;
     for (int k = 0; k < 9; ++k) M(k / 3, k % 3) = normal(rng);
@@ -74,7 +75,7 @@ TEST(Skew, VeeOfRotationIsSinTimesAxis) {
   std::mt19937_64 rng(15);
   for (int i = 0; i < kSkewSamples; ++i) {
     const Eigen::Vector3d n = testing::RandomUnitVector(rng);
-    const double theta = std::uniform_real_distribution<double>(0.0, 3.14)(rng);
+    const double theta = hecal::UniformRealDistribution(0.0, 3.14)(rng);
     const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, n).toRotationMatrix();
     EXPECT_LT((Vee(R) - std::sin(theta) * n).norm(), 1e-15);
   }

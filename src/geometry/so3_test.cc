@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "geometry/geometry_test_util.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/skew.h"
 #include "testing/random_poses.h"
 
@@ -60,7 +61,7 @@ std::vector<Eigen::Matrix3d> TestRotations(std::mt19937_64& rng) {
 // ω uniform in direction with |ω| uniform in [0, max_angle), plus the edge cases below π.
 std::vector<Eigen::Vector3d> TestRotationVectors(std::mt19937_64& rng, double max_angle) {
   std::vector<Eigen::Vector3d> result;
-  std::uniform_real_distribution<double> angle(0.0, max_angle);
+  hecal::UniformRealDistribution angle(0.0, max_angle);
   for (int i = 0; i < kSo3Samples; ++i)
     result.push_back(testing::RandomRotationVector(rng, angle(rng)));
   for (const Eigen::Vector3d& omega : testing::EdgeCaseRotationVectors(rng)) {
@@ -90,8 +91,7 @@ const std::vector<double>& So3JacobianTestAngles() {
 
 TEST(So3Exp, MatchesRodriguesFormulaAndEigenAngleAxis) {
   std::mt19937_64 rng(101);
-  std::uniform_real_distribution<double> angle(
-      1e-3, 3.0 * std::numbers::pi);  // Exp is total: beyond π too
+  hecal::UniformRealDistribution angle(1e-3, 3.0 * std::numbers::pi);  // Exp is total: beyond π too
   for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Vector3d omega = testing::RandomRotationVector(rng, angle(rng));
     const Eigen::Matrix3d R = so3::Exp(omega);
@@ -123,7 +123,7 @@ TEST(So3Exp, TinyAnglesMatchTaylorSeries) {
 
 TEST(So3Exp, IsOrthonormalForAllAngles) {
   std::mt19937_64 rng(103);
-  std::uniform_real_distribution<double> angle(0.0, 20.0);
+  hecal::UniformRealDistribution angle(0.0, 20.0);
   for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Matrix3d R = so3::Exp(testing::RandomRotationVector(rng, angle(rng)));
     // A few ulps: the products in RᵀR and det R round (Eigen's AngleAxisd peaks at 1.6e-15 too).
@@ -162,8 +162,7 @@ TEST(So3ExpLog, LogOfExpAtPiIsPlusOrMinus) {
 
 TEST(So3Log, NormIsAtMostPiAndWrapsLargerAngles) {
   std::mt19937_64 rng(107);
-  std::uniform_real_distribution<double> angle(std::numbers::pi + 1e-6,
-                                               2.0 * std::numbers::pi - 1e-6);
+  hecal::UniformRealDistribution angle(std::numbers::pi + 1e-6, 2.0 * std::numbers::pi - 1e-6);
   for (int i = 0; i < kSo3Samples; ++i) {
     // A rotation by α ∈ (π, 2π) about n is a rotation by 2π − α about −n.
     const double alpha = angle(rng);
@@ -227,7 +226,7 @@ TEST(So3Angle, AgreesWithAcosOfTraceWhereWellConditioned) {
 
 TEST(So3Distance, IsConstructedAngleSymmetricAndInvariant) {
   std::mt19937_64 rng(110);
-  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  hecal::UniformRealDistribution angle(0.0, std::numbers::pi);
   for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Matrix3d R_a = testing::RandomRotation(rng);
     const double theta = angle(rng);
@@ -247,7 +246,7 @@ TEST(So3Distance, IsConstructedAngleSymmetricAndInvariant) {
 TEST(So3Jacobians, MatchExplicitFormulas) {
   // Solà et al. (2018) eqs. (143)–(146), written out here; θ ≥ 0.1 and ≤ 3 keeps them exact.
   std::mt19937_64 rng(111);
-  std::uniform_real_distribution<double> angle(0.1, 3.0);
+  hecal::UniformRealDistribution angle(0.1, 3.0);
   for (int i = 0; i < kSo3Samples; ++i) {
     const Eigen::Vector3d omega = testing::RandomRotationVector(rng, angle(rng));
     const double t = omega.norm();
@@ -325,7 +324,7 @@ TEST(So3Jacobians, ContinuousAcrossSeriesThreshold) {
 
 TEST(So3Interpolate, EndpointsMidpointAndConstantSpeed) {
   std::mt19937_64 rng(118);
-  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi - 1e-6);
+  hecal::UniformRealDistribution angle(0.0, std::numbers::pi - 1e-6);
   for (int i = 0; i < 1000; ++i) {
     const Eigen::Matrix3d R0 = testing::RandomRotation(rng);
     const double theta = angle(rng);

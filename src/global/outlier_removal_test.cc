@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/estimation/epipolar_polish.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
@@ -110,7 +111,7 @@ TEST(SolveGlobalRobust, KeepsCorrectMatchesWhenTheRobotNoiseExceedsThePixelThres
   spec.pixel_sigma = 0.1;
   testing::EpipolarScene scene = testing::MakeEpipolarScene(spec, 8);
   std::mt19937_64 rng(17);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  hecal::NormalDistribution normal(0.0, 1.0);
   for (EpipolarMotion& motion : scene.problem.motions) {
     // Drawn last to first: the order these tests' data were generated in.
     const double omega_z = normal(rng), omega_y = normal(rng), omega_x = normal(rng);

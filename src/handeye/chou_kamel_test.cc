@@ -9,6 +9,7 @@
 
 #include "handeye/handeye_test_util.h"
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_solver_suite.h"
@@ -27,7 +28,7 @@ TEST(ChouKamel, NearZeroRotationsDoNotEnterTheUnitAxisSystem) {
   for (int trial = 0; trial < 20; ++trial) {
     const Pose X = testing::RandomPose(rng, 0.1);
     std::vector<Motion> motions;
-    std::uniform_real_distribution<double> large(0.5, 3.0),
+    hecal::UniformRealDistribution large(0.5, 3.0),
         small(0.05 * kRadiansPerDegree, 0.5 * kRadiansPerDegree);
     for (int k = 0; k < 10; ++k) {
       const Eigen::Vector3d axis = testing::RandomUnitVector(rng);  // drawn before the angle

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_solver_suite.h"
 
@@ -51,7 +52,7 @@ TEST(ParkMartin, ParallelAxesRankOneMThrow) {
 TEST(ParkMartin, NearHalfTurnMotionsWithTinyNoise) {
   std::mt19937_64 rng(33);
   const Pose X = testing::RandomPose(rng, 0.1);
-  std::normal_distribution<double> noise(0.0, 1e-6);
+  hecal::NormalDistribution noise(0.0, 1e-6);
   std::vector<Motion> motions;
   for (int k = 0; k < 12; ++k) {
     // Drawn last to first: the order these tests' data were generated in.

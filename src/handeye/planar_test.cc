@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/handeye/observability.h"
 #include "hecal/sim/planar_robot.h"
@@ -71,8 +72,7 @@ TEST(Planar, FixedStartRecoversNoiseFreeTruth) {
 
 TEST(Planar, AComponentAcrossTheAxisIsRefusedNamingTheOneToFix) {
   const sim::PlanarScene scene = NoiseFree(Setup::kEyeInHand, 5);
-  const InputError error =
-      testing::Thrown<InputError>([&] { ResolveFix(scene.truth, {0, 0.1}); });
+  const InputError error = testing::Thrown<InputError>([&] { ResolveFix(scene.truth, {0, 0.1}); });
   EXPECT_NE(std::string(error.what()).find("fix tz instead"), std::string::npos) << error.what();
 }
 
@@ -81,7 +81,7 @@ TEST(Planar, TheConstrainedInverseHasNoVarianceAlongTheFixedCoordinate) {
   const FixedTranslation fixed = ResolveFix(scene.truth, {2, 0.06});
   const Solution at = ApplyFix({scene.X, scene.Z}, fixed);
   std::mt19937_64 rng(7);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   Eigen::Matrix<double, 12, 12> J;
   for (double& v : J.reshaped()) v = normal(rng);
   const Eigen::Matrix<double, 12, 12> H = J.transpose() * J;

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 #include "testing/handeye_solver_suite.h"
@@ -20,8 +21,8 @@ namespace {
 // to `x_angle`, σ = 0.3 mm / 0.3° on robot and camera.
 testing::Scene NoisyCaseWithXAngle(double x_angle, int stations, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> tilt(-45.0 * kRadiansPerDegree, 45.0 * kRadiansPerDegree);
-  std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
+  hecal::UniformRealDistribution tilt(-45.0 * kRadiansPerDegree, 45.0 * kRadiansPerDegree);
+  hecal::UniformRealDistribution spin(-std::numbers::pi, std::numbers::pi);
   std::vector<Pose> T_target_camera;
   for (int i = 0; i < stations; ++i) {
     // Drawn last to first: the order these tests' data were generated in.

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/import_tabb.h"
 #include "hecal/io/import_types.h"
@@ -57,7 +58,7 @@ void ExpectSame(const pose::CameraModel& a, const pose::CameraModel& b) {
 
 TEST(CameraFile, RoundTripIsExact) {
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> pixels(100.0, 3000.0), small(-0.5, 0.5);
+  hecal::UniformRealDistribution pixels(100.0, 3000.0), small(-0.5, 0.5);
   const std::string path =
       (std::filesystem::temp_directory_path() / "hecal_camera_file_test.yaml").string();
   for (int trial = 0; trial < 50; ++trial) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/io/delimited_text.h"
@@ -866,7 +867,7 @@ TEST(WritePoseTableTest, RoundTripEveryFormatAndUnit) {
   rotations.push_back(Rz(0.7) * Rx(std::numbers::pi) * Rz(0.2));
   rotations.push_back(Ry(0.7) * Rx(std::numbers::pi) * Ry(0.2));
   const std::string ids[] = {"plain", "with,comma", "with \"quote\"", "#hash", " spaced ", "ü"};
-  std::uniform_real_distribution<double> position(-2.0, 2.0);
+  hecal::UniformRealDistribution position(-2.0, 2.0);
   for (size_t i = 0; i < rotations.size(); ++i) {
     PoseRow row;
     const double z = position(rng);  // drawn last to first, as the test's data were generated

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
 #include "testing/image_scene.h"
@@ -44,7 +45,7 @@ TEST(ImageCalibration, DocumentListsEveryImageAndWhyEachRejectedOneIsOut) {
   testing::ImageScene s = testing::MakeImageScene(
       testing::ImageSceneOptions::For(handeye::Setup::kEyeInHand, 12, 31, robot, 0.2));
   std::mt19937_64 rng(9);
-  std::normal_distribution<double> gaussian;
+  hecal::NormalDistribution gaussian;
   for (Eigen::Vector2d& pixel : s.images[3].pixels) {
     const double dy = gaussian(rng);  // y first: the order the test's data were generated in
     const double dx = gaussian(rng);

@@ -5,6 +5,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/estimation/calibrate.h"
 #include "hecal/geometry/se3.h"
@@ -49,10 +50,10 @@ PlanStudyRow RunPlanStudy(const PlanStudyOptions& options) {
   sim::ProtocolOptions protocol;
   protocol.setup = options.setup;
   std::mt19937_64 rng(options.seed);
-  std::uniform_real_distribution<double> tilt(-protocol.max_tilt, protocol.max_tilt);
-  std::uniform_real_distribution<double> spin(-M_PI, M_PI);
-  std::uniform_real_distribution<double> cube(-0.5 * protocol.cube_side, 0.5 * protocol.cube_side);
-  std::normal_distribution<double> normal;
+  hecal::UniformRealDistribution tilt(-protocol.max_tilt, protocol.max_tilt);
+  hecal::UniformRealDistribution spin(-M_PI, M_PI);
+  hecal::UniformRealDistribution cube(-0.5 * protocol.cube_side, 0.5 * protocol.cube_side);
+  hecal::NormalDistribution normal;
   sim::NoiseModel robot_noise, camera_noise;
   robot_noise.rotation_sigma = options.robot_sigma.rotation;
   robot_noise.translation_sigma = options.robot_sigma.translation;

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/io/atomic_file.h"
 #include "hecal/sim/stream_simulation.h"
@@ -79,7 +80,7 @@ TEST(StreamCalibration, OffsetSigmaIsHonestOverRecordings) {
     std::mt19937_64 rng(100 + k);
     sim::StreamSimulationOptions simulation;
     simulation.duration = 30;
-    simulation.time_offset = std::uniform_real_distribution<double>(-0.2, 0.2)(rng);
+    simulation.time_offset = hecal::UniformRealDistribution(-0.2, 0.2)(rng);
     const sim::NoiseModel none{
         .kind = sim::NoiseModel::Kind::kGaussian, .rotation_sigma = 0, .translation_sigma = 0};
     const sim::NoiseModel camera{.kind = sim::NoiseModel::Kind::kGaussian,

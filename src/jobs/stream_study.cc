@@ -11,6 +11,7 @@
 
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/so3.h"
 
@@ -100,7 +101,7 @@ sim::SimulatedStreams SimulateStreamTrial(const StreamStudyOptions& options, han
                                           const study::NoiseLevel& level, int trial) {
   const study::Setting setting = SettingOf(options, setup, level);
   std::mt19937_64 rng(study::TrialSeed(options.seed, setup, 0, trial));
-  std::uniform_real_distribution<double> offset(-options.offset_range, options.offset_range);
+  hecal::UniformRealDistribution offset(-options.offset_range, options.offset_range);
   sim::StreamSimulationOptions simulation = options.simulation;
   simulation.protocol.setup = setup;
   simulation.time_offset = offset(rng);

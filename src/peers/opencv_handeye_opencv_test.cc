@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/peers/opencv_handeye.h"
 #include "testing/random_poses.h"
@@ -24,8 +25,8 @@ Data BenignData(handeye::Setup setup, int stations, uint64_t seed) {
   const Pose large = testing::RandomPose(rng, 1.0);
   data.X = setup == handeye::Setup::kEyeInHand ? small : large;
   data.Z = setup == handeye::Setup::kEyeInHand ? large : small;
-  std::uniform_real_distribution<double> angle(0.1, 0.5);
-  std::uniform_real_distribution<double> box(-0.3, 0.3);
+  hecal::UniformRealDistribution angle(0.1, 0.5);
+  hecal::UniformRealDistribution box(-0.3, 0.3);
   for (int i = 0; i < stations; ++i) {
     // Drawn last to first: the order these tests' data were generated in.
     const double z = box(rng);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/estimation/bound.h"
 #include "hecal/sim/thesis_protocol.h"
 
@@ -21,7 +22,7 @@ Pool ThesisPool(int size, uint64_t seed) {
   sim::ProtocolOptions protocol;
   std::mt19937_64 rng(seed);
   const sim::HandEyeTruth truth = sim::DrawTruth(protocol, rng);
-  std::uniform_real_distribution<double> tilt(-0.7, 0.7), spin(-3.1, 3.1), cube(-0.5, 0.5);
+  hecal::UniformRealDistribution tilt(-0.7, 0.7), spin(-3.1, 3.1), cube(-0.5, 0.5);
   Pool pool{{protocol.setup, truth.X, truth.Z}, {}};
   for (int k = 0; k < size; ++k) {
     // Drawn last to first: the order these tests' data were generated in.

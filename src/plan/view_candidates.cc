@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/sim/thesis_protocol.h"
 
 namespace hecal::plan {
@@ -70,10 +71,10 @@ std::vector<ViewCandidate> ViewCandidates(const std::vector<Scene>& scenes,
   const double distance =
       options.distance > 0.0 ? options.distance : DefaultDistance(camera, target);
   const double margin = options.margin_fraction * camera.width;
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
-  std::uniform_real_distribution<double> aim(-0.25 * size, 0.25 * size);
-  std::uniform_real_distribution<double> range(0.8 * distance, 1.2 * distance);
+  hecal::UniformRealDistribution unit(0.0, 1.0);
+  hecal::UniformRealDistribution spin(-std::numbers::pi, std::numbers::pi);
+  hecal::UniformRealDistribution aim(-0.25 * size, 0.25 * size);
+  hecal::UniformRealDistribution range(0.8 * distance, 1.2 * distance);
   const double cap = 1.0 - std::cos(options.max_board_tilt);
   std::vector<ViewCandidate> kept;
   int sample = 0;

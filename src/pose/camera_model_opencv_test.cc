@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/pose/camera_model.h"
 
 namespace hecal::pose {
@@ -28,7 +29,7 @@ cv::Matx33d CameraMatrix(const CameraModel& camera) {
 }
 
 std::vector<Eigen::Vector3d> RandomPoints(std::mt19937_64& rng, int count) {
-  std::uniform_real_distribution<double> lateral(-0.8, 0.8), depth(0.2, 5.0);
+  hecal::UniformRealDistribution lateral(-0.8, 0.8), depth(0.2, 5.0);
   std::vector<Eigen::Vector3d> points;
   for (int k = 0; k < count; ++k) {
     const double z = depth(rng);

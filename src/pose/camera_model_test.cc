@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 
 namespace hecal::pose {
 namespace {
@@ -57,7 +58,7 @@ TEST(CameraModel, DistortionByHand) {
 
 TEST(CameraModel, JacobianMatchesCentralDifferences) {
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> lateral(-0.6, 0.6), depth(0.3, 3.0);
+  hecal::UniformRealDistribution lateral(-0.6, 0.6), depth(0.3, 3.0);
   for (const CameraModel& camera : TestCameras()) {
     for (int trial = 0; trial < 200; ++trial) {
       const double z = depth(rng);
@@ -85,7 +86,7 @@ TEST(CameraModel, JacobianMatchesCentralDifferences) {
 // exact up to rounding).
 TEST(CameraModel, IntrinsicsJacobianMatchesCentralDifferences) {
   std::mt19937_64 rng(12);
-  std::uniform_real_distribution<double> lateral(-0.6, 0.6), depth(0.3, 3.0);
+  hecal::UniformRealDistribution lateral(-0.6, 0.6), depth(0.3, 3.0);
   for (const CameraModel& camera : TestCameras()) {
     const IntrinsicParameters k = IntrinsicsOf(camera);
     const CameraModel same = WithIntrinsics(camera, k.data());
@@ -128,7 +129,7 @@ TEST(CameraModel, UndistortInvertsProjectAcrossTheImage) {
 
 TEST(CameraModel, UndistortOfProjectGivesTheRay) {
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> lateral(-0.6, 0.6);
+  hecal::UniformRealDistribution lateral(-0.6, 0.6);
   for (const CameraModel& camera : TestCameras()) {
     for (int trial = 0; trial < 200; ++trial) {
       const double y = lateral(rng);

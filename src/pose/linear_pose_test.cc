@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "pose/pose_test_util.h"
 #include "testing/options_validity.h"
 #include "testing/pose_scenes.h"
@@ -165,7 +166,7 @@ TEST(LinearPose, RefusesFewerThanSixPoints) {
 TEST(LinearPose, RefusesAnObjectWithoutExtentInTheImage) {
   std::vector<Eigen::Vector3d> object;
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-0.1, 0.1);
+  hecal::UniformRealDistribution u(-0.1, 0.1);
   for (int k = 0; k < 8; ++k) {
     const double z = u(rng), y = u(rng), x = u(rng);  // last to first, as the data were generated
     object.emplace_back(x, y, z);

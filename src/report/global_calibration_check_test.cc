@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/se3.h"
 #include "testing/epipolar_scenes.h"
 #include "testing/kuka2_scene.h"
@@ -81,7 +82,7 @@ TEST(CheckGlobalCovariance, SeldomInflatesWhereTheNoiseModelHolds) {
 void PerturbMotions(global::EpipolarProblem* problem, double rotation, double translation,
                     std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  hecal::NormalDistribution normal(0.0, 1.0);
   for (global::EpipolarMotion& motion : problem->motions) {
     // Drawn last to first: the order these tests' data were generated in.
     const double omega_z = normal(rng), omega_y = normal(rng), omega_x = normal(rng);

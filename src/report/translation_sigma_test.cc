@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/se3.h"
 
 namespace hecal::report {
@@ -78,7 +79,7 @@ TEST(TranslationSigma, MatchesSampledRightPerturbations) {
 
   constexpr int kSamples = 40000;
   std::mt19937_64 rng(20261125);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   Eigen::Matrix3d sum2 = Eigen::Matrix3d::Zero();
   for (int s = 0; s < kSamples; ++s) {

@@ -4,6 +4,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "hecal/core/random_draws.h"
+
 namespace hecal::sim {
 
 std::vector<int> InjectGrossOutliers(SimulatedData* data, int count, std::mt19937_64& rng) {
@@ -19,8 +21,8 @@ std::vector<int> InjectGrossOutliers(SimulatedData* data, int count, std::mt1993
   }
   stations.resize(static_cast<size_t>(count));
   std::sort(stations.begin(), stations.end());
-  std::normal_distribution<double> gaussian;
-  std::uniform_real_distribution<double> box(-1.0, 1.0);
+  hecal::NormalDistribution gaussian;
+  hecal::UniformRealDistribution box(-1.0, 1.0);
   for (int i : stations) {
     // One draw at a time, last component first (the order of the data sets' first generation).
     Eigen::Quaterniond q;

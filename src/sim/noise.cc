@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/so3.h"
 
@@ -41,10 +42,10 @@ Vector6d SamplePerturbation(const NoiseModel& model, std::mt19937_64& rng) {
     const double s = sigma[k / 3];
     switch (model.kind) {
       case NoiseModel::Kind::kGaussian:
-        delta(k) = s * std::normal_distribution<double>()(rng);
+        delta(k) = s * hecal::NormalDistribution()(rng);
         break;
       case NoiseModel::Kind::kUniform:
-        delta(k) = s * std::uniform_real_distribution<double>(-1.0, 1.0)(rng);
+        delta(k) = s * hecal::UniformRealDistribution(-1.0, 1.0)(rng);
         break;
       case NoiseModel::Kind::kSystematic:
         delta(k) = s;
@@ -53,7 +54,7 @@ Vector6d SamplePerturbation(const NoiseModel& model, std::mt19937_64& rng) {
         delta(k) = s * std::student_t_distribution<double>(3.0)(rng) / std::sqrt(3.0);
         break;
       case NoiseModel::Kind::kPnp:
-        delta(k) = s * kPnpShape[k] * std::normal_distribution<double>()(rng);
+        delta(k) = s * kPnpShape[k] * hecal::NormalDistribution()(rng);
         break;
     }
   }

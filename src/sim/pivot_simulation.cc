@@ -2,13 +2,14 @@
 
 #include <numbers>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::sim {
 
 PivotScene SimulatePivot(const PivotSceneOptions& options, std::mt19937_64& rng) {
-  std::normal_distribution<double> lateral(0.0, 0.02);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  hecal::NormalDistribution lateral(0.0, 0.02);
+  hecal::UniformRealDistribution uniform(0.0, 1.0);
   const auto between = [&](double low, double high) { return low + (high - low) * uniform(rng); };
   PivotScene scene;
   scene.tip.x() = lateral(rng);

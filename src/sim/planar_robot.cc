@@ -4,6 +4,8 @@
 #include <Eigen/Geometry>
 #include <numbers>
 
+#include "hecal/core/random_draws.h"
+
 namespace hecal::sim {
 namespace {
 
@@ -21,9 +23,9 @@ Pose Translation(double x, double y, double z) {
 PlanarScene DrawPlanarScene(handeye::Setup setup, int stations, const NoiseModel& robot_noise,
                             const NoiseModel& camera_noise, std::mt19937_64& rng) {
   constexpr double kPi = std::numbers::pi;
-  std::uniform_real_distribution<double> lateral(-0.15, 0.15);
-  std::uniform_real_distribution<double> height(0.35, 0.45);
-  std::uniform_real_distribution<double> turn(-kPi / 2.0, kPi / 2.0);
+  hecal::UniformRealDistribution lateral(-0.15, 0.15);
+  hecal::UniformRealDistribution height(0.35, 0.45);
+  hecal::UniformRealDistribution turn(-kPi / 2.0, kPi / 2.0);
   const Pose flange_down = Rotation(Eigen::Vector3d::UnitX(), kPi);
   PlanarScene scene;
   scene.truth.setup = scene.measured.setup = setup;

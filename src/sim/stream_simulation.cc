@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "hecal/core/options_check.h"
+#include "hecal/core/random_draws.h"
 
 namespace hecal::sim {
 namespace {
@@ -23,8 +24,8 @@ struct Wave {
 };
 
 Wave DrawWave(double amplitude, double max_frequency, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> frequency(0.3 * max_frequency, max_frequency);
-  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+  hecal::UniformRealDistribution frequency(0.3 * max_frequency, max_frequency);
+  hecal::UniformRealDistribution phase(0.0, 2.0 * std::numbers::pi);
   Wave wave{.amplitude = amplitude};
   for (int k = 0; k < 2; ++k) {
     wave.frequency[k] = frequency(rng);

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "hecal/core/options_check.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/euler.h"
 #include "hecal/geometry/so3.h"
 
@@ -17,7 +18,7 @@ namespace {
 // data sets as before, with any compiler.
 
 Eigen::Matrix3d UniformRotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const double z = normal(rng);
   const double y = normal(rng);
   const double x = normal(rng);
@@ -26,7 +27,7 @@ Eigen::Matrix3d UniformRotation(std::mt19937_64& rng) {
 }
 
 Eigen::Vector3d UniformBox(std::mt19937_64& rng, double half_side) {
-  std::uniform_real_distribution<double> uniform(-half_side, half_side);
+  hecal::UniformRealDistribution uniform(-half_side, half_side);
   const double z = uniform(rng);
   const double y = uniform(rng);
   const double x = uniform(rng);
@@ -112,8 +113,8 @@ SimulatedData SimulateThesisProtocol(const ProtocolOptions& options, const Noise
   data.Z = truth.Z;
   // Each station: position in the cube around (0, 0, −d), tilted about the image-plane axes and
   // spun about the optical axis.
-  std::uniform_real_distribution<double> tilt(-options.max_tilt, options.max_tilt);
-  std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
+  hecal::UniformRealDistribution tilt(-options.max_tilt, options.max_tilt);
+  hecal::UniformRealDistribution spin(-std::numbers::pi, std::numbers::pi);
   for (int i = 0; i < options.stations; ++i) {
     const double alpha = tilt(rng);
     const double beta = tilt(rng);

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "testing/options_validity.h"
 
 namespace hecal::sim {
@@ -64,7 +65,7 @@ TEST(TriangleThreshold, FarOutliersAreMarkedAndTheBulkIsNot) {
   std::lognormal_distribution<double> bulk(0.0, 0.3);  // around 1, within a factor ~3
   std::vector<double> values;
   for (int i = 0; i < 190; ++i) values.push_back(bulk(rng));
-  std::uniform_real_distribution<double> far(100.0, 1000.0);
+  hecal::UniformRealDistribution far(100.0, 1000.0);
   for (int i = 0; i < 10; ++i) values.push_back(far(rng));
   const TriangleThresholdResult result = TriangleThreshold(values);
   EXPECT_EQ(result.outlier_count, 10);
@@ -74,7 +75,7 @@ TEST(TriangleThreshold, FarOutliersAreMarkedAndTheBulkIsNot) {
 }
 
 double MaxwellSample(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const double a = normal(rng), b = normal(rng), c = normal(rng);
   return std::sqrt(a * a + b * b + c * c);
 }

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 
 namespace hecal::streams {
@@ -24,7 +25,7 @@ Pose Motion(double t) {
 
 PoseStream Sampled(double rate, double duration, double noise = 0.0, unsigned seed = 1) {
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, noise);
+  hecal::NormalDistribution normal(0.0, noise);
   PoseStream stream;
   stream.source = "s.csv";
   for (int k = 0; k * (1.0 / rate) <= duration; ++k) {

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/estimation/calibrate.h"
 #include "hecal/geometry/se3.h"
@@ -184,7 +185,7 @@ std::vector<OracleTrial> OracleCovariance(const OracleOptions& options) {
 std::vector<OracleTrial> OracleGaussianReference(int trials, int redraws, std::uint64_t seed) {
   std::vector<OracleTrial> result(static_cast<size_t>(trials));
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const auto draw = [&] {
     Vector6d e;
     for (int i = 0; i < 6; ++i) e[i] = normal(rng);

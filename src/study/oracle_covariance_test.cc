@@ -10,6 +10,7 @@
 #include <Eigen/Cholesky>
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/uncertainty/consistency.h"
 
@@ -63,7 +64,7 @@ TEST(OracleCovariance, LeaveOneOutIsTheOtherRedrawsCovariance) {
   ASSERT_TRUE(trial.ok);
   // The same draws in the same order: the trial's own error, then the 20 redraws.
   std::mt19937_64 rng(5);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   std::vector<Vector6d> errors(21);
   for (Vector6d& e : errors)
     for (int i = 0; i < 6; ++i) e[i] = normal(rng);

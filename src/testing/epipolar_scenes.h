@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/global/epipolar_problem.h"
 #include "testing/random_poses.h"
@@ -43,7 +44,7 @@ struct EpipolarScene {
 // A bearing from a point in the camera frame through the pinhole camera with pixel noise.
 inline Eigen::Vector3d NoisyBearing(const Eigen::Vector3d& p, double focal, double sigma,
                                     std::mt19937_64& rng) {
-  std::normal_distribution<double> normal(0.0, sigma);
+  hecal::NormalDistribution normal(0.0, sigma);
   const double x = p.x() / p.z() + (sigma > 0 ? normal(rng) / focal : 0.0);
   const double y = p.y() / p.z() + (sigma > 0 ? normal(rng) / focal : 0.0);
   return Eigen::Vector3d(x, y, 1.0).normalized();
@@ -51,7 +52,7 @@ inline Eigen::Vector3d NoisyBearing(const Eigen::Vector3d& p, double focal, doub
 
 inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  hecal::UniformRealDistribution uniform(-1.0, 1.0);
   EpipolarScene scene;
   scene.problem.setup = spec.setup;
   // Draws within a statement run last to first: the order these tests' data were generated in.
@@ -93,7 +94,7 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
     const Pose camera_motion = global::CameraMotion(scene.X, H_first.inverse() * H_second);
     const auto measured = [&](const Pose& H) {
       if (spec.robot_rotation_sigma <= 0.0 && spec.robot_translation_sigma <= 0.0) return H;
-      std::normal_distribution<double> normal(0.0, 1.0);
+      hecal::NormalDistribution normal(0.0, 1.0);
       const double omega_z = normal(rng), omega_y = normal(rng), omega_x = normal(rng);
       const Eigen::Vector3d omega(omega_x, omega_y, omega_z);
       const double tau_z = normal(rng), tau_y = normal(rng), tau_x = normal(rng);
@@ -110,7 +111,7 @@ inline EpipolarScene MakeEpipolarScene(const EpipolarSceneSpec& spec, std::uint6
     for (std::size_t j = 0; j < points.size(); ++j) {
       const Eigen::Vector3d& p = points[j];
       Eigen::Vector3d q = camera_motion.inverse() * p;
-      if (std::uniform_real_distribution<double>(0, 1)(rng) < spec.wrong_fraction) {
+      if (hecal::UniformRealDistribution(0, 1)(rng) < spec.wrong_fraction) {
         wrong[j] = true;
         const Eigen::Vector3d& other =
             points[(j + 1 + rng() % (points.size() - 1)) % points.size()];

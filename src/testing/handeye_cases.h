@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/handeye/problem.h"
 #include "testing/random_poses.h"
@@ -31,7 +32,7 @@ inline Scene ThesisCase(handeye::Setup setup, int stations, uint64_t seed,
 inline Scene WideRotationCase(handeye::Setup setup, int stations, uint64_t seed,
                               double x_angle = -1.0) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> angle(170.0, 179.9);
+  hecal::UniformRealDistribution angle(170.0, 179.9);
   Scene data;
   data.setup = setup;
   const Pose small = RandomPose(rng, 0.05);
@@ -46,7 +47,7 @@ inline Scene WideRotationCase(handeye::Setup setup, int stations, uint64_t seed,
       const double theta = angle(rng) * std::numbers::pi / 180.0;
       T_target_camera.linear() =
           T_target_camera.linear() * so3::Exp(RandomRotationVector(rng, theta));
-      std::uniform_real_distribution<double> box(-0.5, 0.5);
+      hecal::UniformRealDistribution box(-0.5, 0.5);
       const double z = box(rng);  // drawn last to first, as the tests' data were generated
       const double y = box(rng);
       const double x = box(rng);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/handeye/motion.h"
 #include "hecal/handeye/problem.h"
@@ -155,7 +156,7 @@ inline Scene BenignCase(handeye::Setup setup, int stations, uint64_t seed,
                         double rotation_sigma = 0.0, double translation_sigma = 0.0) {
   std::mt19937_64 rng(seed);
   const Eigen::Matrix3d R0 = RandomRotation(rng);
-  std::uniform_real_distribution<double> angle(0.0, 40.0 * std::numbers::pi / 180.0);
+  hecal::UniformRealDistribution angle(0.0, 40.0 * std::numbers::pi / 180.0);
   std::vector<Pose> poses;
   for (int i = 0; i < stations; ++i) {
     const Eigen::Matrix3d R = R0 * so3::Exp(RandomRotationVector(rng, angle(rng)));
@@ -176,7 +177,7 @@ inline Scene ParallelAxesCase(handeye::Setup setup, int stations, uint64_t seed)
   std::mt19937_64 rng(seed);
   const Eigen::Matrix3d R0 = RandomRotation(rng);
   const Eigen::Vector3d axis = RandomUnitVector(rng);
-  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
+  hecal::UniformRealDistribution angle(-std::numbers::pi, std::numbers::pi);
   std::vector<Pose> poses;
   for (int i = 0; i < stations; ++i) {
     const Eigen::Vector3d t = RandomPose(rng, 0.5).translation();  // drawn before the angle

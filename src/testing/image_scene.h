@@ -32,6 +32,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/types.h"
 #include "hecal/pose/camera_model.h"
 #include "testing/random_poses.h"
@@ -122,7 +123,7 @@ inline ImageScene MakeImageScene(const ImageSceneOptions& options) {
   std::mt19937_64 rng(options.seed);
   ImageScene scene{MakeScene(options.stations, rng), options.camera, {}};
   const std::vector<Eigen::Vector3d> grid = GridPoints(options.grid);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  hecal::NormalDistribution normal(0.0, 1.0);
   for (const Pose& T_camera_target : scene.poses.T_camera_target_true) {
     StationImage image;
     for (const Eigen::Vector3d& P : grid) {
@@ -159,7 +160,7 @@ struct PointView {
 };
 
 inline PointView MakePointView(const PointViewOptions& options, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> side(-options.side / 2, options.side / 2),
+  hecal::UniformRealDistribution side(-options.side / 2, options.side / 2),
       lateral(-options.lateral, options.lateral), tilt(0.0, options.max_tilt),
       spin(-std::numbers::pi, std::numbers::pi);
   const bool volume = options.shape == PointShape::kVolume;
@@ -198,7 +199,7 @@ inline std::vector<Eigen::Vector2d> AddPixelNoise(std::mt19937_64& rng,
                                                   double sigma) {
   std::vector<Eigen::Vector2d> noisy = pixels;
   if (sigma > 0.0) {
-    std::normal_distribution<double> normal(0.0, sigma);
+    hecal::NormalDistribution normal(0.0, sigma);
     for (Eigen::Vector2d& u : noisy) {
       const double dy = normal(rng);
       const double dx = normal(rng);

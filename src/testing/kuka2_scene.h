@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "hecal/geometry/types.h"
 #include "hecal/global/epipolar_problem.h"
@@ -63,7 +64,7 @@ struct Scene {
 inline Scene MakeScene(const SceneSpec& spec, std::uint64_t seed) {
   constexpr double kFocal = 1056.35, kCx = 958.8, kCy = 586.9, kWidth = 1920, kHeight = 1200;
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  hecal::NormalDistribution normal(0.0, 1.0);
   Scene scene;
   scene.problem.setup = handeye::Setup::kEyeInHand;
   scene.X = MlX();

@@ -30,6 +30,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "testing/random_poses.h"
 
 namespace hecal::testing {
@@ -46,7 +47,7 @@ class LieGroupTest : public ::testing::Test {
   static Tangent RandomTangent(std::mt19937_64& rng, double angle) {
     Tangent xi;
     xi.template head<3>() = RandomRotationVector(rng, angle);
-    std::normal_distribution<double> normal;
+    hecal::NormalDistribution normal;
     for (int k = 3; k < G::kDof; ++k) xi(k) = normal(rng);
     return xi;
   }
@@ -55,7 +56,7 @@ class LieGroupTest : public ::testing::Test {
   // `inclusive`).
   static std::vector<Tangent> Tangents(std::mt19937_64& rng, double max_angle, bool inclusive) {
     std::vector<Tangent> result;
-    std::uniform_real_distribution<double> angle(0.0, max_angle);
+    hecal::UniformRealDistribution angle(0.0, max_angle);
     for (int i = 0; i < kSamples; ++i) result.push_back(RandomTangent(rng, angle(rng)));
     for (const Eigen::Vector3d& omega : EdgeCaseRotationVectors(rng)) {
       if (omega.norm() < max_angle || (inclusive && omega.norm() <= max_angle)) {
@@ -123,7 +124,7 @@ TYPED_TEST_P(LieGroupTest, SatisfiesTheGroupAxioms) {
   using G = TypeParam;
   std::mt19937_64 rng(603);
   EXPECT_EQ(G::Distance(G::Exp(TestFixture::Tangent::Zero()), G::Identity()), 0.0);
-  std::uniform_real_distribution<double> angle(0.0, this->kPi);
+  hecal::UniformRealDistribution angle(0.0, this->kPi);
   for (int i = 0; i < this->kSamples; ++i) {
     const auto a = G::Exp(this->RandomTangent(rng, angle(rng)));
     const auto b = G::Exp(this->RandomTangent(rng, angle(rng)));
@@ -140,7 +141,7 @@ TYPED_TEST_P(LieGroupTest, SatisfiesTheGroupAxioms) {
 TYPED_TEST_P(LieGroupTest, AdjointConjugatesTheExponentialAndIsAHomomorphism) {
   using G = TypeParam;
   std::mt19937_64 rng(604);
-  std::uniform_real_distribution<double> angle(0.0, this->kPi);
+  hecal::UniformRealDistribution angle(0.0, this->kPi);
   for (int i = 0; i < this->kSamples; ++i) {
     const auto g = G::Exp(this->RandomTangent(rng, angle(rng)));
     const auto h = G::Exp(this->RandomTangent(rng, angle(rng)));

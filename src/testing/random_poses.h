@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/types.h"
 
 namespace hecal::testing {
@@ -16,7 +17,7 @@ namespace hecal::testing {
 // Uniform on SO(3): a normalised 4-D Gaussian is uniform on S³ (Shoemake's argument).
 // The helpers below draw components last to first: the order the tests' data were generated in.
 inline Eigen::Matrix3d RandomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const double z = normal(rng);
   const double y = normal(rng);
   const double x = normal(rng);
@@ -27,7 +28,7 @@ inline Eigen::Matrix3d RandomRotation(std::mt19937_64& rng) {
 
 // Each component N(0, sigma²).
 inline Eigen::Vector3d RandomGaussianVector(std::mt19937_64& rng, double sigma = 1.0) {
-  std::normal_distribution<double> normal(0.0, sigma);
+  hecal::NormalDistribution normal(0.0, sigma);
   const double z = normal(rng);
   const double y = normal(rng);
   const double x = normal(rng);
@@ -35,7 +36,7 @@ inline Eigen::Vector3d RandomGaussianVector(std::mt19937_64& rng, double sigma =
 }
 
 inline Eigen::Vector3d RandomUnitVector(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const double z = normal(rng);
   const double y = normal(rng);
   const double x = normal(rng);
@@ -49,7 +50,7 @@ inline Eigen::Vector3d RandomRotationVector(std::mt19937_64& rng, double angle) 
 
 // A point uniform in the cube [−half_side, half_side]³.
 inline Eigen::Vector3d RandomPointInBox(std::mt19937_64& rng, double half_side) {
-  std::uniform_real_distribution<double> uniform(-half_side, half_side);
+  hecal::UniformRealDistribution uniform(-half_side, half_side);
   const double z = uniform(rng);
   const double y = uniform(rng);
   const double x = uniform(rng);
@@ -90,7 +91,7 @@ inline Vector6d Twist(const Eigen::Vector3d& omega, const Eigen::Vector3d& v) {
 // `count` twists with |ω| uniform in [0, max_angle) about a random axis and v ~ N(0, I), then one
 // per EdgeCaseRotationVectors entry, v ~ N(0, I).
 inline std::vector<Vector6d> RandomTwists(std::mt19937_64& rng, int count, double max_angle) {
-  std::uniform_real_distribution<double> angle(0.0, max_angle);
+  hecal::UniformRealDistribution angle(0.0, max_angle);
   std::vector<Vector6d> twists;
   for (int i = 0; i < count; ++i) {
     const Eigen::Vector3d v = RandomGaussianVector(rng);  // drawn first

@@ -21,6 +21,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/euler.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/geometry/types.h"
@@ -71,8 +72,8 @@ inline Pose AddPoseNoise(const Pose& T, const PoseNoise& noise, std::mt19937_64&
   if (noise.rotation_sigma == 0.0 && noise.translation_sigma == 0.0) return T;
   Vector6d delta;
   for (int k = 0; k < 6; ++k) {
-    delta(k) = (k < 3 ? noise.rotation_sigma : noise.translation_sigma) *
-               std::normal_distribution<double>()(rng);
+    delta(k) =
+        (k < 3 ? noise.rotation_sigma : noise.translation_sigma) * hecal::NormalDistribution()(rng);
   }
   return T * se3::Exp(delta);
 }
@@ -81,8 +82,8 @@ namespace scene_internal {
 
 // T_target_camera of one station (scene.h): tilt α, β, spin γ, then the position in the cube.
 inline Pose CameraInTarget(const SceneOptions& options, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> tilt(-options.max_tilt, options.max_tilt);
-  std::uniform_real_distribution<double> spin(-std::numbers::pi, std::numbers::pi);
+  hecal::UniformRealDistribution tilt(-options.max_tilt, options.max_tilt);
+  hecal::UniformRealDistribution spin(-std::numbers::pi, std::numbers::pi);
   // One declaration, evaluated in order: α, β about the image-plane axes, then the spin γ.
   const double alpha = tilt(rng), beta = tilt(rng), gamma = spin(rng);
   const Eigen::Vector3d start(0.0, 0.0, -options.start_distance);

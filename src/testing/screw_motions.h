@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/types.h"
 #include "testing/random_poses.h"
 
@@ -28,7 +29,7 @@ inline ScrewLine RandomScrewLine(std::mt19937_64& rng, double min_theta = 0.0,
   ScrewLine line;
   line.n = RandomUnitVector(rng);
   line.c = RandomGaussianVector(rng);
-  line.theta = std::uniform_real_distribution<double>(min_theta, max_theta)(rng);
+  line.theta = hecal::UniformRealDistribution(min_theta, max_theta)(rng);
   line.d = RandomGaussianVector(rng).x();
   return line;
 }

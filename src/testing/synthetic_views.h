@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/types.h"
 #include "hecal/pose/camera_model.h"
 #include "testing/rendered_scene.h"
@@ -35,7 +36,7 @@ inline std::vector<Eigen::Vector2d> Project(const std::vector<Eigen::Vector3d>& 
 }
 
 inline void AddNoise(double sigma_px, std::mt19937_64& rng, std::vector<Eigen::Vector2d>* pixels) {
-  std::normal_distribution<double> noise(0.0, sigma_px);
+  hecal::NormalDistribution noise(0.0, sigma_px);
   for (Eigen::Vector2d& p : *pixels) {
     const double dy = noise(rng);  // y first: the order the tests' data were generated in
     const double dx = noise(rng);

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "hecal/core/pixel_jitter.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/core/split_mix.h"
 #include "hecal/geometry/types.h"
 #include "hecal/pose/camera_model.h"
@@ -213,7 +214,7 @@ inline GreyImage RenderPlanes(const std::vector<TexturedPlane>& planes,
   if (options.blur_sigma > 0.0) GaussianBlurInPlace(image, width, height, options.blur_sigma);
   if (options.noise_sigma > 0.0) {
     std::mt19937_64 generator(options.seed);
-    std::normal_distribution<double> noise(0.0, options.noise_sigma);
+    hecal::NormalDistribution noise(0.0, options.noise_sigma);
     for (double& grey : image) grey += noise(generator);
   }
   GreyImage out{width, height, {}};

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/so3.h"
 #include "testing/camera_yaml.h"
 #include "testing/random_poses.h"
@@ -109,7 +110,7 @@ inline std::vector<TexturedPlane> ScenePlanes(SceneShape shape, std::uint64_t se
 
 inline TexturedStations MakeTexturedStations(const TexturedStationSpec& spec, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  hecal::UniformRealDistribution uniform(0.0, 1.0);
   TexturedStations scene{ScenePlanes(spec.shape, seed), {}, {}, spec.camera, spec.X};
   Eigen::Vector3d a = RandomRotationVector(rng, 5.0 * M_PI / 180.0);
   Eigen::Vector3d c = Eigen::Vector3d::Zero();

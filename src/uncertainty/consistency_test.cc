@@ -8,6 +8,8 @@
 #include <random>
 #include <vector>
 
+#include "hecal/core/random_draws.h"
+
 namespace hecal::uncertainty {
 namespace {
 
@@ -66,7 +68,7 @@ TEST(Nees, IsTheMahalanobisSquareAndNaNForSingular) {
 // optimistic covariance): NEES above the band, coverage far below.
 TEST(AssessConsistency, DetectsAConsistentAndAnOptimisticCovariance) {
   std::mt19937_64 rng(3);
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   const int trials = 2000;
   std::vector<VectorXd> errors, scaled;
   std::vector<MatrixXd> covariances;

@@ -3,6 +3,7 @@
 #include <random>
 
 #include "hecal/core/limits.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/core/split_mix.h"
 
 namespace hecal::uncertainty {
@@ -19,7 +20,7 @@ bool MonteCarloOptions::IsValid(std::string* why) const {
 
 Eigen::VectorXd StandardNormalSample(std::uint64_t seed, int k, int n) {
   std::mt19937_64 rng(SplitMix64(SplitMix64(seed) ^ static_cast<std::uint64_t>(k)));
-  std::normal_distribution<double> normal(0.0, 1.0);
+  hecal::NormalDistribution normal(0.0, 1.0);
   Eigen::VectorXd z(n);
   for (int j = 0; j < n; ++j) z(j) = normal(rng);
   return z;

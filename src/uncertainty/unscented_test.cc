@@ -7,6 +7,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "hecal/geometry/se3.h"
 #include "hecal/uncertainty/monte_carlo.h"
 #include "testing/random_poses.h"
@@ -18,7 +19,7 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 MatrixXd RandomCovariance(int n, std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   MatrixXd A(n, n);
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) A(i, j) = normal(rng);
@@ -109,7 +110,7 @@ TEST(Weights, InvalidParametersAreRejected) {
 TEST(UnscentedTransform, ExactForLinearMaps) {
   std::mt19937_64 rng(2);
   const int n = 5, m = 3;
-  std::normal_distribution<double> normal;
+  hecal::NormalDistribution normal;
   MatrixXd A(m, n);
   for (int i = 0; i < m; ++i) {
     for (int j = 0; j < n; ++j) A(i, j) = normal(rng);

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "hecal/core/error.h"
+#include "hecal/core/random_draws.h"
 #include "testing/image_scene.h"
 #include "testing/synthetic_views.h"
 
@@ -45,7 +46,7 @@ Pose PlanarTruth() {
 // Random points in a 0.3 m cube centred 0.8 m in front of the camera (target frame = camera
 // frame shifted and turned).
 std::vector<Eigen::Vector3d> CubePoints(int n, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-0.15, 0.15);
+  hecal::UniformRealDistribution u(-0.15, 0.15);
   std::vector<Eigen::Vector3d> points;
   for (int k = 0; k < n; ++k) {
     const double z = u(rng), y = u(rng), x = u(rng);  // last to first, as the data were generated

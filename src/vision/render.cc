@@ -17,6 +17,7 @@
 #include "hecal/core/error.h"
 #include "hecal/core/options_check.h"
 #include "hecal/core/pixel_jitter.h"
+#include "hecal/core/random_draws.h"
 
 namespace hecal::vision {
 namespace {
@@ -454,7 +455,7 @@ cv::Mat RenderTarget(const pose::TargetSpec& target, const pose::CameraModel& ca
   }
   if (options.noise_sigma > 0.0) {
     std::mt19937_64 generator(options.seed);
-    std::normal_distribution<double> noise(0.0, options.noise_sigma);
+    hecal::NormalDistribution noise(0.0, options.noise_sigma);
     for (int j = 0; j < height; ++j) {
       float* row = image.ptr<float>(j);
       for (int i = 0; i < width; ++i) row[i] += static_cast<float>(noise(generator));
