@@ -9,6 +9,11 @@ hecalPage.pages.calibration = function (data, root) {
   const {mul, polyTrace, triad, axisTraces, frustum, board} = hecalPage.scene3d;
   // What to do about a warning of the result file (the texts of src/estimation and src/jobs).
   const ADVICE = [
+    [/measures the target at/i, 'Measure the printed target (ten squares with calipers) and set ' +
+     'its size in the target description, or pass --target-scale stated if the print was ' +
+     'measured and the description is right (docs/target-scale.md).'],
+    [/global optimum|certified globally/i, 'Compare --method all, check for a wrong station, and ' +
+     'add stations that rotate about different axes (docs/certificate.md).'],
     [/noise not given|estimated/i, 'The noise model was estimated from these residuals. If you ' +
      'know your robot\'s and camera\'s accuracy, give it with --robot-sigma MM,DEG and ' +
      '--camera-sigma MM,DEG: the σ then do not lean on this data set alone.'],
@@ -70,6 +75,26 @@ hecalPage.pages.calibration = function (data, root) {
       `robot ${fmt(n.robot_sigma.translation)} ${unit}, ${fmt(n.robot_sigma.rotation_deg)}°; ` +
       `camera ${fmt(n.camera_sigma.translation)} ${unit}, ${fmt(n.camera_sigma.rotation_deg)}°. ` +
       `Residual RMS: ${fmt(r.residuals.rotation_rms_deg)}°, ${fmt(r.residuals.translation_rms)} ${unit}.`));
+    const t = r.target;
+    if (t && t.scale !== undefined) {
+      let text = `Target scale (measured ÷ described size): ${fmt(t.scale, 4)} ± ` +
+        `${fmt(t.scale_sigma, 4)}`;
+      if (t.described && t.measured) {
+        const key = Object.keys(t.described)[0];
+        text += `; ${key} measured ${fmt(t.measured[key], 5)} ± ${fmt(t.measured[key + '_sigma'], 3)}` +
+          ` ${unit}, described ${fmt(t.described[key], 5)} ${unit}`;
+      }
+      text += t.applied_scale !== 1 ? '. X and Z are at the measured size.' :
+        '. X and Z are at the described size.';
+      s.appendChild(el('p', {}, text));
+    } else if (t) {
+      s.appendChild(el('p', {}, `Target scale: not observable (${t.reason}).`));
+    }
+    if (r.certificate) {
+      s.appendChild(el('p', {}, r.certificate.certified ?
+        `Certified globally optimal (dual gap ${fmt(r.certificate.dual_gap, 2)}).` :
+        'Not certified globally optimal (docs/certificate.md).'));
+    }
     if (r.warnings.length === 0) s.appendChild(el('p', {}, 'No warnings.'));
     for (const w of r.warnings) {
       s.appendChild(el('div', {class: 'warning'}, el('div', {}, '⚠ ' + w),

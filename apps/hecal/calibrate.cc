@@ -38,6 +38,27 @@ std::optional<double> ParsePixelSigma(const std::string& text) {
   return value;
 }
 
+// --target-scale: fit | stated | a number (measured ÷ described size).
+void ParseTargetScale(const std::string& text, estimation::CalibrateOptions* options) {
+  using estimation::TargetScaleMode;
+  if (text == "fit" || text == "stated") {
+    options->target_scale = text == "fit" ? TargetScaleMode::kFit : TargetScaleMode::kStated;
+    return;
+  }
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !(value > 0.5 && value < 2.0)) {
+    throw InputError("--target-scale", 0,
+                     "expected fit, stated or the measured ÷ described size between 0.5 and 2, "
+                     "got '" +
+                         text + "'",
+                     "write e.g. --target-scale stated (the print was measured), or "
+                     "--target-scale 0.96 (a board printed at 96 %)");
+  }
+  options->target_scale = TargetScaleMode::kGiven;
+  options->given_target_scale = value;
+}
+
 CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   CalibrateSettings settings;
   settings.setup = flags.setup;
@@ -67,6 +88,7 @@ CalibrateSettings ParseCalibrateFlags(const CalibrateFlags& flags) {
   options.reject_outliers = !flags.keep_outliers;
   options.covariance.threads = flags.threads;
   options.robust_loss = flags.robust;
+  ParseTargetScale(flags.target_scale, &options);
   if (!flags.fix.empty()) {
     options.fix = ParseFix(flags.fix, flags.units);
     if (settings.all) {
@@ -290,6 +312,12 @@ void RegisterCalibrateCommand(CLI::App& app, const Io& io) {
   command->add_option("--fix", flags->fix,
                       "Planar robot (all rotations about one axis): X's translation component "
                       "along that axis, given, e.g. tz=120mm (docs/planar.md)");
+  command
+      ->add_option("--target-scale", flags->target_scale,
+                   "The target's printed size: fit (measured from the robot's motion, the answer "
+                   "at the measured size), stated (the print was measured: keep the described "
+                   "size), or the measured ÷ described size, e.g. 0.96 (docs/target-scale.md)")
+      ->capture_default_str();
   command->add_option("--output", flags->output, "Result file (.json, or .yaml/.yml)");
   command->add_option("--report", flags->report,
                       "Interactive HTML page of the result (docs/report.md), e.g. report.html");

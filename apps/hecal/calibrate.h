@@ -58,8 +58,9 @@ struct CalibrateFlags {
   double max_gap = 0.0;               // --max-gap SECONDS (0: 3 periods of the denser stream)
   std::string max_speed = "300,45";   // --max-speed MM,DEG per second
   int stations = 500;                 // --stations N: at most this many from the streams
-  std::string fix;     // --fix tz=VALUE: planar robots (docs/planar.md)
-  std::string stamps;  // --stamps FILE: with --streams --images (docs/streams.md)
+  std::string fix;                    // --fix tz=VALUE: planar robots (docs/planar.md)
+  std::string stamps;                 // --stamps FILE: with --streams --images (docs/streams.md)
+  std::string target_scale = "fit";   // --target-scale fit|stated|VALUE (target-scale.md)
 };
 
 // The flags every form shares, checked.

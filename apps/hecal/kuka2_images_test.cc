@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -41,7 +41,9 @@ class Kuka2Images : public CliTest {
     return Write("target.yaml", "type: chessboard\ncols: 24\nrows: 17\nsquare: 0.015\n");
   }
 
-  // X of a result file against SOURCE.md's reference, within its suggested 0.1° / 2 mm.
+  // X of a result file against SOURCE.md's reference, within its suggested 0.1° / 2 mm. The
+  // reference is OpenCV's at the described 15 mm squares, so the runs compared with it pass
+  // --target-scale stated (the board measures 95.8 %: TheBoardIsMeasuredSmallerThanDescribed).
   static void ExpectReferenceX(const nlohmann::json& result) {
     Eigen::Matrix4d X;
     for (int r = 0; r < 4; ++r) {
@@ -74,9 +76,9 @@ class Kuka2Images : public CliTest {
 
     // RobotPosesVec.txt: 28 lines of 16 numbers (row-major T_base_gripper, metres), paired by
     // order with the images sorted by name (im_01 ... im_28).
-    const cli_test::Outcome calibrate =
-        Hecal({"calibrate", "--robot", DataDir() + "/RobotPosesVec.txt", "--camera",
-               Path("camera.csv"), "--setup", "eye-in-hand", "--output", Path("result.json")});
+    const cli_test::Outcome calibrate = Hecal(
+        {"calibrate", "--robot", DataDir() + "/RobotPosesVec.txt", "--camera", Path("camera.csv"),
+         "--setup", "eye-in-hand", "--target-scale", "stated", "--output", Path("result.json")});
     ASSERT_EQ(calibrate.code, 0) << calibrate.err;
     ExpectReferenceX(nlohmann::json::parse(Read("result.json")));
   }
@@ -111,9 +113,10 @@ TEST_F(Kuka2Images, WithIntrinsicsEstimatedFromTheImages) {
 // `hecal calibrate --images` in one step: intrinsics estimated (RMS ≤ 0.1 px), every image used,
 // X within the reference's tolerance, per-image reprojection RMS in the result.
 TEST_F(Kuka2Images, CalibrateFromTheImagesInOneStep) {
-  const cli_test::Outcome run = Hecal({"calibrate", "--images", DataDir() + "/images", "--target",
-                                       TargetFile(), "--robot", DataDir() + "/RobotPosesVec.txt",
-                                       "--setup", "eye-in-hand", "--output", Path("result.json")});
+  const cli_test::Outcome run =
+      Hecal({"calibrate", "--images", DataDir() + "/images", "--target", TargetFile(), "--robot",
+             DataDir() + "/RobotPosesVec.txt", "--setup", "eye-in-hand", "--target-scale", "stated",
+             "--output", Path("result.json")});
   ASSERT_EQ(run.code, 0) << run.err;
   const nlohmann::json result = nlohmann::json::parse(Read("result.json"));
   ExpectReferenceX(result);
@@ -130,6 +133,34 @@ TEST_F(Kuka2Images, CalibrateFromTheImagesInOneStep) {
   const double sigma_tx = std::sqrt(result["covariance"]["X"][3][3].get<double>());
   EXPECT_GT(sigma_tx, 0.02e-3);
   EXPECT_LT(sigma_tx, 1e-3);
+}
+
+// The default run measures the board (docs/target-scale.md, data/rwhe-kuka2/SOURCE.md): 95.8 %
+// ± 0.75 % of the described 15 mm, named in a warning; X at the measured size lies within 3σ
+// (along the gripper's axes) of hecal's board-free answer, (33.6, −102.7, −76.2) mm
+// (docs/global.md), which the stated-size X misses by ~20 mm.
+TEST_F(Kuka2Images, TheBoardIsMeasuredSmallerThanDescribed) {
+  const cli_test::Outcome run = Hecal({"calibrate", "--images", DataDir() + "/images", "--target",
+                                       TargetFile(), "--robot", DataDir() + "/RobotPosesVec.txt",
+                                       "--setup", "eye-in-hand", "--output", Path("result.json")});
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_THAT(run.out + run.err, ::testing::HasSubstr("not the size its description states"));
+  const nlohmann::json result = nlohmann::json::parse(Read("result.json"));
+  const nlohmann::json& target = result["target"];
+  EXPECT_TRUE(target["mismatch"].get<bool>());
+  EXPECT_GT(target["scale"].get<double>(), 0.93);
+  EXPECT_LT(target["scale"].get<double>(), 0.98);
+  EXPECT_NEAR(target["measured"]["square"].get<double>(), 0.015 * target["scale"].get<double>(),
+              1e-12);
+  EXPECT_EQ(target["described"]["square"].get<double>(), 0.015);
+  const Eigen::Vector3d board_free(0.0336, -0.1027, -0.0762);
+  const auto& sigma = result["covariance"]["sigma"]["X"]["translation_in_parent"]["translation"];
+  for (int k = 0; k < 3; ++k) {
+    const double t = result["X"]["translation"][static_cast<size_t>(k)].get<double>();
+    EXPECT_LT(std::abs(t - board_free(k)), 3.0 * sigma[static_cast<size_t>(k)].get<double>())
+        << "axis " << k;
+  }
+  EXPECT_TRUE(result["certificate"]["certified"].get<bool>());
 }
 
 // `hecal calibrate --streams --images` (docs/streams.md#images-as-the-camera-stream): the robot as
@@ -154,9 +185,10 @@ TEST_F(Kuka2Images, ImagesAsTheCameraStream) {
   io::WritePoseTable(Path("robot.csv"), stream, {});
   Write("stamps.csv", stamps);
   const std::vector<std::string> args = {
-      "calibrate", "--streams", "--images", DataDir() + "/images", "--target", TargetFile(),
-      "--robot", Path("robot.csv"), "--setup", "eye-in-hand", "--time-offset", "0",
-      "--output", Path("result.json")};
+      "calibrate",      "--streams",   "--images",      DataDir() + "/images",
+      "--target",       TargetFile(),  "--robot",       Path("robot.csv"),
+      "--setup",        "eye-in-hand", "--time-offset", "0",
+      "--target-scale", "stated",      "--output",      Path("result.json")};
   std::vector<std::string> with_stamps = args;
   with_stamps.insert(with_stamps.end(), {"--stamps", Path("stamps.csv")});
   const cli_test::Outcome run = Hecal(with_stamps);

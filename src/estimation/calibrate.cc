@@ -16,6 +16,7 @@
 #include "hecal/estimation/strobl.h"
 #include "hecal/geometry/angle_units.h"
 #include "hecal/geometry/se3.h"
+#include "hecal/geometry/so3.h"
 #include "hecal/handeye/observability.h"
 #include "hecal/handeye/station_consensus.h"
 
@@ -134,6 +135,12 @@ bool CalibrateOptions::IsValid(std::string* why) const {
         "a fixed translation component needs the method ml, not " + std::string(Info(method).name),
         "use --method ml (the default)");
   }
+  if (target_scale == TargetScaleMode::kGiven &&
+      !(given_target_scale > 0.5 && given_target_scale < 2.0)) {
+    return Invalid(why, "CalibrateOptions.given_target_scale",
+                   "the target's scale (measured ÷ described size) must be between 0.5 and 2",
+                   "give e.g. 0.96 for a board printed at 96 % of its described size");
+  }
   return covariance.IsValid(why) && consensus.IsValid(why);
 }
 
@@ -191,9 +198,12 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
   return Calibrate(problem, options, SelectStationsFor(problem, options));
 }
 
-CalibrationResult Calibrate(const handeye::Problem& all_stations, const CalibrateOptions& options,
-                            const StationSelection& selection) {
-  ValidateOptions(all_stations, options);
+namespace {
+
+// The calibration at the target size the camera poses carry (target_scale.h: scale 1).
+CalibrationResult CalibrateAtDescribedSize(const handeye::Problem& all_stations,
+                                           const CalibrateOptions& options,
+                                           const StationSelection& selection) {
   const RobustLoss loss = options.robust_loss;
   const handeye::Problem problem = handeye::SubProblem(all_stations, selection.used);
   handeye::CheckObservability(problem, options.fix.has_value());
@@ -356,6 +366,120 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
         "fit one rigid setup under the noise model (check the setup, the pose conventions, the "
         "pairing of robot and camera rows, and the sigmas); every station was used");
   }
+  return result;
+}
+
+std::string Percent(double value) {
+  return Format("%.2f %%", 100.0 * value, 0.0);
+}
+
+// The warning on a measured scale that refutes the described one (empty when it does not).
+std::string TargetScaleWarning(const TargetScale& scale, bool applied) {
+  if (!scale.Mismatch()) return "";
+  const std::string measured =
+      "the robot's motion measures the target at " + Percent(scale.scale) + " ± " +
+      Percent(scale.sigma) + " (1σ) of the size its description states, " +
+      Format("%.1fσ", std::abs(scale.scale - 1.0) / scale.sigma, 0.0) + " from it";
+  if (!applied) {
+    return measured +
+           "; X and Z are given at the described size as --target-scale stated asks, and their "
+           "σ does not cover the difference";
+  }
+  if (std::abs(scale.scale - 1.0) < kPrinterTolerance) {
+    return measured + " (within a printer's tolerance of ±" + Percent(kPrinterTolerance) +
+           "): X and Z are given at the measured size, their σ including the scale's";
+  }
+  return "the target is not the size its description states: " + measured +
+         ". A print scaled to fit the page (94–97 %) is the common cause. X and Z are given at "
+         "the measured size, their σ including the scale's. Fix: measure the printed target "
+         "(e.g. ten squares with calipers) and set its size (square: or the marker size in the "
+         "target description) to the measured value before detecting the poses; if the print "
+         "was measured and the description is right, pass --target-scale stated";
+}
+
+}  // namespace
+
+// The certificate of the answer (handeye/certificate.h), weighted by the result's noise; when
+// it fails, the closed-form starts polished and certified in turn, the lowest certified kept as
+// `global_optimum`, and a warning when that optimum is not the answer's.
+void CertifyResult(const handeye::Problem& problem, CalibrationResult* result) {
+  const double rotation = std::hypot(result->robot_sigma.rotation, result->camera_sigma.rotation);
+  const double translation =
+      std::hypot(result->robot_sigma.translation, result->camera_sigma.translation);
+  const handeye::ChordalWeights weights =
+      handeye::WeightsFromSigmas(rotation, translation, handeye::LengthScale(problem));
+  result->certificate = handeye::CertifyGlobalOptimum(problem, {result->X, result->Z}, weights);
+  if (result->certificate->certified) return;
+  for (const handeye::Solution& start : ClosedFormStarts(problem)) {
+    const handeye::Certificate other = handeye::CertifyGlobalOptimum(problem, start, weights);
+    if (other.certified && (!result->global_optimum || other.cost < result->global_optimum->cost))
+      result->global_optimum = other;
+  }
+  if (!result->global_optimum) {
+    result->warnings.push_back(
+        "the answer could not be certified globally optimal (the dual of the chordal least "
+        "squares is not tight at it, nor at any closed-form start): with data this noisy or "
+        "this close to degenerate, compare --method all and add stations that rotate about "
+        "different axes");
+    return;
+  }
+  const handeye::Certificate& best = *result->global_optimum;
+  const double rotation_off =
+      so3::Log(result->X.linear().transpose() * best.polished.X.linear()).norm();
+  const double translation_off = (result->X.translation() - best.polished.X.translation()).norm();
+  if (best.cost < result->certificate->cost * (1.0 - 1e-6)) {
+    result->warnings.push_back(
+        "the answer is not the global optimum: the chordal least squares has a certified global "
+        "minimum " +
+        Format("%.3g deg / %.3g mm", rotation_off * kDegreesPerRadian, translation_off * 1e3) +
+        " from X (certificate.global_optimum); the answer lies in another basin — check the data "
+        "for a wrong station or a degenerate motion, and compare --method all");
+  }
+}
+
+CalibrationResult Calibrate(const handeye::Problem& all_stations, const CalibrateOptions& options,
+                            const StationSelection& selection) {
+  ValidateOptions(all_stations, options);
+  if (options.target_scale == TargetScaleMode::kGiven) {
+    CalibrationResult result = CalibrateAtDescribedSize(
+        ScaleCameraTranslations(all_stations, options.given_target_scale), options, selection);
+    result.applied_target_scale = options.given_target_scale;
+    if (!options.fix) {
+      CertifyResult(ScaleCameraTranslations(handeye::SubProblem(all_stations, selection.used),
+                                            options.given_target_scale),
+                    &result);
+    }
+    return result;
+  }
+  CalibrationResult result = CalibrateAtDescribedSize(all_stations, options, selection);
+  if (options.fix) return result;  // planar robots: X's translation is not fully observed
+  const TargetScale scale =
+      EstimateTargetScale(handeye::SubProblem(all_stations, selection.used), result.X, result.Z,
+                          Variances(result.robot_sigma, result.camera_sigma, result.camera_excess),
+                          result.station_scale, result.sigmas_estimated);
+  const bool apply = scale.observable && options.target_scale == TargetScaleMode::kFit;
+  if (apply) {
+    // The same stations; the selection's own ml fit was made at the described size.
+    StationSelection rescaled = selection;
+    rescaled.fit.reset();
+    CalibrationResult measured = CalibrateAtDescribedSize(
+        ScaleCameraTranslations(all_stations, scale.scale), options, rescaled);
+    if (measured.covariance) {
+      // The covariance at a known scale plus the scale's share: Cov(δ | s) + g σ_ε² gᵀ.
+      const double log_sigma = scale.sigma / scale.scale;
+      measured.covariance->covariance +=
+          log_sigma * log_sigma * scale.sensitivity * scale.sensitivity.transpose();
+    }
+    measured.applied_target_scale = scale.scale;
+    result = std::move(measured);
+  }
+  if (std::string warning = TargetScaleWarning(scale, apply); !warning.empty()) {
+    result.warnings.push_back(std::move(warning));
+  }
+  result.target_scale = scale;
+  CertifyResult(ScaleCameraTranslations(handeye::SubProblem(all_stations, selection.used),
+                                        result.applied_target_scale),
+                &result);
   return result;
 }
 

@@ -269,6 +269,7 @@ TEST(CalibrateCovariance, DefaultCovarianceByStationCount) {
   options.robot_sigma = options.camera_sigma = kSigma;
   options.reject_outliers = false;
   options.model_check = false;  // the model's own covariance, compared with the bound below
+  options.target_scale = TargetScaleMode::kStated;  // the bound is at the described size
   const CalibrationResult tsai = Calibrate(data.MeasuredProblem(), options);
   EXPECT_EQ(tsai.covariance->method, CovarianceMethod::kInformation);
   EXPECT_EQ(tsai.covariance->solves, 0);

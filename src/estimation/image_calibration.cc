@@ -154,6 +154,22 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
     selection = SelectStations(problem, selection_options);
   }
   out.pose_level = Calibrate(problem, calibrate, selection);
+  // The target's scale (target_scale.h): when the pose level answers at a measured (or given)
+  // size, the image level takes the same size — every target point scaled by it — and its
+  // covariance gains the scale's share below (docs/target-scale.md).
+  // With --refine-intrinsics the pose level's scale shares the given focal length's error (a
+  // focal length 1 % off puts every PnP camera 1 % too far, as a board printed at 101 % would),
+  // which the image level then corrects: there the described size is kept, not the pose level's
+  // fitted one (a given scale is still applied).
+  const bool scale_confounded =
+      options.refine_intrinsics && options.calibrate.target_scale == TargetScaleMode::kFit;
+  const double target_scale = scale_confounded ? 1.0 : out.pose_level.applied_target_scale;
+  const handeye::Problem measured_problem = ScaleCameraTranslations(problem, target_scale);
+  std::vector<ImagePoints> points;
+  for (const ImageStation& station : stations) {
+    points.push_back(station.points);
+    for (Eigen::Vector3d& P : points.back().target) P *= target_scale;
+  }
 
   ReprojectionOptions reprojection;
   reprojection.setup = options.setup;
@@ -176,7 +192,7 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
     std::vector<ImagePoints> used_points;
     for (int i : used_index) {
       used_robot.push_back(robot[static_cast<size_t>(i)]);
-      used_points.push_back(stations[static_cast<size_t>(i)].points);
+      used_points.push_back(points[static_cast<size_t>(i)]);
     }
     out.reprojection = RefineReprojection(used_robot, used_points, X0, Z0, reprojection);
     const std::vector<int> flagged = TrueIndices(out.reprojection.image_outlier);
@@ -200,9 +216,9 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   std::vector<ImagePoints> used_points;
   for (int i : TrueIndices(used)) {
     used_robot.push_back(robot[static_cast<size_t>(i)]);
-    used_points.push_back(stations[static_cast<size_t>(i)].points);
+    used_points.push_back(points[static_cast<size_t>(i)]);
   }
-  const handeye::Problem used_problem = handeye::SubProblem(problem, used);
+  const handeye::Problem used_problem = handeye::SubProblem(measured_problem, used);
   const double length_scale = handeye::LengthScale(used_problem);
 
   // Step 5 (header): the robot noise the covariance rests on.
@@ -231,6 +247,13 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
 
   CalibrationResult& result = out.result;
   result = out.pose_level;
+  result.applied_target_scale = target_scale;
+  if (scale_confounded && result.target_scale && result.target_scale->Mismatch()) {
+    result.warnings.push_back(
+        "with --refine-intrinsics the target's size measured at the pose level shares the given "
+        "focal length's error, so X and Z are given at the described size: calibrate once "
+        "without --refine-intrinsics, or measure the printed target (docs/target-scale.md)");
+  }
   result.X = out.reprojection.X;
   result.Z = out.reprojection.Z;
   if (options.calibrate.covariance.method == CovarianceMethod::kMonteCarlo) {
@@ -244,6 +267,12 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
     CalibrationCovariance covariance;  // the reprojection problem's Gauss–Newton information
     covariance.covariance = for_covariance.covariance;
     result.covariance = covariance;
+  }
+  if (result.target_scale && target_scale != 1.0) {
+    // A measured scale's share, Cov(δ | s) + g σ_ε² gᵀ, g from the pose level.
+    const double log_sigma = result.target_scale->sigma / result.target_scale->scale;
+    result.covariance->covariance += log_sigma * log_sigma * result.target_scale->sensitivity *
+                                     result.target_scale->sensitivity.transpose();
   }
   if (out.reprojection.robot_sigma_estimated) {
     result.robot_sigma = out.reprojection.robot_sigma;
@@ -273,6 +302,13 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   const NoiseEstimate noise =
       EstimateNoise(LinearizeStations(used_problem, result.X, result.Z), known, length_scale);
   SetStationResiduals(used_problem, noise, &result);
+  // The certificate of the image level's X, Z (the pose level's is replaced).
+  result.global_optimum.reset();
+  std::erase_if(result.warnings, [](const std::string& warning) {
+    return warning.starts_with("the answer is not the global optimum") ||
+           warning.starts_with("the answer could not be certified");
+  });
+  CertifyResult(used_problem, &result);
   if (out.reprojection.robot_sigma_estimated) {
     const std::vector<int> used_index = TrueIndices(used);
     size_t largest = 0;
@@ -292,7 +328,8 @@ ImageCalibrationResult CalibrateFromImages(const std::vector<ImageStation>& stat
   result.rejected.clear();
   for (size_t i = 0; i < n; ++i)
     if (!used[i]) result.rejected.push_back(static_cast<int>(i));
-  result.rejected_residuals = RejectedResiduals(problem, used, result.X, result.Z, noise.variances);
+  result.rejected_residuals =
+      RejectedResiduals(measured_problem, used, result.X, result.Z, noise.variances);
   result.rejected_ids.clear();
   for (int i : result.rejected) {
     if (static_cast<size_t>(i) < options.calibrate.station_ids.size())

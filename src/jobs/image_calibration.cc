@@ -96,6 +96,8 @@ report::ResultDocument CalibrateFromImages(const ImageCalibrationInput& input,
   result.result.warnings.insert(result.result.warnings.begin(), notes.begin(), notes.end());
 
   report.intrinsics_source = input.intrinsics_source;
+  report.target_size_key = input.target_size_key;
+  report.target_size = input.target_size;
   report.camera = result.reprojection.camera;
   report.intrinsics_rms_px = input.intrinsics_rms_px;
   if (result.reprojection.intrinsics_covariance) {

@@ -1,6 +1,8 @@
 // Calibration from a folder of target images: see image_folder_calibration.h.
 #include "hecal/jobs/image_folder_calibration.h"
 
+#include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -20,6 +22,18 @@ bool ImageFolderCalibrationOptions::IsValid(std::string* why) const {
   return robot_read.IsValid(why) && images.IsValid(why);
 }
 
+namespace {
+
+// The size a target's description states, by its key in target.yaml (io/target_file.h): the
+// square (chessboard, ChArUco, circle pitch), the marker (marker grids) or the tag (one tag).
+std::pair<std::string, double> DescribedSize(const pose::TargetSpec& target) {
+  if (target.size > 0.0) return {"size", target.size};
+  if (target.square > 0.0) return {"square", target.square};
+  return {"marker", target.marker};
+}
+
+}  // namespace
+
 ImageFolderCalibration CalibrateFromImageFolder(const ImageFolderCalibrationOptions& options,
                                                 const JobCallbacks& callbacks) {
   RequireValid(options);
@@ -32,6 +46,7 @@ ImageFolderCalibration CalibrateFromImageFolder(const ImageFolderCalibrationOpti
 
   ImageCalibrationInput input;
   input.unit = robot.unit;
+  std::tie(input.target_size_key, input.target_size) = DescribedSize(set.target);
   input.robot_unit_named = robot.unit_named;
   handeye::PoseData data;
   for (size_t i = 0; i < set.images.size(); ++i) {

@@ -33,6 +33,9 @@ void Add(const handeye::Problem& truth, const handeye::Problem& measured, const 
   calibrate.camera_sigma = options.camera_sigma;
   calibrate.reject_outliers = false;
   calibrate.model_check = false;
+  // The bound and the plan's criterion (plan/station_design.h) take the target's size as known:
+  // the study measures them on that model (docs/plan.md), the simulated board being exact.
+  calibrate.target_scale = estimation::TargetScaleMode::kStated;
   const estimation::CalibrationResult result = estimation::Calibrate(measured, calibrate);
   sums->achieved_rotation += std::pow(se3::Log(X.inverse() * result.X).head<3>().norm(), 2);
   sums->achieved_translation += (result.X.translation() - X.translation()).squaredNorm();

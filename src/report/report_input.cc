@@ -118,6 +118,21 @@ void CheckResult(const Checker& r) {
   stations.Strings("rejected");
   r.Strings("warnings");
   if (r.Has("images")) CheckImages(r.Object("images"));
+  if (r.Has("target")) {  // docs/target-scale.md
+    const Checker target = r.Object("target");
+    if (target.Has("scale")) {
+      target.Number("scale");
+      target.Number("scale_sigma");
+      target.Number("applied_scale");
+    } else {
+      target.String("reason");
+    }
+  }
+  if (r.Has("certificate")) {  // docs/certificate.md
+    const Checker certificate = r.Object("certificate");
+    certificate.Bool("certified");
+    certificate.Number("dual_gap");
+  }
 }
 
 }  // namespace
@@ -148,7 +163,10 @@ json ParseResultForReport(std::string_view text, const std::string& source) {
 }
 
 bool IsGlobalResult(const json& document) {
-  return document.is_object() && document.contains("certificate");
+  // Every pose-based result carries a `certificate` too (handeye/certificate.h); the target-free
+  // one is the one whose method is `global`.
+  return document.is_object() && document.contains("certificate") &&
+         document.value("method", std::string()) == "global";
 }
 
 json ParseGlobalResultForReport(std::string_view text, const std::string& source) {

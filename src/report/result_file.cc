@@ -218,6 +218,53 @@ json FixedJson(const handeye::FixedTranslation& fixed, handeye::Setup setup, dou
            "zero along it"}};
 }
 
+// The target's scale (estimation/target_scale.h, docs/result-file.md): null when neither
+// estimated nor given.
+json TargetJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
+  const double applied = result.applied_target_scale;
+  if (!result.target_scale) {
+    if (applied == 1.0) return nullptr;
+    return {{"scale", applied}, {"scale_sigma", 0.0}, {"given", true}, {"applied_scale", applied}};
+  }
+  const estimation::TargetScale& s = *result.target_scale;
+  if (!s.observable) return {{"observable", false}, {"reason", s.reason}};
+  json target = {{"observable", true},
+                 {"scale", s.scale},
+                 {"scale_sigma", s.sigma},
+                 {"scale_sigma_model", s.model_sigma},
+                 {"scale_sigma_jackknife", s.jackknife_sigma},
+                 {"jackknife_groups", s.groups},
+                 {"mismatch", s.Mismatch()},
+                 {"applied_scale", applied}};
+  if (document.images && document.images->target_size > 0.0) {
+    // The described and the measured size in the file's unit.
+    const double unit = 1.0 / io::MetresPer(document.unit);
+    const std::string& key = document.images->target_size_key;
+    const double described = document.images->target_size * unit;
+    target["described"] = {{key, described}};
+    target["measured"] = {{key, s.scale * described}, {key + "_sigma", s.sigma * described}};
+  }
+  return target;
+}
+
+// The certificate of global optimality (handeye/certificate.h, docs/certificate.md).
+json CertificateJson(const handeye::Certificate& certificate, handeye::Setup setup, double scale) {
+  json object = {
+      {"certified", certificate.certified},
+      {"problem", "chordal least squares of Z = A X B (weights from the noise model)"},
+      {"cost", certificate.cost},
+      {"lower_bound", certificate.lower_bound},
+      {"dual_gap", certificate.gap},
+      {"relative_gap", certificate.cost > 0.0 ? certificate.gap / certificate.cost : 0.0},
+      {"min_eigenvalue", certificate.min_eigenvalue},
+      {"stationarity", certificate.stationarity},
+      {"distance_deg", certificate.distance_rotation * kDegreesPerRadian},
+      {"distance_translation", certificate.distance_translation * scale}};
+  object["polished"] = {{"X", PoseJson(certificate.polished.X, handeye::XFrameName(setup), scale)},
+                        {"Z", PoseJson(certificate.polished.Z, handeye::ZFrameName(setup), scale)}};
+  return object;
+}
+
 json ResultJson(const ResultDocument& document, const estimation::CalibrationResult& result) {
   const double scale = 1.0 / io::MetresPer(document.unit);
   json object = {
@@ -282,6 +329,15 @@ json ResultJson(const ResultDocument& document, const estimation::CalibrationRes
       {"used", used}, {"rejected", rejected}, {"outlier_rejection", result.outlier_rejection}};
   if (result.seed) object["seed"] = *result.seed;
   if (result.fixed) object["fixed"] = FixedJson(*result.fixed, document.setup, scale);
+  if (json target = TargetJson(document, result); !target.is_null())
+    object["target"] = std::move(target);
+  if (result.certificate) {
+    object["certificate"] = CertificateJson(*result.certificate, document.setup, scale);
+    if (result.global_optimum) {
+      object["certificate"]["global_optimum"] =
+          CertificateJson(*result.global_optimum, document.setup, scale);
+    }
+  }
   object["warnings"] = result.warnings;
   if (document.images) {
     object["refinement"] = "reprojection";

@@ -44,6 +44,40 @@ void PrintSigma(std::ostream& out, std::string_view name, const Matrix6d& covari
       << ") deg, translation (" << sd.tail<3>().transpose() * 1000.0 << ") mm\n";
 }
 
+// The target's scale (estimation/target_scale.h): measured, given, or why not observable.
+void PrintTargetScale(std::ostream& out, const estimation::CalibrationResult& result) {
+  const double applied = result.applied_target_scale;
+  if (!result.target_scale) {
+    if (applied != 1.0) out << "target scale: " << applied << " (given; not estimated)\n";
+    return;
+  }
+  const estimation::TargetScale& s = *result.target_scale;
+  if (!s.observable) {
+    out << "target scale: not observable (" << s.reason << ")\n";
+    return;
+  }
+  out << "target scale (measured ÷ described size): " << s.scale << " ± " << s.sigma << " (1σ); "
+      << (applied != 1.0 ? "X and Z at the measured size" : "X and Z at the described size")
+      << "\n";
+}
+
+// The certificate of global optimality (handeye/certificate.h).
+void PrintCertificate(std::ostream& out, const estimation::CalibrationResult& result, double scale,
+                      std::string_view unit) {
+  if (!result.certificate) return;
+  const handeye::Certificate& c = *result.certificate;
+  out << "certificate: " << (c.certified ? "globally optimal" : "NOT certified")
+      << " (chordal least squares polished " << c.distance_rotation * kDegreesPerRadian << " deg / "
+      << c.distance_translation * scale << " " << unit << " from X; dual gap " << std::scientific
+      << std::setprecision(2) << c.gap << ", smallest dual eigenvalue " << c.min_eigenvalue
+      << std::fixed << std::setprecision(6) << ")\n";
+  if (result.global_optimum) {
+    const Pose& X = result.global_optimum->polished.X;
+    out << "  certified global optimum from a closed-form start: X translation "
+        << X.translation().transpose() * scale << " " << unit << "\n";
+  }
+}
+
 }  // namespace
 
 void PrintResultSummary(std::ostream& out, const ResultDocument& document,
@@ -57,13 +91,16 @@ void PrintResultSummary(std::ostream& out, const ResultDocument& document,
   PrintPose(out, "Z", handeye::ZFrameName(document.setup), result.Z, scale, unit);
   if (result.fixed) {
     const Eigen::Vector3d& d = result.fixed->x_direction;
-    out << "fixed: " << handeye::ComponentName(result.fixed->fix.axis) << " of X = "
-        << result.fixed->fix.value * scale << " " << unit << " (given, not estimated: the robot "
+    out << "fixed: " << handeye::ComponentName(result.fixed->fix.axis)
+        << " of X = " << result.fixed->fix.value * scale << " " << unit
+        << " (given, not estimated: the robot "
         << "rotates about one axis, so X's translation along (" << d.x() << ", " << d.y() << ", "
         << d.z() << ") of the "
         << (document.setup == handeye::Setup::kEyeInHand ? "gripper" : "base")
         << " frame is not observed; Z's translation moves with it)\n";
   }
+  PrintTargetScale(out, result);
+  PrintCertificate(out, result, scale, unit);
   if (result.covariance) {
     const estimation::CalibrationCovariance& c = *result.covariance;
     out << "covariance: " << estimation::CovarianceMethodName(c.method);

@@ -37,6 +37,9 @@ estimation::CalibrateOptions SolveOnly(const NoiseLevel& sigma) {
   estimation::CalibrateOptions options;
   options.covariance.method = estimation::CovarianceMethod::kNone;
   options.model_check = false;
+  // The solve alone: the described size, the target's scale not estimated (target_scale.h).
+  options.target_scale = estimation::TargetScaleMode::kGiven;
+  options.given_target_scale = 1.0;
   const sim::NoiseModel noise = Noise(sigma);
   if (!noise.IsZero()) {
     options.robot_sigma = estimation::PoseSigma{noise.rotation_sigma, noise.translation_sigma};
@@ -120,10 +123,9 @@ bool BenchOptions::IsValid(std::string* why) const {
   if (!(sigma.mm >= 0.0 && sigma.mm <= kMaxSigmaMm) ||
       !(sigma.deg >= 0.0 && sigma.deg <= kMaxSigmaDeg)) {
     return Invalid(why, "BenchOptions.sigma",
-                   "noise levels must be 0 to " + FormatNumber(kMaxSigmaMm) +
-                       " mm and 0 to " + FormatNumber(kMaxSigmaDeg) +
-                       " deg per axis, got " + FormatNumber(sigma.mm) + " mm / " +
-                       FormatNumber(sigma.deg) + " deg",
+                   "noise levels must be 0 to " + FormatNumber(kMaxSigmaMm) + " mm and 0 to " +
+                       FormatNumber(kMaxSigmaDeg) + " deg per axis, got " + FormatNumber(sigma.mm) +
+                       " mm / " + FormatNumber(sigma.deg) + " deg",
                    "give the standard deviation of one axis in mm and degrees, e.g. 0.5/0.1");
   }
   return true;

@@ -42,7 +42,9 @@
 #include "hecal/estimation/pose_sigma.h"
 #include "hecal/estimation/robust_loss.h"
 #include "hecal/estimation/station_selection.h"
+#include "hecal/estimation/target_scale.h"
 #include "hecal/geometry/types.h"
+#include "hecal/handeye/certificate.h"
 #include "hecal/handeye/planar.h"
 #include "hecal/handeye/problem.h"
 
@@ -70,11 +72,15 @@ struct CalibrateOptions {
   // Planar robots (handeye/planar.h, docs/planar.md): one component of X's translation given
   // (--fix tz=VALUE), metres in X's parent frame; method ml only.
   std::optional<handeye::TranslationFix> fix;
+  // The target's printed scale (target_scale.h, docs/target-scale.md; --target-scale).
+  TargetScaleMode target_scale = TargetScaleMode::kFit;
+  double given_target_scale = 1.0;  // with kGiven: the measured print ÷ the described size
 
   // core/options_check.h: false naming CalibrateOptions.robot_sigma / .camera_sigma (outside
   // pose_sigma.h's range, or both zero in rotation or in translation: a singular noise model),
   // .robust_scale (not positive and finite), .fix (an axis other than 0–2, a value not finite,
-  // or a method other than ml), or a CovarianceOptions or ConsensusOptions field.
+  // or a method other than ml), .given_target_scale (not in (0.5, 2)), or a CovarianceOptions or
+  // ConsensusOptions field.
   bool IsValid(std::string* why) const;
 };
 
@@ -124,6 +130,17 @@ struct CalibrationResult {
   // With CalibrateOptions::fix: the fixed component and the directions of the family (planar.h,
   // (P1)) the data cannot tell apart; the covariance is zero along the fixed coordinate.
   std::optional<handeye::FixedTranslation> fixed;
+  // The target's scale as measured from the robot's motion (absent with --fix, with
+  // TargetScaleMode::kGiven and below 3 stations), and the scale the answer uses: the camera
+  // translations were multiplied by `applied_target_scale` (1: the described size). With a
+  // measured scale applied, the covariance of (X, Z) includes the scale's uncertainty.
+  std::optional<TargetScale> target_scale;
+  double applied_target_scale = 1.0;
+  // The certificate of global optimality of the chordal problem at the answer
+  // (handeye/certificate.h; absent with --fix). When it fails, `global_optimum` is the lowest
+  // certified minimum reached from the closed-form starts, if any (its X and Z: `polished`).
+  std::optional<handeye::Certificate> certificate;
+  std::optional<handeye::Certificate> global_optimum;
 };
 
 // Throws hecal::DegenerateError on degenerate data (handeye/observability.h), hecal::InputError
@@ -140,6 +157,12 @@ CalibrationResult Calibrate(const handeye::Problem& problem, const CalibrateOpti
 // options.consensus, or AllStations when options.reject_outliers is false.
 StationSelection SelectStationsFor(const handeye::Problem& problem,
                                    const CalibrateOptions& options);
+
+// Sets result->certificate (handeye/certificate.h) for the answer's X, Z on `problem` (the
+// stations used, at the target scale applied), weighted by the result's noise; when it fails,
+// certifies the closed-form starts and keeps the lowest certified as result->global_optimum,
+// with a warning when that optimum costs less than the answer's.
+void CertifyResult(const handeye::Problem& problem, CalibrationResult* result);
 
 // Fills result->residuals, rotation_rms and translation_rms at result->X, result->Z, with the
 // whitened residuals and outlier flags of `noise` (noise_estimation.h, linearised at the same

@@ -45,6 +45,10 @@ struct ImageCalibrationInput {
   std::string intrinsics_source;            // the camera file given, or "estimated from the images"
   std::optional<double> intrinsics_rms_px;  // when estimated: the intrinsics fit's RMS
   std::vector<std::string> notes;           // put first in the result's warnings
+  // The target's described size for the result's `target` block: its key in target.yaml
+  // ("square", "marker" or "size") and value, metres; empty / 0 when unknown.
+  std::string target_size_key;
+  double target_size = 0.0;
 };
 
 // Runs the job above; options.calibrate.station_ids is set to the used images' ids.

@@ -20,7 +20,8 @@ namespace hecal::report {
 // Refuses the target-free result (IsGlobalResult).
 nlohmann::json ParseResultForReport(std::string_view text, const std::string& source);
 
-// Whether a parsed JSON document is the target-free result (it has a "certificate").
+// Whether a parsed JSON document is the target-free result (method `global` with a
+// "certificate").
 bool IsGlobalResult(const nlohmann::json& document);
 
 // The target-free result file (docs/result-file.md#target-free---method-global), every field the

@@ -54,6 +54,10 @@ struct ImageReport {
   std::vector<std::vector<Eigen::Vector2d>> image_residuals_px;
   std::vector<std::string> skipped_reasons;  // one per ResultDocument::rejected, same order
   estimation::CalibrationResult pose_level;  // X, Z before the reprojection refinement
+  // The target's described size (target.yaml's `square`, `marker` or `size`, metres) for the
+  // `target` block: the measured size is the scale times it. Empty / 0 when unknown.
+  std::string target_size_key;
+  double target_size = 0.0;
 };
 
 // `hecal calibrate --streams` (docs/streams.md): how the stations were made from two
