@@ -369,7 +369,7 @@ CalibrationResult CalibrateAtDescribedSize(const handeye::Problem& all_stations,
   return result;
 }
 
-std::string Percent(double value) {
+std::string ScalePercent(double value) {
   return Format("%.2f %%", 100.0 * value, 0.0);
 }
 
@@ -377,8 +377,8 @@ std::string Percent(double value) {
 std::string TargetScaleWarning(const TargetScale& scale, bool applied) {
   if (!scale.Mismatch()) return "";
   const std::string measured =
-      "the robot's motion measures the target at " + Percent(scale.scale) + " ± " +
-      Percent(scale.sigma) + " (1σ) of the size its description states, " +
+      "the robot's motion measures the target at " + ScalePercent(scale.scale) + " ± " +
+      ScalePercent(scale.sigma) + " (1σ) of the size its description states, " +
       Format("%.1fσ", std::abs(scale.scale - 1.0) / scale.sigma, 0.0) + " from it";
   if (!applied) {
     return measured +
@@ -386,7 +386,7 @@ std::string TargetScaleWarning(const TargetScale& scale, bool applied) {
            "σ does not cover the difference";
   }
   if (std::abs(scale.scale - 1.0) < kPrinterTolerance) {
-    return measured + " (within a printer's tolerance of ±" + Percent(kPrinterTolerance) +
+    return measured + " (within a printer's tolerance of ±" + ScalePercent(kPrinterTolerance) +
            "): X and Z are given at the measured size, their σ including the scale's";
   }
   return "the target is not the size its description states: " + measured +

@@ -29,8 +29,8 @@ struct StationTerms {
   Eigen::Matrix<double, 6, 13> jacobian;
 };
 
-StationTerms Linearize(const Pose& A, const Pose& B, const Matrix6d& whitening,
-                       const State& state) {
+StationTerms LinearizeScaled(const Pose& A, const Pose& B, const Matrix6d& whitening,
+                             const State& state) {
   Pose scaled = B;
   scaled.translation() *= std::exp(state.log_scale);
   Matrix6x12d pose_jacobian;
@@ -60,7 +60,7 @@ Normal Accumulate(const handeye::Problem& problem, const std::vector<Matrix6d>& 
   normal.group_information.assign(groups.size(), Matrix13d::Zero());
   normal.group_gradient.assign(groups.size(), Vector13d::Zero());
   for (size_t i = 0; i < problem.A.size(); ++i) {
-    const StationTerms terms = Linearize(problem.A[i], problem.B[i], whitening[i], state);
+    const StationTerms terms = LinearizeScaled(problem.A[i], problem.B[i], whitening[i], state);
     const Matrix13d information = terms.jacobian.transpose() * terms.jacobian;
     const Vector13d gradient = terms.jacobian.transpose() * terms.residual;
     normal.information += information;
@@ -75,8 +75,8 @@ Normal Accumulate(const handeye::Problem& problem, const std::vector<Matrix6d>& 
   return normal;
 }
 
-double Cost(const handeye::Problem& problem, const std::vector<Matrix6d>& whitening,
-            const State& state) {
+double ScaledCost(const handeye::Problem& problem, const std::vector<Matrix6d>& whitening,
+                  const State& state) {
   const double s = std::exp(state.log_scale);
   double cost = 0.0;
   for (size_t i = 0; i < problem.A.size(); ++i) {
@@ -93,20 +93,20 @@ State Step(const State& state, const Vector13d& delta, double length) {
 }
 
 // Gauss–Newton with step halving from `state`; returns the optimum.
-State Minimize(const handeye::Problem& problem, const std::vector<Matrix6d>& whitening,
-               State state) {
-  double cost = Cost(problem, whitening, state);
+State MinimizeScaled(const handeye::Problem& problem, const std::vector<Matrix6d>& whitening,
+                     State state) {
+  double cost = ScaledCost(problem, whitening, state);
   for (int iteration = 0; iteration < 50; ++iteration) {
     const Normal normal = Accumulate(problem, whitening, state, {});
     const Vector13d delta = -normal.information.ldlt().solve(normal.gradient);
     if (!delta.allFinite()) break;
     double length = 1.0;
     State next = Step(state, delta, length);
-    double next_cost = Cost(problem, whitening, next);
+    double next_cost = ScaledCost(problem, whitening, next);
     while (!(next_cost <= cost) && length > 1e-4) {
       length /= 2;
       next = Step(state, delta, length);
-      next_cost = Cost(problem, whitening, next);
+      next_cost = ScaledCost(problem, whitening, next);
     }
     if (!(next_cost <= cost)) break;
     state = next;
@@ -195,7 +195,7 @@ TargetScale EstimateTargetScale(const handeye::Problem& problem, const Pose& X, 
     result.reason = "too few stations";
     return result;
   }
-  const State optimum = Minimize(problem, whitening, {X, Z, 0.0});
+  const State optimum = MinimizeScaled(problem, whitening, {X, Z, 0.0});
   const std::vector<std::vector<bool>> groups =
       n > kModelCheckMinStations ? JackknifeGroups(n) : std::vector<std::vector<bool>>{};
   const Normal normal = Accumulate(problem, whitening, optimum, groups);

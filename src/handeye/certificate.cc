@@ -10,6 +10,7 @@
 
 #include "hecal/geometry/skew.h"
 #include "hecal/geometry/so3.h"
+#include "hecal/handeye/kronecker.h"
 
 namespace hecal::handeye {
 namespace {
@@ -22,10 +23,6 @@ constexpr int kY = 18;
 using Matrix25d = Eigen::Matrix<double, kFull, kFull>;
 using Matrix19d = Eigen::Matrix<double, kReduced, kReduced>;
 using Vector19d = Eigen::Matrix<double, kReduced, 1>;
-
-Eigen::Matrix<double, 9, 1> Vec(const Eigen::Matrix3d& R) {
-  return Eigen::Map<const Eigen::Matrix<double, 9, 1>>(R.data());
-}
 
 // zᵀ Q z is the cost of certificate.h.
 Matrix25d CostMatrix(const Problem& problem, const ChordalWeights& weights) {
