@@ -451,8 +451,17 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     }
     return result;
   }
-  CalibrationResult result = CalibrateAtDescribedSize(all_stations, options, selection);
-  if (options.fix) return result;  // planar robots: X's translation is not fully observed
+  if (options.fix) {  // planar robots: X's translation is not fully observed
+    return CalibrateAtDescribedSize(all_stations, options, selection);
+  }
+  // With kFit the described-size pass only starts the scale estimate (X, Z and the noise): no
+  // covariance, no model check; it is run in full only when the scale is not observable.
+  CalibrateOptions first = options;
+  if (options.target_scale == TargetScaleMode::kFit) {
+    first.covariance.method = CovarianceMethod::kNone;
+    first.model_check = false;
+  }
+  CalibrationResult result = CalibrateAtDescribedSize(all_stations, first, selection);
   const TargetScale scale =
       EstimateTargetScale(handeye::SubProblem(all_stations, selection.used), result.X, result.Z,
                           Variances(result.robot_sigma, result.camera_sigma, result.camera_excess),
@@ -472,6 +481,8 @@ CalibrationResult Calibrate(const handeye::Problem& all_stations, const Calibrat
     }
     measured.applied_target_scale = scale.scale;
     result = std::move(measured);
+  } else if (options.target_scale == TargetScaleMode::kFit) {
+    result = CalibrateAtDescribedSize(all_stations, options, selection);
   }
   if (std::string warning = TargetScaleWarning(scale, apply); !warning.empty()) {
     result.warnings.push_back(std::move(warning));
